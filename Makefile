@@ -1,0 +1,113 @@
+# slipfield: `make verify` and `make test` install what is missing, build,
+# and run.  See README.md.
+SHELL := /bin/sh
+CC ?= cc
+BUILD := build
+JOBS ?= $(shell nproc 2>/dev/null || echo 1)
+TIER ?= quick
+CASES ?= $(sort $(wildcard cases/*/*.md))
+SEED ?=
+VERIFY_FLAGS ?=
+
+PKGS := gsl fftw3
+GIT_REV := $(shell git rev-parse --short HEAD 2>/dev/null || echo unknown)
+WARN := -Wall -Wextra -Wpedantic -Werror
+BASE_CFLAGS := -std=c11 -D_POSIX_C_SOURCE=200809L $(WARN) -Isolver -Iverification -Icli -Itests \
+               -DSF_GIT_REV='"$(GIT_REV)"'
+OPT ?= -O2 -g
+PKG_CFLAGS = $(shell pkg-config --cflags $(PKGS) 2>/dev/null)
+PKG_LIBS = $(shell pkg-config --libs $(PKGS) 2>/dev/null || echo -lgsl -lgslcblas -lfftw3) -lm
+CMOCKA_CFLAGS = $(shell pkg-config --cflags cmocka 2>/dev/null)
+CMOCKA_LIBS = $(shell pkg-config --libs cmocka 2>/dev/null || echo -lcmocka)
+SAN := -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all
+
+SOLVER_SRC := $(sort $(wildcard solver/*.c))
+VERIF_SRC := $(sort $(wildcard verification/*.c verification/checks/*.c))
+CLI_SRC := $(sort $(wildcard cli/*.c))
+TEST_SRC := $(sort $(wildcard tests/test_*.c))
+BENCH_SRC := $(sort $(wildcard bench/*.c))
+
+# $(call objs,variant,sources)
+objs = $(patsubst %.c,$(BUILD)/$(1)/%.o,$(2))
+
+SOLVER_OBJ := $(call objs,rel,$(SOLVER_SRC))
+VERIF_OBJ := $(call objs,rel,$(VERIF_SRC))
+CLI_OBJ := $(call objs,rel,$(CLI_SRC))
+TESTS := $(patsubst tests/%.c,$(BUILD)/rel/tests/%,$(TEST_SRC))
+TESTS_SAN := $(patsubst tests/%.c,$(BUILD)/san/tests/%,$(TEST_SRC))
+
+.PHONY: all deps verify test bench mutants clean help
+.DEFAULT_GOAL := all
+
+help:
+	@echo "make verify   install deps if missing, build, run the quick-tier cases (TIER=full: all; CASES='cases/field/*')"
+	@echo "make test     install deps if missing, run the CMocka unit tests (plain and under ASan+UBSan)"
+	@echo "make bench    benchmarks -> reports/bench/report.md"
+	@echo "make mutants  seeded defects that the cases must catch"
+	@echo "make deps     install libgsl-dev libfftw3-dev libcmocka-dev gnuplot-nox pkg-config when missing"
+
+deps:
+	@sh scripts/deps.sh
+
+# The compile rules run after deps so that pkg-config answers.
+all: deps
+	@$(MAKE) --no-print-directory $(BUILD)/slipfield
+
+$(BUILD)/rel/%.o: %.c
+	@mkdir -p $(dir $@)
+	$(CC) $(BASE_CFLAGS) $(OPT) $(PKG_CFLAGS) $(CMOCKA_CFLAGS) -MMD -MP -c $< -o $@
+
+$(BUILD)/san/%.o: %.c
+	@mkdir -p $(dir $@)
+	$(CC) $(BASE_CFLAGS) -O1 -g $(SAN) $(PKG_CFLAGS) $(CMOCKA_CFLAGS) -MMD -MP -c $< -o $@
+
+$(BUILD)/libslipfield.a: $(SOLVER_OBJ)
+	@rm -f $@
+	ar rcs $@ $^
+
+$(BUILD)/libsfverify.a: $(VERIF_OBJ)
+	@rm -f $@
+	ar rcs $@ $^
+
+$(BUILD)/san/libslipfield.a: $(call objs,san,$(SOLVER_SRC))
+	@rm -f $@
+	ar rcs $@ $^
+
+$(BUILD)/san/libsfverify.a: $(call objs,san,$(VERIF_SRC))
+	@rm -f $@
+	ar rcs $@ $^
+
+$(BUILD)/slipfield: $(CLI_OBJ) $(BUILD)/libsfverify.a $(BUILD)/libslipfield.a
+	$(CC) $(OPT) $^ -o $@ $(PKG_LIBS)
+
+$(BUILD)/rel/tests/%: $(BUILD)/rel/tests/%.o $(BUILD)/libsfverify.a $(BUILD)/libslipfield.a
+	$(CC) $(OPT) $^ -o $@ $(CMOCKA_LIBS) $(PKG_LIBS)
+
+$(BUILD)/san/tests/%: $(BUILD)/san/tests/%.o $(BUILD)/san/libsfverify.a $(BUILD)/san/libslipfield.a
+	$(CC) -g $(SAN) $^ -o $@ $(CMOCKA_LIBS) $(PKG_LIBS)
+
+$(BUILD)/bench/slipfield-bench: $(call objs,rel,$(BENCH_SRC)) $(BUILD)/libslipfield.a
+	@mkdir -p $(dir $@)
+	$(CC) $(OPT) $^ -o $@ $(PKG_LIBS)
+
+test: deps
+	@$(MAKE) --no-print-directory test-run
+
+.PHONY: test-run
+test-run: $(TESTS) $(TESTS_SAN)
+	@sh scripts/run-tests.sh $(BUILD) $(TESTS) -- $(TESTS_SAN)
+
+verify: all
+	@$(BUILD)/slipfield verify --jobs $(JOBS) --tier $(TIER) $(if $(SEED),--seed $(SEED)) $(VERIFY_FLAGS) $(CASES)
+
+bench: all
+	@$(MAKE) --no-print-directory $(BUILD)/bench/slipfield-bench
+	@$(BUILD)/bench/slipfield-bench reports/bench
+
+mutants: all
+	@sh scripts/mutants.sh $(MUTANTS)
+
+clean:
+	rm -rf $(BUILD)
+
+-include $(shell find $(BUILD) -name '*.d' 2>/dev/null)

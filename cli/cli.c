@@ -1,0 +1,88 @@
+#include "cli.h"
+#include "sf_error.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+int sf_cli_load_scene(const char *cmd, const char *path, sf_scene *s)
+{
+    char err[512];
+    sf_scene_default(s);
+    int rc = sf_scene_read_file(s, path, err, sizeof err);
+    if (rc) {
+        fprintf(stderr, "slipfield %s: %s\n", cmd, err);
+        return SF_EXIT_USAGE;
+    }
+    return SF_EXIT_OK;
+}
+
+int sf_cli_open(const char *cmd, const char *path, sf_out *o)
+{
+    memset(o, 0, sizeof *o);
+    if (!strcmp(path, "-")) {
+        o->f = stdout;
+        o->is_stdout = 1;
+        return SF_EXIT_OK;
+    }
+    if (strlen(path) >= sizeof o->final) {
+        fprintf(stderr, "slipfield %s: output path too long\n", cmd);
+        return SF_EXIT_USAGE;
+    }
+    snprintf(o->final, sizeof o->final, "%s", path);
+    snprintf(o->tmp, sizeof o->tmp, "%s.tmp%ld", path, (long)getpid());
+    o->f = fopen(o->tmp, "w");
+    if (!o->f) {
+        fprintf(stderr, "slipfield %s: cannot write %s: %s\n", cmd, o->tmp, strerror(errno));
+        return SF_EXIT_USAGE;
+    }
+    return SF_EXIT_OK;
+}
+
+int sf_cli_close(const char *cmd, sf_out *o, int ok)
+{
+    if (o->is_stdout)
+        return fflush(stdout) == 0 && ok ? SF_EXIT_OK : SF_EXIT_INTERNAL;
+    int bad = ferror(o->f);
+    if (fclose(o->f) != 0)
+        bad = 1;
+    if (!ok || bad) {
+        unlink(o->tmp);
+        if (bad)
+            fprintf(stderr, "slipfield %s: error writing %s\n", cmd, o->final);
+        return SF_EXIT_INTERNAL;
+    }
+    if (rename(o->tmp, o->final) != 0) {
+        fprintf(stderr, "slipfield %s: cannot rename to %s: %s\n", cmd, o->final, strerror(errno));
+        unlink(o->tmp);
+        return SF_EXIT_INTERNAL;
+    }
+    return SF_EXIT_OK;
+}
+
+int sf_cli_size(const char *cmd, const char *opt, const char *v, size_t lo, size_t hi, size_t *out)
+{
+    char *end;
+    errno = 0;
+    unsigned long long x = v ? strtoull(v, &end, 10) : 0;
+    if (!v || !*v || *end || errno || v[0] == '-' || x < lo || x > hi) {
+        fprintf(stderr, "slipfield %s: %s takes a whole number from %zu to %zu\n", cmd, opt, lo, hi);
+        return SF_EXIT_USAGE;
+    }
+    *out = (size_t)x;
+    return SF_EXIT_OK;
+}
+
+int sf_cli_double(const char *cmd, const char *opt, const char *v, double *out)
+{
+    char *end;
+    double x = v ? strtod(v, &end) : NAN;
+    if (!v || !*v || *end || !isfinite(x)) {
+        fprintf(stderr, "slipfield %s: %s takes a finite number\n", cmd, opt);
+        return SF_EXIT_USAGE;
+    }
+    *out = x;
+    return SF_EXIT_OK;
+}

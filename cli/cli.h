@@ -1,0 +1,31 @@
+/* slipfield command line: shared helpers for the subcommands. */
+#ifndef SF_CLI_H
+#define SF_CLI_H
+
+#include <stdio.h>
+#include "scene.h"
+
+/* Exit codes (DESIGN.md sec. 2). */
+enum { SF_EXIT_OK = 0, SF_EXIT_CHECK = 1, SF_EXIT_USAGE = 2, SF_EXIT_INTERNAL = 3 };
+
+/* Read a scene file with Table 1 defaults; on error print it and return
+ * SF_EXIT_USAGE. */
+int sf_cli_load_scene(const char *cmd, const char *path, sf_scene *s);
+
+/* Output file written under a temporary name, renamed on sf_cli_close
+ * (path "-" is stdout).  On failure the temporary file is removed. */
+typedef struct {
+    FILE *f;
+    char final[1024], tmp[1100];
+    int is_stdout;
+} sf_out;
+int sf_cli_open(const char *cmd, const char *path, sf_out *o);
+int sf_cli_close(const char *cmd, sf_out *o, int ok);
+
+/* Parse a whole positive integer option value, or print an error. */
+int sf_cli_size(const char *cmd, const char *opt, const char *v, size_t lo, size_t hi, size_t *out);
+int sf_cli_double(const char *cmd, const char *opt, const char *v, double *out);
+
+int sf_cmd_field(int argc, char **argv);
+
+#endif

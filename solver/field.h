@@ -1,0 +1,91 @@
+/* slipfield: homogeneous Gaussian random fields on a regular 2-D grid by
+ * circulant embedding (paper Appendix A; Dietrich & Newsam 1997).
+ *
+ * Plan once, sample many (FFTW idiom): sf_field_alloc() sizes the
+ * embedding, pads it until its eigenvalues are non-negative to a relative
+ * round-off floor (or a cap is reached), computes the eigenvalues with FFTW
+ * and plans the sampling FFT.  sf_field_sample() then costs one complex FFT
+ * of the embedding size per *two* independent fields (real and imaginary
+ * parts), plus the normal draws.
+ *
+ * Grid layout everywhere: value at (x_i, y_j) = (i dx, j dy) is out[i + m*j],
+ * i = 0..m-1 (x fastest), j = 0..n-1.
+ *
+ * Correlation: R(r) = exp(-r^2/l^2) (Eq. 2) by default.  That kernel is
+ * separable, R(dx,dy) = exp(-dx^2/l^2) exp(-dy^2/l^2), so the 2-D circulant
+ * eigenvalues are the outer product of two 1-D sets: padding is decided per
+ * axis at the cost of two 1-D FFTs.  A user kernel rho(r) (e.g. the
+ * pre-corrected Gaussian correlation of a lognormal field) takes the general
+ * 2-D path.
+ */
+#ifndef SF_FIELD_H
+#define SF_FIELD_H
+
+#include <stddef.h>
+#include <gsl/gsl_rng.h>
+
+/* Isotropic correlation rho(r), r >= 0 in metres, rho(0) = 1. */
+typedef double (*sf_kernel_fn)(double r, void *params);
+
+typedef struct {
+    size_t m, n;          /* grid points along x and y (>= 1 each) */
+    double dx, dy;        /* grid spacings [m] (> 0) */
+    double l;             /* correlation length l [m] of Eq. 2 (> 0) */
+    sf_kernel_fn kernel;  /* NULL: squared exponential exp(-r^2/l^2) */
+    void *kernel_params;
+    double eig_rel_tol;   /* accept lambda_min >= -tol*lambda_max; 0 -> 1e-12 */
+    double pad_cap;       /* max embedding period per axis as a multiple of
+                             the minimal one; 0 -> 16 */
+    size_t max_points;    /* cap on the embedding size M; 0 -> 2^25 */
+    int no_padding;       /* 1: minimal embedding only (truncate if needed) */
+} sf_field_spec;
+
+typedef struct {
+    size_t px, py;          /* embedding periods per axis; M = px*py */
+    size_t px_min, py_min;  /* minimal embedding periods (2(m-1), 2(n-1)) */
+    int separable;          /* 1 when the outer-product path was used */
+    int truncated;          /* 1 when the cap was hit and negatives clamped */
+    size_t n_clamped;       /* 2-D eigenvalues clamped to zero (round-off or truncation) */
+    double lambda_max;      /* largest 2-D eigenvalue */
+    double lambda_min;      /* smallest 2-D eigenvalue before clamping */
+    double cov_error;       /* max |C_produced - Sigma| over the grid lags:
+                               exact, computed from the clamped eigenvalues */
+} sf_field_info;
+
+typedef struct sf_field sf_field;
+
+/* Fill a spec with defaults for an m x n grid (tolerances, caps). */
+void sf_field_spec_default(sf_field_spec *spec, size_t m, size_t n,
+                           double dx, double dy, double l);
+
+/* Returns SF_SUCCESS, or SF_ECAP when the padding cap was reached: the plan
+ * is still usable (negative eigenvalues clamped, error in info->cov_error).
+ * SF_EINVAL / SF_ENOMEM leave *out = NULL. */
+int sf_field_alloc(const sf_field_spec *spec, sf_field **out);
+void sf_field_free(sf_field *f);
+
+const sf_field_info *sf_field_get_info(const sf_field *f);
+
+/* Draw one standard Gaussian field (mean 0, variance 1, correlation R) into
+ * out[m*n].  Each FFT yields two independent fields; the second is kept and
+ * returned by the next call, so consecutive calls cost half an FFT each.
+ * The stream is a deterministic function of the rng state. */
+int sf_field_sample(sf_field *f, gsl_rng *rng, double *out);
+
+/* Draw both fields of one FFT at once into distinct arrays re, im of m*n.
+ * Discards any kept field. */
+int sf_field_sample_pair(sf_field *f, gsl_rng *rng, double *re, double *im);
+
+/* The covariance the generator actually produces, no sampling:
+ * cov[i + m*j] = Cov(G(0,0), G(i dx, j dy)), i < m, j < n.  By symmetry of
+ * the embedding this also gives the lags (-i, j), (i, -j), (-i, -j). */
+int sf_field_covariance(const sf_field *f, double *cov);
+
+/* The target correlation at lag (i dx, j dy) (Sigma's entries). */
+double sf_field_target(const sf_field *f, double hx, double hy);
+
+/* The 2-D embedding eigenvalues (length px*py, index kx + px*ky), before
+ * clamping.  Exposed for verification (FFT vs direct DFT). */
+int sf_field_eigenvalues(const sf_field *f, double *lambda);
+
+#endif

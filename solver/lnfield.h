@@ -1,0 +1,27 @@
+/* slipfield: a lognormal COF field = a Gaussian field plan (field.h) plus
+ * the Nataf map (lognormal.h), built from a scene.  With `precorrect`, the
+ * Gaussian field uses rho_G(r) = distortion^-1(exp(-r^2/l^2)) so that the
+ * lognormal field itself has the target correlation of Eq. 2 (an option
+ * the paper did without). */
+#ifndef SF_LNFIELD_H
+#define SF_LNFIELD_H
+
+#include "field.h"
+#include "lognormal.h"
+#include "scene.h"
+
+typedef struct sf_lnfield sf_lnfield;
+
+/* Grid nx x ny, spacing dx, dy; marginal (mu_mean, mu_std).  Returns
+ * SF_SUCCESS or SF_ECAP (usable, truncated), else an error and *out = NULL. */
+int sf_lnfield_alloc(const sf_scene *s, sf_lnfield **out);
+void sf_lnfield_free(sf_lnfield *f);
+
+sf_field *sf_lnfield_gaussian(sf_lnfield *f);
+const sf_lognormal *sf_lnfield_marginal(const sf_lnfield *f);
+
+/* One realisation: the Gaussian values (optional, may be NULL) and the
+ * COF values cof[nx*ny] = exp(mu_g + sigma_g G). */
+int sf_lnfield_sample(sf_lnfield *f, gsl_rng *rng, double *gauss, double *cof);
+
+#endif

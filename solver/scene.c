@@ -1,0 +1,411 @@
+#include "scene.h"
+#include "sf_error.h"
+
+#include <ctype.h>
+#include <errno.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+
+typedef enum { K_DOUBLE, K_SIZE, K_ULONG, K_BOOL, K_ENUM, K_STRING, K_LIST } ktype;
+
+/* Range flags: lo/hi bounds are inclusive unless the *_open flag is set. */
+typedef struct {
+    const char *name;
+    ktype type;
+    size_t off;
+    size_t size;        /* string buffer size */
+    double lo, hi;
+    int lo_open, hi_open;
+    const char *def;    /* default as text, parsed by the same code */
+    const char *unit;
+    const char *choices;/* enum: "a|b|c" in value order */
+    const char *help;
+} key_t_;
+
+#define OFF(f) offsetof(sf_scene, f)
+#define INF HUGE_VAL
+
+static const key_t_ keys[] = {
+    /* physics: Table 1 stochastic baseline */
+    { "m", K_DOUBLE, OFF(m), 0, 0, INF, 1, 0, "10", "kg", NULL, "disc mass" },
+    { "k", K_DOUBLE, OFF(k), 0, 0, INF, 1, 0, "30", "N/m", NULL, "spring stiffness in x and y" },
+    { "v_b", K_DOUBLE, OFF(v_b), 0, 0, INF, 1, 0, "0.2", "m/s", NULL, "belt speed" },
+    { "R", K_DOUBLE, OFF(R), 0, 0, INF, 1, 0, "0.5", "m", NULL, "disc radius" },
+    { "l", K_DOUBLE, OFF(l), 0, 0, INF, 1, 0, "0.1", "m", NULL, "correlation length of Eq. 2" },
+    { "mu_mean", K_DOUBLE, OFF(mu_mean), 0, 0, INF, 1, 0, "0.5", "1", NULL, "mean static COF" },
+    { "mu_std", K_DOUBLE, OFF(mu_std), 0, 0, INF, 0, 0, "0.1", "1", NULL, "std of the static COF" },
+    { "mu_k_ratio", K_DOUBLE, OFF(mu_k_ratio), 0, 0, 1, 1, 0, "0.9", "1", NULL, "mu_k / mu_s (Eq. 1)" },
+    { "g", K_DOUBLE, OFF(g), 0, 0, INF, 1, 0, "9.81", "m/s^2", NULL, "gravity" },
+    { "T", K_DOUBLE, OFF(T), 0, 0, INF, 1, 0, "100", "s", NULL, "simulated time" },
+    { "eps_lambda", K_DOUBLE, OFF(eps_lambda), 0, 0, 1, 1, 0, "1e-3", "1", NULL, "slip-to-stick threshold on lambda (Eq. 12-14)" },
+    { "dt", K_DOUBLE, OFF(dt), 0, 0, INF, 1, 0, "1e-3", "s", NULL, "fixed step (rk4) or initial step" },
+    { "seed", K_ULONG, OFF(seed), 0, 0, 0, 0, 0, "20230101", "1", NULL, "random seed" },
+    { "cof", K_ENUM, OFF(cof), 0, 0, 0, 0, 0, "field", "", "uniform|variable|field", "COF model" },
+    /* random-field grid */
+    { "nx", K_SIZE, OFF(nx), 0, 1, 1e6, 0, 0, "64", "1", NULL, "grid points along x" },
+    { "ny", K_SIZE, OFF(ny), 0, 1, 1e6, 0, 0, "64", "1", NULL, "grid points along y" },
+    { "dx", K_DOUBLE, OFF(dx), 0, 0, INF, 1, 0, "0.025", "m", NULL, "grid spacing along x" },
+    { "dy", K_DOUBLE, OFF(dy), 0, 0, INF, 1, 0, "0.025", "m", NULL, "grid spacing along y" },
+    { "pad_cap", K_DOUBLE, OFF(pad_cap), 0, 1, 1e6, 0, 0, "16", "1", NULL, "max embedding period / minimal period" },
+    { "eig_tol", K_DOUBLE, OFF(eig_tol), 0, 0, 1, 0, 0, "1e-12", "1", NULL, "accept lambda_min >= -eig_tol lambda_max" },
+    { "no_padding", K_BOOL, OFF(no_padding), 0, 0, 0, 0, 0, "false", "", NULL, "minimal embedding only" },
+    { "precorrect", K_BOOL, OFF(precorrect), 0, 0, 0, 0, 0, "false", "", NULL, "pre-correct the Gaussian correlation so the lognormal field has Eq. 2" },
+    { "samples", K_SIZE, OFF(samples), 0, 1, 1e9, 0, 0, "1000", "1", NULL, "number of samples or realisations" },
+    /* contact */
+    { "layout", K_ENUM, OFF(layout), 0, 0, 0, 0, 0, "polar", "", "polar|cartesian", "disc quadrature layout" },
+    { "cells", K_SIZE, OFF(cells), 0, 1, 1e5, 0, 0, "32", "1", NULL, "quadrature resolution (rings or cells per diameter)" },
+    { "u", K_DOUBLE, OFF(u), 0, -INF, INF, 0, 0, "-0.2", "m/s", NULL, "relative velocity of the centre, x" },
+    { "v", K_DOUBLE, OFF(v), 0, -INF, INF, 0, 0, "0", "m/s", NULL, "relative velocity of the centre, y" },
+    { "w", K_DOUBLE, OFF(w), 0, -INF, INF, 0, 0, "0", "rad/s", NULL, "spin" },
+    { "ntheta", K_SIZE, OFF(ntheta), 0, 1, 1e5, 0, 0, "37", "1", NULL, "limit-surface theta samples" },
+    { "npsi", K_SIZE, OFF(npsi), 0, 1, 1e5, 0, 0, "72", "1", NULL, "limit-surface psi samples" },
+    /* dynamics */
+    { "integrator", K_ENUM, OFF(integrator), 0, 0, 0, 0, 0, "adaptive", "", "adaptive|rk4", "time stepper" },
+    { "rtol", K_DOUBLE, OFF(rtol), 0, 0, 1, 1, 0, "1e-8", "1", NULL, "adaptive stepper relative tolerance" },
+    { "t_skip", K_DOUBLE, OFF(t_skip), 0, 0, INF, 0, 0, "10", "s", NULL, "transient discarded before QoIs" },
+    { "velocity_jump", K_BOOL, OFF(velocity_jump), 0, 0, 0, 0, 0, "true", "", NULL, "apply Eqs. 12 and 14" },
+    { "exact_section", K_BOOL, OFF(exact_section), 0, 0, 0, 0, 0, "false", "", NULL, "stick test on the exact T = 0 section" },
+    { "history", K_BOOL, OFF(history), 0, 0, 0, 0, 0, "true", "", NULL, "keep the time history" },
+    /* the check */
+    { "check", K_STRING, OFF(check), sizeof(((sf_scene *)0)->check), 0, 0, 0, 0, "", "", NULL, "check to run (cases)" },
+    { "tolerance", K_DOUBLE, OFF(tolerance), 0, 0, INF, 0, 0, "0", "", NULL, "tolerance of the check (its units are the check's)" },
+    { "alpha", K_DOUBLE, OFF(alpha), 0, 0, 1, 1, 1, "1e-3", "1", NULL, "significance level of a statistical check" },
+    { "tier", K_ENUM, OFF(tier), 0, 0, 0, 0, 0, "quick", "", "quick|full", "verification tier" },
+    { "vv", K_ENUM, OFF(vv), 0, 0, 0, 0, 0, "code", "", "code|solution|validation", "code verification, solution verification or validation" },
+    { "tags", K_STRING, OFF(tags), sizeof(((sf_scene *)0)->tags), 0, 0, 0, 0, "", "", NULL, "comma-separated tags" },
+    { "sweep", K_LIST, OFF(sweep), 0, -INF, INF, 0, 0, "", "", NULL, "list of values a check sweeps over" },
+    { "sweep2", K_LIST, OFF(sweep2), 0, -INF, INF, 0, 0, "", "", NULL, "second list of values" },
+};
+
+#define NKEYS (sizeof keys / sizeof keys[0])
+_Static_assert(sizeof keys / sizeof keys[0] <= SF_SCENE_MAX_KEYS, "key table too large");
+
+static int seterr(char *err, size_t n, const char *fmt, ...)
+{
+    if (err && n) {
+        va_list ap;
+        va_start(ap, fmt);
+        vsnprintf(err, n, fmt, ap);
+        va_end(ap);
+    }
+    return SF_EPARSE;
+}
+
+static const key_t_ *find_key(const char *name, size_t len)
+{
+    for (size_t i = 0; i < NKEYS; i++)
+        if (strlen(keys[i].name) == len && strncmp(keys[i].name, name, len) == 0)
+            return &keys[i];
+    return NULL;
+}
+
+static int in_range(const key_t_ *k, double x)
+{
+    if (k->lo_open ? !(x > k->lo) : !(x >= k->lo)) return 0;
+    if (k->hi_open ? !(x < k->hi) : !(x <= k->hi)) return 0;
+    return 1;
+}
+
+static void range_text(const key_t_ *k, char *buf, size_t n)
+{
+    char lo[32] = "", hi[32] = "";
+    if (isfinite(k->lo)) snprintf(lo, sizeof lo, "%s %g", k->lo_open ? ">" : ">=", k->lo);
+    if (isfinite(k->hi)) snprintf(hi, sizeof hi, "%s %g", k->hi_open ? "<" : "<=", k->hi);
+    snprintf(buf, n, "%s%s%s", lo, (*lo && *hi) ? " and " : "", hi);
+}
+
+/* Parse one number occupying all of [s, s+len); finite only. */
+static int parse_double(const char *s, size_t len, double *out)
+{
+    char buf[64];
+    if (len == 0 || len >= sizeof buf)
+        return 0;
+    memcpy(buf, s, len);
+    buf[len] = '\0';
+    char *end;
+    errno = 0;
+    double x = strtod(buf, &end);
+    if (*end != '\0' || end == buf || !isfinite(x) || errno == ERANGE)
+        return 0;
+    *out = x;
+    return 1;
+}
+
+/* Assign the value text [v, v+len) to key k of scene s. */
+static int assign(sf_scene *s, const key_t_ *k, const char *v, size_t len,
+                  const char *file, int line, char *err, size_t errlen)
+{
+    char *base = (char *)s + k->off;
+    char rng[80];
+    range_text(k, rng, sizeof rng);
+    switch (k->type) {
+    case K_DOUBLE: {
+        double x;
+        if (!parse_double(v, len, &x))
+            return seterr(err, errlen, "%s:%d: key '%s': expected a finite number, got '%.*s'",
+                          file, line, k->name, (int)(len > 40 ? 40 : len), v);
+        if (!in_range(k, x))
+            return seterr(err, errlen, "%s:%d: key '%s': must be %s (got %g)",
+                          file, line, k->name, rng, x);
+        *(double *)base = x;
+        return SF_SUCCESS;
+    }
+    case K_SIZE:
+    case K_ULONG: {
+        double x;
+        int ok = parse_double(v, len, &x) && x == floor(x);
+        if (!ok || x < 0 || x > 1.8e19)
+            return seterr(err, errlen, "%s:%d: key '%s': expected a non-negative whole number, got '%.*s'",
+                          file, line, k->name, (int)(len > 40 ? 40 : len), v);
+        if (k->type == K_SIZE) {
+            if (!in_range(k, x))
+                return seterr(err, errlen, "%s:%d: key '%s': must be %s (got %g)",
+                              file, line, k->name, rng, x);
+            *(size_t *)base = (size_t)x;
+        } else {
+            /* seeds: parse exactly as an integer, not through a double */
+            char buf[32];
+            if (len >= sizeof buf)
+                return seterr(err, errlen, "%s:%d: key '%s': value too long", file, line, k->name);
+            memcpy(buf, v, len);
+            buf[len] = '\0';
+            errno = 0;
+            char *end;
+            unsigned long u = strtoul(buf, &end, 10);
+            if (*end || errno == ERANGE || buf[0] == '-')
+                return seterr(err, errlen, "%s:%d: key '%s': expected a non-negative whole number, got '%s'",
+                              file, line, k->name, buf);
+            *(unsigned long *)base = u;
+        }
+        return SF_SUCCESS;
+    }
+    case K_BOOL: {
+        static const char *t[] = { "true", "yes", "on", "1" }, *f[] = { "false", "no", "off", "0" };
+        for (int i = 0; i < 4; i++) {
+            if (strlen(t[i]) == len && strncmp(v, t[i], len) == 0) { *(int *)base = 1; return SF_SUCCESS; }
+            if (strlen(f[i]) == len && strncmp(v, f[i], len) == 0) { *(int *)base = 0; return SF_SUCCESS; }
+        }
+        return seterr(err, errlen, "%s:%d: key '%s': expected true or false, got '%.*s'",
+                      file, line, k->name, (int)(len > 40 ? 40 : len), v);
+    }
+    case K_ENUM: {
+        const char *c = k->choices;
+        int idx = 0;
+        while (*c) {
+            const char *bar = strchr(c, '|');
+            size_t cl = bar ? (size_t)(bar - c) : strlen(c);
+            if (cl == len && strncmp(c, v, len) == 0) {
+                *(int *)base = idx;
+                return SF_SUCCESS;
+            }
+            idx++;
+            c += cl + (bar ? 1 : 0);
+        }
+        return seterr(err, errlen, "%s:%d: key '%s': expected one of %s, got '%.*s'",
+                      file, line, k->name, k->choices, (int)(len > 40 ? 40 : len), v);
+    }
+    case K_STRING: {
+        if (len >= k->size)
+            return seterr(err, errlen, "%s:%d: key '%s': value longer than %zu characters",
+                          file, line, k->name, k->size - 1);
+        for (size_t i = 0; i < len; i++) {
+            unsigned char ch = (unsigned char)v[i];
+            if (!(isalnum(ch) || ch == '_' || ch == '-' || ch == ',' || ch == '.'))
+                return seterr(err, errlen, "%s:%d: key '%s': only letters, digits and _-,. are allowed",
+                              file, line, k->name);
+        }
+        memcpy(base, v, len);
+        base[len] = '\0';
+        return SF_SUCCESS;
+    }
+    case K_LIST: {
+        sf_list *l = (sf_list *)base;
+        l->n = 0;
+        size_t i = 0;
+        while (i < len) {
+            size_t j = i;
+            while (j < len && v[j] != ',') j++;
+            size_t a = i, b = j;
+            while (a < b && isspace((unsigned char)v[a])) a++;
+            while (b > a && isspace((unsigned char)v[b - 1])) b--;
+            double x;
+            if (!parse_double(v + a, b - a, &x))
+                return seterr(err, errlen, "%s:%d: key '%s': item %zu is not a finite number",
+                              file, line, k->name, l->n + 1);
+            if (l->n == SF_LIST_MAX)
+                return seterr(err, errlen, "%s:%d: key '%s': more than %d values",
+                              file, line, k->name, SF_LIST_MAX);
+            l->v[l->n++] = x;
+            i = j + 1;
+            if (j < len && j + 1 == len)
+                return seterr(err, errlen, "%s:%d: key '%s': trailing comma", file, line, k->name);
+        }
+        return SF_SUCCESS;
+    }
+    }
+    return SF_EPARSE;
+}
+
+void sf_scene_default(sf_scene *s)
+{
+    memset(s, 0, sizeof *s);
+    char err[256];
+    for (size_t i = 0; i < NKEYS; i++) {
+        int rc = assign(s, &keys[i], keys[i].def, strlen(keys[i].def), "<defaults>", 0, err, sizeof err);
+        (void)rc; /* the table's defaults are covered by a unit test */
+    }
+    memset(s->set, 0, sizeof s->set);
+}
+
+int sf_scene_parse(sf_scene *s, const char *text, const char *file,
+                   int first_line, char *err, size_t errlen)
+{
+    int line = first_line;
+    const char *p = text;
+    while (*p) {
+        const char *eol = strchr(p, '\n');
+        size_t len = eol ? (size_t)(eol - p) : strlen(p);
+        /* strip comment and surrounding blanks */
+        const char *hash = memchr(p, '#', len);
+        size_t n = hash ? (size_t)(hash - p) : len;
+        size_t a = 0, b = n;
+        while (a < b && isspace((unsigned char)p[a])) a++;
+        while (b > a && isspace((unsigned char)p[b - 1])) b--;
+        if (a < b) {
+            const char *q = p + a;
+            size_t ql = b - a;
+            for (size_t i = 0; i < ql; i++)
+                if (q[i] == '\0' || (!isprint((unsigned char)q[i]) && q[i] != '\t'))
+                    return seterr(err, errlen, "%s:%d: non-printable character in scene line", file, line);
+            const char *eq = memchr(q, '=', ql);
+            if (!eq)
+                return seterr(err, errlen, "%s:%d: expected 'key = value', got '%.*s'",
+                              file, line, (int)(ql > 40 ? 40 : ql), q);
+            size_t kl = (size_t)(eq - q);
+            while (kl > 0 && isspace((unsigned char)q[kl - 1])) kl--;
+            if (kl == 0)
+                return seterr(err, errlen, "%s:%d: missing key before '='", file, line);
+            const key_t_ *k = find_key(q, kl);
+            if (!k)
+                return seterr(err, errlen, "%s:%d: unknown key '%.*s' (see 'slipfield help scene')",
+                              file, line, (int)(kl > 40 ? 40 : kl), q);
+            size_t idx = (size_t)(k - keys);
+            if (s->set[idx])
+                return seterr(err, errlen, "%s:%d: key '%s': set twice", file, line, k->name);
+            const char *v = eq + 1;
+            size_t vl = (size_t)(q + ql - v);
+            while (vl > 0 && isspace((unsigned char)*v)) { v++; vl--; }
+            if (vl == 0)
+                return seterr(err, errlen, "%s:%d: key '%s': missing value", file, line, k->name);
+            int rc = assign(s, k, v, vl, file, line, err, errlen);
+            if (rc)
+                return rc;
+            s->set[idx] = 1;
+        }
+        if (!eol)
+            break;
+        p = eol + 1;
+        line++;
+    }
+    return SF_SUCCESS;
+}
+
+int sf_scene_read_file(sf_scene *s, const char *path, char *err, size_t errlen)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) {
+        seterr(err, errlen, "%s: cannot open: %s", path, strerror(errno));
+        return SF_EIO;
+    }
+    size_t cap = 1u << 20, n;
+    char *buf = malloc(cap + 1);
+    if (!buf) {
+        fclose(f);
+        return SF_ENOMEM;
+    }
+    n = fread(buf, 1, cap + 1, f);
+    fclose(f);
+    if (n > cap) {
+        free(buf);
+        return seterr(err, errlen, "%s: scene file larger than 1 MiB", path);
+    }
+    buf[n] = '\0';
+    if (strlen(buf) != n) {
+        free(buf);
+        return seterr(err, errlen, "%s: scene file contains a NUL byte", path);
+    }
+    int rc = sf_scene_parse(s, buf, path, 1, err, errlen);
+    free(buf);
+    return rc;
+}
+
+int sf_scene_was_set(const sf_scene *s, const char *key)
+{
+    const key_t_ *k = find_key(key, strlen(key));
+    return k ? s->set[k - keys] : 0;
+}
+
+const char *sf_scene_enum_name(const char *key, int value)
+{
+    static char buf[64];
+    const key_t_ *k = find_key(key, strlen(key));
+    if (!k || k->type != K_ENUM)
+        return "?";
+    const char *c = k->choices;
+    for (int i = 0; *c; i++) {
+        const char *bar = strchr(c, '|');
+        size_t cl = bar ? (size_t)(bar - c) : strlen(c);
+        if (i == value) {
+            snprintf(buf, sizeof buf, "%.*s", (int)cl, c);
+            return buf;
+        }
+        c += cl + (bar ? 1 : 0);
+    }
+    return "?";
+}
+
+static void write_value(const sf_scene *s, const key_t_ *k, FILE *out)
+{
+    const char *base = (const char *)s + k->off;
+    switch (k->type) {
+    case K_DOUBLE: fprintf(out, "%.17g", *(const double *)base); break;
+    case K_SIZE: fprintf(out, "%zu", *(const size_t *)base); break;
+    case K_ULONG: fprintf(out, "%lu", *(const unsigned long *)base); break;
+    case K_BOOL: fputs(*(const int *)base ? "true" : "false", out); break;
+    case K_ENUM: fputs(sf_scene_enum_name(k->name, *(const int *)base), out); break;
+    case K_STRING: fputs(base, out); break;
+    case K_LIST: {
+        const sf_list *l = (const sf_list *)base;
+        for (size_t i = 0; i < l->n; i++)
+            fprintf(out, "%s%.17g", i ? ", " : "", l->v[i]);
+        break;
+    }
+    }
+}
+
+void sf_scene_write(const sf_scene *s, FILE *out)
+{
+    for (size_t i = 0; i < NKEYS; i++) {
+        fprintf(out, "%s = ", keys[i].name);
+        write_value(s, &keys[i], out);
+        fputc('\n', out);
+    }
+}
+
+void sf_scene_print_keys(FILE *out)
+{
+    fprintf(out, "%-14s %-7s %-10s %-24s %s\n", "key", "unit", "default", "range/choices", "meaning");
+    for (size_t i = 0; i < NKEYS; i++) {
+        char rng[80];
+        if (keys[i].type == K_ENUM)
+            snprintf(rng, sizeof rng, "%s", keys[i].choices);
+        else if (keys[i].type == K_DOUBLE || keys[i].type == K_SIZE)
+            range_text(&keys[i], rng, sizeof rng);
+        else
+            rng[0] = '\0';
+        fprintf(out, "%-14s %-7s %-10s %-24s %s\n", keys[i].name, keys[i].unit,
+                keys[i].def, rng, keys[i].help);
+    }
+}

@@ -1,0 +1,80 @@
+/* slipfield: scenes.  A scene is `key = value` lines (`#` comments), SI
+ * units, defaults from the paper's Table 1 stochastic baseline.  Parsing is
+ * strict: unknown or duplicate keys, missing values, NaN/Inf and
+ * out-of-range values are errors naming file, line and key.
+ *
+ * One table (scene.c) describes every key: type, unit, default, range and
+ * a one-line help; `slipfield help scene` prints it.
+ */
+#ifndef SF_SCENE_H
+#define SF_SCENE_H
+
+#include <stddef.h>
+#include <stdio.h>
+
+#define SF_LIST_MAX 64
+#define SF_SCENE_MAX_KEYS 128
+
+typedef struct {
+    size_t n;
+    double v[SF_LIST_MAX];
+} sf_list;
+
+enum { SF_TIER_QUICK = 0, SF_TIER_FULL = 1 };
+enum { SF_VV_CODE = 0, SF_VV_SOLUTION = 1, SF_VV_VALIDATION = 2 };
+enum { SF_INTEG_ADAPTIVE = 0, SF_INTEG_RK4 = 1 };
+
+typedef struct {
+    /* physics (Table 1) */
+    double m, k, v_b, R, l, mu_mean, mu_std, mu_k_ratio, g, T, eps_lambda, dt;
+    unsigned long seed;
+    int cof;                 /* sf_cof_kind: uniform, variable, field */
+    /* random-field grid */
+    size_t nx, ny;
+    double dx, dy, pad_cap, eig_tol;
+    int no_padding, precorrect;
+    size_t samples;
+    /* contact */
+    int layout;              /* sf_layout */
+    size_t cells;
+    double u, v, w;          /* relative velocity [m/s] and spin [rad/s] */
+    size_t ntheta, npsi;     /* limit-surface direction grid */
+    /* dynamics */
+    int integrator;
+    double rtol, t_skip;
+    int velocity_jump, exact_section, history;
+    /* the check a case runs */
+    char check[64];
+    double tolerance, alpha;
+    int tier, vv;
+    char tags[128];
+    sf_list sweep, sweep2;
+    /* which keys the file set (index into the key table) */
+    unsigned char set[SF_SCENE_MAX_KEYS];
+} sf_scene;
+
+/* Table 1 defaults. */
+void sf_scene_default(sf_scene *s);
+
+/* Parse `text` (NUL-terminated) into *s (which should hold defaults).
+ * `file` and `first_line` are used in messages: "file:line: key 'k': ...".
+ * Returns SF_SUCCESS or SF_EPARSE with the message in err. */
+int sf_scene_parse(sf_scene *s, const char *text, const char *file,
+                   int first_line, char *err, size_t errlen);
+
+/* Read and parse a whole scene file (at most 1 MiB). SF_EIO, SF_EPARSE. */
+int sf_scene_read_file(sf_scene *s, const char *path, char *err, size_t errlen);
+
+/* Whether a key was set by the file (by name; unknown names -> 0). */
+int sf_scene_was_set(const sf_scene *s, const char *key);
+
+/* Write the effective scene as `key = value` lines (all keys). */
+void sf_scene_write(const sf_scene *s, FILE *out);
+
+/* Print the key table (name, unit, default, range, help). */
+void sf_scene_print_keys(FILE *out);
+
+/* Names of the enum values, for messages and reports. */
+const char *sf_scene_enum_name(const char *key, int value);
+
+#endif

@@ -1,0 +1,16 @@
+#include "sf_error.h"
+
+const char *sf_strerror(int code)
+{
+    switch (code) {
+    case SF_SUCCESS: return "success";
+    case SF_EINVAL:  return "invalid argument";
+    case SF_ENOMEM:  return "out of memory or size overflow";
+    case SF_ECAP:    return "embedding padding cap reached (covariance truncated)";
+    case SF_EIO:     return "input/output error";
+    case SF_EPARSE:  return "parse error";
+    case SF_EFAIL:   return "numerical failure";
+    case SF_EMAXITER: return "iteration limit reached";
+    default:         return "unknown error";
+    }
+}

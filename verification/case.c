@@ -1,0 +1,186 @@
+#include "case.h"
+#include "registry.h"
+#include "sf_error.h"
+
+#include <errno.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static int fail(char *err, size_t n, int code, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(err, n, fmt, ap);
+    va_end(ap);
+    return code;
+}
+
+static char *dup_range(const char *a, const char *b)
+{
+    size_t n = (size_t)(b - a);
+    char *s = malloc(n + 1);
+    if (!s) {
+        fputs("slipfield: out of memory\n", stderr);
+        exit(3);
+    }
+    memcpy(s, a, n);
+    s[n] = '\0';
+    return s;
+}
+
+static int valid_name(const char *s, size_t n)
+{
+    if (n == 0)
+        return 0;
+    for (size_t i = 0; i < n; i++) {
+        char c = s[i];
+        if (!((c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' || c == '-'))
+            return 0;
+    }
+    return 1;
+}
+
+/* id from the path: the last two components, without ".md". */
+static int make_id(sf_case *c, const char *path, char *err, size_t errlen)
+{
+    size_t len = strlen(path);
+    if (len < 4 || strcmp(path + len - 3, ".md") != 0)
+        return fail(err, errlen, SF_EPARSE, "%s: a case file must end in .md", path);
+    const char *end = path + len - 3;
+    const char *slash = end;
+    while (slash > path && slash[-1] != '/') slash--;
+    if (slash == path)
+        return fail(err, errlen, SF_EPARSE, "%s: a case must live in a family folder (cases/<family>/<name>.md)", path);
+    const char *fam_end = slash - 1, *fam = fam_end;
+    while (fam > path && fam[-1] != '/') fam--;
+    size_t fl = (size_t)(fam_end - fam), nl = (size_t)(end - slash);
+    if (!valid_name(fam, fl) || !valid_name(slash, nl) || fl + nl + 2 > sizeof c->id || fl + 1 > sizeof c->family)
+        return fail(err, errlen, SF_EPARSE,
+                    "%s: family and case names must be lower-case letters, digits, '_' or '-'", path);
+    snprintf(c->family, sizeof c->family, "%.*s", (int)fl, fam);
+    snprintf(c->id, sizeof c->id, "%.*s/%.*s", (int)fl, fam, (int)nl, slash);
+    return SF_SUCCESS;
+}
+
+int sf_case_read(sf_case *c, const char *path, char *err, size_t errlen)
+{
+    memset(c, 0, sizeof *c);
+    if (strlen(path) >= sizeof c->path)
+        return fail(err, errlen, SF_EPARSE, "%s: path too long", path);
+    snprintf(c->path, sizeof c->path, "%s", path);
+    int rc = make_id(c, path, err, errlen);
+    if (rc)
+        return rc;
+
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return fail(err, errlen, SF_EIO, "%s: cannot open: %s", path, strerror(errno));
+    size_t cap = 1u << 20;
+    char *buf = malloc(cap + 1);
+    if (!buf) {
+        fclose(f);
+        return SF_ENOMEM;
+    }
+    size_t n = fread(buf, 1, cap + 1, f);
+    fclose(f);
+    if (n > cap) {
+        free(buf);
+        return fail(err, errlen, SF_EPARSE, "%s: case file larger than 1 MiB", path);
+    }
+    buf[n] = '\0';
+    if (strlen(buf) != n) {
+        free(buf);
+        return fail(err, errlen, SF_EPARSE, "%s: case file contains a NUL byte", path);
+    }
+
+    /* Walk lines: title, the single ```scene fence. */
+    const char *p = buf, *open = NULL, *body = NULL, *close_ = NULL, *after = NULL;
+    const char *title = NULL, *title_end = NULL, *after_title = buf;
+    int line = 1, open_line = 0;
+    while (*p) {
+        const char *eol = strchr(p, '\n');
+        const char *next = eol ? eol + 1 : p + strlen(p);
+        size_t len = (size_t)((eol ? eol : next) - p);
+        if (!open && !title && len > 2 && p[0] == '#' && p[1] == ' ') {
+            title = p + 2;
+            title_end = p + len;
+            after_title = next;
+        } else if (len >= 3 && strncmp(p, "```", 3) == 0) {
+            const char *info = p + 3;
+            size_t il = len - 3;
+            while (il && (info[il - 1] == ' ' || info[il - 1] == '\r')) il--;
+            int is_scene = il == 5 && strncmp(info, "scene", 5) == 0;
+            if (!open && is_scene) {
+                open = p;
+                body = next;
+                open_line = line;
+            } else if (open && !close_) {
+                if (il != 0) {
+                    free(buf);
+                    return fail(err, errlen, SF_EPARSE, "%s:%d: a fence inside the scene block", path, line);
+                }
+                close_ = p;
+                after = next;
+            } else if (is_scene) {
+                free(buf);
+                return fail(err, errlen, SF_EPARSE, "%s:%d: a second ```scene block (one per case)", path, line);
+            }
+        }
+        p = next;
+        line++;
+    }
+    if (!title) {
+        free(buf);
+        return fail(err, errlen, SF_EPARSE, "%s:1: a case starts with a '# Title' line", path);
+    }
+    if (!open) {
+        free(buf);
+        return fail(err, errlen, SF_EPARSE, "%s: no ```scene block", path);
+    }
+    if (!close_) {
+        free(buf);
+        return fail(err, errlen, SF_EPARSE, "%s:%d: unterminated ```scene block", path, open_line);
+    }
+    size_t tl = (size_t)(title_end - title);
+    while (tl && (title[tl - 1] == '\r' || title[tl - 1] == ' ')) tl--;
+    snprintf(c->title, sizeof c->title, "%.*s", (int)tl, title);
+    c->prose_before = dup_range(after_title < open ? after_title : open, open);
+    c->prose_after = dup_range(after, buf + n);
+    c->scene_text = dup_range(body, close_);
+    c->scene_line = open_line + 1;
+    free(buf);
+
+    sf_scene_default(&c->scene);
+    rc = sf_scene_parse(&c->scene, c->scene_text, path, c->scene_line, err, errlen);
+    if (rc)
+        return rc;
+    if (!sf_scene_was_set(&c->scene, "check"))
+        return fail(err, errlen, SF_EPARSE, "%s:%d: the scene block has no 'check = NAME'", path, c->scene_line);
+    if (!sf_check_find(c->scene.check))
+        return fail(err, errlen, SF_EPARSE, "%s: key 'check': unknown check '%s' (see 'slipfield verify --checks')",
+                    path, c->scene.check);
+    if (!sf_scene_was_set(&c->scene, "tolerance") && !sf_scene_was_set(&c->scene, "alpha"))
+        return fail(err, errlen, SF_EPARSE, "%s:%d: the scene states neither 'tolerance' nor 'alpha'", path, c->scene_line);
+    return SF_SUCCESS;
+}
+
+void sf_case_free(sf_case *c)
+{
+    free(c->prose_before);
+    free(c->prose_after);
+    free(c->scene_text);
+    c->prose_before = c->prose_after = c->scene_text = NULL;
+}
+
+gsl_rng *sf_case_rng(const sf_case *c)
+{
+    gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
+    if (!r) {
+        fputs("slipfield: out of memory\n", stderr);
+        exit(3);
+    }
+    gsl_rng_set(r, c->scene.seed);
+    return r;
+}

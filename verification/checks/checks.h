@@ -1,0 +1,10 @@
+/* One table of checks per family (verification/checks/<family>.c). */
+#ifndef SF_CHECKS_H
+#define SF_CHECKS_H
+
+#include "../registry.h"
+
+extern const sf_check_def sf_checks_field[];
+extern const sf_check_def sf_checks_lognormal[];
+
+#endif

@@ -1,0 +1,2 @@
+#include "checks.h"
+const sf_check_def sf_checks_field[] = { { NULL, NULL, NULL } };

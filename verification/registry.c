@@ -1,0 +1,30 @@
+#include "registry.h"
+#include "checks/checks.h"
+
+#include <string.h>
+
+static const sf_check_def *const families[] = {
+    sf_checks_field,
+    sf_checks_lognormal,
+};
+
+const sf_check_def *sf_check_at(size_t i)
+{
+    for (size_t f = 0; f < sizeof families / sizeof families[0]; f++) {
+        for (const sf_check_def *d = families[f]; d->name; d++) {
+            if (i == 0)
+                return d;
+            i--;
+        }
+    }
+    return NULL;
+}
+
+const sf_check_def *sf_check_find(const char *name)
+{
+    const sf_check_def *d;
+    for (size_t i = 0; (d = sf_check_at(i)); i++)
+        if (strcmp(d->name, name) == 0)
+            return d;
+    return NULL;
+}

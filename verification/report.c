@@ -1,0 +1,308 @@
+#include "report.h"
+#include "sf_error.h"
+#include "version.h"
+
+#include <dirent.h>
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+#include <fftw3.h>
+#include <gsl/gsl_version.h>
+
+const char *sf_verdict_name(int v)
+{
+    return v == SF_VERDICT_PASS ? "PASS" : v == SF_VERDICT_FAIL ? "FAIL" : "ERROR";
+}
+
+static const char *vv_name(int vv)
+{
+    return vv == 0 ? "code verification" : vv == 1 ? "solution verification" : "validation";
+}
+
+int sf_mkdirs(const char *path)
+{
+    char buf[1024];
+    if (strlen(path) >= sizeof buf)
+        return -1;
+    strcpy(buf, path);
+    for (char *p = buf + 1; *p; p++) {
+        if (*p == '/') {
+            *p = '\0';
+            if (mkdir(buf, 0777) != 0 && errno != EEXIST)
+                return -1;
+            *p = '/';
+        }
+    }
+    if (mkdir(buf, 0777) != 0 && errno != EEXIST)
+        return -1;
+    return 0;
+}
+
+/* Remove the regular files of a directory we own, then the directory. */
+static void remove_dir(const char *dir)
+{
+    DIR *d = opendir(dir);
+    if (!d)
+        return;
+    struct dirent *e;
+    char p[1200];
+    while ((e = readdir(d))) {
+        if (!strcmp(e->d_name, ".") || !strcmp(e->d_name, ".."))
+            continue;
+        snprintf(p, sizeof p, "%s/%s", dir, e->d_name);
+        unlink(p);
+    }
+    closedir(d);
+    rmdir(dir);
+}
+
+static void fmt_num(char *buf, size_t n, double x)
+{
+    if (isnan(x))
+        snprintf(buf, n, "—");
+    else
+        snprintf(buf, n, "%.6g", x);
+}
+
+/* Markdown table cells must not contain '|'. */
+static void cell(FILE *f, const char *s)
+{
+    for (; *s; s++)
+        fputs(*s == '|' ? "\\|" : (char[2]){ *s, 0 }, f);
+}
+
+static void write_rerun(FILE *f, const sf_case *c)
+{
+    fprintf(f, "- Re-run: `build/slipfield verify %s` (or `make verify CASES=%s`)\n", c->path, c->path);
+}
+
+/* Write into <root>/<family>/.<name>.tmpPID, then swap it in. */
+static int open_tmp_dir(const char *root, const char *id, char *tmp, size_t tn,
+                        char *fin, size_t fn)
+{
+    const char *slash = strchr(id, '/');
+    snprintf(fin, fn, "%s/%s", root, id);
+    snprintf(tmp, tn, "%s/%.*s/.%s.tmp%ld", root, (int)(slash - id), id, slash + 1, (long)getpid());
+    remove_dir(tmp);
+    return sf_mkdirs(tmp);
+}
+
+static int commit_dir(const char *tmp, const char *fin)
+{
+    remove_dir(fin);
+    return rename(tmp, fin);
+}
+
+static void write_header(FILE *f, const sf_case *c, const sf_outcome *o)
+{
+    fprintf(f, "# %s\n\n", c->title);
+    fprintf(f, "- Case: `%s` (`%s`)\n", c->id, c->path);
+    fprintf(f, "- Kind: %s; tier: %s; check: `%s`\n", vv_name(c->scene.vv),
+            c->scene.tier ? "full" : "quick", c->scene.check);
+    fprintf(f, "- Verdict: **%s**\n", sf_verdict_name(o->verdict));
+    fprintf(f, "- Run time: %.3f s\n", o->seconds);
+    write_rerun(f, c);
+    fprintf(f, "\n%s\n", c->prose_before);
+    fprintf(f, "## Scene\n\n```scene\n%s```\n\n", c->scene_text);
+}
+
+int sf_report_case(const char *root, const sf_case *c, const sf_result *r,
+                   const sf_outcome *o, const char *error, char *err, size_t errlen)
+{
+    char tmp[1024], fin[1024], path[1200];
+    if (open_tmp_dir(root, c->id, tmp, sizeof tmp, fin, sizeof fin) != 0) {
+        snprintf(err, errlen, "cannot create %s: %s", tmp, strerror(errno));
+        return SF_EIO;
+    }
+    char perr[256] = "";
+    int plots_ok = sf_result_render_plots(r, tmp, perr, sizeof perr) == 0;
+
+    snprintf(path, sizeof path, "%s/report.md", tmp);
+    FILE *f = fopen(path, "w");
+    if (!f) {
+        snprintf(err, errlen, "cannot write %s: %s", path, strerror(errno));
+        return SF_EIO;
+    }
+    write_header(f, c, o);
+    fprintf(f, "## Results\n\n| quantity | measured | expected | criterion | pass |\n|---|---|---|---|---|\n");
+    for (size_t i = 0; i < sf_result_nrows(r); i++) {
+        const sf_row *row = sf_result_row(r, i);
+        char m[48], e[48];
+        fmt_num(m, sizeof m, row->measured);
+        fmt_num(e, sizeof e, row->expected);
+        fputs("| ", f);
+        cell(f, row->quantity);
+        fprintf(f, " | %s | %s | ", m, e);
+        cell(f, row->criterion);
+        fprintf(f, " | %s |\n", row->pass ? "yes" : "**no**");
+    }
+    if (sf_result_nrows(r) == 0)
+        fprintf(f, "| (no check row was produced: the case cannot pass) | | | | **no** |\n");
+    fputc('\n', f);
+    if (error && *error)
+        fprintf(f, "**Error:** %s\n\n", error);
+    if (*sf_result_notes(r))
+        fprintf(f, "## Findings\n\n%s\n", sf_result_notes(r));
+    if (sf_result_nplots(r)) {
+        fprintf(f, "## Plots\n\n");
+        if (!plots_ok)
+            fprintf(f, "**Plots could not be rendered:** %s\n\n", perr);
+        for (size_t i = 0; i < sf_result_nplots(r); i++) {
+            const sf_plot *p = sf_result_get_plot(r, i);
+            fprintf(f, "![%s](%s.png)\n\n", sf_plot_title(p), sf_plot_stem(p));
+        }
+    }
+    if (c->prose_after && *c->prose_after)
+        fprintf(f, "## Notes from the case\n%s\n", c->prose_after);
+    int bad = ferror(f);
+    if (fclose(f) != 0 || bad) {
+        snprintf(err, errlen, "error writing %s", path);
+        return SF_EIO;
+    }
+    if (commit_dir(tmp, fin) != 0) {
+        snprintf(err, errlen, "cannot rename %s to %s: %s", tmp, fin, strerror(errno));
+        return SF_EIO;
+    }
+    if (!plots_ok) {
+        snprintf(err, errlen, "%s", perr);
+        return SF_EIO;
+    }
+    return SF_SUCCESS;
+}
+
+int sf_report_crash(const char *root, const sf_case *c, const sf_outcome *o,
+                    char *err, size_t errlen)
+{
+    char tmp[1024], fin[1024], path[1200];
+    if (open_tmp_dir(root, c->id, tmp, sizeof tmp, fin, sizeof fin) != 0) {
+        snprintf(err, errlen, "cannot create %s", tmp);
+        return SF_EIO;
+    }
+    snprintf(path, sizeof path, "%s/report.md", tmp);
+    FILE *f = fopen(path, "w");
+    if (!f) {
+        snprintf(err, errlen, "cannot write %s", path);
+        return SF_EIO;
+    }
+    write_header(f, c, o);
+    fprintf(f, "## Results\n\n**The case did not complete:** %s\n", o->key);
+    fclose(f);
+    return commit_dir(tmp, fin) == 0 ? SF_SUCCESS : SF_EIO;
+}
+
+static void xml_escape(FILE *f, const char *s)
+{
+    for (; *s; s++) {
+        switch (*s) {
+        case '&': fputs("&amp;", f); break;
+        case '<': fputs("&lt;", f); break;
+        case '>': fputs("&gt;", f); break;
+        case '"': fputs("&quot;", f); break;
+        case '\'': fputs("&apos;", f); break;
+        default:
+            if ((unsigned char)*s >= 32 || *s == '\n' || *s == '\t')
+                fputc(*s, f);
+        }
+    }
+}
+
+static FILE *open_tmp(const char *fin, char *tmp, size_t n)
+{
+    snprintf(tmp, n, "%s.tmp%ld", fin, (long)getpid());
+    return fopen(tmp, "w");
+}
+
+int sf_report_index(const sf_run_meta *meta, const sf_outcome *o, size_t n,
+                    char *err, size_t errlen)
+{
+    size_t np = 0, nf = 0, ne = 0;
+    for (size_t i = 0; i < n; i++) {
+        if (o[i].verdict == SF_VERDICT_PASS) np++;
+        else if (o[i].verdict == SF_VERDICT_FAIL) nf++;
+        else ne++;
+    }
+    char fin[1024], tmp[1100];
+    snprintf(fin, sizeof fin, "%s/index.md", meta->root);
+    FILE *f = open_tmp(fin, tmp, sizeof tmp);
+    if (!f) {
+        snprintf(err, errlen, "cannot write %s", tmp);
+        return SF_EIO;
+    }
+    fprintf(f, "# slipfield verification report\n\n");
+    fprintf(f, "- Cases: %zu passed, %zu failed, %zu errors (of %zu)\n", np, nf, ne, n);
+    fprintf(f, "- Tier: %s; seeds: %s; total time: %.1f s\n", meta->tier_name, meta->seed_note, meta->total_seconds);
+    fprintf(f, "- slipfield %s (%s); GSL %s; %s\n\n", SF_VERSION, SF_GIT_REV, GSL_VERSION, fftw_version);
+    fprintf(f, "| case | family | kind | verdict | key metric | time [s] |\n|---|---|---|---|---|---|\n");
+    for (size_t i = 0; i < n; i++) {
+        fprintf(f, "| [%s](%s/report.md) | %s | %s | %s | ", o[i].id, o[i].id, o[i].family,
+                vv_name(o[i].vv), o[i].verdict == SF_VERDICT_PASS ? "PASS" : sf_verdict_name(o[i].verdict));
+        cell(f, o[i].key);
+        fprintf(f, " | %.2f |\n", o[i].seconds);
+    }
+    if (fclose(f) != 0 || rename(tmp, fin) != 0) {
+        snprintf(err, errlen, "cannot write %s", fin);
+        return SF_EIO;
+    }
+
+    snprintf(fin, sizeof fin, "%s/junit.xml", meta->root);
+    f = open_tmp(fin, tmp, sizeof tmp);
+    if (!f) {
+        snprintf(err, errlen, "cannot write %s", tmp);
+        return SF_EIO;
+    }
+    fprintf(f, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
+    fprintf(f, "<testsuites name=\"slipfield verify\" tests=\"%zu\" failures=\"%zu\" errors=\"%zu\" time=\"%.3f\">\n",
+            n, nf, ne, meta->total_seconds);
+    /* one testsuite per family, in order of first appearance */
+    for (size_t i = 0; i < n; i++) {
+        int seen = 0;
+        for (size_t j = 0; j < i; j++)
+            if (!strcmp(o[j].family, o[i].family)) seen = 1;
+        if (seen)
+            continue;
+        size_t t = 0, fl = 0, er = 0;
+        double secs = 0;
+        for (size_t j = i; j < n; j++)
+            if (!strcmp(o[j].family, o[i].family)) {
+                t++;
+                fl += o[j].verdict == SF_VERDICT_FAIL;
+                er += o[j].verdict == SF_VERDICT_ERROR;
+                secs += o[j].seconds;
+            }
+        fprintf(f, "  <testsuite name=\"");
+        xml_escape(f, o[i].family);
+        fprintf(f, "\" tests=\"%zu\" failures=\"%zu\" errors=\"%zu\" skipped=\"0\" time=\"%.3f\">\n", t, fl, er, secs);
+        for (size_t j = i; j < n; j++) {
+            if (strcmp(o[j].family, o[i].family))
+                continue;
+            fprintf(f, "    <testcase classname=\"slipfield.");
+            xml_escape(f, o[j].family);
+            fprintf(f, "\" name=\"");
+            xml_escape(f, o[j].id);
+            fprintf(f, "\" file=\"");
+            xml_escape(f, o[j].path);
+            fprintf(f, "\" time=\"%.3f\"", o[j].seconds);
+            if (o[j].verdict == SF_VERDICT_PASS) {
+                fprintf(f, "/>\n");
+                continue;
+            }
+            fprintf(f, ">\n      <%s message=\"", o[j].verdict == SF_VERDICT_FAIL ? "failure" : "error");
+            xml_escape(f, o[j].key);
+            fprintf(f, "\" type=\"%s\">", o[j].verdict == SF_VERDICT_FAIL ? "CheckFailed" : "CaseError");
+            xml_escape(f, o[j].key);
+            fprintf(f, "\nSee %s/%s/report.md</%s>\n    </testcase>\n", meta->root, o[j].id,
+                    o[j].verdict == SF_VERDICT_FAIL ? "failure" : "error");
+        }
+        fprintf(f, "  </testsuite>\n");
+    }
+    fprintf(f, "</testsuites>\n");
+    if (fclose(f) != 0 || rename(tmp, fin) != 0) {
+        snprintf(err, errlen, "cannot write %s", fin);
+        return SF_EIO;
+    }
+    return SF_SUCCESS;
+}

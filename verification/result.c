@@ -1,0 +1,444 @@
+#include "result.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/types.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+typedef struct {
+    char label[96];
+    int style;       /* SF_STYLE_*, or -1 band, -2 hline */
+    size_t n;
+    double *x, *y, *y2;
+} series;
+
+struct sf_plot {
+    char stem[64], title[160], xlabel[96], ylabel[96];
+    int logx, logy;
+    series *s;
+    size_t ns;
+};
+
+struct sf_result {
+    sf_row *rows;
+    size_t nrows;
+    char *notes;
+    size_t notes_len;
+    sf_plot **plots;
+    size_t nplots;
+};
+
+static void *xrealloc(void *p, size_t n)
+{
+    void *q = realloc(p, n);
+    if (!q) {
+        fputs("slipfield: out of memory\n", stderr);
+        exit(3);
+    }
+    return q;
+}
+
+sf_result *sf_result_alloc(void)
+{
+    sf_result *r = calloc(1, sizeof *r);
+    if (!r) {
+        fputs("slipfield: out of memory\n", stderr);
+        exit(3);
+    }
+    return r;
+}
+
+void sf_result_free(sf_result *r)
+{
+    if (!r)
+        return;
+    for (size_t i = 0; i < r->nplots; i++) {
+        sf_plot *p = r->plots[i];
+        for (size_t j = 0; j < p->ns; j++) {
+            free(p->s[j].x);
+            free(p->s[j].y);
+            free(p->s[j].y2);
+        }
+        free(p->s);
+        free(p);
+    }
+    free(r->plots);
+    free(r->rows);
+    free(r->notes);
+    free(r);
+}
+
+static sf_row *add_row(sf_result *r, const char *q)
+{
+    r->rows = xrealloc(r->rows, (r->nrows + 1) * sizeof *r->rows);
+    sf_row *row = &r->rows[r->nrows++];
+    memset(row, 0, sizeof *row);
+    snprintf(row->quantity, sizeof row->quantity, "%s", q);
+    row->expected = NAN;
+    return row;
+}
+
+/* NaN measured values always fail: comparisons below are written so that
+ * a NaN makes the predicate false. */
+int sf_check_abs(sf_result *r, const char *q, double m, double e, double tol)
+{
+    sf_row *row = add_row(r, q);
+    row->measured = m;
+    row->expected = e;
+    double d = fabs(m - e);
+    snprintf(row->criterion, sizeof row->criterion, "|diff| <= %.3g", tol);
+    row->ratio = tol > 0 ? d / tol : (d == 0 ? 0 : INFINITY);
+    row->pass = d <= tol;
+    return row->pass;
+}
+
+int sf_check_rel(sf_result *r, const char *q, double m, double e, double tol)
+{
+    sf_row *row = add_row(r, q);
+    row->measured = m;
+    row->expected = e;
+    double d = fabs(m - e), b = tol * fabs(e);
+    snprintf(row->criterion, sizeof row->criterion, "|rel diff| <= %.3g", tol);
+    row->ratio = b > 0 ? d / b : (d == 0 ? 0 : INFINITY);
+    row->pass = d <= b;
+    return row->pass;
+}
+
+int sf_check_le(sf_result *r, const char *q, double m, double bound)
+{
+    sf_row *row = add_row(r, q);
+    row->measured = m;
+    snprintf(row->criterion, sizeof row->criterion, "<= %.3g", bound);
+    row->ratio = bound != 0 ? m / bound : (m <= 0 ? 0 : INFINITY);
+    row->pass = m <= bound;
+    return row->pass;
+}
+
+int sf_check_ge(sf_result *r, const char *q, double m, double bound)
+{
+    sf_row *row = add_row(r, q);
+    row->measured = m;
+    snprintf(row->criterion, sizeof row->criterion, ">= %.3g", bound);
+    row->ratio = m != 0 ? bound / m : INFINITY;
+    if (bound <= 0 && m >= bound)
+        row->ratio = 0;
+    row->pass = m >= bound;
+    return row->pass;
+}
+
+int sf_check_pvalue(sf_result *r, const char *test, double p, double alpha, size_t n)
+{
+    char q[160];
+    snprintf(q, sizeof q, "%s (n = %zu): p-value", test, n);
+    sf_row *row = add_row(r, q);
+    row->measured = p;
+    snprintf(row->criterion, sizeof row->criterion, "p >= alpha = %.3g", alpha);
+    row->ratio = p > 0 ? alpha / p : INFINITY;
+    row->pass = p >= alpha;
+    return row->pass;
+}
+
+int sf_check_true(sf_result *r, const char *q, int ok, const char *found)
+{
+    sf_row *row = add_row(r, q);
+    row->measured = ok ? 1 : 0;
+    row->expected = 1;
+    snprintf(row->criterion, sizeof row->criterion, "%s", found ? found : "holds");
+    row->ratio = ok ? 0 : INFINITY;
+    row->pass = ok != 0;
+    return row->pass;
+}
+
+void sf_note(sf_result *r, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    int n = vsnprintf(NULL, 0, fmt, ap);
+    va_end(ap);
+    if (n < 0)
+        return;
+    r->notes = xrealloc(r->notes, r->notes_len + (size_t)n + 2);
+    va_start(ap, fmt);
+    vsnprintf(r->notes + r->notes_len, (size_t)n + 1, fmt, ap);
+    va_end(ap);
+    r->notes_len += (size_t)n;
+    r->notes[r->notes_len++] = '\n';
+    r->notes[r->notes_len] = '\0';
+}
+
+size_t sf_result_nrows(const sf_result *r) { return r->nrows; }
+const sf_row *sf_result_row(const sf_result *r, size_t i) { return &r->rows[i]; }
+const char *sf_result_notes(const sf_result *r) { return r->notes ? r->notes : ""; }
+
+int sf_result_passed(const sf_result *r)
+{
+    if (r->nrows == 0)
+        return 0;
+    for (size_t i = 0; i < r->nrows; i++)
+        if (!r->rows[i].pass)
+            return 0;
+    return 1;
+}
+
+const sf_row *sf_result_key_row(const sf_result *r)
+{
+    const sf_row *best = NULL;
+    for (size_t i = 0; i < r->nrows; i++) {
+        if (!r->rows[i].pass)
+            return &r->rows[i];
+        if (!best || r->rows[i].ratio > best->ratio)
+            best = &r->rows[i];
+    }
+    return best;
+}
+
+/* ---- plots ---- */
+
+static void copy_clean(char *dst, size_t n, const char *src)
+{
+    /* gnuplot strings are written inside double quotes: drop quotes,
+     * backslashes and control characters rather than trying to escape. */
+    size_t j = 0;
+    for (size_t i = 0; src && src[i] && j + 1 < n; i++) {
+        unsigned char c = (unsigned char)src[i];
+        if (c < 32 || c == '"' || c == '\\' || c == '`')
+            continue;
+        dst[j++] = (char)c;
+    }
+    dst[j] = '\0';
+}
+
+sf_plot *sf_result_plot(sf_result *r, const char *stem, const char *title,
+                        const char *xlabel, const char *ylabel)
+{
+    sf_plot *p = calloc(1, sizeof *p);
+    if (!p) {
+        fputs("slipfield: out of memory\n", stderr);
+        exit(3);
+    }
+    size_t j = 0;
+    for (size_t i = 0; stem[i] && j + 1 < sizeof p->stem; i++) {
+        char c = stem[i];
+        if ((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' || c == '-')
+            p->stem[j++] = c;
+    }
+    p->stem[j] = '\0';
+    if (!j)
+        snprintf(p->stem, sizeof p->stem, "plot%zu", r->nplots);
+    copy_clean(p->title, sizeof p->title, title);
+    copy_clean(p->xlabel, sizeof p->xlabel, xlabel);
+    copy_clean(p->ylabel, sizeof p->ylabel, ylabel);
+    r->plots = xrealloc(r->plots, (r->nplots + 1) * sizeof *r->plots);
+    r->plots[r->nplots++] = p;
+    return p;
+}
+
+void sf_plot_log(sf_plot *p, int logx, int logy)
+{
+    p->logx = logx;
+    p->logy = logy;
+}
+
+static series *add_series(sf_plot *p, const char *label, int style, size_t n)
+{
+    p->s = xrealloc(p->s, (p->ns + 1) * sizeof *p->s);
+    series *s = &p->s[p->ns++];
+    memset(s, 0, sizeof *s);
+    copy_clean(s->label, sizeof s->label, label);
+    s->style = style;
+    s->n = n;
+    if (n) {
+        s->x = xrealloc(NULL, n * sizeof *s->x);
+        s->y = xrealloc(NULL, n * sizeof *s->y);
+    }
+    return s;
+}
+
+void sf_plot_series(sf_plot *p, const char *label, int style, size_t n,
+                    const double *x, const double *y)
+{
+    series *s = add_series(p, label, style, n);
+    if (n) {
+        memcpy(s->x, x, n * sizeof *x);
+        memcpy(s->y, y, n * sizeof *y);
+    }
+}
+
+void sf_plot_band(sf_plot *p, const char *label, size_t n, const double *x,
+                  const double *lo, const double *hi)
+{
+    series *s = add_series(p, label, -1, n);
+    if (n) {
+        s->y2 = xrealloc(NULL, n * sizeof *s->y2);
+        memcpy(s->x, x, n * sizeof *x);
+        memcpy(s->y, lo, n * sizeof *lo);
+        memcpy(s->y2, hi, n * sizeof *hi);
+    }
+}
+
+void sf_plot_hline(sf_plot *p, const char *label, double y)
+{
+    series *s = add_series(p, label, -2, 1);
+    s->x[0] = 0;
+    s->y[0] = y;
+}
+
+size_t sf_result_nplots(const sf_result *r) { return r->nplots; }
+sf_plot *sf_result_get_plot(const sf_result *r, size_t i) { return r->plots[i]; }
+const char *sf_plot_stem(const sf_plot *p) { return p->stem; }
+const char *sf_plot_title(const sf_plot *p) { return p->title; }
+
+/* The shared look of every plot in the catalogue. */
+static const char *style_preamble =
+    "set terminal pngcairo size 900,600 font 'DejaVu Sans,11' noenhanced\n"
+    "set termoption noenhanced\n"
+    "set grid lc rgb '#dddddd'\n"
+    "set key outside bottom center horizontal noenhanced\n"
+    "set border lw 1.2\n"
+    "set linetype 1 lc rgb '#1f77b4' lw 2 pt 7 ps 0.8\n"
+    "set linetype 2 lc rgb '#d62728' lw 2 pt 5 ps 0.8\n"
+    "set linetype 3 lc rgb '#2ca02c' lw 2 pt 9 ps 0.8\n"
+    "set linetype 4 lc rgb '#9467bd' lw 2 pt 11 ps 0.8\n"
+    "set linetype 5 lc rgb '#ff7f0e' lw 2 pt 13 ps 0.8\n"
+    "set linetype 6 lc rgb '#8c564b' lw 2 pt 3 ps 0.8\n";
+
+static int finite_for(const sf_plot *p, double x, double y)
+{
+    if (!isfinite(x) || !isfinite(y))
+        return 0;
+    if (p->logx && x <= 0) return 0;
+    if (p->logy && y <= 0) return 0;
+    return 1;
+}
+
+static void write_plot(FILE *g, const sf_plot *p, const char *path)
+{
+    fprintf(g, "reset session\n%s", style_preamble);
+    fprintf(g, "set output \"%s\"\n", path);
+    fprintf(g, "set title \"%s\"\nset xlabel \"%s\"\nset ylabel \"%s\"\n",
+            p->title, p->xlabel, p->ylabel);
+    fprintf(g, p->logx ? "set logscale x\nset format x '%%.0e'\n" : "unset logscale x\n");
+    fprintf(g, p->logy ? "set logscale y\nset format y '%%.0e'\n" : "unset logscale y\n");
+    int any = 0;
+    for (size_t j = 0; j < p->ns; j++) {
+        const series *s = &p->s[j];
+        fprintf(g, "$d%zu << EOD\n", j);
+        size_t written = 0;
+        for (size_t i = 0; i < s->n; i++) {
+            if (s->style == -2) break;
+            if (!finite_for(p, s->x[i], s->y[i])) continue;
+            if (s->style == -1) {
+                if (!finite_for(p, s->x[i], s->y2[i])) continue;
+                fprintf(g, "%.10g %.10g %.10g\n", s->x[i], s->y[i], s->y2[i]);
+            } else {
+                fprintf(g, "%.10g %.10g\n", s->x[i], s->y[i]);
+            }
+            written++;
+        }
+        fprintf(g, "EOD\n");
+        if (written || s->style == -2)
+            any = 1;
+    }
+    if (!any) {
+        fprintf(g, "set label 1 \"no finite data to plot\" at graph 0.5, graph 0.5 center\n"
+                   "plot [0:1][0:1] NaN title ''\n");
+        return;
+    }
+    fprintf(g, "plot ");
+    int first = 1;
+    /* bands first so lines are drawn on top */
+    for (int pass = 0; pass < 2; pass++) {
+        for (size_t j = 0; j < p->ns; j++) {
+            const series *s = &p->s[j];
+            int isband = s->style == -1;
+            if ((pass == 0) != isband) continue;
+            if (s->style != -2 && s->n == 0) continue;
+            if (!first) fprintf(g, ", \\\n     ");
+            first = 0;
+            switch (s->style) {
+            case -1:
+                fprintf(g, "$d%zu using 1:2:3 with filledcurves fc rgb '#bbbbbb' fs transparent solid 0.5 title \"%s\"", j, s->label);
+                break;
+            case -2:
+                fprintf(g, "%.10g with lines dt 2 lw 1.5 lc rgb '#555555' title \"%s\"", s->y[0], s->label);
+                break;
+            case SF_STYLE_POINTS:
+                fprintf(g, "$d%zu using 1:2 with points title \"%s\"", j, s->label);
+                break;
+            case SF_STYLE_LINESPOINTS:
+                fprintf(g, "$d%zu using 1:2 with linespoints title \"%s\"", j, s->label);
+                break;
+            case SF_STYLE_STEPS:
+                fprintf(g, "$d%zu using 1:2 with steps title \"%s\"", j, s->label);
+                break;
+            default:
+                fprintf(g, "$d%zu using 1:2 with lines title \"%s\"", j, s->label);
+            }
+        }
+    }
+    fprintf(g, "\n");
+}
+
+int sf_result_render_plots(const sf_result *r, const char *dir, char *err, size_t errlen)
+{
+    if (r->nplots == 0)
+        return 0;
+    int fd[2];
+    if (pipe(fd) != 0) {
+        snprintf(err, errlen, "pipe: %s", strerror(errno));
+        return -1;
+    }
+    pid_t pid = fork();
+    if (pid < 0) {
+        snprintf(err, errlen, "fork: %s", strerror(errno));
+        close(fd[0]);
+        close(fd[1]);
+        return -1;
+    }
+    if (pid == 0) {
+        /* gnuplot reads the script on stdin; no shell, no interpolated
+         * command line */
+        dup2(fd[0], 0);
+        close(fd[0]);
+        close(fd[1]);
+        execlp("gnuplot", "gnuplot", (char *)NULL);
+        _exit(127);
+    }
+    close(fd[0]);
+    FILE *g = fdopen(fd[1], "w");
+    if (!g) {
+        close(fd[1]);
+        waitpid(pid, NULL, 0);
+        snprintf(err, errlen, "fdopen failed");
+        return -1;
+    }
+    char path[1024];
+    for (size_t i = 0; i < r->nplots; i++) {
+        snprintf(path, sizeof path, "%s/%s.png.tmp", dir, r->plots[i]->stem);
+        write_plot(g, r->plots[i], path);
+    }
+    fprintf(g, "unset output\nexit\n");
+    fclose(g);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+        snprintf(err, errlen, "gnuplot failed (status %d)%s", WIFEXITED(status) ? WEXITSTATUS(status) : -1,
+                 WIFEXITED(status) && WEXITSTATUS(status) == 127 ? ": gnuplot not found (run 'make deps')" : "");
+        return -1;
+    }
+    for (size_t i = 0; i < r->nplots; i++) {
+        char fin[1024];
+        snprintf(path, sizeof path, "%s/%s.png.tmp", dir, r->plots[i]->stem);
+        snprintf(fin, sizeof fin, "%s/%s.png", dir, r->plots[i]->stem);
+        if (rename(path, fin) != 0) {
+            snprintf(err, errlen, "plot %s was not written", fin);
+            return -1;
+        }
+    }
+    return 0;
+}

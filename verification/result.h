@@ -1,0 +1,71 @@
+/* slipfield verification: what a check produces.
+ *
+ * A check fills an sf_result with rows of a measured-vs-expected table
+ * (each row decides pass/fail against its own tolerance), free-form
+ * findings (Markdown), and plots (data + labels; rendered by gnuplot in
+ * report.c).  The case passes only when every row passes and the check
+ * returned SF_SUCCESS; a check that adds no row is an error, not a pass
+ * (a check that cannot fail is a defect).
+ */
+#ifndef SF_RESULT_H
+#define SF_RESULT_H
+
+#include <stddef.h>
+
+typedef struct sf_result sf_result;
+typedef struct sf_plot sf_plot;
+
+typedef struct {
+    char quantity[160];
+    double measured, expected;  /* expected may be NAN (no single value) */
+    char criterion[96];         /* e.g. "|diff| <= 1e-13", "p >= 1e-3" */
+    double ratio;               /* how much of the tolerance is used: > 1 fails */
+    int pass;
+} sf_row;
+
+sf_result *sf_result_alloc(void);
+void sf_result_free(sf_result *r);
+
+/* Rows.  Each returns the row's pass flag. */
+int sf_check_abs(sf_result *r, const char *quantity, double measured, double expected, double tol);
+int sf_check_rel(sf_result *r, const char *quantity, double measured, double expected, double tol);
+int sf_check_le(sf_result *r, const char *quantity, double measured, double bound);
+int sf_check_ge(sf_result *r, const char *quantity, double measured, double bound);
+/* A statistical test: passes when p >= alpha. n = sample size. */
+int sf_check_pvalue(sf_result *r, const char *test, double p, double alpha, size_t n);
+/* A boolean property with a short explanation of what was found. */
+int sf_check_true(sf_result *r, const char *quantity, int ok, const char *found);
+
+/* Findings: Markdown appended to the report (printf-style). */
+void sf_note(sf_result *r, const char *fmt, ...)
+    __attribute__((format(printf, 2, 3)));
+
+size_t sf_result_nrows(const sf_result *r);
+const sf_row *sf_result_row(const sf_result *r, size_t i);
+const char *sf_result_notes(const sf_result *r);
+int sf_result_passed(const sf_result *r);
+/* The row to quote in one line: the first failing, else the most used. */
+const sf_row *sf_result_key_row(const sf_result *r);
+
+/* Plots.  `stem` names the PNG (letters, digits, _ and -). */
+enum { SF_STYLE_LINES = 0, SF_STYLE_POINTS = 1, SF_STYLE_LINESPOINTS = 2, SF_STYLE_STEPS = 3 };
+sf_plot *sf_result_plot(sf_result *r, const char *stem, const char *title,
+                        const char *xlabel, const char *ylabel);
+void sf_plot_log(sf_plot *p, int logx, int logy);
+void sf_plot_series(sf_plot *p, const char *label, int style, size_t n,
+                    const double *x, const double *y);
+/* A shaded band between lo and hi (tolerance or confidence band). */
+void sf_plot_band(sf_plot *p, const char *label, size_t n, const double *x,
+                  const double *lo, const double *hi);
+void sf_plot_hline(sf_plot *p, const char *label, double y);
+
+size_t sf_result_nplots(const sf_result *r);
+sf_plot *sf_result_get_plot(const sf_result *r, size_t i);
+const char *sf_plot_stem(const sf_plot *p);
+const char *sf_plot_title(const sf_plot *p);
+
+/* Render all plots of r into dir (PNG via gnuplot, through a pipe; files
+ * written under a temporary name and renamed).  Returns 0 on success. */
+int sf_result_render_plots(const sf_result *r, const char *dir, char *err, size_t errlen);
+
+#endif

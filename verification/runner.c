@@ -1,0 +1,327 @@
+/* slipfield verify: run cases, each in its own process (a crash, abort or
+ * time-out in one is that case's failure and the rest still run), write
+ * the reports and gate on the verdicts. */
+#include "runner.h"
+#include "case.h"
+#include "registry.h"
+#include "report.h"
+#include "result.h"
+#include "sf_error.h"
+
+#include <errno.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/wait.h>
+#include <time.h>
+#include <unistd.h>
+
+static double now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static void usage(FILE *f)
+{
+    fputs("usage: slipfield verify [options] CASE.md...\n"
+          "Run literate verification cases, write reports, exit 0 only if all pass.\n\n"
+          "options:\n"
+          "  --tier quick|full   quick (default) runs tier=quick cases; full runs all\n"
+          "  --reports DIR       report folder (default: reports)\n"
+          "  --jobs N            cases run in parallel (default 1)\n"
+          "  --timeout S         per-case time limit in seconds (default 900)\n"
+          "  --seed N|random     override every case's seed (mixed with the case id)\n"
+          "  --list              list the selected cases with tier, kind and check\n"
+          "  --checks            list the registered checks\n"
+          "  -h, --help          this help\n\n"
+          "exit status: 0 all passed, 1 a case failed, 2 bad input or usage, 3 internal error\n",
+          f);
+}
+
+static unsigned long mix_seed(unsigned long seed, const char *id)
+{
+    /* FNV-1a of the id, mixed with the override, so cases stay independent */
+    unsigned long h = 1469598103934665603UL;
+    for (; *id; id++)
+        h = (h ^ (unsigned char)*id) * 1099511628211UL;
+    return (h ^ seed) & 0xffffffffUL;
+}
+
+static int cmp_case(const void *a, const void *b)
+{
+    return strcmp(((const sf_case *)a)->id, ((const sf_case *)b)->id);
+}
+
+static void fill_outcome(sf_outcome *o, const sf_case *c)
+{
+    memset(o, 0, sizeof *o);
+    snprintf(o->id, sizeof o->id, "%s", c->id);
+    snprintf(o->family, sizeof o->family, "%s", c->family);
+    snprintf(o->path, sizeof o->path, "%s", c->path);
+    snprintf(o->title, sizeof o->title, "%s", c->title);
+    o->tier = c->scene.tier;
+    o->vv = c->scene.vv;
+}
+
+/* Child: run the check, write the report, send one line to the parent. */
+static void run_child(const sf_case *c, const char *root, int fd, unsigned timeout)
+{
+    alarm(timeout);
+    sf_outcome o;
+    fill_outcome(&o, c);
+    const sf_check_def *d = sf_check_find(c->scene.check);
+    sf_result *r = sf_result_alloc();
+    double t0 = now();
+    int rc = d->fn(c, r);
+    o.seconds = now() - t0;
+    char msg[256] = "";
+    if (rc) {
+        snprintf(msg, sizeof msg, "the check could not complete: %s", sf_strerror(rc));
+        o.verdict = SF_VERDICT_ERROR;
+        snprintf(o.key, sizeof o.key, "%s", msg);
+    } else if (sf_result_nrows(r) == 0) {
+        o.verdict = SF_VERDICT_ERROR;
+        snprintf(o.key, sizeof o.key, "the check produced no row (it cannot fail, so it cannot pass)");
+    } else {
+        o.verdict = sf_result_passed(r) ? SF_VERDICT_PASS : SF_VERDICT_FAIL;
+        const sf_row *k = sf_result_key_row(r);
+        snprintf(o.key, sizeof o.key, "%s = %.4g (%s)", k->quantity, k->measured, k->criterion);
+    }
+    char err[512] = "";
+    if (sf_report_case(root, c, r, &o, msg, err, sizeof err) != SF_SUCCESS) {
+        o.verdict = SF_VERDICT_ERROR;
+        snprintf(o.key, sizeof o.key, "report not written: %s", err);
+    }
+    sf_result_free(r);
+    char line[512];
+    int n = snprintf(line, sizeof line, "%d\t%.6f\t%s\n", o.verdict, o.seconds, o.key);
+    if (n > 0 && write(fd, line, (size_t)(n < (int)sizeof line ? n : (int)sizeof line - 1)) < 0)
+        _exit(3);
+    close(fd);
+    _exit(0);
+}
+
+typedef struct {
+    pid_t pid;
+    int fd;
+    size_t idx;
+    double t0;
+} job;
+
+static void finish_job(const job *j, int status, const sf_case *cases, sf_outcome *out,
+                       const char *root)
+{
+    const sf_case *c = &cases[j->idx];
+    sf_outcome *o = &out[j->idx];
+    fill_outcome(o, c);
+    char line[600] = "";
+    ssize_t n = read(j->fd, line, sizeof line - 1);
+    close(j->fd);
+    line[n > 0 ? n : 0] = '\0';
+    int ok = 0;
+    if (WIFEXITED(status) && WEXITSTATUS(status) == 0 && n > 0) {
+        char *tab1 = strchr(line, '\t'), *tab2 = tab1 ? strchr(tab1 + 1, '\t') : NULL;
+        if (tab1 && tab2) {
+            o->verdict = atoi(line);
+            o->seconds = strtod(tab1 + 1, NULL);
+            char *nl = strchr(tab2 + 1, '\n');
+            if (nl) *nl = '\0';
+            snprintf(o->key, sizeof o->key, "%s", tab2 + 1);
+            ok = 1;
+        }
+    }
+    if (!ok) {
+        o->verdict = SF_VERDICT_ERROR;
+        o->seconds = now() - j->t0;
+        if (WIFSIGNALED(status) && WTERMSIG(status) == SIGALRM)
+            snprintf(o->key, sizeof o->key, "timed out after %.0f s", o->seconds);
+        else if (WIFSIGNALED(status))
+            snprintf(o->key, sizeof o->key, "crashed with signal %d (%s)", WTERMSIG(status), strsignal(WTERMSIG(status)));
+        else
+            snprintf(o->key, sizeof o->key, "exited with status %d before reporting", WIFEXITED(status) ? WEXITSTATUS(status) : -1);
+        char err[256];
+        sf_report_crash(root, c, o, err, sizeof err);
+    }
+    printf("%-5s %-48s %8.2f s  %s\n", sf_verdict_name(o->verdict), o->id, o->seconds, o->key);
+    fflush(stdout);
+}
+
+int sf_verify_main(int argc, char **argv)
+{
+    const char *root = "reports";
+    int tier_full = 0, jobs = 1, list = 0, have_seed = 0;
+    unsigned timeout = 900;
+    unsigned long seed = 0;
+    char seed_note[64] = "fixed (per case)";
+    int i = 1;
+    for (; i < argc && argv[i][0] == '-'; i++) {
+        const char *a = argv[i];
+        const char *v = i + 1 < argc ? argv[i + 1] : NULL;
+        if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
+            usage(stdout);
+            return 0;
+        } else if (!strcmp(a, "--checks")) {
+            const sf_check_def *d;
+            for (size_t k = 0; (d = sf_check_at(k)); k++)
+                printf("%-36s %s\n", d->name, d->summary);
+            return 0;
+        } else if (!strcmp(a, "--list")) {
+            list = 1;
+        } else if (!strcmp(a, "--tier") && v) {
+            if (!strcmp(v, "full")) tier_full = 1;
+            else if (!strcmp(v, "quick")) tier_full = 0;
+            else { fprintf(stderr, "slipfield verify: --tier takes quick or full, not '%s'\n", v); return 2; }
+            i++;
+        } else if (!strcmp(a, "--reports") && v) {
+            root = v;
+            i++;
+        } else if (!strcmp(a, "--jobs") && v) {
+            jobs = atoi(v);
+            if (jobs < 1 || jobs > 64) { fprintf(stderr, "slipfield verify: --jobs takes 1..64\n"); return 2; }
+            i++;
+        } else if (!strcmp(a, "--timeout") && v) {
+            timeout = (unsigned)atoi(v);
+            if (timeout < 1) { fprintf(stderr, "slipfield verify: --timeout takes seconds >= 1\n"); return 2; }
+            i++;
+        } else if (!strcmp(a, "--seed") && v) {
+            have_seed = 1;
+            if (!strcmp(v, "random")) {
+                seed = (unsigned long)time(NULL) ^ ((unsigned long)getpid() << 16);
+            } else {
+                char *end;
+                seed = strtoul(v, &end, 10);
+                if (*end || !*v) { fprintf(stderr, "slipfield verify: --seed takes a number or 'random'\n"); return 2; }
+            }
+            snprintf(seed_note, sizeof seed_note, "override %lu", seed);
+            i++;
+        } else {
+            fprintf(stderr, "slipfield verify: unknown option or missing value: %s\n", a);
+            usage(stderr);
+            return 2;
+        }
+    }
+    size_t n = (size_t)(argc - i);
+    if (n == 0) {
+        fprintf(stderr, "slipfield verify: no case files given\n");
+        usage(stderr);
+        return 2;
+    }
+    sf_case *cases = calloc(n, sizeof *cases);
+    if (!cases)
+        return 3;
+    size_t kept = 0, skipped = 0;
+    int bad = 0;
+    for (size_t k = 0; k < n; k++) {
+        char err[512];
+        if (sf_case_read(&cases[kept], argv[i + (int)k], err, sizeof err) != SF_SUCCESS) {
+            fprintf(stderr, "slipfield verify: %s\n", err);
+            sf_case_free(&cases[kept]);
+            bad = 1;
+            continue;
+        }
+        if (cases[kept].scene.tier == SF_TIER_FULL && !tier_full) {
+            sf_case_free(&cases[kept]);
+            skipped++;
+            continue;
+        }
+        if (have_seed)
+            cases[kept].scene.seed = mix_seed(seed, cases[kept].id);
+        kept++;
+    }
+    if (bad) {
+        for (size_t k = 0; k < kept; k++) sf_case_free(&cases[k]);
+        free(cases);
+        return 2;
+    }
+    qsort(cases, kept, sizeof *cases, cmp_case);
+    for (size_t k = 1; k < kept; k++)
+        if (!strcmp(cases[k].id, cases[k - 1].id)) {
+            fprintf(stderr, "slipfield verify: case %s given twice\n", cases[k].id);
+            return 2;
+        }
+    if (list) {
+        for (size_t k = 0; k < kept; k++)
+            printf("%-48s tier=%-5s vv=%-10s check=%s tags=%s\n", cases[k].id,
+                   cases[k].scene.tier ? "full" : "quick",
+                   sf_scene_enum_name("vv", cases[k].scene.vv), cases[k].scene.check,
+                   cases[k].scene.tags);
+        for (size_t k = 0; k < kept; k++) sf_case_free(&cases[k]);
+        free(cases);
+        return 0;
+    }
+    if (sf_mkdirs(root) != 0) {
+        fprintf(stderr, "slipfield verify: cannot create %s: %s\n", root, strerror(errno));
+        return 3;
+    }
+    if (skipped)
+        printf("(%zu full-tier cases skipped; run with TIER=full / --tier full)\n", skipped);
+
+    sf_outcome *out = calloc(kept ? kept : 1, sizeof *out);
+    job *run = calloc((size_t)jobs, sizeof *run);
+    if (!out || !run)
+        return 3;
+    fflush(stdout);
+    double t0 = now();
+    size_t next = 0, active = 0;
+    while (next < kept || active > 0) {
+        while (next < kept && active < (size_t)jobs) {
+            int fd[2];
+            if (pipe(fd) != 0) {
+                perror("slipfield verify: pipe");
+                return 3;
+            }
+            pid_t pid = fork();
+            if (pid < 0) {
+                perror("slipfield verify: fork");
+                return 3;
+            }
+            if (pid == 0) {
+                close(fd[0]);
+                run_child(&cases[next], root, fd[1], timeout);
+            }
+            close(fd[1]);
+            for (int s = 0; s < jobs; s++)
+                if (run[s].pid == 0) {
+                    run[s] = (job){ pid, fd[0], next, now() };
+                    break;
+                }
+            next++;
+            active++;
+        }
+        int status;
+        pid_t pid = wait(&status);
+        if (pid < 0) {
+            if (errno == EINTR) continue;
+            break;
+        }
+        for (int s = 0; s < jobs; s++)
+            if (run[s].pid == pid) {
+                finish_job(&run[s], status, cases, out, root);
+                run[s].pid = 0;
+                active--;
+                break;
+            }
+    }
+    size_t np = 0, nf = 0;
+    for (size_t k = 0; k < kept; k++) {
+        if (out[k].verdict == SF_VERDICT_PASS) np++;
+        else nf++;
+    }
+    sf_run_meta meta = { root, seed_note, tier_full ? "full" : "quick", now() - t0 };
+    char err[512];
+    int rc = sf_report_index(&meta, out, kept, err, sizeof err);
+    if (rc)
+        fprintf(stderr, "slipfield verify: %s\n", err);
+    printf("reports: %s/index.md, %s/junit.xml\n", root, root);
+    printf("%zu passed, %zu failed\n", np, nf);
+    for (size_t k = 0; k < kept; k++) sf_case_free(&cases[k]);
+    free(cases);
+    free(out);
+    free(run);
+    if (rc)
+        return 3;
+    return nf ? 1 : 0;
+}

@@ -1,0 +1,80 @@
+#include "stats.h"
+
+#include <math.h>
+#include <gsl/gsl_cdf.h>
+#include <gsl/gsl_sort.h>
+
+double sf_ks_pvalue(double n_eff, double D)
+{
+    double sn = sqrt(n_eff);
+    double lam = (sn + 0.12 + 0.11 / sn) * D;
+    if (lam < 0.2)
+        return 1.0;
+    /* Q_KS(lam) = 2 sum_{k>=1} (-1)^(k-1) exp(-2 k^2 lam^2) */
+    double sum = 0.0, sign = 1.0;
+    for (int k = 1; k <= 100; k++) {
+        double t = sign * exp(-2.0 * k * k * lam * lam);
+        sum += t;
+        if (fabs(t) < 1e-16 * fabs(sum))
+            break;
+        sign = -sign;
+    }
+    double p = 2.0 * sum;
+    return p < 0 ? 0 : (p > 1 ? 1 : p);
+}
+
+double sf_ks_test(double *x, size_t n, sf_cdf_fn cdf, void *params, double *D)
+{
+    gsl_sort(x, 1, n);
+    double d = 0.0;
+    for (size_t i = 0; i < n; i++) {
+        double F = cdf(x[i], params);
+        double lo = F - (double)i / (double)n, hi = (double)(i + 1) / (double)n - F;
+        if (lo > d) d = lo;
+        if (hi > d) d = hi;
+    }
+    if (D) *D = d;
+    return sf_ks_pvalue((double)n, d);
+}
+
+double sf_ks2_test(double *a, size_t na, double *b, size_t nb, double *D)
+{
+    gsl_sort(a, 1, na);
+    gsl_sort(b, 1, nb);
+    size_t i = 0, j = 0;
+    double d = 0.0;
+    while (i < na && j < nb) {
+        double v = a[i] < b[j] ? a[i] : b[j];
+        while (i < na && a[i] <= v) i++;
+        while (j < nb && b[j] <= v) j++;
+        double diff = fabs((double)i / (double)na - (double)j / (double)nb);
+        if (diff > d) d = diff;
+    }
+    if (D) *D = d;
+    return sf_ks_pvalue((double)na * (double)nb / (double)(na + nb), d);
+}
+
+double sf_z_pvalue(double z)
+{
+    return 2.0 * gsl_cdf_ugaussian_Q(fabs(z));
+}
+
+double sf_chisq_pvalue(double x, double nu)
+{
+    return gsl_cdf_chisq_Q(x, nu);
+}
+
+double sf_var_pvalue(double s2, double sigma2, size_t n, int mean_known)
+{
+    double nu = (double)(mean_known ? n : n - 1);
+    double x = nu * s2 / sigma2;
+    double lo = gsl_cdf_chisq_P(x, nu), hi = gsl_cdf_chisq_Q(x, nu);
+    double p = 2.0 * (lo < hi ? lo : hi);
+    return p > 1 ? 1 : p;
+}
+
+double sf_cdf_normal(double x, void *params)
+{
+    (void)params;
+    return gsl_cdf_ugaussian_P(x);
+}
