@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <string.h>
 #include <fftw3.h>
+#include <gsl/gsl_errno.h>
 #include <gsl/gsl_version.h>
 
 typedef struct {
@@ -48,6 +49,8 @@ static int cmd_help(int argc, char **argv)
 
 int main(int argc, char **argv)
 {
+    /* Every GSL status is checked where it is returned: no abort(). */
+    gsl_set_error_handler_off();
     if (argc < 2) {
         usage(stderr);
         return SF_EXIT_USAGE;

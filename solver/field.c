@@ -204,6 +204,7 @@ static int build_general(sf_field *f)
     size_t capx = (size_t)ceil(s->pad_cap * (double)pxm);
     size_t capy = (size_t)ceil(s->pad_cap * (double)pym);
     double mn = 0.0, mx = 0.0;
+    int tries = 0;
     for (;;) {
         if (px > s->max_points / py)
             return SF_ENOMEM;
@@ -214,8 +215,14 @@ static int build_general(sf_field *f)
         int rc = eig_2d(s, px, py, f->lam);
         if (rc)
             return rc;
+        double prev = mx > 0 ? -mn / mx : 0;
         min_max(f->lam, px * py, &mn, &mx);
         if (mn >= -s->eig_rel_tol * mx || s->no_padding)
+            break;
+        /* An indefinite kernel (e.g. a pre-corrected Nataf correlation) has
+         * negatives that padding cannot remove: stop once a step no longer
+         * halves the most negative eigenvalue, rather than pad to the cap. */
+        if (tries++ > 0 && -mn / mx > 0.5 * prev)
             break;
         size_t nx = s->m > 1 ? nice_size(px + px / 4) : 1;
         size_t ny = s->n > 1 ? nice_size(py + py / 4) : 1;

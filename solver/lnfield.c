@@ -21,6 +21,14 @@ static double precorrected(double r, void *params)
     return sf_lognormal_rho_g(&f->ln, exp(-q * q));
 }
 
+void sf_field_spec_from_scene(const sf_scene *s, sf_field_spec *spec)
+{
+    sf_field_spec_default(spec, s->nx, s->ny, s->dx, s->dy, s->l);
+    spec->pad_cap = s->pad_cap;
+    spec->eig_rel_tol = s->eig_tol;
+    spec->no_padding = s->no_padding;
+}
+
 int sf_lnfield_alloc(const sf_scene *s, sf_lnfield **out)
 {
     *out = NULL;
@@ -34,10 +42,7 @@ int sf_lnfield_alloc(const sf_scene *s, sf_lnfield **out)
     }
     f->l = s->l;
     sf_field_spec spec;
-    sf_field_spec_default(&spec, s->nx, s->ny, s->dx, s->dy, s->l);
-    spec.pad_cap = s->pad_cap;
-    spec.eig_rel_tol = s->eig_tol;
-    spec.no_padding = s->no_padding;
+    sf_field_spec_from_scene(s, &spec);
     if (s->precorrect && s->mu_std > 0) {
         spec.kernel = precorrected;
         spec.kernel_params = f;

@@ -12,6 +12,10 @@
 
 typedef struct sf_lnfield sf_lnfield;
 
+/* The Gaussian field spec a scene asks for: nx x ny grid, dx, dy, l,
+ * pad_cap, eig_tol, no_padding (squared-exponential kernel). */
+void sf_field_spec_from_scene(const sf_scene *s, sf_field_spec *spec);
+
 /* Grid nx x ny, spacing dx, dy; marginal (mu_mean, mu_std).  Returns
  * SF_SUCCESS or SF_ECAP (usable, truncated), else an error and *out = NULL. */
 int sf_lnfield_alloc(const sf_scene *s, sf_lnfield **out);

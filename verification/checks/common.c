@@ -1,0 +1,90 @@
+#include "common.h"
+#include "lnfield.h"
+#include "sf_error.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <gsl/gsl_math.h>
+
+double ref_sq_exp(double hx, double hy, double l)
+{
+    return exp(-(hx * hx + hy * hy) / (l * l));
+}
+
+void *check_alloc(size_t n)
+{
+    void *p = calloc(n ? n : 1, 1);
+    if (!p) {
+        fputs("slipfield: out of memory in a check\n", stderr);
+        exit(3);
+    }
+    return p;
+}
+
+int check_field_plan(const sf_case *c, sf_result *r, sf_field **out)
+{
+    sf_field_spec spec;
+    sf_field_spec_from_scene(&c->scene, &spec);
+    int rc = sf_field_alloc(&spec, out);
+    if (rc && rc != SF_ECAP)
+        return rc;
+    const sf_field_info *in = sf_field_get_info(*out);
+    sf_note(r, "Embedding: %zu x %zu (minimal %zu x %zu, padding factor %.3g x %.3g), "
+               "lambda_min/lambda_max = %.3g, %zu eigenvalues clamped, %s; produced-covariance "
+               "error max|C - Sigma| = %.3g.\n",
+            in->px, in->py, in->px_min, in->py_min,
+            in->px_min ? (double)in->px / (double)in->px_min : 1.0,
+            in->py_min ? (double)in->py / (double)in->py_min : 1.0,
+            in->lambda_min / in->lambda_max, in->n_clamped,
+            in->truncated ? "**truncated at the padding cap**" : "not truncated", in->cov_error);
+    return rc;
+}
+
+/* 1-D even sequence DFT by direct sums: lambda(k) = sum_j c(j) cos(2 pi jk/P). */
+static void eig1(size_t P, double d, double l, double *lam)
+{
+    for (size_t k = 0; k < P; k++) {
+        double s = 0.0;
+        for (size_t j = 0; j < P; j++) {
+            size_t jj = j < P - j ? j : P - j;
+            double h = (double)jj * d / l;
+            s += exp(-h * h) * cos(2.0 * M_PI * (double)((j * k) % P) / (double)P);
+        }
+        lam[k] = s;
+    }
+}
+
+void ref_eigenvalues(size_t px, size_t py, double dx, double dy, double l, double *lam)
+{
+    double *a = check_alloc(px * sizeof *a), *b = check_alloc(py * sizeof *b);
+    eig1(px, dx, l, a);
+    eig1(py, dy, l, b);
+    for (size_t j = 0; j < py; j++)
+        for (size_t i = 0; i < px; i++)
+            lam[i + px * j] = a[i] * b[j];
+    free(a);
+    free(b);
+}
+
+void ref_produced_cov(const double *lam, size_t px, size_t py, size_t m, size_t n, double *cov)
+{
+    double M = (double)px * (double)py;
+    for (size_t j = 0; j < n; j++)
+        for (size_t i = 0; i < m; i++) {
+            double s = 0.0;
+            for (size_t ky = 0; ky < py; ky++) {
+                double cy = cos(2.0 * M_PI * (double)((ky * j) % py) / (double)py);
+                double sy = sin(2.0 * M_PI * (double)((ky * j) % py) / (double)py);
+                for (size_t kx = 0; kx < px; kx++) {
+                    double l = lam[kx + px * ky];
+                    if (l <= 0.0)
+                        continue;
+                    double ax = 2.0 * M_PI * (double)((kx * i) % px) / (double)px;
+                    /* Re(e^{i(ax+ay)}) = cos ax cos ay - sin ax sin ay */
+                    s += l * (cos(ax) * cy - sin(ax) * sy);
+                }
+            }
+            cov[i + m * j] = s / M;
+        }
+}

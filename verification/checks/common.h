@@ -1,0 +1,29 @@
+/* Helpers shared by the check families. */
+#ifndef SF_CHECKS_COMMON_H
+#define SF_CHECKS_COMMON_H
+
+#include "../case.h"
+#include "../result.h"
+#include "field.h"
+
+/* The oracle's own Eq. 2, written independently of the solver. */
+double ref_sq_exp(double hx, double hy, double l);
+
+/* Build the Gaussian field plan a case's scene asks for; note the
+ * embedding facts in the findings.  Returns SF_SUCCESS or SF_ECAP (plan
+ * usable) or an error (plan NULL). */
+int check_field_plan(const sf_case *c, sf_result *r, sf_field **out);
+
+/* Allocate or die (exit 3): checks run in their own process. */
+void *check_alloc(size_t n);
+
+/* Direct (no FFT) circulant eigenvalues of the squared-exponential
+ * embedding of period (px, py) for spacings dx, dy: the oracle for the
+ * FFT path.  lam has px*py entries, index kx + px*ky. O((px py)^2)/sep. */
+void ref_eigenvalues(size_t px, size_t py, double dx, double dy, double l, double *lam);
+
+/* Covariance at grid lags (i < m, j < n) produced by clamped eigenvalues,
+ * by a direct inverse DFT. */
+void ref_produced_cov(const double *lam, size_t px, size_t py, size_t m, size_t n, double *cov);
+
+#endif
