@@ -21,5 +21,5 @@ for t in "$@"; do
     fi
 done
 passed=$((total - fail))
-echo "tests: $passed passed, $fail failed"
+echo "programs: $passed passed, $fail failed"
 [ $fail -eq 0 ]

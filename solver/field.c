@@ -173,6 +173,13 @@ static int build_separable(sf_field *f)
     return SF_SUCCESS;
 }
 
+/* Entry (i, j) of the embedding's first row for periods (px, py). */
+static double first_row_at(const sf_field_spec *s, size_t px, size_t py, size_t i, size_t j)
+{
+    size_t ii = i < px - i ? i : px - i, jj = j < py - j ? j : py - j;
+    return kernel_at(s, (double)ii * s->dx, (double)jj * s->dy);
+}
+
 /* General (non-separable) kernel: 2-D first row, 2-D FFT, pad both axes. */
 static int eig_2d(const sf_field_spec *s, size_t px, size_t py, double *lam)
 {
@@ -181,13 +188,9 @@ static int eig_2d(const sf_field_spec *s, size_t px, size_t py, double *lam)
     if (!buf)
         return SF_ENOMEM;
     fftw_plan p = fftw_plan_dft_2d((int)py, (int)px, buf, buf, FFTW_FORWARD, FFTW_ESTIMATE);
-    for (size_t j = 0; j < py; j++) {
-        size_t jj = j < py - j ? j : py - j;
-        for (size_t i = 0; i < px; i++) {
-            size_t ii = i < px - i ? i : px - i;
-            buf[i + px * j] = kernel_at(s, (double)ii * s->dx, (double)jj * s->dy);
-        }
-    }
+    for (size_t j = 0; j < py; j++)
+        for (size_t i = 0; i < px; i++)
+            buf[i + px * j] = first_row_at(s, px, py, i, j);
     fftw_execute(p);
     for (size_t k = 0; k < M; k++)
         lam[k] = creal(buf[k]);
@@ -409,6 +412,16 @@ int sf_field_covariance(const sf_field *f, double *cov)
 double sf_field_target(const sf_field *f, double hx, double hy)
 {
     return kernel_at(&f->spec, hx, hy);
+}
+
+int sf_field_first_row(const sf_field *f, double *row)
+{
+    if (!f || !row)
+        return SF_EINVAL;
+    for (size_t j = 0; j < f->info.py; j++)
+        for (size_t i = 0; i < f->info.px; i++)
+            row[i + f->info.px * j] = first_row_at(&f->spec, f->info.px, f->info.py, i, j);
+    return SF_SUCCESS;
 }
 
 int sf_field_eigenvalues(const sf_field *f, double *lambda)

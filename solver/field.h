@@ -84,6 +84,10 @@ int sf_field_covariance(const sf_field *f, double *cov);
 /* The target correlation at lag (i dx, j dy) (Sigma's entries). */
 double sf_field_target(const sf_field *f, double hx, double hy);
 
+/* The first row of the block-circulant embedding (Appendix A, step 2):
+ * row[i + px*j] = rho(min(i, px-i) dx, min(j, py-j) dy); length px*py. */
+int sf_field_first_row(const sf_field *f, double *row);
+
 /* The 2-D embedding eigenvalues (length px*py, index kx + px*ky), before
  * clamping.  Exposed for verification (FFT vs direct DFT). */
 int sf_field_eigenvalues(const sf_field *f, double *lambda);

@@ -152,33 +152,32 @@ static int assign(sf_scene *s, const key_t_ *k, const char *v, size_t len,
         *(double *)base = x;
         return SF_SUCCESS;
     }
-    case K_SIZE:
-    case K_ULONG: {
+    case K_SIZE: {
         double x;
         int ok = parse_double(v, len, &x) && x == floor(x);
-        if (!ok || x < 0 || x > 1.8e19)
+        if (!ok || x < 0)
             return seterr(err, errlen, "%s:%d: key '%s': expected a non-negative whole number, got '%.*s'",
                           file, line, k->name, (int)(len > 40 ? 40 : len), v);
-        if (k->type == K_SIZE) {
-            if (!in_range(k, x))
-                return seterr(err, errlen, "%s:%d: key '%s': must be %s (got %g)",
-                              file, line, k->name, rng, x);
-            *(size_t *)base = (size_t)x;
-        } else {
-            /* seeds: parse exactly as an integer, not through a double */
-            char buf[32];
-            if (len >= sizeof buf)
-                return seterr(err, errlen, "%s:%d: key '%s': value too long", file, line, k->name);
-            memcpy(buf, v, len);
-            buf[len] = '\0';
-            errno = 0;
-            char *end;
-            unsigned long u = strtoul(buf, &end, 10);
-            if (*end || errno == ERANGE || buf[0] == '-')
-                return seterr(err, errlen, "%s:%d: key '%s': expected a non-negative whole number, got '%s'",
-                              file, line, k->name, buf);
-            *(unsigned long *)base = u;
-        }
+        if (!in_range(k, x))
+            return seterr(err, errlen, "%s:%d: key '%s': must be %s (got %g)",
+                          file, line, k->name, rng, x);
+        *(size_t *)base = (size_t)x;
+        return SF_SUCCESS;
+    }
+    case K_ULONG: {
+        /* seeds: parsed exactly as an integer, never through a double */
+        char buf[32];
+        if (len >= sizeof buf)
+            return seterr(err, errlen, "%s:%d: key '%s': value too long", file, line, k->name);
+        memcpy(buf, v, len);
+        buf[len] = '\0';
+        errno = 0;
+        char *end;
+        unsigned long u = strtoul(buf, &end, 10);
+        if (*end || end == buf || errno == ERANGE || !isdigit((unsigned char)buf[0]))
+            return seterr(err, errlen, "%s:%d: key '%s': expected a non-negative whole number, got '%s'",
+                          file, line, k->name, buf);
+        *(unsigned long *)base = u;
         return SF_SUCCESS;
     }
     case K_BOOL: {

@@ -93,7 +93,7 @@ static void run_child(const sf_case *c, const char *root, int fd, unsigned timeo
     char err[512] = "";
     if (sf_report_case(root, c, r, &o, msg, err, sizeof err) != SF_SUCCESS) {
         o.verdict = SF_VERDICT_ERROR;
-        snprintf(o.key, sizeof o.key, "report not written: %s", err);
+        snprintf(o.key, sizeof o.key, "report not written: %.280s", err);
     }
     sf_result_free(r);
     char line[512];
