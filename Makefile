@@ -20,6 +20,9 @@ _rev := $(shell mkdir -p $(BUILD)/gen && echo '#define SF_GIT_REV "$(GIT_REV)"' 
 OPT ?= -O2 -g
 PKG_CFLAGS = $(shell pkg-config --cflags $(PKGS) 2>/dev/null)
 PKG_LIBS = $(shell pkg-config --libs $(PKGS) 2>/dev/null || echo -lgsl -lgslcblas -lfftw3) -lm
+# cmark-gfm renders the HTML reports (its table extension has no .pc file)
+HTML_CFLAGS = $(shell pkg-config --cflags libcmark-gfm 2>/dev/null)
+HTML_LIBS = -lcmark-gfm-extensions $(shell pkg-config --libs libcmark-gfm 2>/dev/null || echo -lcmark-gfm)
 CMOCKA_CFLAGS = $(shell pkg-config --cflags cmocka 2>/dev/null)
 CMOCKA_LIBS = $(shell pkg-config --libs cmocka 2>/dev/null || echo -lcmocka)
 SAN := -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all
@@ -48,7 +51,7 @@ help:
 	@echo "make test     install deps if missing, run the CMocka unit tests (plain and under ASan+UBSan)"
 	@echo "make bench    benchmarks -> reports/bench/report.md"
 	@echo "make mutants  seeded defects that the cases must catch"
-	@echo "make deps     install libgsl-dev libfftw3-dev libcmocka-dev gnuplot-nox pkg-config when missing"
+	@echo "make deps     install libgsl-dev libfftw3-dev libcmocka-dev gnuplot-nox pkg-config libcmark-gfm(-extensions)-dev when missing"
 
 deps:
 	@sh scripts/deps.sh
@@ -57,13 +60,19 @@ deps:
 all: deps
 	@$(MAKE) --no-print-directory $(BUILD)/slipfield
 
+# verification/plot-style.gp as a C string
+$(BUILD)/gen/plot_style.h: verification/plot-style.gp
+	@mkdir -p $(dir $@)
+	@{ echo 'static const char sf_plot_style[] ='; sed -e 's/\\/\\\\/g' -e 's/"/\\"/g' -e 's/^/    "/' -e 's/$$/\\n"/' $<; echo '    ;'; } > $@.tmp && mv $@.tmp $@
+$(BUILD)/rel/verification/result.o $(BUILD)/san/verification/result.o: $(BUILD)/gen/plot_style.h
+
 $(BUILD)/rel/%.o: %.c
 	@mkdir -p $(dir $@)
-	$(CC) $(BASE_CFLAGS) $(OPT) $(PKG_CFLAGS) $(CMOCKA_CFLAGS) -MMD -MP -c $< -o $@
+	$(CC) $(BASE_CFLAGS) $(OPT) $(PKG_CFLAGS) $(HTML_CFLAGS) $(CMOCKA_CFLAGS) -MMD -MP -c $< -o $@
 
 $(BUILD)/san/%.o: %.c
 	@mkdir -p $(dir $@)
-	$(CC) $(BASE_CFLAGS) -O1 -g $(SAN) $(PKG_CFLAGS) $(CMOCKA_CFLAGS) -MMD -MP -c $< -o $@
+	$(CC) $(BASE_CFLAGS) -O1 -g $(SAN) $(PKG_CFLAGS) $(HTML_CFLAGS) $(CMOCKA_CFLAGS) -MMD -MP -c $< -o $@
 
 $(BUILD)/libslipfield.a: $(SOLVER_OBJ)
 	@rm -f $@
@@ -82,13 +91,13 @@ $(BUILD)/san/libsfverify.a: $(call objs,san,$(VERIF_SRC))
 	ar rcs $@ $^
 
 $(BUILD)/slipfield: $(CLI_OBJ) $(BUILD)/libsfverify.a $(BUILD)/libslipfield.a
-	$(CC) $(OPT) $^ -o $@ $(PKG_LIBS)
+	$(CC) $(OPT) $^ -o $@ $(HTML_LIBS) $(PKG_LIBS)
 
 $(BUILD)/rel/tests/%: $(BUILD)/rel/tests/%.o $(BUILD)/libsfverify.a $(BUILD)/libslipfield.a
-	$(CC) $(OPT) $^ -o $@ $(CMOCKA_LIBS) $(PKG_LIBS)
+	$(CC) $(OPT) $^ -o $@ $(CMOCKA_LIBS) $(HTML_LIBS) $(PKG_LIBS)
 
 $(BUILD)/san/tests/%: $(BUILD)/san/tests/%.o $(BUILD)/san/libsfverify.a $(BUILD)/san/libslipfield.a
-	$(CC) -g $(SAN) $^ -o $@ $(CMOCKA_LIBS) $(PKG_LIBS)
+	$(CC) -g $(SAN) $^ -o $@ $(CMOCKA_LIBS) $(HTML_LIBS) $(PKG_LIBS)
 
 $(BUILD)/bench/slipfield-bench: $(call objs,rel,$(BENCH_SRC)) $(BUILD)/libslipfield.a
 	@mkdir -p $(dir $@)

@@ -1,4 +1,5 @@
 #include "report.h"
+#include "html.h"
 #include "sf_error.h"
 #include "version.h"
 
@@ -97,6 +98,28 @@ static int commit_dir(const char *tmp, const char *fin)
     return rename(tmp, fin);
 }
 
+/* Write a Markdown buffer as <dir>/report.md and render <dir>/report.html
+ * from the same text. */
+static int write_md_and_html(const char *dir, const char *title, const char *md,
+                             char *err, size_t errlen)
+{
+    char path[1200];
+    snprintf(path, sizeof path, "%s/report.md", dir);
+    FILE *f = fopen(path, "w");
+    if (!f) {
+        snprintf(err, errlen, "cannot write %s: %s", path, strerror(errno));
+        return SF_EIO;
+    }
+    fputs(md, f);
+    int bad = ferror(f);
+    if (fclose(f) != 0 || bad) {
+        snprintf(err, errlen, "error writing %s", path);
+        return SF_EIO;
+    }
+    snprintf(path, sizeof path, "%s/report.html", dir);
+    return sf_html_write(path, title, md, err, errlen) == 0 ? SF_SUCCESS : SF_EIO;
+}
+
 static void write_header(FILE *f, const sf_case *c, const sf_outcome *o)
 {
     fprintf(f, "# %s\n\n", c->title);
@@ -113,7 +136,7 @@ static void write_header(FILE *f, const sf_case *c, const sf_outcome *o)
 int sf_report_case(const char *root, const sf_case *c, const sf_result *r,
                    const sf_outcome *o, const char *error, char *err, size_t errlen)
 {
-    char tmp[1024], fin[1024], path[1200];
+    char tmp[1024], fin[1024];
     if (open_tmp_dir(root, c->id, tmp, sizeof tmp, fin, sizeof fin) != 0) {
         snprintf(err, errlen, "cannot create %s: %s", tmp, strerror(errno));
         return SF_EIO;
@@ -121,10 +144,11 @@ int sf_report_case(const char *root, const sf_case *c, const sf_result *r,
     char perr[256] = "";
     int plots_ok = sf_result_render_plots(r, tmp, perr, sizeof perr) == 0;
 
-    snprintf(path, sizeof path, "%s/report.md", tmp);
-    FILE *f = fopen(path, "w");
+    char *md = NULL;
+    size_t mdlen = 0;
+    FILE *f = open_memstream(&md, &mdlen);
     if (!f) {
-        snprintf(err, errlen, "cannot write %s: %s", path, strerror(errno));
+        snprintf(err, errlen, "open_memstream: %s", strerror(errno));
         return SF_EIO;
     }
     write_header(f, c, o);
@@ -158,11 +182,11 @@ int sf_report_case(const char *root, const sf_case *c, const sf_result *r,
     }
     if (c->prose_after && *c->prose_after)
         fprintf(f, "## Notes from the case\n%s\n", c->prose_after);
-    int bad = ferror(f);
-    if (fclose(f) != 0 || bad) {
-        snprintf(err, errlen, "error writing %s", path);
-        return SF_EIO;
-    }
+    fclose(f);
+    int rc = write_md_and_html(tmp, c->title, md, err, errlen);
+    free(md);
+    if (rc)
+        return rc;
     if (commit_dir(tmp, fin) != 0) {
         snprintf(err, errlen, "cannot rename %s to %s: %s", tmp, fin, strerror(errno));
         return SF_EIO;
@@ -177,20 +201,25 @@ int sf_report_case(const char *root, const sf_case *c, const sf_result *r,
 int sf_report_crash(const char *root, const sf_case *c, const sf_outcome *o,
                     char *err, size_t errlen)
 {
-    char tmp[1024], fin[1024], path[1200];
+    char tmp[1024], fin[1024];
     if (open_tmp_dir(root, c->id, tmp, sizeof tmp, fin, sizeof fin) != 0) {
         snprintf(err, errlen, "cannot create %s", tmp);
         return SF_EIO;
     }
-    snprintf(path, sizeof path, "%s/report.md", tmp);
-    FILE *f = fopen(path, "w");
+    char *md = NULL;
+    size_t mdlen = 0;
+    FILE *f = open_memstream(&md, &mdlen);
     if (!f) {
-        snprintf(err, errlen, "cannot write %s", path);
+        snprintf(err, errlen, "open_memstream failed");
         return SF_EIO;
     }
     write_header(f, c, o);
     fprintf(f, "## Results\n\n**The case did not complete:** %s\n", o->key);
     fclose(f);
+    int rc = write_md_and_html(tmp, c->title, md, err, errlen);
+    free(md);
+    if (rc)
+        return rc;
     return commit_dir(tmp, fin) == 0 ? SF_SUCCESS : SF_EIO;
 }
 
@@ -216,6 +245,24 @@ static FILE *open_tmp(const char *fin, char *tmp, size_t n)
     return fopen(tmp, "w");
 }
 
+static void write_index(FILE *f, const sf_run_meta *meta, const sf_outcome *o, size_t n,
+                        size_t np, size_t nf, size_t ne, const char *page)
+{
+    fprintf(f, "# slipfield verification report\n\n");
+    fprintf(f, "- Cases: **%zu passed**, %zu failed, %zu errors, %zu skipped (of %zu selected)\n",
+            np, nf, ne, meta->skipped, n + meta->skipped);
+    fprintf(f, "- Tier: %s; seeds: %s; total wall time: %.1f s\n", meta->tier_name, meta->seed_note,
+            meta->total_seconds);
+    fprintf(f, "- slipfield %s (git %s); GSL %s; %s\n\n", SF_VERSION, SF_GIT_REV, GSL_VERSION, fftw_version);
+    fprintf(f, "| case | family | kind | verdict | key metric (measured, criterion) | time [s] |\n|---|---|---|---|---|---|\n");
+    for (size_t i = 0; i < n; i++) {
+        fprintf(f, "| [%s](%s/%s) | %s | %s | **%s** | ", o[i].id, o[i].id, page, o[i].family,
+                vv_name(o[i].vv), sf_verdict_name(o[i].verdict));
+        cell(f, o[i].key);
+        fprintf(f, " | %.2f |\n", o[i].seconds);
+    }
+}
+
 int sf_report_index(const sf_run_meta *meta, const sf_outcome *o, size_t n,
                     char *err, size_t errlen)
 {
@@ -226,28 +273,40 @@ int sf_report_index(const sf_run_meta *meta, const sf_outcome *o, size_t n,
         else ne++;
     }
     char fin[1024], tmp[1100];
-    snprintf(fin, sizeof fin, "%s/index.md", meta->root);
-    FILE *f = open_tmp(fin, tmp, sizeof tmp);
-    if (!f) {
-        snprintf(err, errlen, "cannot write %s", tmp);
-        return SF_EIO;
-    }
-    fprintf(f, "# slipfield verification report\n\n");
-    fprintf(f, "- Cases: %zu passed, %zu failed, %zu errors (of %zu)\n", np, nf, ne, n);
-    fprintf(f, "- Tier: %s; seeds: %s; total time: %.1f s\n", meta->tier_name, meta->seed_note, meta->total_seconds);
-    fprintf(f, "- slipfield %s (%s); GSL %s; %s\n\n", SF_VERSION, SF_GIT_REV, GSL_VERSION, fftw_version);
-    fprintf(f, "| case | family | kind | verdict | key metric | time [s] |\n|---|---|---|---|---|---|\n");
-    for (size_t i = 0; i < n; i++) {
-        fprintf(f, "| [%s](%s/report.md) | %s | %s | %s | ", o[i].id, o[i].id, o[i].family,
-                vv_name(o[i].vv), o[i].verdict == SF_VERDICT_PASS ? "PASS" : sf_verdict_name(o[i].verdict));
-        cell(f, o[i].key);
-        fprintf(f, " | %.2f |\n", o[i].seconds);
-    }
-    if (fclose(f) != 0 || rename(tmp, fin) != 0) {
-        snprintf(err, errlen, "cannot write %s", fin);
-        return SF_EIO;
+    /* The same index twice: Markdown with links to report.md, and the HTML
+     * page rendered from a copy whose links point at report.html. */
+    for (int html = 0; html < 2; html++) {
+        char *md = NULL;
+        size_t mdlen = 0;
+        FILE *f = open_memstream(&md, &mdlen);
+        if (!f) {
+            snprintf(err, errlen, "open_memstream failed");
+            return SF_EIO;
+        }
+        write_index(f, meta, o, n, np, nf, ne, html ? "report.html" : "report.md");
+        fclose(f);
+        int rc = 0;
+        if (html) {
+            snprintf(fin, sizeof fin, "%s/index.html", meta->root);
+            rc = sf_html_write(fin, "slipfield verification report", md, err, errlen);
+        } else {
+            snprintf(fin, sizeof fin, "%s/index.md", meta->root);
+            FILE *g = open_tmp(fin, tmp, sizeof tmp);
+            if (!g) {
+                rc = -1;
+            } else {
+                fputs(md, g);
+                rc = (fclose(g) != 0 || rename(tmp, fin) != 0) ? -1 : 0;
+            }
+            if (rc)
+                snprintf(err, errlen, "cannot write %s", fin);
+        }
+        free(md);
+        if (rc)
+            return SF_EIO;
     }
 
+    FILE *f;
     snprintf(fin, sizeof fin, "%s/junit.xml", meta->root);
     f = open_tmp(fin, tmp, sizeof tmp);
     if (!f) {

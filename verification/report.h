@@ -22,6 +22,7 @@ typedef struct {
     const char *seed_note;   /* "fixed (per case)" or the override */
     const char *tier_name;
     double total_seconds;
+    size_t skipped;          /* selected cases not run (other tier) */
 } sf_run_meta;
 
 /* Write <root>/<id>/report.md and its plots.  `error` (may be NULL) is a
@@ -33,7 +34,7 @@ int sf_report_case(const char *root, const sf_case *c, const sf_result *r,
 int sf_report_crash(const char *root, const sf_case *c, const sf_outcome *o,
                     char *err, size_t errlen);
 
-/* reports/index.md and reports/junit.xml. */
+/* reports/index.md, reports/index.html and reports/junit.xml. */
 int sf_report_index(const sf_run_meta *meta, const sf_outcome *o, size_t n,
                     char *err, size_t errlen);
 

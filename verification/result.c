@@ -293,19 +293,9 @@ sf_plot *sf_result_get_plot(const sf_result *r, size_t i) { return r->plots[i]; 
 const char *sf_plot_stem(const sf_plot *p) { return p->stem; }
 const char *sf_plot_title(const sf_plot *p) { return p->title; }
 
-/* The shared look of every plot in the catalogue. */
-static const char *style_preamble =
-    "set terminal pngcairo size 900,600 font 'DejaVu Sans,11' noenhanced\n"
-    "set termoption noenhanced\n"
-    "set grid lc rgb '#dddddd'\n"
-    "set key outside bottom center horizontal noenhanced\n"
-    "set border lw 1.2\n"
-    "set linetype 1 lc rgb '#1f77b4' lw 2 pt 7 ps 0.8\n"
-    "set linetype 2 lc rgb '#d62728' lw 2 pt 5 ps 0.8\n"
-    "set linetype 3 lc rgb '#2ca02c' lw 2 pt 9 ps 0.8\n"
-    "set linetype 4 lc rgb '#9467bd' lw 2 pt 11 ps 0.8\n"
-    "set linetype 5 lc rgb '#ff7f0e' lw 2 pt 13 ps 0.8\n"
-    "set linetype 6 lc rgb '#8c564b' lw 2 pt 3 ps 0.8\n";
+/* The shared look of every plot: verification/plot-style.gp, compiled in
+ * as sf_plot_style[] (generated header). */
+#include "plot_style.h"
 
 static int finite_for(const sf_plot *p, double x, double y)
 {
@@ -318,7 +308,7 @@ static int finite_for(const sf_plot *p, double x, double y)
 
 static void write_plot(FILE *g, const sf_plot *p, const char *path)
 {
-    fprintf(g, "reset session\n%s", style_preamble);
+    fprintf(g, "reset session\n%s", sf_plot_style);
     fprintf(g, "set output \"%s\"\n", path);
     fprintf(g, "set title \"%s\"\nset xlabel \"%s\"\nset ylabel \"%s\"\n",
             p->title, p->xlabel, p->ylabel);

@@ -34,7 +34,9 @@ static void usage(FILE *f)
           "  --jobs N            cases run in parallel (default 1)\n"
           "  --timeout S         per-case time limit in seconds (default 900)\n"
           "  --seed N|random     override every case's seed (mixed with the case id)\n"
-          "  --list              list the selected cases with tier, kind and check\n"
+          "  --tags A,B          only cases carrying at least one of these tags\n"
+          "  --only TEXT         only cases whose id contains TEXT (repeatable)\n"
+          "  --list              list the selected cases with tier, kind, check and tags\n"
           "  --checks            list the registered checks\n"
           "  -h, --help          this help\n\n"
           "exit status: 0 all passed, 1 a case failed, 2 bad input or usage, 3 internal error\n",
@@ -48,6 +50,24 @@ static unsigned long mix_seed(unsigned long seed, const char *id)
     for (; *id; id++)
         h = (h ^ (unsigned char)*id) * 1099511628211UL;
     return (h ^ seed) & 0xffffffffUL;
+}
+
+/* Does the comma-separated list `have` contain any item of `want`? */
+static int tags_match(const char *have, const char *want)
+{
+    const char *w = want;
+    while (*w) {
+        size_t wl = strcspn(w, ",");
+        const char *h = have;
+        while (*h) {
+            size_t hl = strcspn(h, ",");
+            if (hl == wl && wl > 0 && !strncmp(h, w, wl))
+                return 1;
+            h += hl + (h[hl] == ',');
+        }
+        w += wl + (w[wl] == ',');
+    }
+    return 0;
 }
 
 static int cmp_case(const void *a, const void *b)
@@ -156,6 +176,8 @@ int sf_verify_main(int argc, char **argv)
     unsigned timeout = 900;
     unsigned long seed = 0;
     char seed_note[64] = "fixed (per case)";
+    const char *tags = NULL, *only[16];
+    int nonly = 0;
     int i = 1;
     for (; i < argc && argv[i][0] == '-'; i++) {
         const char *a = argv[i];
@@ -170,6 +192,13 @@ int sf_verify_main(int argc, char **argv)
             return 0;
         } else if (!strcmp(a, "--list")) {
             list = 1;
+        } else if (!strcmp(a, "--tags") && v) {
+            tags = v;
+            i++;
+        } else if (!strcmp(a, "--only") && v) {
+            if (nonly == 16) { fprintf(stderr, "slipfield verify: at most 16 --only\n"); return 2; }
+            only[nonly++] = v;
+            i++;
         } else if (!strcmp(a, "--tier") && v) {
             if (!strcmp(v, "full")) tier_full = 1;
             else if (!strcmp(v, "quick")) tier_full = 0;
@@ -220,6 +249,17 @@ int sf_verify_main(int argc, char **argv)
             fprintf(stderr, "slipfield verify: %s\n", err);
             sf_case_free(&cases[kept]);
             bad = 1;
+            continue;
+        }
+        int want = !tags || tags_match(cases[kept].scene.tags, tags);
+        if (nonly) {
+            int any = 0;
+            for (int q = 0; q < nonly; q++)
+                any |= strstr(cases[kept].id, only[q]) != NULL;
+            want &= any;
+        }
+        if (!want) {
+            sf_case_free(&cases[kept]);
             continue;
         }
         if (cases[kept].scene.tier == SF_TIER_FULL && !tier_full) {
@@ -310,12 +350,12 @@ int sf_verify_main(int argc, char **argv)
         if (out[k].verdict == SF_VERDICT_PASS) np++;
         else nf++;
     }
-    sf_run_meta meta = { root, seed_note, tier_full ? "full" : "quick", now() - t0 };
+    sf_run_meta meta = { root, seed_note, tier_full ? "full" : "quick", now() - t0, skipped };
     char err[512];
     int rc = sf_report_index(&meta, out, kept, err, sizeof err);
     if (rc)
         fprintf(stderr, "slipfield verify: %s\n", err);
-    printf("reports: %s/index.md, %s/junit.xml\n", root, root);
+    printf("reports: %s/index.html, %s/index.md, %s/junit.xml\n", root, root, root);
     printf("%zu passed, %zu failed\n", np, nf);
     for (size_t k = 0; k < kept; k++) sf_case_free(&cases[k]);
     free(cases);
