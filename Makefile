@@ -42,7 +42,7 @@ CLI_OBJ := $(call objs,rel,$(CLI_SRC))
 TESTS := $(patsubst tests/%.c,$(BUILD)/rel/tests/%,$(TEST_SRC))
 TESTS_SAN := $(patsubst tests/%.c,$(BUILD)/san/tests/%,$(TEST_SRC))
 
-.PHONY: all deps verify test bench mutants clean help
+.PHONY: all deps verify test bench mutants clean help report-test
 .SECONDARY:
 .DEFAULT_GOAL := all
 
@@ -51,6 +51,7 @@ help:
 	@echo "make test     install deps if missing, run the CMocka unit tests (plain and under ASan+UBSan)"
 	@echo "make bench    benchmarks -> reports/bench/report.md"
 	@echo "make mutants  seeded defects that the cases must catch"
+	@echo "make report-test  JUnit XML schema + headless-Chromium test of reports/ (after test and verify)"
 	@echo "make deps     install libgsl-dev libfftw3-dev libcmocka-dev gnuplot-nox pkg-config libcmark-gfm(-extensions)-dev when missing"
 
 deps:
@@ -112,6 +113,10 @@ test-run: $(TESTS) $(TESTS_SAN)
 
 verify: all
 	@$(BUILD)/slipfield verify --jobs $(JOBS) --tier $(TIER) $(if $(SEED),--seed $(SEED)) $(VERIFY_FLAGS) $(CASES)
+
+# after `make test` and `make verify`: JUnit schema and the browser test
+report-test:
+	@sh scripts/report-test.sh reports
 
 bench: all
 	@$(MAKE) --no-print-directory $(BUILD)/bench/slipfield-bench

@@ -342,8 +342,6 @@ int sf_report_index(const sf_run_meta *meta, const sf_outcome *o, size_t n,
             xml_escape(f, o[j].family);
             fprintf(f, "\" name=\"");
             xml_escape(f, o[j].id);
-            fprintf(f, "\" file=\"");
-            xml_escape(f, o[j].path);
             fprintf(f, "\" time=\"%.3f\"", o[j].seconds);
             if (o[j].verdict == SF_VERDICT_PASS) {
                 fprintf(f, "/>\n");
