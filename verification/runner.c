@@ -296,6 +296,14 @@ int sf_verify_main(int argc, char **argv)
         fprintf(stderr, "slipfield verify: cannot create %s: %s\n", root, strerror(errno));
         return 3;
     }
+    /* A run that is killed must not leave the previous run's summary
+     * claiming verdicts: remove it now, write the new one at the end. */
+    static const char *summaries[] = { "index.md", "index.html", "junit.xml" };
+    for (size_t k = 0; k < 3; k++) {
+        char p[1100];
+        snprintf(p, sizeof p, "%s/%s", root, summaries[k]);
+        unlink(p);
+    }
     if (skipped)
         printf("(%zu full-tier cases skipped; run with TIER=full / --tier full)\n", skipped);
 
