@@ -12,6 +12,8 @@
 #define SF_COF_H
 
 #include <stddef.h>
+#include <gsl/gsl_rng.h>
+#include "scene.h"
 
 typedef enum { SF_COF_UNIFORM = 0, SF_COF_VARIABLE = 1, SF_COF_FIELD = 2 } sf_cof_kind;
 
@@ -32,5 +34,38 @@ sf_cof_kind sf_cof_get_kind(const sf_cof *c);
  * not happen; sf_cof_outside() counts how often it did). */
 double sf_cof_eval(const sf_cof *c, double xb, double yb);
 unsigned long sf_cof_outside(const sf_cof *c);
+
+/* ---- The COF of a run, planned once per scene, drawn per realisation.
+ *
+ * The plan decides what a scene needs (one place): cof = uniform draws
+ * nothing; variable draws one lognormal value; field samples a lognormal
+ * field on the belt strip the disc can visit during [0, T]:
+ *   xb in [-v_b T - B, B],  yb in [-B, B],  B = R + 2 mu_hi m g / k + 2 h
+ * where 2 mu_hi m g / k (mu_hi = mu_mean + 4 mu_std) bounds the spring
+ * excursion |r| (the spring force never exceeds twice the largest
+ * friction force it balances), and h is the grid spacing
+ * h = min(l / 4, R / cells) (bilinear interpolation error ~ (h/l)^2 / 8;
+ * no finer than the quadrature resolves).  A grid above max_points is
+ * refused with SF_ECAP and the reason in err. */
+typedef struct sf_cof_plan sf_cof_plan;
+
+typedef struct {
+    sf_cof_kind kind;
+    double x0, y0, dx, dy;   /* strip origin and spacing [m] */
+    size_t nx, ny;           /* strip grid points */
+    double bound;            /* B [m] */
+} sf_cof_plan_info;
+
+int sf_cof_plan_alloc(const sf_scene *s, sf_cof_plan **out, char *err, size_t errlen);
+void sf_cof_plan_free(sf_cof_plan *p);
+const sf_cof_plan_info *sf_cof_plan_get_info(const sf_cof_plan *p);
+/* One realisation from rng (nothing is drawn for a uniform COF). */
+int sf_cof_plan_draw(sf_cof_plan *p, gsl_rng *rng, sf_cof **out);
+
+/* Convenience: plan, draw one realisation, free the plan. */
+int sf_cof_from_scene(const sf_scene *s, gsl_rng *rng, sf_cof **out);
+
+/* The largest number of strip grid points a plan accepts. */
+#define SF_COF_MAX_POINTS ((size_t)1 << 24)
 
 #endif

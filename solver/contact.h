@@ -36,6 +36,13 @@ int sf_contact_alloc(const sf_contact_spec *spec, const sf_cof *cof, sf_contact 
 void sf_contact_free(sf_contact *c);
 size_t sf_contact_ncells(const sf_contact *c);
 
+/* The quadrature itself (for the limit-surface plan): offsets [m] and
+ * weights [N] (pressure x area; they sum to N). */
+void sf_contact_cells(const sf_contact *c, const double **rx, const double **ry, const double **wt);
+const sf_cof *sf_contact_get_cof(const sf_contact *c);
+double sf_contact_radius(const sf_contact *c);
+double sf_contact_normal_force(const sf_contact *c);
+
 /* Friction wrench on the disc, out = {Fx [N], Fy [N], T [N m]}, with the
  * local COF ratio * mu_s (ratio = 1 static, 0.9 kinetic per Eq. 1). */
 int sf_contact_wrench(const sf_contact *c, double xb, double yb,
@@ -48,7 +55,9 @@ double sf_contact_mean_cof(const sf_contact *c, double xb, double yb);
 /* Stick admissibility of a planar stick force (Fx, Fy) [N] with T = 0 at
  * centre (xb, yb): exact = 0 uses the paper's equatorial circle (radius
  * mean COF * N), exact = 1 the true T = 0 section of the limit surface.
- * *margin > 0 inside (stick holds), < 0 outside; in newtons. */
+ * *margin > 0 inside (stick holds), < 0 outside; in newtons: the section's
+ * radius along the direction of F minus |F|.  Implemented in surface.c
+ * (the limit surface module). */
 int sf_contact_stick_margin(const sf_contact *c, double xb, double yb,
                             double Fx, double Fy, int exact, double *margin);
 

@@ -6,6 +6,8 @@
 static const sf_check_def *const families[] = {
     sf_checks_field,
     sf_checks_lognormal,
+    sf_checks_contact,
+    sf_checks_surface,
 };
 
 const sf_check_def *sf_check_at(size_t i)

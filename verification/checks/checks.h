@@ -6,5 +6,7 @@
 
 extern const sf_check_def sf_checks_field[];
 extern const sf_check_def sf_checks_lognormal[];
+extern const sf_check_def sf_checks_contact[];
+extern const sf_check_def sf_checks_surface[];
 
 #endif

@@ -88,3 +88,37 @@ void ref_produced_cov(const double *lam, size_t px, size_t py, size_t m, size_t 
             cov[i + m * j] = s / M;
         }
 }
+
+sf_cof *check_disc_cof(const sf_scene *s, gsl_rng *rng, check_disc_field *st)
+{
+    sf_cof *cof = NULL;
+    if (s->cof == SF_COF_UNIFORM || s->mu_std == 0) {
+        sf_cof_alloc_uniform(s->mu_mean, &cof);
+        return cof;
+    }
+    if (!st->lf) {
+        st->gs = *s;
+        double h = fmin(s->l / 8, 2.2 * s->R / 3);
+        st->gs.dx = st->gs.dy = h;
+        st->gs.nx = st->gs.ny = (size_t)ceil(2.2 * s->R / h) + 1;
+        st->gs.pad_cap = 1e4;   /* the embedding-size cap still applies */
+        if (sf_lnfield_alloc(&st->gs, &st->lf) != SF_SUCCESS) {
+            sf_lnfield_free(st->lf);
+            st->lf = NULL;
+            return NULL;
+        }
+    }
+    size_t n = st->gs.nx * st->gs.ny;
+    double *h = check_alloc(n * sizeof *h);
+    sf_lnfield_sample(st->lf, rng, NULL, h);
+    double x0 = -0.5 * (double)(st->gs.nx - 1) * st->gs.dx;
+    sf_cof_alloc_grid(st->gs.nx, st->gs.ny, x0, x0, st->gs.dx, st->gs.dy, h, &cof);
+    free(h);
+    return cof;
+}
+
+void check_disc_field_free(check_disc_field *st)
+{
+    sf_lnfield_free(st->lf);
+    st->lf = NULL;
+}

@@ -26,4 +26,16 @@ void ref_eigenvalues(size_t px, size_t py, double dx, double dy, double l, doubl
  * by a direct inverse DFT. */
 void ref_produced_cov(const double *lam, size_t px, size_t py, size_t m, size_t n, double *cov);
 
+/* A lognormal COF (or a uniform one when cof = uniform or mu_std = 0) on
+ * a square grid covering a disc of radius R centred at the origin.  Grid
+ * spacing l/8 (bilinear RMS error ~ 7e-3 std, cases/contact/interpolation)
+ * and at least 4 nodes across the disc, so a long l gets a coarse grid
+ * instead of an embedding it cannot pad.  The Gaussian plan is made on the
+ * first call and kept in *st; a truncated embedding is refused (NULL). */
+#include "cof.h"
+#include "lnfield.h"
+typedef struct { sf_lnfield *lf; sf_scene gs; } check_disc_field;
+sf_cof *check_disc_cof(const sf_scene *s, gsl_rng *rng, check_disc_field *st);
+void check_disc_field_free(check_disc_field *st);
+
 #endif

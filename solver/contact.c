@@ -1,0 +1,273 @@
+#include "contact.h"
+#include "sf_error.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <gsl/gsl_integration.h>
+#include <gsl/gsl_math.h>
+#include <gsl/gsl_sf_ellint.h>
+
+struct sf_contact {
+    sf_contact_spec spec;
+    const sf_cof *cof;
+    size_t n;
+    double *rx, *ry;   /* cell offsets from the centre [m] */
+    double *wt;        /* pressure x area of each cell [N]; sums to N */
+};
+
+/* Polar layout: Gauss-Legendre radii (exact for the polynomial radial
+ * moments, so uniform translation and pure spin are exact), equal sectors
+ * per ring, as many as keep the cells near-square, staggered by half a
+ * sector from ring to ring. */
+static int layout_polar(sf_contact *c)
+{
+    size_t nr = c->spec.cells;
+    double R = c->spec.R;
+    gsl_integration_glfixed_table *gl = gsl_integration_glfixed_table_alloc(nr);
+    if (!gl)
+        return SF_ENOMEM;
+    size_t *ns = malloc(nr * sizeof *ns), total = 0;
+    double *r = malloc(nr * sizeof *r), *w = malloc(nr * sizeof *w);
+    if (!ns || !r || !w) {
+        free(ns); free(r); free(w);
+        gsl_integration_glfixed_table_free(gl);
+        return SF_ENOMEM;
+    }
+    for (size_t j = 0; j < nr; j++) {
+        gsl_integration_glfixed_point(0, R, j, &r[j], &w[j], gl);
+        size_t k = (size_t)ceil(2 * M_PI * r[j] * (double)nr / R);
+        ns[j] = k < 8 ? 8 : k;
+        total += ns[j];
+    }
+    gsl_integration_glfixed_table_free(gl);
+    c->rx = malloc(total * sizeof *c->rx);
+    c->ry = malloc(total * sizeof *c->ry);
+    c->wt = malloc(total * sizeof *c->wt);
+    if (!c->rx || !c->ry || !c->wt) {
+        free(ns); free(r); free(w);
+        return SF_ENOMEM;
+    }
+    double P = c->spec.normal_force / (M_PI * R * R);
+    size_t i = 0;
+    for (size_t j = 0; j < nr; j++) {
+        double dphi = 2 * M_PI / (double)ns[j], off = (j % 2) ? 0.5 : 0.0;
+        for (size_t k = 0; k < ns[j]; k++, i++) {
+            double phi = ((double)k + off) * dphi;
+            c->rx[i] = r[j] * cos(phi);
+            c->ry[i] = r[j] * sin(phi);
+            c->wt[i] = P * w[j] * r[j] * dphi;
+        }
+    }
+    c->n = total;
+    free(ns); free(r); free(w);
+    return SF_SUCCESS;
+}
+
+/* Cartesian layout: square cells across the diameter; cells cut by the rim
+ * are sub-sampled (16 x 16) for their area fraction and centroid.  The
+ * weights are then scaled so that they carry exactly the load N. */
+static int layout_cartesian(sf_contact *c)
+{
+    size_t nc = c->spec.cells, cap = nc * nc;
+    double R = c->spec.R, h = 2 * R / (double)nc;
+    c->rx = malloc(cap * sizeof *c->rx);
+    c->ry = malloc(cap * sizeof *c->ry);
+    c->wt = malloc(cap * sizeof *c->wt);
+    if (!c->rx || !c->ry || !c->wt)
+        return SF_ENOMEM;
+    const int S = 16;
+    size_t n = 0;
+    double sum = 0;
+    for (size_t j = 0; j < nc; j++) {
+        for (size_t i = 0; i < nc; i++) {
+            double cx = -R + ((double)i + 0.5) * h, cy = -R + ((double)j + 0.5) * h;
+            double far = hypot(fabs(cx) + h / 2, fabs(cy) + h / 2);
+            double near = hypot(fmax(fabs(cx) - h / 2, 0), fmax(fabs(cy) - h / 2, 0));
+            double a, px = cx, py = cy;
+            if (near >= R)
+                continue;
+            if (far <= R) {
+                a = h * h;
+            } else {
+                int in = 0;
+                double sx = 0, sy = 0;
+                for (int q = 0; q < S; q++)
+                    for (int p = 0; p < S; p++) {
+                        double x = cx - h / 2 + (p + 0.5) * h / S, y = cy - h / 2 + (q + 0.5) * h / S;
+                        if (x * x + y * y < R * R) {
+                            in++;
+                            sx += x;
+                            sy += y;
+                        }
+                    }
+                if (!in)
+                    continue;
+                a = h * h * in / (double)(S * S);
+                px = sx / in;
+                py = sy / in;
+            }
+            c->rx[n] = px;
+            c->ry[n] = py;
+            c->wt[n] = a;
+            sum += a;
+            n++;
+        }
+    }
+    for (size_t i = 0; i < n; i++)
+        c->wt[i] *= c->spec.normal_force / sum;
+    c->n = n;
+    return SF_SUCCESS;
+}
+
+int sf_contact_alloc(const sf_contact_spec *spec, const sf_cof *cof, sf_contact **out)
+{
+    *out = NULL;
+    if (!spec || !cof || !(spec->R > 0) || !(spec->normal_force >= 0) || !isfinite(spec->R) ||
+        !isfinite(spec->normal_force) || spec->cells < 1 || spec->cells > 100000 ||
+        (spec->layout != SF_LAYOUT_POLAR && spec->layout != SF_LAYOUT_CARTESIAN))
+        return SF_EINVAL;
+    sf_contact *c = calloc(1, sizeof *c);
+    if (!c)
+        return SF_ENOMEM;
+    c->spec = *spec;
+    c->cof = cof;
+    int rc = spec->layout == SF_LAYOUT_POLAR ? layout_polar(c) : layout_cartesian(c);
+    if (rc) {
+        sf_contact_free(c);
+        return rc;
+    }
+    *out = c;
+    return SF_SUCCESS;
+}
+
+void sf_contact_free(sf_contact *c)
+{
+    if (!c)
+        return;
+    free(c->rx);
+    free(c->ry);
+    free(c->wt);
+    free(c);
+}
+
+size_t sf_contact_ncells(const sf_contact *c) { return c->n; }
+const sf_cof *sf_contact_get_cof(const sf_contact *c) { return c->cof; }
+double sf_contact_radius(const sf_contact *c) { return c->spec.R; }
+double sf_contact_normal_force(const sf_contact *c) { return c->spec.normal_force; }
+
+void sf_contact_cells(const sf_contact *c, const double **rx, const double **ry, const double **wt)
+{
+    *rx = c->rx;
+    *ry = c->ry;
+    *wt = c->wt;
+}
+
+int sf_contact_wrench(const sf_contact *c, double xb, double yb,
+                      double u, double v, double w, double ratio, double out[3])
+{
+    if (!isfinite(u) || !isfinite(v) || !isfinite(w) || !isfinite(xb) || !isfinite(yb))
+        return SF_EINVAL;
+    int uniform = sf_cof_get_kind(c->cof) != SF_COF_FIELD;
+    double mu0 = uniform ? sf_cof_eval(c->cof, 0, 0) : 0;
+    double fx = 0, fy = 0, t = 0;
+    for (size_t i = 0; i < c->n; i++) {
+        double rx = c->rx[i], ry = c->ry[i];
+        double vx = u - w * ry, vy = v + w * rx, s = hypot(vx, vy);
+        if (s == 0)   /* the pole sits on a node: no slip direction there */
+            continue;
+        double mu = uniform ? mu0 : sf_cof_eval(c->cof, xb + rx, yb + ry);
+        double a = c->wt[i] * mu / s;
+        fx -= a * vx;
+        fy -= a * vy;
+        t -= a * (rx * vy - ry * vx);
+    }
+    out[0] = ratio * fx;
+    out[1] = ratio * fy;
+    out[2] = ratio * t;
+    return SF_SUCCESS;
+}
+
+double sf_contact_mean_cof(const sf_contact *c, double xb, double yb)
+{
+    if (sf_cof_get_kind(c->cof) != SF_COF_FIELD)
+        return sf_cof_eval(c->cof, 0, 0);
+    double s = 0;
+    for (size_t i = 0; i < c->n; i++)
+        s += c->wt[i] * sf_cof_eval(c->cof, xb + c->rx[i], yb + c->ry[i]);
+    return s / c->spec.normal_force;
+}
+
+/* E + K - D (D = (K - E)/k^2, GSL's Dcomp) without cancellation: directly
+ * for small k, as E + (E - (1 - k^2) K)/k^2 near k = 1. */
+static double ekd(double k)
+{
+    double E = gsl_sf_ellint_Ecomp(k, GSL_PREC_DOUBLE);
+    if (k < 0.5)
+        return E + gsl_sf_ellint_Kcomp(k, GSL_PREC_DOUBLE) - gsl_sf_ellint_Dcomp(k, GSL_PREC_DOUBLE);
+    return E + (E - (1 - k * k) * gsl_sf_ellint_Kcomp(k, GSL_PREC_DOUBLE)) / (k * k);
+}
+
+/* t for eps >= 2 (m = 1/eps^2 <= 1/4): the closed form's bracket cancels to
+ * O(m^2), so sum its power series instead, built from the Maclaurin
+ * coefficients of K, E and D in m: K = pi/2 sum a_n^2 m^n,
+ * E = pi/2 sum -a_n^2/(2n-1) m^n, D = pi/2 sum a_{n+1}^2 (2n+2)/(2n+1) m^n,
+ * a_n = (2n)!/(4^n n!^2).  t = 2/(9 eps) sum_{n>=1} g_n m^{n-1} with
+ * g_n = 3 e_{n-1} - e_n + 2 d_n - 5 d_{n-1} + 3 d_{n-2}. */
+static double t_large(double eps)
+{
+    double m = 1 / (eps * eps), a2[80], e[80], d[80];
+    double a = 1;
+    for (int n = 0; n < 80; n++) {
+        if (n)
+            a *= (2.0 * n - 1) / (2.0 * n);
+        a2[n] = a * a;
+        e[n] = n ? -a2[n] / (2.0 * n - 1) : 1;
+    }
+    for (int n = 0; n < 79; n++)
+        d[n] = a2[n + 1] * (2.0 * n + 2) / (2.0 * n + 1);
+    double sum = 0, mp = 1;
+    for (int n = 1; n < 78; n++) {
+        double g = 3 * e[n - 1] - e[n] + 2 * d[n] - 5 * d[n - 1] + (n >= 2 ? 3 * d[n - 2] : 0);
+        double term = g * mp;
+        sum += term;
+        if (fabs(term) < 1e-18 * fabs(sum))
+            break;
+        mp *= m;
+    }
+    return 2 / (9 * eps) * sum;
+}
+
+void sf_contensou(double eps, double *f, double *t)
+{
+    eps = fabs(eps);
+    if (eps == 0) {
+        *f = 0;
+        *t = 2.0 / 3.0;
+        return;
+    }
+    if (isinf(eps)) {
+        *f = 1;
+        *t = 0;
+        return;
+    }
+    if (eps == 1) {   /* (1 - k^2) K -> 0; GSL's K and E reject k = 1 */
+        *f = 8 / (3 * M_PI);
+        *t = 8 / (9 * M_PI);
+        return;
+    }
+    if (eps < 1) {
+        double k = eps, E = gsl_sf_ellint_Ecomp(k, GSL_PREC_DOUBLE);
+        double K = gsl_sf_ellint_Kcomp(k, GSL_PREC_DOUBLE);
+        *f = 4 * eps / (3 * M_PI) * ekd(k);
+        *t = 4 / (9 * M_PI) * ((4 - 2 * k * k) * E - (1 - k * k) * K);
+        return;
+    }
+    double k = 1 / eps;
+    *f = 4 / (3 * M_PI) * ekd(k);
+    if (eps >= 2) {
+        *t = t_large(eps);
+    } else {
+        double E = gsl_sf_ellint_Ecomp(k, GSL_PREC_DOUBLE), K = gsl_sf_ellint_Kcomp(k, GSL_PREC_DOUBLE);
+        *t = 4 * eps * eps * eps / (9 * M_PI) * ((1 - k * k) * (2 - 3 * k * k) * K + 2 * (2 * k * k - 1) * E);
+    }
+}

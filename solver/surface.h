@@ -1,0 +1,45 @@
+/* slipfield: the static limit surface (paper Eqs. 9-11) as a plan.
+ *
+ * For a disc centred over belt point (xb, yb), the plan stores the static
+ * COF at every quadrature cell once (one interpolation per cell); each
+ * evaluation of the surface is then a pass over the cells, no field access.
+ * Directions (theta, psi) are those of Eq. 9: a dimensionless twist
+ * (xdot*, ydot*, phidot*) = (cos theta cos psi, cos theta sin psi, sin theta)
+ * with lengths in units of R.  Points are dimensionless (Eq. 11):
+ * Q* = (F*x, F*y, T*) = (Fx/N, Fy/N, T/(N R)), the maximum-power wrench of
+ * that twist (the friction wrench on the disc is -N Q*).
+ *
+ * Stick uses only the T* = 0 section.  The paper approximates it by the
+ * theta = 0 curve and that by a circle of radius mu_bar (the disc-averaged
+ * static COF); sf_surface_section() gives the exact section: for each psi
+ * the theta at which T* = 0 (T* increases monotonically with theta),
+ * located with GSL's Brent solver.
+ */
+#ifndef SF_SURFACE_H
+#define SF_SURFACE_H
+
+#include "contact.h"
+
+typedef struct sf_surface sf_surface;
+
+int sf_surface_alloc(const sf_contact *c, double xb, double yb, sf_surface **out);
+void sf_surface_free(sf_surface *s);
+
+/* Eq. 11 at (theta, psi) [rad]: q = (F*x, F*y, T*), dimensionless. */
+void sf_surface_point(const sf_surface *s, double theta, double psi, double q[3]);
+
+/* Disc-averaged static COF mu_bar (dimensionless): the paper's equatorial
+ * circle radius. */
+double sf_surface_mean_cof(const sf_surface *s);
+
+/* The exact T* = 0 section at twist azimuth psi: *theta with T* = 0 to
+ * |dtheta| <= 1e-13 rad, and the point q (q[2] ~ 0). SF_EMAXITER if Brent
+ * does not converge. */
+int sf_surface_section(const sf_surface *s, double psi, double *theta, double q[3]);
+
+/* Radius of the exact T* = 0 section along the force direction alpha [rad]
+ * (dimensionless, in units of N); *psi_out (may be NULL) is the twist
+ * azimuth that produces it. */
+int sf_surface_section_radius(const sf_surface *s, double alpha, double *rho, double *psi_out);
+
+#endif

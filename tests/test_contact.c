@@ -1,0 +1,220 @@
+/* Unit tests: the COF seen by the disc, the friction wrench, the
+ * Contensou closed forms and the limit-surface plan. */
+#include "test_util.h"
+#include "cof.h"
+#include "contact.h"
+#include "surface.h"
+#include "scene.h"
+#include "sf_error.h"
+
+#include <stdlib.h>
+#include <string.h>
+#include <gsl/gsl_math.h>
+#include <gsl/gsl_rng.h>
+
+/* Bilinear interpolation reproduces a bilinear function exactly, and
+ * points outside the grid are clamped and counted. */
+static void cof_bilinear(void **state)
+{
+    (void)state;
+    size_t m = 5, n = 4;
+    double g[20];
+    for (size_t j = 0; j < n; j++)
+        for (size_t i = 0; i < m; i++) {
+            double x = 1.0 + 0.5 * (double)i, y = -2.0 + 0.25 * (double)j;
+            g[i + m * j] = 1 + 2 * x - 3 * y + 0.5 * x * y;
+        }
+    sf_cof *c;
+    assert_int_equal(sf_cof_alloc_grid(m, n, 1.0, -2.0, 0.5, 0.25, g, &c), SF_SUCCESS);
+    assert_int_equal(sf_cof_get_kind(c), SF_COF_FIELD);
+    double x = 1.37, y = -1.61;
+    assert_close(sf_cof_eval(c, x, y), 1 + 2 * x - 3 * y + 0.5 * x * y, 1e-14);
+    assert_close(sf_cof_eval(c, 3.0, -1.25), g[4 + m * 3], 1e-15);   /* last node */
+    assert_int_equal(sf_cof_outside(c), 0);
+    assert_close(sf_cof_eval(c, 100, -1.61), sf_cof_eval(c, 3.0, -1.61), 1e-15);
+    assert_close(sf_cof_eval(c, 1.37, -100), sf_cof_eval(c, 1.37, -2.0), 1e-15);
+    (void)sf_cof_eval(c, NAN, 0);
+    assert_int_equal(sf_cof_outside(c), 3);
+    sf_cof_free(c);
+}
+
+static void cof_invalid(void **state)
+{
+    (void)state;
+    sf_cof *c = (sf_cof *)1;
+    double g[4] = { 1, 1, 1, 1 };
+    assert_int_equal(sf_cof_alloc_uniform(-0.1, &c), SF_EINVAL);
+    assert_null(c);
+    assert_int_equal(sf_cof_alloc_uniform(NAN, &c), SF_EINVAL);
+    assert_int_equal(sf_cof_alloc_grid(1, 2, 0, 0, 1, 1, g, &c), SF_EINVAL);
+    assert_int_equal(sf_cof_alloc_grid(2, 2, 0, 0, 0, 1, g, &c), SF_EINVAL);
+    assert_int_equal(sf_cof_alloc_grid(2, 2, 0, 0, 1, 1, NULL, &c), SF_EINVAL);
+    sf_cof_free(NULL);
+}
+
+/* The plan decides what a scene needs: nothing for a uniform COF, one
+ * draw for a random variable, a strip field sized from l, v_b T and the
+ * spring excursion bound; an oversized strip is refused with a reason. */
+static void cof_plan(void **state)
+{
+    (void)state;
+    sf_scene s;
+    sf_scene_default(&s);
+    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+    sf_cof_plan *p;
+    sf_cof *c;
+    char err[256] = "";
+    s.cof = SF_COF_UNIFORM;
+    assert_int_equal(sf_cof_plan_alloc(&s, &p, err, sizeof err), SF_SUCCESS);
+    assert_int_equal(sf_cof_plan_draw(p, rng, &c), SF_SUCCESS);
+    assert_close(sf_cof_eval(c, 3, 4), s.mu_mean, 0);
+    sf_cof_free(c);
+    sf_cof_plan_free(p);
+    s.cof = SF_COF_VARIABLE;
+    assert_int_equal(sf_cof_from_scene(&s, rng, &c), SF_SUCCESS);
+    assert_int_equal(sf_cof_get_kind(c), SF_COF_VARIABLE);
+    assert_true(sf_cof_eval(c, 0, 0) > 0 && sf_cof_eval(c, 0, 0) != s.mu_mean);
+    sf_cof_free(c);
+    s.cof = SF_COF_FIELD;
+    s.T = 10;
+    assert_int_equal(sf_cof_plan_alloc(&s, &p, err, sizeof err), SF_SUCCESS);
+    const sf_cof_plan_info *in = sf_cof_plan_get_info(p);
+    double B = s.R + 2 * (s.mu_mean + 4 * s.mu_std) * s.m * s.g / s.k + 2 * in->dx;
+    assert_close(in->bound, B, 1e-15);
+    assert_close(in->dx, fmin(s.l / 4, s.R / (double)s.cells), 1e-15);
+    assert_true(in->x0 <= -s.v_b * s.T - B + 1e-12);
+    assert_true(in->x0 + in->dx * (double)(in->nx - 1) >= B - 1e-12);
+    assert_int_equal(sf_cof_plan_draw(p, rng, &c), SF_SUCCESS);
+    assert_true(sf_cof_eval(c, -1.0, 0.3) > 0);
+    assert_int_equal(sf_cof_outside(c), 0);
+    sf_cof_free(c);
+    sf_cof_plan_free(p);
+    s.l = 1e-3;   /* a 1e-3 m field over a 30 m strip: refused */
+    assert_int_equal(sf_cof_plan_alloc(&s, &p, err, sizeof err), SF_ECAP);
+    assert_non_null(strstr(err, "grid points"));
+    gsl_rng_free(rng);
+}
+
+/* The closed forms at their special points, continuity across the branch
+ * points eps = 1 and eps = 2, monotonicity, and the asymptote. */
+static void contensou(void **state)
+{
+    (void)state;
+    double f, t, f2, t2;
+    sf_contensou(0, &f, &t);
+    assert_close(f, 0, 0);
+    assert_close(t, 2.0 / 3.0, 1e-16);
+    sf_contensou(1, &f, &t);
+    assert_close(f, 8 / (3 * M_PI), 1e-15);
+    assert_close(t, 8 / (9 * M_PI), 1e-15);
+    sf_contensou(1 - 1e-12, &f2, &t2);
+    assert_close(f2, f, 1e-10);
+    assert_close(t2, t, 1e-10);
+    sf_contensou(1 + 1e-12, &f2, &t2);
+    assert_close(f2, f, 1e-10);
+    assert_close(t2, t, 1e-10);
+    sf_contensou(2 - 1e-13, &f, &t);
+    sf_contensou(2, &f2, &t2);
+    assert_close(t2, t, 1e-12);
+    sf_contensou(-0.5, &f, &t);
+    sf_contensou(0.5, &f2, &t2);
+    assert_close(f, f2, 0);
+    sf_contensou(1e8, &f, &t);
+    assert_close(f, 1, 1e-14);
+    assert_close(t * 4e8, 1, 1e-10);
+    sf_contensou(INFINITY, &f, &t);
+    assert_close(f, 1, 0);
+    double fp = 0, tp = 1;
+    for (double e = 0.01; e < 50; e *= 1.3) {
+        sf_contensou(e, &f, &t);
+        assert_true(f > fp && t < tp);
+        fp = f;
+        tp = t;
+    }
+}
+
+static void wrench_and_margins(void **state)
+{
+    (void)state;
+    sf_cof *cof;
+    sf_cof_alloc_uniform(0.4, &cof);
+    sf_contact *c = (sf_contact *)1;
+    sf_contact_spec bad = { -1, 10, SF_LAYOUT_POLAR, 8 };
+    assert_int_equal(sf_contact_alloc(&bad, cof, &c), SF_EINVAL);
+    assert_null(c);
+    bad.R = 0.5;
+    bad.cells = 0;
+    assert_int_equal(sf_contact_alloc(&bad, cof, &c), SF_EINVAL);
+    sf_contact_spec spec = { 0.5, 10, SF_LAYOUT_POLAR, 8 };
+    assert_int_equal(sf_contact_alloc(&spec, cof, &c), SF_SUCCESS);
+    double q[3];
+    assert_int_equal(sf_contact_wrench(c, 0, 0, NAN, 0, 0, 1, q), SF_EINVAL);
+    assert_int_equal(sf_contact_wrench(c, 0, 0, 0, 0, 0, 1, q), SF_SUCCESS);   /* no slip: no force */
+    assert_close(q[0], 0, 0);
+    assert_close(q[2], 0, 0);
+    sf_contact_wrench(c, 0, 0, -0.3, 0, 0, 0.9, q);
+    assert_close(q[0], 0.9 * 0.4 * 10, 1e-14);
+    assert_close(sf_contact_mean_cof(c, 5, 5), 0.4, 0);
+    double m0, m1;
+    assert_int_equal(sf_contact_stick_margin(c, 0, 0, 1.0, 2.0, 0, &m0), SF_SUCCESS);
+    assert_int_equal(sf_contact_stick_margin(c, 0, 0, 1.0, 2.0, 1, &m1), SF_SUCCESS);
+    assert_close(m0, 4 - hypot(1, 2), 1e-14);
+    assert_close(m1, m0, 1e-12);   /* uniform: the section is the circle */
+    assert_int_equal(sf_contact_stick_margin(c, 0, 0, INFINITY, 0, 0, &m0), SF_EINVAL);
+    sf_surface *s;
+    assert_int_equal(sf_surface_alloc(c, 0, 0, &s), SF_SUCCESS);
+    double th, p[3];
+    assert_int_equal(sf_surface_section(s, 0.7, &th, p), SF_SUCCESS);
+    assert_close(th, 0, 1e-12);
+    assert_close(hypot(p[0], p[1]), 0.4, 1e-13);
+    sf_surface_free(s);
+    sf_contact_free(c);
+    /* zero COF: the surface degenerates to the origin without failing */
+    sf_cof_free(cof);
+    sf_cof_alloc_uniform(0, &cof);
+    sf_contact_alloc(&spec, cof, &c);
+    sf_surface_alloc(c, 0, 0, &s);
+    double rho;
+    assert_int_equal(sf_surface_section_radius(s, 1.0, &rho, NULL), SF_SUCCESS);
+    assert_close(rho, 0, 0);
+    assert_int_equal(sf_surface_section(s, 1.0, &th, p), SF_SUCCESS);
+    sf_surface_free(s);
+    sf_contact_free(c);
+    sf_cof_free(cof);
+}
+
+/* On a field with a linear COF gradient, the exact section lies inside
+ * the equatorial circle and the margins order accordingly. */
+static void section_inside_circle(void **state)
+{
+    (void)state;
+    double g[9];
+    for (int j = 0; j < 3; j++)
+        for (int i = 0; i < 3; i++)
+            g[i + 3 * j] = 0.5 + 0.2 * (i - 1);
+    sf_cof *cof;
+    sf_cof_alloc_grid(3, 3, -1, -1, 1, 1, g, &cof);
+    sf_contact_spec spec = { 0.5, 10, SF_LAYOUT_POLAR, 16 };
+    sf_contact *c;
+    sf_contact_alloc(&spec, cof, &c);
+    double m0, m1;
+    sf_contact_stick_margin(c, 0, 0, 0.0, 3.0, 0, &m0);
+    sf_contact_stick_margin(c, 0, 0, 0.0, 3.0, 1, &m1);
+    assert_close(m0, 2.0, 1e-12);
+    assert_true(m1 < m0 && m1 > 0);
+    sf_contact_free(c);
+    sf_cof_free(cof);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(cof_bilinear),
+        cmocka_unit_test(cof_invalid),
+        cmocka_unit_test(cof_plan),
+        cmocka_unit_test(contensou),
+        cmocka_unit_test(wrench_and_margins),
+        cmocka_unit_test(section_inside_circle),
+    };
+    return cmocka_run_group_tests_name("contact", tests, NULL, NULL);
+}
