@@ -26,6 +26,23 @@ int sf_cli_close(const char *cmd, sf_out *o, int ok);
 int sf_cli_size(const char *cmd, const char *opt, const char *v, size_t lo, size_t hi, size_t *out);
 int sf_cli_double(const char *cmd, const char *opt, const char *v, double *out);
 
+/* A subcommand's options: `--name VALUE` (size, double or string) or a
+ * flag `--name` (int set to 1).  sf_cli_parse() fills them, takes one
+ * positional SCENE argument, prints usage on -h/--help (returns
+ * SF_CLI_HELP) and errors naming the option (returns SF_EXIT_USAGE). */
+enum { SF_OPT_SIZE, SF_OPT_DOUBLE, SF_OPT_STRING, SF_OPT_FLAG };
+typedef struct {
+    const char *name;   /* e.g. "--samples" */
+    int kind;
+    void *dst;          /* size_t *, double *, const char **, int * */
+    size_t lo, hi;      /* SF_OPT_SIZE range */
+} sf_opt;
+#define SF_CLI_HELP (-1)
+int sf_cli_parse(const char *cmd, int argc, char **argv, const sf_opt *opts, size_t nopts,
+                 const char **scene, void (*usage)(FILE *));
+
 int sf_cmd_field(int argc, char **argv);
+int sf_cmd_surface(int argc, char **argv);
+int sf_cmd_wrench(int argc, char **argv);
 
 #endif

@@ -21,39 +21,20 @@ static void usage(FILE *f)
 
 int sf_cmd_field(int argc, char **argv)
 {
-    const char *scene_path = NULL, *out_path = "-";
+    const char *scene_path, *out_path = "-";
     size_t samples = 1;
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
-        if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
-            usage(stdout);
-            return SF_EXIT_OK;
-        } else if (!strcmp(a, "--samples")) {
-            if (sf_cli_size("field", a, v, 1, 1000000, &samples)) return SF_EXIT_USAGE;
-            i++;
-        } else if (!strcmp(a, "--out") && v) {
-            out_path = v;
-            i++;
-        } else if (a[0] == '-' && a[1]) {
-            fprintf(stderr, "slipfield field: unknown option or missing value: %s\n", a);
-            usage(stderr);
-            return SF_EXIT_USAGE;
-        } else if (!scene_path) {
-            scene_path = a;
-        } else {
-            fprintf(stderr, "slipfield field: more than one scene given\n");
-            return SF_EXIT_USAGE;
-        }
-    }
-    if (!scene_path) {
-        usage(stderr);
-        return SF_EXIT_USAGE;
-    }
+    const sf_opt opts[] = {
+        { "--samples", SF_OPT_SIZE, &samples, 1, 1000000 },
+        { "--out", SF_OPT_STRING, &out_path, 0, 0 },
+    };
+    int rc = sf_cli_parse("field", argc, argv, opts, 2, &scene_path, usage);
+    if (rc)
+        return rc == SF_CLI_HELP ? SF_EXIT_OK : rc;
     sf_scene s;
     if (sf_cli_load_scene("field", scene_path, &s))
         return SF_EXIT_USAGE;
     sf_lnfield *lf;
-    int rc = sf_lnfield_alloc(&s, &lf);
+    rc = sf_lnfield_alloc(&s, &lf);
     if (rc == SF_ECAP) {
         fprintf(stderr, "slipfield field: warning: embedding padding cap reached; covariance error %.3g\n",
                 sf_field_get_info(sf_lnfield_gaussian(lf))->cov_error);
