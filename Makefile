@@ -12,14 +12,14 @@ VERIFY_FLAGS ?=
 PKGS := gsl fftw3
 GIT_REV := $(shell git rev-parse --short HEAD 2>/dev/null || echo unknown)
 WARN := -Wall -Wextra -Wpedantic -Werror
-BASE_CFLAGS := -std=c11 -D_POSIX_C_SOURCE=200809L $(WARN) -Isolver -Iverification -Icli -Itests -I$(BUILD)/gen
+BASE_CFLAGS := -std=c11 -D_POSIX_C_SOURCE=200809L $(WARN) -Isolver -Iverification -Icli -Itests -I$(BUILD)/gen -fopenmp
 # The git revision lives in a generated header rewritten only when it
 # changes, so a commit does not rebuild everything.
 _rev := $(shell mkdir -p $(BUILD)/gen && echo '#define SF_GIT_REV "$(GIT_REV)"' > $(BUILD)/gen/sf_rev.h.new && \
           (cmp -s $(BUILD)/gen/sf_rev.h.new $(BUILD)/gen/sf_rev.h || mv $(BUILD)/gen/sf_rev.h.new $(BUILD)/gen/sf_rev.h))
 OPT ?= -O2 -g
 PKG_CFLAGS = $(shell pkg-config --cflags $(PKGS) 2>/dev/null)
-PKG_LIBS = $(shell pkg-config --libs $(PKGS) 2>/dev/null || echo -lgsl -lgslcblas -lfftw3) -lm
+PKG_LIBS = $(shell pkg-config --libs $(PKGS) 2>/dev/null || echo -lgsl -lgslcblas -lfftw3) -lm -fopenmp
 # cmark-gfm renders the HTML reports (its table extension has no .pc file)
 HTML_CFLAGS = $(shell pkg-config --cflags libcmark-gfm 2>/dev/null)
 HTML_LIBS = -lcmark-gfm-extensions $(shell pkg-config --libs libcmark-gfm 2>/dev/null || echo -lcmark-gfm)

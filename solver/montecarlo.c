@@ -1,0 +1,195 @@
+#include "montecarlo.h"
+#include "sf_error.h"
+
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+static uint64_t splitmix64(uint64_t x)
+{
+    x += 0x9e3779b97f4a7c15ULL;
+    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
+    return x ^ (x >> 31);
+}
+
+unsigned long sf_mc_seed(unsigned long seed, size_t i)
+{
+    return (unsigned long)splitmix64(splitmix64((uint64_t)seed) ^ (uint64_t)i);
+}
+
+unsigned long sf_mc_hash(const void *p, size_t n, unsigned long h)
+{
+    uint64_t x = h ? h : 0xcbf29ce484222325ULL;
+    const unsigned char *b = p;
+    for (size_t i = 0; i < n; i++) {
+        x ^= b[i];
+        x *= 0x100000001b3ULL;
+    }
+    return (unsigned long)x;
+}
+
+static void seterr(char *err, size_t n, const char *msg, const char *path)
+{
+    if (err && n)
+        snprintf(err, n, "%s: %s", path, msg);
+}
+
+/* Read the complete lines of a checkpoint into out/done. */
+static int ck_read(const sf_mc_spec *s, double *out, unsigned char *done, size_t *count, char *err, size_t errlen)
+{
+    *count = 0;
+    FILE *f = fopen(s->checkpoint, "r");
+    if (!f)
+        return SF_SUCCESS;   /* nothing to resume */
+    char *line = NULL;
+    size_t cap = 0;
+    ssize_t len = getline(&line, &cap, f);
+    unsigned long n, nout, key;
+    if (len <= 0 || sscanf(line, "# slipfield checkpoint v1 n=%lu nout=%lu key=%lx", &n, &nout, &key) != 3) {
+        free(line);
+        fclose(f);
+        seterr(err, errlen, "not a slipfield checkpoint", s->checkpoint);
+        return SF_EINVAL;
+    }
+    if (n != s->n || nout != s->nout || key != s->key) {
+        free(line);
+        fclose(f);
+        seterr(err, errlen, "checkpoint of other work (scene, size or seed differ): remove it or drop --resume",
+               s->checkpoint);
+        return SF_EINVAL;
+    }
+    double *v = malloc((s->nout ? s->nout : 1) * sizeof *v);
+    while (v && (len = getline(&line, &cap, f)) > 0) {
+        if (line[len - 1] != '\n')
+            break;               /* torn last line: redo it */
+        char *p = line, *end;
+        unsigned long i = strtoul(p, &end, 10);
+        if (end == p || i >= s->n)
+            continue;
+        size_t k = 0;
+        for (p = end; k < s->nout; k++, p = end) {
+            v[k] = strtod(p, &end);
+            if (end == p)
+                break;
+        }
+        if (k < s->nout)
+            continue;
+        memcpy(out + i * s->nout, v, s->nout * sizeof *v);
+        if (!done[i])
+            (*count)++;
+        done[i] = 1;
+    }
+    free(v);
+    free(line);
+    fclose(f);
+    return SF_SUCCESS;
+}
+
+int sf_mc_run(const sf_mc_spec *s, const sf_mc_ops *ops, void *ctx, double *out,
+              size_t *done_before, char *err, size_t errlen)
+{
+    unsigned char *done = calloc(s->n ? s->n : 1, 1);
+    if (!done)
+        return SF_ENOMEM;
+    size_t before = 0;
+    FILE *ck = NULL;
+    int rc = SF_SUCCESS;
+    if (s->checkpoint) {
+        if (s->resume && (rc = ck_read(s, out, done, &before, err, errlen))) {
+            free(done);
+            return rc;
+        }
+        /* rewrite the kept lines, then append: the file only ever holds
+         * complete lines of this work */
+        char tmp[4096];
+        snprintf(tmp, sizeof tmp, "%s.tmp", s->checkpoint);
+        ck = fopen(tmp, "w");
+        if (!ck) {
+            free(done);
+            seterr(err, errlen, "cannot write the checkpoint", s->checkpoint);
+            return SF_EIO;
+        }
+        fprintf(ck, "# slipfield checkpoint v1 n=%zu nout=%zu key=%lx\n", s->n, s->nout, s->key);
+        for (size_t i = 0; i < s->n; i++) {
+            if (!done[i])
+                continue;
+            fprintf(ck, "%zu", i);
+            for (size_t k = 0; k < s->nout; k++)
+                fprintf(ck, " %a", out[i * s->nout + k]);
+            fputc('\n', ck);
+        }
+        if (fflush(ck) || rename(tmp, s->checkpoint)) {
+            fclose(ck);
+            free(done);
+            seterr(err, errlen, "cannot write the checkpoint", s->checkpoint);
+            return SF_EIO;
+        }
+    }
+    int tty = s->label && isatty(2);
+    size_t finished = before;
+    int failed = 0;
+#ifdef _OPENMP
+    int nt = s->threads > 0 ? s->threads : omp_get_max_threads();
+#endif
+#pragma omp parallel num_threads(nt)
+    {
+        void *ws = ops->ws_alloc ? ops->ws_alloc(ctx) : ctx;
+        gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+        int ready = rng && (ws || !ops->ws_alloc);
+        if (!ready) {
+#pragma omp critical(sf_mc)
+            {
+                failed = 1;
+                rc = SF_ENOMEM;
+            }
+        }
+#pragma omp for schedule(dynamic, 1)
+        for (size_t i = 0; i < s->n; i++) {
+            int stop;
+#pragma omp atomic read
+            stop = failed;
+            if (done[i] || stop || !ready)
+                continue;
+            gsl_rng_set(rng, sf_mc_seed(s->seed, i));
+            int r = ops->realise(ws, i, rng, out + i * s->nout);
+#pragma omp critical(sf_mc)
+            {
+                if (r) {
+                    if (!failed)
+                        rc = r;
+                    failed = 1;
+                } else {
+                    if (ck) {
+                        fprintf(ck, "%zu", i);
+                        for (size_t k = 0; k < s->nout; k++)
+                            fprintf(ck, " %a", out[i * s->nout + k]);
+                        fputc('\n', ck);
+                        fflush(ck);
+                    }
+                    finished++;
+                    if (tty)
+                        fprintf(stderr, "\r%s: %zu/%zu realisations", s->label, finished, s->n);
+                }
+            }
+        }
+        if (ops->ws_free && ws)
+            ops->ws_free(ws);
+        gsl_rng_free(rng);
+    }
+    if (tty)
+        fputc('\n', stderr);
+    if (ck && fclose(ck) && !rc) {
+        seterr(err, errlen, "cannot write the checkpoint", s->checkpoint);
+        rc = SF_EIO;
+    }
+    if (done_before)
+        *done_before = before;
+    free(done);
+    return rc;
+}
