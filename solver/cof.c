@@ -141,22 +141,30 @@ int sf_cof_plan_alloc(const sf_scene *s, sf_cof_plan **out, char *err, size_t er
         return plan_err(err, errlen, rc, "invalid COF marginal (mean %g, std %g)", s->mu_mean, s->mu_std);
     }
     if (p->info.kind == SF_COF_FIELD) {
-        double h = fmin(s->l / 4, s->R / (double)s->cells);
+        double h = s->l / 8;
         double mu_hi = s->mu_mean + 4 * s->mu_std;
-        double B = s->R + 2 * mu_hi * s->m * s->g / s->k + 2 * h;
-        double len = s->v_b * s->T + 2 * B;
-        double nx = ceil(len / h) + 1, ny = ceil(2 * B / h) + 1;
+        double B0 = s->R + 2 * mu_hi * s->m * s->g / s->k;
+        double W0 = s->strip_halfwidth > 0 ? s->strip_halfwidth + s->R : B0;
+        double E = hypot(s->v_b * s->T + 2 * B0, 2 * W0);   /* the strip the disc can visit */
+        double B = B0 + 2 * h, W = W0 + 2 * h, len = s->v_b * s->T + 2 * B;
+        if ((E / s->l) * (E / s->l) <= 1e-6 || s->mu_std == 0) {
+            p->info.kind = SF_COF_VARIABLE;
+            p->info.shortcut = 1;
+            *out = p;
+            return SF_SUCCESS;
+        }
+        double nx = ceil(len / h) + 1, ny = ceil(2 * W / h) + 1;
         if (!(nx * ny <= (double)SF_COF_MAX_POINTS)) {
             free(p);
             return plan_err(err, errlen, SF_ECAP,
-                            "the belt strip needs %.3g grid points (spacing %.3g m): above the cap of 2^24; "
-                            "raise l or lower v_b T", nx * ny, h);
+                            "the belt strip needs %.3g grid points (spacing l/8 = %.3g m): above the cap of 2^24; "
+                            "raise l, lower v_b T or set strip_halfwidth", nx * ny, h);
         }
         p->info.nx = (size_t)nx;
         p->info.ny = (size_t)ny;
         p->info.dx = p->info.dy = h;
         p->info.x0 = -s->v_b * s->T - B;
-        p->info.y0 = -B;
+        p->info.y0 = -W;
         p->info.bound = B;
         sf_scene gs = *s;
         gs.nx = p->info.nx;

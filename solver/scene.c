@@ -52,6 +52,7 @@ static const key_t_ keys[] = {
     { "eig_tol", K_DOUBLE, OFF(eig_tol), 0, 0, 1, 0, 0, "1e-12", "1", NULL, "accept lambda_min >= -eig_tol lambda_max" },
     { "no_padding", K_BOOL, OFF(no_padding), 0, 0, 0, 0, 0, "false", "", NULL, "minimal embedding only" },
     { "precorrect", K_BOOL, OFF(precorrect), 0, 0, 0, 0, 0, "false", "", NULL, "pre-correct the Gaussian correlation so the lognormal field has Eq. 2" },
+    { "strip_halfwidth", K_DOUBLE, OFF(strip_halfwidth), 0, 0, INF, 0, 0, "0", "m", NULL, "belt strip half-width in y for a field COF (0: the spring-excursion bound)" },
     { "samples", K_SIZE, OFF(samples), 0, 1, 1e9, 0, 0, "1000", "1", NULL, "number of samples or realisations" },
     /* contact */
     { "layout", K_ENUM, OFF(layout), 0, 0, 0, 0, 0, "polar", "", "polar|cartesian", "disc quadrature layout" },

@@ -33,6 +33,7 @@ typedef struct {
     size_t nx, ny;
     double dx, dy, pad_cap, eig_tol;
     int no_padding, precorrect;
+    double strip_halfwidth;  /* belt strip half-width in y [m]; 0: automatic bound */
     size_t samples;
     /* contact */
     int layout;              /* sf_layout */

@@ -81,7 +81,7 @@ static void cof_plan(void **state)
     const sf_cof_plan_info *in = sf_cof_plan_get_info(p);
     double B = s.R + 2 * (s.mu_mean + 4 * s.mu_std) * s.m * s.g / s.k + 2 * in->dx;
     assert_close(in->bound, B, 1e-15);
-    assert_close(in->dx, fmin(s.l / 4, s.R / (double)s.cells), 1e-15);
+    assert_close(in->dx, s.l / 8, 1e-15);
     assert_true(in->x0 <= -s.v_b * s.T - B + 1e-12);
     assert_true(in->x0 + in->dx * (double)(in->nx - 1) >= B - 1e-12);
     assert_int_equal(sf_cof_plan_draw(p, rng, &c), SF_SUCCESS);
@@ -89,9 +89,21 @@ static void cof_plan(void **state)
     assert_int_equal(sf_cof_outside(c), 0);
     sf_cof_free(c);
     sf_cof_plan_free(p);
+    s.strip_halfwidth = 0.2;
+    assert_int_equal(sf_cof_plan_alloc(&s, &p, err, sizeof err), SF_SUCCESS);
+    assert_close(sf_cof_plan_get_info(p)->y0, -(0.2 + s.R + 2 * s.l / 8), 1e-15);
+    sf_cof_plan_free(p);
     s.l = 1e-3;   /* a 1e-3 m field over a 30 m strip: refused */
     assert_int_equal(sf_cof_plan_alloc(&s, &p, err, sizeof err), SF_ECAP);
     assert_non_null(strstr(err, "grid points"));
+    s.l = 1e5;    /* a 1e5 m correlation length over a 15 m strip: one variable */
+    assert_int_equal(sf_cof_plan_alloc(&s, &p, err, sizeof err), SF_SUCCESS);
+    assert_int_equal(sf_cof_plan_get_info(p)->kind, SF_COF_VARIABLE);
+    assert_int_equal(sf_cof_plan_get_info(p)->shortcut, 1);
+    assert_int_equal(sf_cof_plan_draw(p, rng, &c), SF_SUCCESS);
+    assert_int_equal(sf_cof_get_kind(c), SF_COF_VARIABLE);
+    sf_cof_free(c);
+    sf_cof_plan_free(p);
     gsl_rng_free(rng);
 }
 

@@ -315,6 +315,23 @@ static void write_plot(FILE *g, const sf_plot *p, const char *path)
     fprintf(g, p->logx ? "set logscale x\nset format x '%%.0e'\n" : "unset logscale x\n");
     fprintf(g, p->logy ? "set logscale y\nset format y '%%.0e'\n" : "unset logscale y\n");
     int any = 0;
+    double ylo = INFINITY, yhi = -INFINITY;
+    for (size_t j = 0; j < p->ns; j++) {
+        const series *s = &p->s[j];
+        for (size_t i = 0; i < s->n; i++)
+            if (s->style == -2 ? finite_for(p, 1, s->y[i]) : finite_for(p, s->x[i], s->y[i])) {
+                ylo = fmin(ylo, s->y[i]);
+                yhi = fmax(yhi, s->y[i]);
+                if (s->style == -1 && finite_for(p, s->x[i], s->y2[i])) {
+                    ylo = fmin(ylo, s->y2[i]);
+                    yhi = fmax(yhi, s->y2[i]);
+                }
+            }
+    }
+    /* a flat plot (e.g. a measured value equal to the exact one): give
+     * gnuplot a range around it instead of letting it warn and guess */
+    if (ylo == yhi && !p->logy)
+        fprintf(g, "set yrange [%.10g:%.10g]\n", ylo - fmax(1e-3 * fabs(ylo), 1e-12), yhi + fmax(1e-3 * fabs(yhi), 1e-12));
     for (size_t j = 0; j < p->ns; j++) {
         const series *s = &p->s[j];
         fprintf(g, "$d%zu << EOD\n", j);
