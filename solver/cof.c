@@ -171,6 +171,12 @@ int sf_cof_plan_alloc(const sf_scene *s, sf_cof_plan **out, char *err, size_t er
         gs.ny = p->info.ny;
         gs.dx = gs.dy = h;
         rc = sf_lnfield_alloc(&gs, &p->field);
+        if (rc == SF_ENOMEM) {   /* the embedding is over its own cap */
+            free(p);
+            return plan_err(err, errlen, SF_ECAP,
+                            "the %.0f x %.0f grid points of the belt strip need a circulant embedding above its cap "
+                            "of 2^25 points; raise l, lower v_b T or set strip_halfwidth", nx, ny);
+        }
         if (rc && rc != SF_ECAP) {
             free(p);
             return plan_err(err, errlen, rc, "cannot plan the %g x %g strip field", nx, ny);

@@ -176,10 +176,12 @@ int sf_contact_wrench(const sf_contact *c, double xb, double yb,
         if (s == 0)   /* the pole sits on a node: no slip direction there */
             continue;
         double mu = uniform ? mu0 : sf_cof_eval(c->cof, xb + rx, yb + ry);
-        double a = c->wt[i] * mu / s;
-        fx -= a * vx;
-        fy -= a * vy;
-        t -= a * (rx * vy - ry * vx);
+        /* unit direction first: wt mu / s underflows for a tiny COF at a
+         * huge speed, and 1/s overflows for a subnormal speed */
+        double a = c->wt[i] * mu, dx = vx / s, dy = vy / s;
+        fx -= a * dx;
+        fy -= a * dy;
+        t -= a * (rx * dy - ry * dx);
     }
     out[0] = ratio * fx;
     out[1] = ratio * fy;

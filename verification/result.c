@@ -330,8 +330,10 @@ static void write_plot(FILE *g, const sf_plot *p, const char *path)
     }
     /* a flat plot (e.g. a measured value equal to the exact one): give
      * gnuplot a range around it instead of letting it warn and guess */
-    if (ylo == yhi && !p->logy)
-        fprintf(g, "set yrange [%.10g:%.10g]\n", ylo - fmax(1e-3 * fabs(ylo), 1e-12), yhi + fmax(1e-3 * fabs(yhi), 1e-12));
+    if (isfinite(ylo) && yhi - ylo <= 1e-9 * fmax(fabs(ylo), fabs(yhi)) && !p->logy) {
+        double mid = 0.5 * (ylo + yhi), h = fmax(1e-3 * fabs(mid), 1e-12);
+        fprintf(g, "set yrange [%.10g:%.10g]\n", mid - h, mid + h);
+    }
     for (size_t j = 0; j < p->ns; j++) {
         const series *s = &p->s[j];
         fprintf(g, "$d%zu << EOD\n", j);

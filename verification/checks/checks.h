@@ -8,5 +8,6 @@ extern const sf_check_def sf_checks_field[];
 extern const sf_check_def sf_checks_lognormal[];
 extern const sf_check_def sf_checks_contact[];
 extern const sf_check_def sf_checks_surface[];
+extern const sf_check_def sf_checks_stress[];
 
 #endif

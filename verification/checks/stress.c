@@ -1,0 +1,197 @@
+/* Numerical stress: the solver at extreme parameters.  Each check states
+ * what must hold there (finite results, physical bounds, a documented
+ * decision, or a clear refusal with its reason) and checks exactly that. */
+#include "checks.h"
+#include "common.h"
+#include "contact.h"
+#include "cof.h"
+#include "field.h"
+#include "sf_error.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <gsl/gsl_math.h>
+
+/* The COF plan over l/R from the sweep: each l either plans a strip field
+ * whose draws are finite and positive, takes the one-variable shortcut
+ * (documented threshold), or is refused with SF_ECAP and a reason; never
+ * anything else. */
+static int chk_cof_plan_range(const sf_case *c, sf_result *r)
+{
+    const sf_scene *s0 = &c->scene;
+    size_t K = s0->sweep.n, bad = 0, refused = 0, shortcut = 0, fields = 0;
+    if (!K)
+        return SF_EINVAL;
+    gsl_rng *rng = sf_case_rng(c);
+    sf_note(r, "| l/R | decision | grid | smallest COF drawn |\n|---|---|---|---|");
+    for (size_t k = 0; k < K; k++) {
+        sf_scene s = *s0;
+        s.l = s0->sweep.v[k] * s0->R;
+        char err[256] = "";
+        sf_cof_plan *p;
+        int rc = sf_cof_plan_alloc(&s, &p, err, sizeof err);
+        if (rc == SF_ECAP) {
+            refused++;
+            int has_reason = strstr(err, "grid points") && strstr(err, "raise l");
+            bad += !has_reason;
+            sf_note(r, "| %g | refused: %s | | |", s0->sweep.v[k], err);
+            continue;
+        }
+        if (rc) {
+            bad++;
+            sf_note(r, "| %g | **error %s** | | |", s0->sweep.v[k], sf_strerror(rc));
+            continue;
+        }
+        const sf_cof_plan_info *in = sf_cof_plan_get_info(p);
+        sf_cof *cof;
+        double mn = INFINITY;
+        rc = sf_cof_plan_draw(p, rng, &cof);
+        if (rc) {
+            bad++;
+        } else {
+            /* probe the strip densely along its centre line and edges */
+            for (int q = 0; q <= 2000; q++) {
+                double xb = -s.v_b * s.T * q / 2000.0;
+                for (int e = -1; e <= 1; e++) {
+                    double v = sf_cof_eval(cof, xb, e * 0.5 * s.R);
+                    if (!(v > 0) || !isfinite(v))
+                        bad++;
+                    mn = fmin(mn, v);
+                }
+            }
+            bad += sf_cof_outside(cof) != 0;
+            sf_cof_free(cof);
+        }
+        if (in->shortcut)
+            shortcut++;
+        else
+            fields++;
+        sf_note(r, "| %g | %s | %zu x %zu | %.4g |", s0->sweep.v[k], in->shortcut ? "one random variable" : "strip field",
+                in->nx, in->ny, mn);
+        sf_cof_plan_free(p);
+    }
+    sf_check_le(r, "cases that neither planned, took the shortcut, nor refused with a reason; or drew a bad COF",
+                (double)bad, 0);
+    sf_check_true(r, "the sweep exercises all three decisions (field, shortcut, refusal)",
+                  fields && shortcut && refused, fields && shortcut && refused ? "all three seen" : "one is missing");
+    gsl_rng_free(rng);
+    return SF_SUCCESS;
+}
+
+/* Circulant embedding on grids where the squared-exponential covariance
+ * matrix is near-singular (l/dx up to 1e3): padding either reaches a PSD
+ * embedding (round-off clamps only) or reports truncation with its exact
+ * covariance error; samples stay finite with unit variance scale. */
+static int chk_near_singular(const sf_case *c, sf_result *r)
+{
+    const sf_scene *s0 = &c->scene;
+    size_t K = s0->sweep.n, bad = 0;
+    if (!K)
+        return SF_EINVAL;
+    gsl_rng *rng = sf_case_rng(c);
+    double worst_err_untruncated = 0;
+    sf_note(r, "| l/dx | embedding | truncated | clamped | covariance error | max abs sample |\n|---|---|---|---|---|---|");
+    for (size_t k = 0; k < K; k++) {
+        sf_field_spec spec;
+        sf_field_spec_default(&spec, s0->nx, s0->ny, s0->dx, s0->dy, s0->sweep.v[k] * s0->dx);
+        sf_field *f;
+        int rc = sf_field_alloc(&spec, &f);
+        if (rc && rc != SF_ECAP) {
+            sf_note(r, "| %g | refused: %s | | | | |", s0->sweep.v[k], sf_strerror(rc));
+            bad += rc != SF_ENOMEM;   /* too large an embedding is a fair refusal */
+            continue;
+        }
+        const sf_field_info *in = sf_field_get_info(f);
+        size_t n = s0->nx * s0->ny;
+        double *g = check_alloc(n * sizeof *g), mx = 0;
+        for (int q = 0; q < 4; q++) {
+            sf_field_sample(f, rng, g);
+            for (size_t i = 0; i < n; i++) {
+                if (!isfinite(g[i]))
+                    bad++;
+                mx = fmax(mx, fabs(g[i]));
+            }
+        }
+        if ((rc == SF_ECAP) != in->truncated || !isfinite(in->cov_error))
+            bad++;
+        if (!in->truncated)
+            worst_err_untruncated = fmax(worst_err_untruncated, in->cov_error);
+        sf_note(r, "| %g | %zu x %zu | %s | %zu | %.3e | %.3g |", s0->sweep.v[k], in->px, in->py,
+                in->truncated ? "yes" : "no", in->n_clamped, in->cov_error, mx);
+        bad += mx > 8;   /* |N(0,1)| > 8 has probability 1e-15 per value */
+        free(g);
+        sf_field_free(f);
+    }
+    sf_check_le(r, "non-finite samples, wrong truncation flag, or |sample| > 8", (double)bad, 0);
+    sf_check_le(r, "covariance error of the untruncated embeddings (round-off clamps only)",
+                worst_err_untruncated, s0->tolerance);
+    gsl_rng_free(rng);
+    return SF_SUCCESS;
+}
+
+/* The friction wrench at extreme motions and COFs: finite, |F| <= mu N,
+ * |T| <= mu N R, force against the centre slip for pure translation,
+ * torque against the spin for pure spin, with the exact magnitudes mu N
+ * and (2/3) mu N R there (polar layout) (for combined motions the minor
+ * component is below the round-off of the major one, so its sign is not
+ * defined to check); Contensou forms finite and
+ * within [0, 1] x [0, 2/3] over eps from 1e-300 to 1e300. */
+static int chk_wrench_extremes(const sf_case *c, sf_result *r)
+{
+    const sf_scene *s = &c->scene;
+    double mus[4] = { 0, 1e-300, 1e-12, 1e3 };
+    double vel[7] = { 0, 1e-300, 1e-150, 1e-8, 1, 1e8, 1e150 };
+    size_t bad = 0, tried = 0;
+    for (int a = 0; a < 4; a++) {
+        sf_cof *cof;
+        sf_cof_alloc_uniform(mus[a], &cof);
+        sf_contact_spec spec = { s->R, s->m * s->g, (sf_layout)s->layout, s->cells };
+        sf_contact *ct;
+        if (sf_contact_alloc(&spec, cof, &ct)) {
+            sf_cof_free(cof);
+            return SF_EFAIL;
+        }
+        double N = s->m * s->g, bound = mus[a] * N * (1 + 1e-12);
+        for (int i = 0; i < 7; i++)
+            for (int j = 0; j < 7; j++)
+                for (int sg = 0; sg < 4; sg++) {
+                    double u = (sg & 1 ? -1 : 1) * vel[i], w = (sg & 2 ? -1 : 1) * vel[j] / s->R, q[3];
+                    int rc = sf_contact_wrench(ct, 0, 0, u, 0, w, 1.0, q);
+                    tried++;
+                    if (rc || !isfinite(q[0]) || !isfinite(q[1]) || !isfinite(q[2]) ||
+                        hypot(q[0], q[1]) > bound || fabs(q[2]) > bound * s->R ||
+                        (w == 0 && q[0] * u > 0) || (u == 0 && q[2] * w > 0) ||
+                        (w == 0 && u != 0 && fabs(hypot(q[0], q[1]) - mus[a] * N) > 1e-12 * mus[a] * N) ||
+                        (u == 0 && w != 0 && s->layout == SF_LAYOUT_POLAR &&
+                         fabs(fabs(q[2]) - 2.0 / 3.0 * mus[a] * N * s->R) > 1e-12 * mus[a] * N * s->R))
+                        bad++;
+                }
+        sf_contact_free(ct);
+        sf_cof_free(cof);
+    }
+    double pf = -1, pt = 1;
+    for (double e = 1e-300; e < 1e300; e *= 1e10) {
+        double f, t;
+        sf_contensou(e, &f, &t);
+        tried++;
+        const double ro = 1e-14;   /* round-off slack, relative */
+        if (!isfinite(f) || !isfinite(t) || f < 0 || f > 1 + ro || t < 0 || t > 2.0 / 3.0 * (1 + ro) ||
+            f < pf * (1 - ro) || t > pt * (1 + ro))
+            bad++;
+        pf = f;
+        pt = t;
+    }
+    sf_check_le(r, "wrench or closed-form evaluations that broke a bound or were not finite", (double)bad, 0);
+    sf_note(r, "%zu evaluations: COF in {0, 1e-300, 1e-12, 1e3}, slip and spin speeds from 1e-300 to 1e150 "
+               "(both signs), eps from 1e-300 to 1e300. hypot() keeps subnormal slip speeds from "
+               "underflowing to a zero direction.", tried);
+    return SF_SUCCESS;
+}
+
+const sf_check_def sf_checks_stress[] = {
+    { "stress_cof_plan_range", chk_cof_plan_range, "COF plan over l/R 1e-3..1e4: field, shortcut or a clear refusal" },
+    { "stress_near_singular", chk_near_singular, "embedding of near-singular covariances: PSD or reported truncation" },
+    { "stress_wrench_extremes", chk_wrench_extremes, "wrench and closed forms finite and bounded at extremes" },
+    { NULL, NULL, NULL }
+};
