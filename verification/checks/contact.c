@@ -165,6 +165,21 @@ static int cf_oracle(double eps, double *f, double *t)
     return st;
 }
 
+/* f and t from two sources on one log-x plot. */
+static void plot_ft(sf_result *r, const char *stem, const char *title, size_t K, const double *e,
+                    const double *fe, const double *te, const char *other, const double *fo, const double *to)
+{
+    char lf[96], lt[96];
+    sf_plot *p = sf_result_plot(r, stem, title, "eps = U / (|w| R) [-]", "f = |F|/(mu N), t = |T|/(mu N R) [-]");
+    sf_plot_log(p, 1, 0);
+    sf_plot_series(p, "f closed form", SF_STYLE_LINES, K, e, fe);
+    sf_plot_series(p, "t closed form", SF_STYLE_LINES, K, e, te);
+    snprintf(lf, sizeof lf, "f %s", other);
+    snprintf(lt, sizeof lt, "t %s", other);
+    sf_plot_series(p, lf, SF_STYLE_POINTS, K, e, fo);
+    sf_plot_series(p, lt, SF_STYLE_POINTS, K, e, to);
+}
+
 /* Closed forms (elliptic integrals) vs the adaptive integral. */
 static int chk_closed_form_oracle(const sf_case *c, sf_result *r)
 {
@@ -195,13 +210,8 @@ static int chk_closed_form_oracle(const sf_case *c, sf_result *r)
     sf_check_abs(r, "t(1) = 8/(9 pi)", t1e, 8 / (9 * M_PI), 1e-14);
     sf_check_abs(r, "f(1e6) -> 1", fi, 1, 1e-11);
     sf_check_rel(r, "t(1e6) ~ 1/(4 eps)", ti, 1 / (4e6), 1e-5);
-    sf_plot *p = sf_result_plot(r, "contensou", "Contensou coupling: closed forms vs adaptive integral",
-                                "eps = U / (|w| R) [-]", "f = |F|/(mu N), t = |T|/(mu N R) [-]");
-    sf_plot_log(p, 1, 0);
-    sf_plot_series(p, "f closed form", SF_STYLE_LINES, K, e, f1);
-    sf_plot_series(p, "t closed form", SF_STYLE_LINES, K, e, t1);
-    sf_plot_series(p, "f adaptive 2-D (GSL)", SF_STYLE_POINTS, K, e, f2);
-    sf_plot_series(p, "t adaptive 2-D (GSL)", SF_STYLE_POINTS, K, e, t2);
+    plot_ft(r, "contensou", "Contensou coupling: closed forms vs adaptive integral", K, e, f1, t1,
+            "adaptive 2-D (GSL)", f2, t2);
     free(e); free(f1); free(t1); free(f2); free(t2);
     return SF_SUCCESS;
 }
@@ -242,13 +252,8 @@ static int chk_contensou_sweep(const sf_case *c, sf_result *r)
     sf_check_le(r, t, worst, s->tolerance);
     sf_check_le(r, "force antiparallel to the centre slip, torque opposing the spin", worst_dir, s->tolerance);
     sf_note(r, "%s layout, %zu cells; spin w = %g rad/s, slip at 30 degrees to x.", layout_name(s), s->cells, w);
-    sf_plot *p = sf_result_plot(r, "contensou_quadrature", "Combined sliding and spin: quadrature vs closed form",
-                                "eps = U / (|w| R) [-]", "f, t [-]");
-    sf_plot_log(p, 1, 0);
-    sf_plot_series(p, "f closed form", SF_STYLE_LINES, K, e, fe);
-    sf_plot_series(p, "t closed form", SF_STYLE_LINES, K, e, te);
-    sf_plot_series(p, "f quadrature", SF_STYLE_POINTS, K, e, fq);
-    sf_plot_series(p, "t quadrature", SF_STYLE_POINTS, K, e, tq);
+    plot_ft(r, "contensou_quadrature", "Combined sliding and spin: quadrature vs closed form", K, e, fe, te,
+            "quadrature", fq, tq);
     free(e); free(fq); free(tq); free(fe); free(te);
     sf_contact_free(ct);
     sf_cof_free(cof);
