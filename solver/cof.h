@@ -41,7 +41,7 @@ unsigned long sf_cof_outside(const sf_cof *c);
  * nothing; variable draws one lognormal value; field samples a lognormal
  * field on the belt strip the disc can visit during [0, T]:
  *   xb in [-v_b T - B, B],  yb in [-W, W],
- *   B = R + 2 mu_hi m g / k + 2 h,  W = strip_halfwidth + R, or B if 0,
+ *   B = R + 2 mu_hi m g / k + 2 h,  W = strip_halfwidth + R + 2 h (0: W = B),
  * where 2 mu_hi m g / k (mu_hi = mu_mean + 4 mu_std) bounds the spring
  * excursion |r| (the spring force never exceeds twice the largest
  * friction force it balances).  Grid spacing h = l/8: bilinear

@@ -52,7 +52,7 @@ static const key_t_ keys[] = {
     { "eig_tol", K_DOUBLE, OFF(eig_tol), 0, 0, 1, 0, 0, "1e-12", "1", NULL, "accept lambda_min >= -eig_tol lambda_max" },
     { "no_padding", K_BOOL, OFF(no_padding), 0, 0, 0, 0, 0, "false", "", NULL, "minimal embedding only" },
     { "precorrect", K_BOOL, OFF(precorrect), 0, 0, 0, 0, 0, "false", "", NULL, "pre-correct the Gaussian correlation so the lognormal field has Eq. 2" },
-    { "strip_halfwidth", K_DOUBLE, OFF(strip_halfwidth), 0, 0, INF, 0, 0, "0", "m", NULL, "belt strip half-width in y for a field COF (0: the spring-excursion bound)" },
+    { "strip_halfwidth", K_DOUBLE, OFF(strip_halfwidth), 0, 0, INF, 0, 0, "0.5", "m", NULL, "lateral excursion |y| the COF strip covers beyond R (0: the spring-excursion bound); a run that leaves it fails" },
     { "samples", K_SIZE, OFF(samples), 0, 1, 1e9, 0, 0, "1000", "1", NULL, "number of samples or realisations" },
     /* contact */
     { "layout", K_ENUM, OFF(layout), 0, 0, 0, 0, 0, "polar", "", "polar|cartesian", "disc quadrature layout" },
@@ -64,6 +64,7 @@ static const key_t_ keys[] = {
     { "npsi", K_SIZE, OFF(npsi), 0, 1, 1e5, 0, 0, "72", "1", NULL, "limit-surface psi samples" },
     /* dynamics */
     { "integrator", K_ENUM, OFF(integrator), 0, 0, 0, 0, 0, "adaptive", "", "adaptive|rk4", "time stepper" },
+    { "dof", K_ENUM, OFF(dof), 0, 0, 0, 0, 0, "3", "", "1|3", "degrees of freedom: 1 (Eqs. 3-4, uniform COF) or 3 (x, y, phi; Eq. 5)" },
     { "rtol", K_DOUBLE, OFF(rtol), 0, 0, 1, 1, 0, "1e-8", "1", NULL, "adaptive stepper relative tolerance" },
     { "t_skip", K_DOUBLE, OFF(t_skip), 0, 0, INF, 0, 0, "10", "s", NULL, "transient discarded before QoIs" },
     { "velocity_jump", K_BOOL, OFF(velocity_jump), 0, 0, 0, 0, 0, "true", "", NULL, "apply Eqs. 12 and 14" },

@@ -23,6 +23,7 @@ typedef struct {
 enum { SF_TIER_QUICK = 0, SF_TIER_FULL = 1 };
 enum { SF_VV_CODE = 0, SF_VV_SOLUTION = 1, SF_VV_VALIDATION = 2 };
 enum { SF_INTEG_ADAPTIVE = 0, SF_INTEG_RK4 = 1 };
+enum { SF_DOF_1 = 0, SF_DOF_3 = 1 };   /* values of the `dof` key ("1", "3") */
 
 typedef struct {
     /* physics (Table 1) */
@@ -42,6 +43,7 @@ typedef struct {
     size_t ntheta, npsi;     /* limit-surface direction grid */
     /* dynamics */
     int integrator;
+    int dof;                 /* SF_DOF_1: the 1-D model of Eqs. 3-4; SF_DOF_3: x, y, phi (Eq. 5) */
     double rtol, t_skip;
     int velocity_jump, exact_section, history;
     /* the check a case runs */

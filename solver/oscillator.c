@@ -1,0 +1,543 @@
+#include "oscillator.h"
+#include "contact.h"
+#include "surface.h"
+#include "sf_error.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_math.h>
+#include <gsl/gsl_odeiv2.h>
+#include <gsl/gsl_roots.h>
+
+/* state layout (the 1-D model uses the same vector with y, phi frozen) */
+enum { X, Y, P, VX, VY, W, WK, NSTATE };
+
+struct sf_osc {
+    sf_scene s;
+    const sf_cof *cof;
+    sf_contact *ct;          /* NULL: spatially constant COF, closed forms */
+    int dof3;
+    double mu;               /* the constant static COF (constant case) */
+    double N, J, wn, delta;  /* m g [N], m R^2/2 [kg m^2], sqrt(k/m) [1/s], eps wn R [m/s] */
+    gsl_odeiv2_system sys;
+    gsl_odeiv2_step *step, *bstep;
+    gsl_odeiv2_control *con;
+    gsl_odeiv2_evolve *ev;
+    unsigned long wrench_evals;
+};
+
+static int seterr(char *err, size_t n, int rc, const char *msg)
+{
+    if (err && n)
+        snprintf(err, n, "%s", msg);
+    return rc;
+}
+
+/* Kinetic friction wrench on the disc at time t, state y. */
+static void wrench(sf_osc *o, double t, const double *y, double q[3])
+{
+    const sf_scene *s = &o->s;
+    double u = y[VX] - s->v_b, v = y[VY], w = y[W], muk = s->mu_k_ratio * o->mu;
+    o->wrench_evals++;
+    q[0] = q[1] = q[2] = 0;
+    if (!o->dof3) {   /* Eq. 4 */
+        q[0] = u > 0 ? -muk * o->N : (u < 0 ? muk * o->N : 0);
+        return;
+    }
+    if (o->ct) {
+        sf_contact_wrench(o->ct, y[X] - s->v_b * t, y[Y], u, v, w, s->mu_k_ratio, q);
+        return;
+    }
+    double U = hypot(u, v), f, tt;
+    if (U == 0 && w == 0)
+        return;
+    sf_contensou(w == 0 ? INFINITY : U / (fabs(w) * s->R), &f, &tt);
+    if (U > 0) {
+        q[0] = -muk * o->N * f * (u / U);
+        q[1] = -muk * o->N * f * (v / U);
+    }
+    if (w != 0)
+        q[2] = -muk * o->N * s->R * tt * (w > 0 ? 1 : -1);
+}
+
+static int rhs(double t, const double *y, double *f, void *params)
+{
+    sf_osc *o = params;
+    const sf_scene *s = &o->s;
+    double q[3];
+    wrench(o, t, y, q);
+    f[X] = y[VX];
+    f[Y] = y[VY];
+    f[P] = y[W];
+    f[VX] = (-s->k * y[X] + q[0]) / s->m;
+    f[VY] = (-s->k * y[Y] + q[1]) / s->m;
+    f[W] = q[2] / o->J;
+    f[WK] = q[0] * y[VX] + q[1] * y[VY] + q[2] * y[W];
+    return GSL_SUCCESS;
+}
+
+int sf_osc_alloc(const sf_scene *s, const sf_cof *cof, sf_osc **out, char *err, size_t errlen)
+{
+    *out = NULL;
+    int constant = sf_cof_get_kind(cof) != SF_COF_FIELD;
+    if (s->dof == SF_DOF_1 && !constant)
+        return seterr(err, errlen, SF_EINVAL, "dof = 1 needs a spatially constant COF (cof = uniform or variable)");
+    sf_osc *o = calloc(1, sizeof *o);
+    if (!o)
+        return SF_ENOMEM;
+    o->s = *s;
+    o->cof = cof;
+    o->dof3 = s->dof == SF_DOF_3;
+    o->mu = constant ? sf_cof_eval(cof, 0, 0) : NAN;
+    o->N = s->m * s->g;
+    o->J = 0.5 * s->m * s->R * s->R;
+    o->wn = sqrt(s->k / s->m);
+    o->delta = s->eps_lambda * o->wn * s->R;
+    if (!constant) {
+        sf_contact_spec spec = { s->R, o->N, (sf_layout)s->layout, s->cells };
+        int rc = sf_contact_alloc(&spec, cof, &o->ct);
+        if (rc) {
+            free(o);
+            return seterr(err, errlen, rc, "cannot set up the contact quadrature");
+        }
+    }
+    const gsl_odeiv2_step_type *T = s->integrator == SF_INTEG_RK4 ? gsl_odeiv2_step_rk4 : gsl_odeiv2_step_rk8pd;
+    o->sys = (gsl_odeiv2_system){ rhs, NULL, NSTATE, o };
+    o->step = gsl_odeiv2_step_alloc(T, NSTATE);
+    o->bstep = gsl_odeiv2_step_alloc(T, NSTATE);
+    o->con = gsl_odeiv2_control_y_new(s->rtol, s->rtol);
+    o->ev = gsl_odeiv2_evolve_alloc(NSTATE);
+    if (!o->step || !o->bstep || !o->con || !o->ev) {
+        sf_osc_free(o);
+        return SF_ENOMEM;
+    }
+    *out = o;
+    return SF_SUCCESS;
+}
+
+void sf_osc_free(sf_osc *o)
+{
+    if (!o)
+        return;
+    sf_contact_free(o->ct);
+    if (o->step) gsl_odeiv2_step_free(o->step);
+    if (o->bstep) gsl_odeiv2_step_free(o->bstep);
+    if (o->con) gsl_odeiv2_control_free(o->con);
+    if (o->ev) gsl_odeiv2_evolve_free(o->ev);
+    free(o);
+}
+
+void sf_osc_explain(const sf_osc *o, FILE *f)
+{
+    const sf_scene *s = &o->s;
+    fprintf(f, "model: %s\n", o->dof3 ? "3-DOF disc (x, y, phi), Eq. 5" : "1-D oscillator, Eqs. 3-4");
+    if (o->ct)
+        fprintf(f, "slip wrench: %s quadrature, %zu cells, COF interpolated from the strip field (Eqs. 7-8)\n",
+                s->layout == SF_LAYOUT_POLAR ? "polar" : "Cartesian", sf_contact_ncells(o->ct));
+    else
+        fprintf(f, "slip wrench: closed form (constant COF %.6g: %s), no quadrature\n", o->mu,
+                o->dof3 ? "Contensou elliptic integrals" : "Eq. 4");
+    fprintf(f, "stick: exact motion with the belt, no quadrature; break test on the %s\n",
+            s->exact_section ? "exact T = 0 section (Brent, bracketed by the circle's exit time)"
+                             : "equatorial circle (closed-form exit time)");
+    fprintf(f, "stepper: %s\n", s->integrator == SF_INTEG_RK4 ? "GSL rk4, fixed dt" : "GSL rk8pd with error control");
+    fprintf(f, "events: bisection to max(%g s, 8 ulp(t)); velocity jump of Eq. 14 %s\n", SF_OSC_TIME_TOL,
+            s->velocity_jump ? "on" : "off");
+}
+
+static double lambda_of(const sf_osc *o, const double *y)
+{
+    double r = o->wn * o->s.R;
+    return hypot(hypot((y[VX] - o->s.v_b) / r, y[VY] / r), y[W] / o->wn);
+}
+
+/* Stick admissibility margin [N] of the stick wrench (k x, k y) at the
+ * belt point under the disc at time t (> 0 admissible). */
+static double stick_margin(sf_osc *o, double t, const double *y)
+{
+    const sf_scene *s = &o->s;
+    double F = s->k * hypot(y[X], y[Y]);
+    if (!o->ct)
+        return o->mu * o->N - F;
+    double m;
+    sf_contact_stick_margin(o->ct, y[X] - s->v_b * t, y[Y], s->k * y[X], s->k * y[Y], s->exact_section, &m);
+    return m;
+}
+
+/* Slip-to-stick switching function: < 0 when lambda < eps and stick is
+ * admissible. Mixed units are fine: only its sign is used. */
+static double g_stick(sf_osc *o, double t, const double *y)
+{
+    double c = lambda_of(o, y) - o->s.eps_lambda;
+    if (c >= 0)   /* the sign is already decided: skip the (costly) margin */
+        return c;
+    return fmax(c, -stick_margin(o, t, y) / o->N);
+}
+
+/* One step of the same stepper from (t0, y0) over h into yo. */
+static void advance(sf_osc *o, double t0, const double *y0, double h, double *yo)
+{
+    double yerr[NSTATE];
+    memcpy(yo, y0, sizeof(double) * NSTATE);
+    gsl_odeiv2_step_reset(o->bstep);
+    gsl_odeiv2_step_apply(o->bstep, t0, h, yo, yerr, NULL, NULL, &o->sys);
+}
+
+enum { EV_STICK, EV_VX0 };
+
+/* Bisection for the first time in (t0, t1] where the event holds, given it
+ * does not at t0 and does at t1. */
+static double bisect(sf_osc *o, int kind, double t0, const double *y0, double t1, double *ye, unsigned long *count)
+{
+    double lo = 0, hi = t1 - t0, tol = fmax(SF_OSC_TIME_TOL, 8 * DBL_EPSILON * fabs(t1));
+    double s0 = y0[VX];
+    while (hi - lo > tol) {
+        double mid = 0.5 * (lo + hi), ym[NSTATE];
+        advance(o, t0, y0, mid, ym);
+        int holds = kind == EV_STICK ? g_stick(o, t0 + mid, ym) < 0 : (ym[VX] * s0 <= 0);
+        if (holds)
+            hi = mid;
+        else
+            lo = mid;
+        (*count)++;
+    }
+    advance(o, t0, y0, hi, ye);
+    return t0 + hi;
+}
+
+/* Time to the stick break from (t0, y) with the belt patch fixed. */
+static double stick_duration(sf_osc *o, double t0, const double *y)
+{
+    const sf_scene *s = &o->s;
+    double xb = y[X] - s->v_b * t0, yb = y[Y];
+    double mu_bar = o->ct ? sf_contact_mean_cof(o->ct, xb, yb) : o->mu;
+    double rmax = mu_bar * o->N / s->k;
+    if (y[Y] * y[Y] >= rmax * rmax)
+        return 0;
+    double xe = sqrt(rmax * rmax - y[Y] * y[Y]);
+    if (y[X] >= xe)
+        return 0;
+    double tau = (xe - y[X]) / s->v_b;   /* the circle's exit: closed form */
+    if (!s->exact_section || !o->ct)
+        return tau;
+    /* exact section: rho(alpha) <= mu_bar, so the exit lies in [0, tau] */
+    sf_surface *sf;
+    if (sf_surface_alloc(o->ct, xb, yb, &sf))
+        return tau;
+    double lo = 0, hi = tau;
+    for (int it = 0; it < 200 && hi - lo > fmax(SF_OSC_TIME_TOL, 8 * DBL_EPSILON * (t0 + tau)); it++) {
+        double mid = 0.5 * (lo + hi), x = y[X] + s->v_b * mid, rho;
+        sf_surface_section_radius(sf, atan2(y[Y], x), &rho, NULL);
+        if (rho * o->N - s->k * hypot(x, y[Y]) > 0)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    sf_surface_free(sf);
+    return hi;
+}
+
+/* ---- online QoIs */
+
+typedef struct {
+    sf_osc_result *r;
+    double t_skip;
+    int open;
+    double t0, xmin, xmax, Fmin, Fmax, stick;
+    size_t cap_t, cap_c, cap_b;
+    double stick_total, cycle_total;
+} acc;
+
+/* Make room for element n in each of na parallel arrays of capacity *cap
+ * (element size sz). */
+static int grow(size_t n, size_t *cap, size_t sz, void **arrs[], size_t na)
+{
+    if (n < *cap)
+        return 0;
+    size_t c = *cap ? 2 * *cap : 64;
+    for (size_t i = 0; i < na; i++) {
+        void *q = realloc(*arrs[i], c * sz);
+        if (!q)
+            return -1;
+        *arrs[i] = q;
+    }
+    *cap = c;
+    return 0;
+}
+
+static void note(acc *a, double x, double F)
+{
+    if (!a->open)
+        return;
+    a->xmin = fmin(a->xmin, x);
+    a->xmax = fmax(a->xmax, x);
+    a->Fmin = fmin(a->Fmin, F);
+    a->Fmax = fmax(a->Fmax, F);
+}
+
+static int transition(acc *a, int kind, double t, double x, double kx)
+{
+    sf_osc_result *r = a->r;
+    size_t ck = a->cap_t;
+    void **tr[] = { (void **)&r->trans_t, (void **)&r->trans_x };
+    void **kd[] = { (void **)&r->trans_kind };
+    if (grow(r->ntrans, &a->cap_t, sizeof(double), tr, 2) || grow(r->ntrans, &ck, sizeof(int), kd, 1))
+        return SF_ENOMEM;
+    r->trans_t[r->ntrans] = t;
+    r->trans_x[r->ntrans] = x;
+    r->trans_kind[r->ntrans] = kind;
+    r->ntrans++;
+    if (kind != SF_OSC_STICK_ONSET)
+        return SF_SUCCESS;
+    if (t >= a->t_skip) {
+        void **b[] = { (void **)&r->bif };
+        if (grow(r->nbif, &a->cap_b, sizeof(double), b, 1))
+            return SF_ENOMEM;
+        r->bif[r->nbif++] = x;
+    }
+    if (a->open) {
+        void **cy[] = { (void **)&r->cycle_pv_x, (void **)&r->cycle_pv_F, (void **)&r->cycle_stick,
+                        (void **)&r->cycle_period };
+        if (grow(r->ncycles, &a->cap_c, sizeof(double), cy, 4))
+            return SF_ENOMEM;
+        r->cycle_pv_x[r->ncycles] = a->xmax - a->xmin;
+        r->cycle_pv_F[r->ncycles] = a->Fmax - a->Fmin;
+        r->cycle_stick[r->ncycles] = a->stick;
+        r->cycle_period[r->ncycles] = t - a->t0;
+        a->stick_total += a->stick;
+        a->cycle_total += t - a->t0;
+        r->ncycles++;
+    }
+    a->open = t >= a->t_skip;
+    a->t0 = t;
+    a->xmin = a->xmax = x;
+    a->Fmin = a->Fmax = kx;
+    a->stick = 0;
+    return SF_SUCCESS;
+}
+
+/* uniform x samples in (t0, t1]: Hermite cubic from the step's ends, or
+ * the exact linear motion in stick (pass v0 = v1 = v_b, exact) */
+static void sample(sf_osc_result *r, size_t *next, double t0, double x0, double v0, double t1, double x1, double v1)
+{
+    double h = t1 - t0;
+    while (*next < r->nsamples && (double)*next * r->sample_dt <= t1) {
+        double tk = (double)*next * r->sample_dt, s = h > 0 ? (tk - t0) / h : 1;
+        double s2 = s * s, s3 = s2 * s;
+        r->x_samples[*next] = (2 * s3 - 3 * s2 + 1) * x0 + (s3 - 2 * s2 + s) * h * v0 + (-2 * s3 + 3 * s2) * x1 +
+                              (s3 - s2) * h * v1;
+        (*next)++;
+    }
+}
+
+static double energy(const sf_osc *o, const double *y)
+{
+    const sf_scene *s = &o->s;
+    return 0.5 * s->m * (y[VX] * y[VX] + y[VY] * y[VY]) + 0.5 * o->J * y[W] * y[W] +
+           0.5 * s->k * (y[X] * y[X] + y[Y] * y[Y]);
+}
+
+static void emit(sf_osc *o, sf_osc_row_fn row, void *ctx, double t, const double *y, const double *q, int stick)
+{
+    if (!row)
+        return;
+    sf_osc_row r = { t, y[X], y[Y], y[P], y[VX], y[VY], y[W], q[0], q[1], q[2], stick };
+    (void)o;
+    row(ctx, &r);
+}
+
+static void track(sf_osc_result *r, const double *y)
+{
+    r->x_min = fmin(r->x_min, y[X]);
+    r->x_max = fmax(r->x_max, y[X]);
+    r->y_absmax = fmax(r->y_absmax, fabs(y[Y]));
+}
+
+int sf_osc_run(sf_osc *o, sf_osc_row_fn row, void *ctx, double sample_dt, sf_osc_result *res,
+               char *err, size_t errlen)
+{
+    const sf_scene *s = &o->s;
+    memset(res, 0, sizeof *res);
+    res->x_min = INFINITY;
+    res->x_max = -INFINITY;
+    acc a = { .r = res, .t_skip = s->t_skip };
+    size_t next = 0;
+    if (sample_dt > 0) {
+        res->sample_dt = sample_dt;
+        res->nsamples = (size_t)floor(s->T / sample_dt) + 1;
+        res->x_samples = calloc(res->nsamples, sizeof *res->x_samples);
+        if (!res->x_samples)
+            return SF_ENOMEM;
+    }
+    o->wrench_evals = 0;
+    double t = 0, y[NSTATE] = { 0 }, q[3], h = s->dt, jumps = 0;
+    unsigned long budget = 200000000UL;
+    int stick = g_stick(o, 0, y) < 0, armed = 0, rc = SF_SUCCESS;
+    gsl_odeiv2_evolve_reset(o->ev);
+    if (stick) {   /* a belt slower than eps_lambda omega_n R: stick from the start (Eq. 12) */
+        jumps += 0.5 * s->m * s->v_b * s->v_b;
+        y[VX] = s->v_b;
+        if ((rc = transition(&a, SF_OSC_STICK_ONSET, 0, 0, 0)))
+            return rc;
+    }
+    sample(res, &next, 0, 0, y[VX], 0, 0, y[VX]);
+    wrench(o, 0, y, q);
+    emit(o, row, ctx, 0, y, stick ? (double[3]){ 0, 0, 0 } : q, stick);
+    while (t < s->T && rc == SF_SUCCESS) {
+        if (stick) {
+            double tau = stick_duration(o, t, y), t1 = fmin(t + tau, s->T), x0 = y[X];
+            double x1 = x0 + s->v_b * (t1 - t);
+            double kq0[3] = { s->k * x0, s->k * y[Y], 0 }, kq1[3] = { s->k * x1, s->k * y[Y], 0 };
+            note(&a, x0, kq0[0]);
+            note(&a, x1, kq1[0]);
+            if (a.open)
+                a.stick += t1 - t;
+            y[WK] += s->k * s->v_b * (x0 * (t1 - t) + 0.5 * s->v_b * (t1 - t) * (t1 - t));   /* = k (x1^2 - x0^2)/2 */
+            sample(res, &next, t, x0, s->v_b, t1, x1, s->v_b);
+            y[X] = x1;
+            t = t1;
+            track(res, y);
+            emit(o, row, ctx, t, y, kq1, 1);
+            if (t >= s->T)
+                break;
+            /* break: Eq. 14 */
+            if ((rc = transition(&a, SF_OSC_SLIP_ONSET, t, y[X], kq1[0])))
+                break;
+            if (s->velocity_jump) {
+                double psi = atan2(kq1[1], kq1[0]);
+                y[VX] = s->v_b - o->delta * cos(psi);
+                y[VY] = o->dof3 ? -o->delta * sin(psi) : 0;
+                y[W] = 0;
+                jumps += 0.5 * s->m * (y[VX] * y[VX] + y[VY] * y[VY] - s->v_b * s->v_b);
+            }
+            stick = 0;
+            armed = 0;
+            h = s->dt;
+            gsl_odeiv2_evolve_reset(o->ev);
+            gsl_odeiv2_step_reset(o->step);
+            wrench(o, t, y, q);
+            note(&a, y[X], q[0]);
+            emit(o, row, ctx, t, y, q, 0);
+            continue;
+        }
+        /* slip: one step */
+        double t0 = t, y0[NSTATE];
+        memcpy(y0, y, sizeof y0);
+        if (s->integrator == SF_INTEG_RK4) {
+            double hh = fmin(s->dt, s->T - t), yerr[NSTATE];
+            gsl_odeiv2_step_apply(o->step, t, hh, y, yerr, NULL, NULL, &o->sys);
+            t = (s->T - t <= s->dt) ? s->T : t + hh;
+        } else {
+            int st = gsl_odeiv2_evolve_apply(o->ev, o->con, o->step, &o->sys, &t, s->T, &h, y);
+            if (st != GSL_SUCCESS) {
+                rc = seterr(err, errlen, SF_EFAIL, "the adaptive stepper failed (step size underflow)");
+                break;
+            }
+        }
+        res->steps++;
+        for (int i = 0; i < NSTATE; i++)
+            if (!isfinite(y[i])) {
+                char m[160];
+                snprintf(m, sizeof m, "non-finite state at t = %.9g s (slip)", t);
+                rc = seterr(err, errlen, SF_EFAIL, m);
+            }
+        if (rc)
+            break;
+        if (res->steps > budget) {
+            rc = seterr(err, errlen, SF_EMAXITER, "step budget (2e8 steps) exhausted");
+            break;
+        }
+        double g1 = g_stick(o, t, y);
+        int to_stick = armed && g1 < 0;
+        double ye[NSTATE], te = t;
+        if (to_stick) {
+            te = bisect(o, EV_STICK, t0, y0, t, ye, &res->bisections);
+            t = te;
+            memcpy(y, ye, sizeof ye);
+        }
+        if (y0[VX] * y[VX] < 0) {   /* an extremum of x inside the step */
+            double yx[NSTATE];
+            bisect(o, EV_VX0, t0, y0, t, yx, &res->bisections);
+            double qx[3];
+            wrench(o, t, yx, qx);
+            note(&a, yx[X], qx[0]);
+            track(res, yx);
+        }
+        sample(res, &next, t0, y0[X], y0[VX], t, y[X], y[VX]);
+        wrench(o, t, y, q);
+        note(&a, y[X], q[0]);
+        track(res, y);
+        emit(o, row, ctx, t, y, q, 0);
+        if (!to_stick) {
+            if (g1 > 0)
+                armed = 1;
+            continue;
+        }
+        /* slip -> stick: Eq. 12 */
+        jumps += 0.5 * s->m * (s->v_b * s->v_b - y[VX] * y[VX] - y[VY] * y[VY]) - 0.5 * o->J * y[W] * y[W];
+        y[VX] = s->v_b;
+        y[VY] = 0;
+        y[W] = 0;
+        stick = 1;
+        if ((rc = transition(&a, SF_OSC_STICK_ONSET, t, y[X], s->k * y[X])))
+            break;
+        emit(o, row, ctx, t, y, (double[3]){ s->k * y[X], s->k * y[Y], 0 }, 1);
+    }
+    res->friction_work = y[WK];
+    res->jump_energy = jumps;
+    res->energy_change = energy(o, y);
+    res->energy_residual = res->energy_change - res->friction_work - res->jump_energy;
+    res->rejected = o->ev->failed_steps;
+    res->wrench_evals = o->wrench_evals;
+    res->cof_outside = sf_cof_outside(o->cof);
+    if (!rc && res->cof_outside)
+        rc = seterr(err, errlen, SF_EFAIL, "the disc left the belt strip of the COF field (COF clamped at its "
+                                           "edge): raise strip_halfwidth");
+    if (res->ncycles) {
+        double sx = 0, sF = 0;
+        for (size_t i = 0; i < res->ncycles; i++) {
+            sx += res->cycle_pv_x[i];
+            sF += res->cycle_pv_F[i];
+        }
+        res->pv_x = sx / (double)res->ncycles;
+        res->pv_F = sF / (double)res->ncycles;
+        res->stick_fraction = a.stick_total / a.cycle_total;
+        res->period = a.cycle_total / (double)res->ncycles;
+    } else {
+        res->pv_x = res->pv_F = res->stick_fraction = res->period = NAN;
+    }
+    return rc;
+}
+
+void sf_osc_result_free(sf_osc_result *r)
+{
+    if (!r)
+        return;
+    free(r->trans_t);
+    free(r->trans_x);
+    free(r->trans_kind);
+    free(r->cycle_pv_x);
+    free(r->cycle_pv_F);
+    free(r->cycle_stick);
+    free(r->cycle_period);
+    free(r->bif);
+    free(r->x_samples);
+    memset(r, 0, sizeof *r);
+}
+
+double sf_osc_error_eq15(const sf_osc_result *a, const sf_osc_result *ref)
+{
+    size_t n = a->nsamples < ref->nsamples ? a->nsamples : ref->nsamples;
+    if (!n || a->sample_dt != ref->sample_dt)
+        return NAN;
+    double e = 0;
+    for (size_t i = 1; i < n; i++) {
+        double d = a->x_samples[i] - ref->x_samples[i];
+        e += d * d * a->sample_dt;
+    }
+    return e;
+}

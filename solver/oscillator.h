@@ -1,0 +1,103 @@
+/* slipfield: the event-driven stick-slip integrators (paper Eqs. 3-6 and
+ * 12-14), 1-D deterministic and 3-DOF stochastic, as a plan.
+ *
+ * State (ground frame, SI): x, y [m], phi [rad], vx, vy [m/s], w [rad/s].
+ * The disc starts at rest at the origin; the belt moves at v_b along +x;
+ * the belt point under the centre is (x - v_b t, y).
+ *
+ * Slip: m x'' = -k x + Fx, m y'' = -k y + Fy, J phi'' = T (J = m R^2/2),
+ * (Fx, Fy, T) the kinetic friction wrench on the disc (contact.h; for a
+ * spatially constant COF the exact Contensou closed form, no quadrature;
+ * 1-D: Fx = -mu_k m g sign(vx - v_b)).  Integrated with gsl_odeiv2:
+ * rk8pd under an error control at `rtol` (adaptive) or classical RK4 at a
+ * fixed step `dt`.
+ * Stick: the disc moves with the belt; exact motion, no quadrature.  The
+ * stick wrench is (k x, k y, 0) (Eq. 6) and stick holds while it is inside
+ * the T = 0 section of the limit surface at the (fixed) belt point: the
+ * equatorial circle of radius mu_bar m g by default, whose exit time is a
+ * closed form, or the exact section (`exact_section`), bracketed by that
+ * time and located with GSL's Brent solver.
+ * Slip -> stick: lambda = |(vx - v_b, vy)/(omega_n R), w/omega_n| (Sec.
+ * 2.4) falls below eps_lambda AND the stick wrench is admissible; located
+ * by bisection (single steps of the same stepper from the step's start) to
+ * SF_OSC_TIME_TOL; then Eq. 12 (velocities (v_b, 0, 0)).
+ * Stick -> slip: Eq. 14 with the jump magnitude eps_lambda omega_n R in
+ * m/s (lambda = eps_lambda just after it; the paper's Eq. 14 writes
+ * eps_lambda, a dimensionless number, as a speed).  With
+ * velocity_jump = false the jump of Eq. 14 is skipped (Eq. 12 is the stick
+ * kinematics itself and always holds).
+ *
+ * Quantities of interest are accumulated online (no history needed):
+ * a cycle runs from a stick onset to the next, complete cycles with onset
+ * at or after t_skip only; PV_x and PV_F (Fx) per cycle (x extrema located
+ * as events vx = 0 to the same tolerance), stick fraction = stick time /
+ * time of the complete cycles, x at every slip-to-stick instant after
+ * t_skip (bifurcation samples), and the energy balance
+ * E(t) - E(0) = W_friction + sum of the jumps' kinetic-energy changes.
+ */
+#ifndef SF_OSCILLATOR_H
+#define SF_OSCILLATOR_H
+
+#include <stddef.h>
+#include "cof.h"
+#include "scene.h"
+
+/* Event times are located to max(1e-12 s, 8 ulp(t)). */
+#define SF_OSC_TIME_TOL 1e-12
+
+typedef struct sf_osc sf_osc;
+
+typedef struct {
+    double t, x, y, phi, vx, vy, w;  /* SI */
+    double Fx, Fy, T;                /* friction wrench on the disc [N, N m] */
+    int stick;                       /* 1 stick, 0 slip */
+} sf_osc_row;
+
+/* Called for every accepted step end and event (history). */
+typedef void (*sf_osc_row_fn)(void *ctx, const sf_osc_row *row);
+
+enum { SF_OSC_STICK_ONSET = 0, SF_OSC_SLIP_ONSET = 1 };
+
+typedef struct {
+    /* transitions, all of [0, T] */
+    size_t ntrans;
+    double *trans_t, *trans_x;
+    int *trans_kind;
+    /* complete cycles after t_skip */
+    size_t ncycles;
+    double *cycle_pv_x, *cycle_pv_F, *cycle_stick, *cycle_period;
+    double pv_x, pv_F, stick_fraction, period;   /* means over the cycles */
+    /* x at slip-to-stick instants after t_skip */
+    size_t nbif;
+    double *bif;
+    /* uniform samples of x (when asked), x(i * sample_dt) */
+    size_t nsamples;
+    double *x_samples, sample_dt;
+    /* energy: E(T) - E(0) - W - J, and its parts [J] */
+    double energy_change, friction_work, jump_energy, energy_residual;
+    /* cost */
+    unsigned long steps, rejected, bisections, wrench_evals;
+    unsigned long cof_outside;   /* COF look-ups clamped to the strip edge */
+    double x_min, x_max, y_absmax;
+} sf_osc_result;
+
+/* The plan for a scene and a drawn COF (kept by pointer, not copied).
+ * SF_EINVAL with the reason in err for an inconsistent scene (e.g. dof = 1
+ * with a field COF). */
+int sf_osc_alloc(const sf_scene *s, const sf_cof *cof, sf_osc **out, char *err, size_t errlen);
+void sf_osc_free(sf_osc *o);
+
+/* What the plan computes and skips, one line each (for --explain). */
+void sf_osc_explain(const sf_osc *o, FILE *f);
+
+/* Run [0, T].  row (may be NULL) receives the history; sample_dt > 0
+ * also fills res->x_samples.  Returns SF_SUCCESS, SF_EFAIL (non-finite
+ * state; reason in err) or SF_EMAXITER (step budget exhausted). */
+int sf_osc_run(sf_osc *o, sf_osc_row_fn row, void *ctx, double sample_dt, sf_osc_result *res,
+               char *err, size_t errlen);
+void sf_osc_result_free(sf_osc_result *r);
+
+/* Eq. 15: sum (x_i - x_ref,i)^2 dt over common uniform samples [m^2 s]. */
+double sf_osc_error_eq15(const sf_osc_result *a, const sf_osc_result *ref);
+
+#endif
