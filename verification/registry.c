@@ -9,6 +9,7 @@ static const sf_check_def *const families[] = {
     sf_checks_contact,
     sf_checks_surface,
     sf_checks_stress,
+    sf_checks_deterministic,
 };
 
 const sf_check_def *sf_check_at(size_t i)

@@ -9,5 +9,7 @@ extern const sf_check_def sf_checks_lognormal[];
 extern const sf_check_def sf_checks_contact[];
 extern const sf_check_def sf_checks_surface[];
 extern const sf_check_def sf_checks_stress[];
+extern const sf_check_def sf_checks_deterministic[];
+extern const sf_check_def sf_checks_dynamics[];
 
 #endif

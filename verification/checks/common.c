@@ -5,6 +5,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include <gsl/gsl_math.h>
 
 double ref_sq_exp(double hx, double hy, double l)
@@ -121,4 +122,67 @@ void check_disc_field_free(check_disc_field *st)
 {
     sf_lnfield_free(st->lf);
     st->lf = NULL;
+}
+
+int check_osc_run(const sf_scene *s, gsl_rng *rng, const sf_cof *cof, double sample_dt, sf_osc_result *res,
+                  sf_osc_row_fn row, void *ctx, sf_result *r)
+{
+    char err[256] = "";
+    sf_cof *own = NULL;
+    int rc = SF_SUCCESS;
+    memset(res, 0, sizeof *res);
+    if (!cof) {
+        sf_cof_plan *p;
+        rc = sf_cof_plan_alloc(s, &p, err, sizeof err);
+        if (!rc) {
+            rc = sf_cof_plan_draw(p, rng, &own);
+            sf_cof_plan_free(p);
+        }
+        cof = own;
+    }
+    sf_osc *o = NULL;
+    if (!rc)
+        rc = sf_osc_alloc(s, cof, &o, err, sizeof err);
+    if (!rc)
+        rc = sf_osc_run(o, row, ctx, sample_dt, res, err, sizeof err);
+    if (rc)
+        sf_note(r, "**The run failed:** %s (%s).", *err ? err : "", sf_strerror(rc));
+    sf_osc_free(o);
+    sf_cof_free(own);
+    return rc;
+}
+
+void check_hist_row(void *ctx, const sf_osc_row *row)
+{
+    check_hist *h = ctx;
+    h->y_absmax = fmax(h->y_absmax, fabs(row->y));
+    h->phi_absmax = fmax(h->phi_absmax, fabs(row->phi));
+    if (h->every > 1 && (h->seen++ % h->every))
+        return;
+    if (h->n == h->cap) {
+        h->cap = h->cap ? 2 * h->cap : 1024;
+        double **a[] = { &h->t, &h->x, &h->y, &h->phi, &h->vx, &h->Fx };
+        for (int i = 0; i < 6; i++) {
+            *a[i] = realloc(*a[i], h->cap * sizeof(double));
+            if (!*a[i])
+                exit(3);
+        }
+        h->stick = realloc(h->stick, h->cap * sizeof(int));
+        if (!h->stick)
+            exit(3);
+    }
+    h->t[h->n] = row->t;
+    h->x[h->n] = row->x;
+    h->y[h->n] = row->y;
+    h->phi[h->n] = row->phi;
+    h->vx[h->n] = row->vx;
+    h->Fx[h->n] = row->Fx;
+    h->stick[h->n] = row->stick;
+    h->n++;
+}
+
+void check_hist_free(check_hist *h)
+{
+    free(h->t); free(h->x); free(h->y); free(h->phi); free(h->vx); free(h->Fx); free(h->stick);
+    memset(h, 0, sizeof *h);
 }

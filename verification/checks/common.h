@@ -38,4 +38,21 @@ typedef struct { sf_lnfield *lf; sf_scene gs; } check_disc_field;
 sf_cof *check_disc_cof(const sf_scene *s, gsl_rng *rng, check_disc_field *st);
 void check_disc_field_free(check_disc_field *st);
 
+/* Run the oscillator for a scene: the COF drawn from the scene's plan with
+ * rng (NULL for a constant COF), or the given cof.  On failure the reason
+ * is noted in r and an error returned. */
+#include "oscillator.h"
+/* A history collector for sf_osc_run (every row, or one in `every`). */
+typedef struct {
+    size_t n, cap, every, seen;
+    double *t, *x, *y, *phi, *vx, *Fx;
+    int *stick;
+    double y_absmax, phi_absmax;
+} check_hist;
+void check_hist_row(void *ctx, const sf_osc_row *row);
+void check_hist_free(check_hist *h);
+
+int check_osc_run(const sf_scene *s, gsl_rng *rng, const sf_cof *cof, double sample_dt, sf_osc_result *res,
+                  sf_osc_row_fn row, void *ctx, sf_result *r);
+
 #endif

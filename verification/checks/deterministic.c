@@ -1,0 +1,304 @@
+/* Checks of the 1-D deterministic oscillator (Eqs. 3-4) and of the 3-DOF
+ * integrator with a spatially constant COF, against the closed-form cycle
+ * (solver/cycle1d.h: ideal and with the eps_lambda threshold's own effect)
+ * and exact invariants (energy balance, symmetry). */
+#include "checks.h"
+#include "common.h"
+#include "cycle1d.h"
+#include "cof.h"
+#include "oscillator.h"
+#include "sf_error.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <gsl/gsl_fit.h>
+#include <gsl/gsl_math.h>
+
+/* max |t_i - closed form| over all transitions, and the index of the worst */
+static double transition_error(const sf_osc_result *res, const sf_cycle1d *cf, size_t *worst)
+{
+    double e = 0;
+    *worst = 0;
+    for (size_t i = 0; i < res->ntrans; i++) {
+        double d = fabs(res->trans_t[i] - sf_cycle1d_transition(cf, (unsigned)i));
+        if (!(d <= e)) {
+            e = d;
+            *worst = i;
+        }
+    }
+    return e;
+}
+
+/* slope of log y vs log x (least squares) */
+static double fit_order(const double *x, const double *y, size_t n)
+{
+    double *lx = check_alloc(n * sizeof *lx), *ly = check_alloc(n * sizeof *ly), c0, c1, a, b, c, ss;
+    for (size_t i = 0; i < n; i++) {
+        lx[i] = log(x[i]);
+        ly[i] = log(y[i]);
+    }
+    int st = gsl_fit_linear(lx, 1, ly, 1, n, &c0, &c1, &a, &b, &c, &ss);
+    free(lx);
+    free(ly);
+    return st ? NAN : c1;
+}
+
+/* The simulated cycle vs the eps-corrected closed form: PV_x, PV_F, stick
+ * fraction, period, stick and slip durations, and every transition time. */
+static int chk_cycle(const sf_case *c, sf_result *r)
+{
+    const sf_scene *s = &c->scene;
+    sf_cycle1d cf, ideal;
+    if (sf_cycle1d_init(&cf, s, s->eps_lambda) || sf_cycle1d_init(&ideal, s, 0))
+        return SF_EINVAL;
+    sf_osc_result res;
+    check_hist h = { .every = 1 };
+    if (check_osc_run(s, NULL, NULL, 0, &res, check_hist_row, &h, r))
+        return SF_EFAIL;
+    size_t worst;
+    double te = transition_error(&res, &cf, &worst), tol = s->tolerance;
+    double stick = 0;
+    for (size_t i = 0; i < res.ncycles; i++)
+        stick += res.cycle_stick[i];
+    stick /= (double)res.ncycles;
+    sf_check_rel(r, "PV_x [m]", res.pv_x, cf.pv_x, tol);
+    sf_check_rel(r, "PV_F [N]", res.pv_F, cf.pv_F, tol);
+    sf_check_rel(r, "stick fraction [-]", res.stick_fraction, cf.stick_fraction, tol);
+    sf_check_rel(r, "period [s]", res.period, cf.period, tol);
+    sf_check_rel(r, "stick duration [s]", stick, cf.t_stick, tol);
+    sf_check_rel(r, "slip duration [s]", res.period - stick, cf.t_slip, tol);
+    char q[160];
+    snprintf(q, sizeof q, "max |transition time - closed form| over %zu transitions [s] (worst: #%zu)", res.ntrans, worst);
+    sf_check_le(r, q, te, tol * cf.period);
+    unsigned nexp = 0;
+    while (sf_cycle1d_transition(&cf, nexp) <= s->T)
+        nexp++;
+    sf_check_abs(r, "number of transitions in [0, T]", (double)res.ntrans, (double)nexp, 0);
+    sf_note(r, "%s model, %s; eps_lambda = %g, so slip starts and ends at relative speed delta = eps omega_n R = "
+               "%.4g m/s. Closed form with that delta: PV_x = %.9f m, period %.9f s; the ideal cycle (delta = 0) "
+               "has PV_x = %.9f m, period %.9f s: the threshold moves PV_x by %.2e relative, which is why the "
+               "comparison is with the corrected form. %lu steps, %lu bisection steps.",
+            s->dof == SF_DOF_1 ? "1-D" : "3-DOF (constant COF, Contensou closed-form wrench)",
+            s->integrator == SF_INTEG_RK4 ? "fixed-step RK4" : "adaptive rk8pd", s->eps_lambda, cf.delta, cf.pv_x,
+            cf.period, ideal.pv_x, ideal.period, cf.pv_x / ideal.pv_x - 1, res.steps, res.bisections);
+    sf_plot *p = sf_result_plot(r, "displacement", "Displacement of the disc (1-D stick-slip cycle)", "t [s]", "x [m]");
+    sf_plot_series(p, "x(t), simulated", SF_STYLE_LINES, h.n, h.t, h.x);
+    sf_plot_hline(p, "x_s = mu_s m g / k", cf.xs);
+    double *idx = check_alloc((res.ntrans + 1) * sizeof *idx), *err = check_alloc((res.ntrans + 1) * sizeof *err);
+    for (size_t i = 0; i < res.ntrans; i++) {
+        idx[i] = (double)i;
+        err[i] = fmax(fabs(res.trans_t[i] - sf_cycle1d_transition(&cf, (unsigned)i)), 1e-16);
+    }
+    sf_plot *p2 = sf_result_plot(r, "transition_error", "Transition times vs the closed form", "transition index [-]",
+                                 "|t - t_exact| [s]");
+    sf_plot_log(p2, 0, 1);
+    sf_plot_series(p2, "simulated", SF_STYLE_POINTS, res.ntrans, idx, err);
+    sf_plot_hline(p2, "tolerance (tol x period)", tol * cf.period);
+    free(idx);
+    free(err);
+    check_hist_free(&h);
+    sf_osc_result_free(&res);
+    return SF_SUCCESS;
+}
+
+/* The threshold's effect on the cycle is first order in eps_lambda: PV_x
+ * and the slip duration vs the ideal closed form, observed order 1, and
+ * each deviation equal to the corrected closed form's prediction. */
+static int chk_eps_order(const sf_case *c, sf_result *r)
+{
+    const sf_scene *s0 = &c->scene;
+    size_t K = s0->sweep.n;
+    if (K < 3)
+        return SF_EINVAL;
+    double *e = check_alloc(K * sizeof *e), *dp = check_alloc(K * sizeof *dp), *ds = check_alloc(K * sizeof *ds);
+    double *pp = check_alloc(K * sizeof *pp), worst_pred = 0;
+    sf_note(r, "| eps_lambda | PV_x - ideal [m] | predicted | slip - ideal [s] | predicted |\n|---|---|---|---|---|");
+    for (size_t k = 0; k < K; k++) {
+        sf_scene s = *s0;
+        s.eps_lambda = s0->sweep.v[k];
+        sf_cycle1d cf, ideal;
+        if (sf_cycle1d_init(&cf, &s, s.eps_lambda) || sf_cycle1d_init(&ideal, &s, 0))
+            return SF_EINVAL;
+        sf_osc_result res;
+        if (check_osc_run(&s, NULL, NULL, 0, &res, NULL, NULL, r))
+            return SF_EFAIL;
+        double stick = 0;
+        for (size_t i = 0; i < res.ncycles; i++)
+            stick += res.cycle_stick[i];
+        stick /= (double)res.ncycles;
+        e[k] = s.eps_lambda;
+        dp[k] = fabs(res.pv_x - ideal.pv_x);
+        ds[k] = fabs(res.period - stick - ideal.t_slip);
+        pp[k] = fabs(cf.pv_x - ideal.pv_x);
+        worst_pred = fmax(worst_pred, fmax(fabs((res.pv_x - ideal.pv_x) - (cf.pv_x - ideal.pv_x)) / pp[k],
+                                           fabs((res.period - stick - ideal.t_slip) - (cf.t_slip - ideal.t_slip)) /
+                                               fabs(cf.t_slip - ideal.t_slip)));
+        sf_note(r, "| %g | %.6e | %.6e | %.6e | %.6e |", e[k], res.pv_x - ideal.pv_x, cf.pv_x - ideal.pv_x,
+                res.period - stick - ideal.t_slip, cf.t_slip - ideal.t_slip);
+        sf_osc_result_free(&res);
+    }
+    double op = fit_order(e, dp, K), os = fit_order(e, ds, K);
+    sf_check_abs(r, "observed order of the PV_x deviation in eps_lambda", op, 1, s0->tolerance);
+    sf_check_abs(r, "observed order of the slip-duration deviation in eps_lambda", os, 1, s0->tolerance);
+    sf_check_le(r, "max relative gap between each deviation and the corrected closed form's prediction",
+                worst_pred, 1e-3);
+    sf_plot *p = sf_result_plot(r, "eps_order", "Deviation from the ideal cycle vs the threshold",
+                                "eps_lambda [-]", "|deviation| [m or s]");
+    sf_plot_log(p, 1, 1);
+    sf_plot_series(p, "PV_x, simulated [m]", SF_STYLE_POINTS, K, e, dp);
+    sf_plot_series(p, "PV_x, corrected closed form [m]", SF_STYLE_LINES, K, e, pp);
+    sf_plot_series(p, "slip duration, simulated [s]", SF_STYLE_LINESPOINTS, K, e, ds);
+    free(e); free(dp); free(ds); free(pp);
+    return SF_SUCCESS;
+}
+
+/* Observed order of the time stepper: max transition-time error vs the
+ * corrected closed form over the sweep of dt (rk4) or rtol (adaptive). */
+static int chk_step_order(const sf_case *c, sf_result *r)
+{
+    const sf_scene *s0 = &c->scene;
+    size_t K = s0->sweep.n;
+    if (K < 3)
+        return SF_EINVAL;
+    int rk4 = s0->integrator == SF_INTEG_RK4;
+    double *h = check_alloc(K * sizeof *h), *err = check_alloc(K * sizeof *err), *cost = check_alloc(K * sizeof *cost);
+    sf_cycle1d cf;
+    if (sf_cycle1d_init(&cf, s0, s0->eps_lambda))
+        return SF_EINVAL;
+    sf_note(r, "| %s | max transition-time error [s] | PV_x rel. error | steps |\n|---|---|---|---|", rk4 ? "dt [s]" : "rtol");
+    for (size_t k = 0; k < K; k++) {
+        sf_scene s = *s0;
+        if (rk4)
+            s.dt = s0->sweep.v[k];
+        else
+            s.rtol = s0->sweep.v[k];
+        sf_osc_result res;
+        if (check_osc_run(&s, NULL, NULL, 0, &res, NULL, NULL, r))
+            return SF_EFAIL;
+        size_t w;
+        h[k] = s0->sweep.v[k];
+        err[k] = transition_error(&res, &cf, &w);
+        cost[k] = (double)res.steps;
+        sf_note(r, "| %g | %.3e | %.3e | %lu |", h[k], err[k], res.pv_x / cf.pv_x - 1, res.steps);
+        sf_osc_result_free(&res);
+    }
+    double ord = fit_order(h, err, K);
+    sf_check_ge(r, rk4 ? "observed order of RK4 in dt (transition times)" : "observed order of the error in rtol",
+                ord, s0->tolerance);
+    sf_note(r, "\nObserved order %.3f (least squares over the sweep). Expected: %s.\n", ord,
+            rk4 ? "4 for classical RK4 (the events are located with the same stepper, so they inherit its order)"
+                : "about 1: the error control keeps the local error near rtol, and the global error follows it");
+    sf_plot *p = sf_result_plot(r, "step_order", rk4 ? "Transition-time error vs step (RK4)" : "Transition-time error vs rtol (rk8pd)",
+                                rk4 ? "dt [s]" : "rtol [-]", "max |t - t_exact| [s]");
+    sf_plot_log(p, 1, 1);
+    sf_plot_series(p, "measured", SF_STYLE_LINESPOINTS, K, h, err);
+    double *ref = check_alloc(K * sizeof *ref);
+    for (size_t k = 0; k < K; k++)
+        ref[k] = err[0] * pow(h[k] / h[0], s0->tolerance);
+    sf_plot_series(p, "slope of the accepted order", SF_STYLE_LINES, K, h, ref);
+    free(ref); free(h); free(err); free(cost);
+    return SF_SUCCESS;
+}
+
+/* The 3-DOF integrator with a constant COF reduces to the 1-D model: the
+ * closed-form path exactly (same transitions bit for bit, y = phi = 0), the
+ * quadrature path (a constant field on a grid) to the quadrature's
+ * round-off. */
+static int chk_3dof_reduces(const sf_case *c, sf_result *r)
+{
+    const sf_scene *s0 = &c->scene;
+    sf_scene s1 = *s0, s3 = *s0;
+    s1.dof = SF_DOF_1;
+    s3.dof = SF_DOF_3;
+    sf_osc_result a, b, q;
+    check_hist hb = { .every = 1 }, hq = { .every = 1 };
+    double dt = 1e-2;
+    if (check_osc_run(&s1, NULL, NULL, dt, &a, NULL, NULL, r) || check_osc_run(&s3, NULL, NULL, dt, &b, check_hist_row, &hb, r))
+        return SF_EFAIL;
+    /* the same constant COF as a 3 x 3 grid: the quadrature path */
+    double g[9];
+    for (int i = 0; i < 9; i++)
+        g[i] = s0->mu_mean;
+    sf_cof *grid;
+    sf_cof_alloc_grid(3, 3, -1e3, -1e3, 1e3, 1e3, g, &grid);
+    if (check_osc_run(&s3, NULL, grid, dt, &q, check_hist_row, &hq, r))
+        return SF_EFAIL;
+    double dtr = 0, dq = 0, dqx = 0;
+    for (size_t i = 0; i < a.ntrans && i < b.ntrans; i++)
+        dtr = fmax(dtr, fabs(a.trans_t[i] - b.trans_t[i]));
+    for (size_t i = 0; i < a.ntrans && i < q.ntrans; i++) {
+        dq = fmax(dq, fabs(a.trans_t[i] - q.trans_t[i]));
+        dqx = fmax(dqx, fabs(a.trans_x[i] - q.trans_x[i]));
+    }
+    sf_check_abs(r, "closed-form path: transitions (3-DOF vs 1-D count)", (double)b.ntrans, (double)a.ntrans, 0);
+    sf_check_le(r, "closed-form path: max |t_3DOF - t_1D| over transitions [s]", dtr, 0);
+    sf_check_le(r, "closed-form path: max |y| [m] and |phi| [rad]", fmax(hb.y_absmax, hb.phi_absmax), 0);
+    sf_check_abs(r, "quadrature path: transitions (3-DOF vs 1-D count)", (double)q.ntrans, (double)a.ntrans, 0);
+    sf_check_le(r, "quadrature path: max |t_3DOF - t_1D| over transitions [s]", dq, s0->tolerance);
+    sf_check_le(r, "quadrature path: max |x_3DOF - x_1D| at the transitions [m]", dqx, s0->tolerance);
+    sf_check_le(r, "quadrature path: max |y| [m]", hq.y_absmax, 1e-10);
+    sf_check_le(r, "quadrature path: max |phi| [rad]", hq.phi_absmax, 1e-10);
+    sf_note(r, "The closed-form path (Contensou forms with zero spin) must give the 1-D model bit for bit. The "
+               "quadrature path sums cells whose torque cancels only to round-off (~1e-16 relative), so y and "
+               "phi leave zero at that level and the equations' stability keeps them there; x agrees to the "
+               "solver's tolerance. Max |y| %.2e m, |phi| %.2e rad.", hq.y_absmax, hq.phi_absmax);
+    sf_plot *p = sf_result_plot(r, "y_phi", "Out-of-plane motion of the 3-DOF model with a constant COF", "t [s]",
+                                "|y| [m], |phi| [rad]");
+    sf_plot_log(p, 0, 1);
+    double *ay = check_alloc(hq.n * sizeof *ay), *ap = check_alloc(hq.n * sizeof *ap);
+    for (size_t i = 0; i < hq.n; i++) {
+        ay[i] = fmax(fabs(hq.y[i]), 1e-20);
+        ap[i] = fmax(fabs(hq.phi[i]), 1e-20);
+    }
+    sf_plot_series(p, "|y|, quadrature path", SF_STYLE_LINES, hq.n, hq.t, ay);
+    sf_plot_series(p, "|phi|, quadrature path", SF_STYLE_LINES, hq.n, hq.t, ap);
+    free(ay); free(ap);
+    sf_cof_free(grid);
+    check_hist_free(&hb);
+    check_hist_free(&hq);
+    sf_osc_result_free(&a);
+    sf_osc_result_free(&b);
+    sf_osc_result_free(&q);
+    return SF_SUCCESS;
+}
+
+/* Energy balance: E(T) - E(0) = friction work + the jumps' kinetic-energy
+ * changes (stick work k v_b int x dt in closed form, slip work integrated
+ * with the motion). A friction sign error or a missing term breaks it at
+ * O(1) relative. */
+static int chk_energy(const sf_case *c, sf_result *r)
+{
+    const sf_scene *s = &c->scene;
+    gsl_rng *rng = sf_case_rng(c);
+    sf_osc_result res;
+    check_hist h = { .every = 1 };
+    int rc = check_osc_run(s, rng, NULL, 0, &res, check_hist_row, &h, r);
+    gsl_rng_free(rng);
+    if (rc)
+        return SF_EFAIL;
+    double scale = fabs(res.friction_work) + fabs(res.energy_change);
+    sf_check_le(r, "|E(T) - E(0) - W_friction - jumps| / (|W| + |dE|)", fabs(res.energy_residual) / scale, s->tolerance);
+    sf_note(r, "E(T) - E(0) = %.9g J; friction work %.9g J (stick phases in closed form, slip integrated); jumps "
+               "(Eqs. 12, 14) %.3e J; residual %.3e J. The friction work is the negative of the dissipated energy "
+               "in slip and positive in stick (the belt drags the disc against the spring).",
+            res.energy_change, res.friction_work, res.jump_energy, res.energy_residual);
+    double *e = check_alloc(h.n * sizeof *e);
+    for (size_t i = 0; i < h.n; i++)
+        e[i] = 0.5 * s->m * h.vx[i] * h.vx[i] + 0.5 * s->k * (h.x[i] * h.x[i] + h.y[i] * h.y[i]);
+    sf_plot *p = sf_result_plot(r, "energy", "Mechanical energy (translation) over the run", "t [s]", "E [J]");
+    sf_plot_series(p, "m vx^2/2 + k (x^2 + y^2)/2", SF_STYLE_LINES, h.n, h.t, e);
+    free(e);
+    check_hist_free(&h);
+    sf_osc_result_free(&res);
+    return SF_SUCCESS;
+}
+
+const sf_check_def sf_checks_deterministic[] = {
+    { "det_cycle", chk_cycle, "1-D cycle vs the eps-corrected closed form: PV, durations, transition times" },
+    { "det_eps_order", chk_eps_order, "the threshold's effect is first order in eps_lambda, as predicted" },
+    { "det_step_order", chk_step_order, "observed order of the stepper (dt for RK4, rtol for rk8pd)" },
+    { "det_3dof_reduces", chk_3dof_reduces, "3-DOF with a constant COF equals the 1-D model" },
+    { "det_energy", chk_energy, "energy balance: dE = friction work + jumps" },
+    { NULL, NULL, NULL }
+};
