@@ -10,6 +10,7 @@ static const sf_check_def *const families[] = {
     sf_checks_surface,
     sf_checks_stress,
     sf_checks_deterministic,
+    sf_checks_dynamics,
 };
 
 const sf_check_def *sf_check_at(size_t i)
