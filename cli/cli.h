@@ -44,5 +44,6 @@ int sf_cli_parse(const char *cmd, int argc, char **argv, const sf_opt *opts, siz
 int sf_cmd_field(int argc, char **argv);
 int sf_cmd_surface(int argc, char **argv);
 int sf_cmd_wrench(int argc, char **argv);
+int sf_cmd_run(int argc, char **argv);
 
 #endif

@@ -1,0 +1,133 @@
+/* slipfield run SCENE [--out FILE] [--summary FILE] [--explain]: one
+ * realisation of the scene (COF drawn from `seed`), the time history as
+ * TSV and the quantities of interest as `key = value` lines. */
+#include "cli.h"
+#include "cof.h"
+#include "oscillator.h"
+#include "sf_error.h"
+
+#include <math.h>
+#include <string.h>
+#include <gsl/gsl_rng.h>
+
+static void usage(FILE *f)
+{
+    fputs("usage: slipfield run SCENE [--out FILE] [--summary FILE] [--explain]\n"
+          "Integrate the stick-slip oscillator over [0, T] for one COF realisation.\n"
+          "  --out FILE      time history, TSV with header:\n"
+          "                  t x y phi vx vy omega Fx Fy T state\n"
+          "                  (s, m, m, rad, m/s, m/s, rad/s, N, N, N m, stick|slip);\n"
+          "                  one row per accepted step and per event\n"
+          "  --summary FILE  quantities of interest as `key = value` lines (pv_x, pv_F,\n"
+          "                  stick_fraction, cycles, transitions, ...); '-' for stdout\n"
+          "  --explain       print what the plan computes and what it skips, then exit\n"
+          "A run without --out keeps no history.\n",
+          f);
+}
+
+static void row_out(void *ctx, const sf_osc_row *r)
+{
+    fprintf(ctx, "%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%s\n", r->t, r->x, r->y,
+            r->phi, r->vx, r->vy, r->w, r->Fx, r->Fy, r->T, r->stick ? "stick" : "slip");
+}
+
+static void summary(FILE *f, const sf_scene *s, const sf_osc_result *r)
+{
+    fprintf(f, "# slipfield run summary: cycles are stick onset to stick onset, complete, with onset >= t_skip\n");
+    fprintf(f, "pv_x = %.17g\npv_F = %.17g\nstick_fraction = %.17g\nperiod = %.17g\n", r->pv_x, r->pv_F,
+            r->stick_fraction, r->period);
+    fprintf(f, "cycles = %zu\ntransitions = %zu\nbifurcation_samples = %zu\n", r->ncycles, r->ntrans, r->nbif);
+    fprintf(f, "x_min = %.17g\nx_max = %.17g\ny_absmax = %.17g\n", r->x_min, r->x_max, r->y_absmax);
+    fprintf(f, "energy_change = %.17g\nfriction_work = %.17g\njump_energy = %.17g\nenergy_residual = %.17g\n",
+            r->energy_change, r->friction_work, r->jump_energy, r->energy_residual);
+    fprintf(f, "steps = %lu\nrejected_steps = %lu\nbisection_steps = %lu\nwrench_evaluations = %lu\n", r->steps,
+            r->rejected, r->bisections, r->wrench_evals);
+    fprintf(f, "t_skip = %.17g\nT = %.17g\nseed = %lu\n", s->t_skip, s->T, s->seed);
+}
+
+int sf_cmd_run(int argc, char **argv)
+{
+    const char *path, *out_path = NULL, *sum_path = NULL;
+    int explain = 0;
+    const sf_opt opts[] = {
+        { "--out", SF_OPT_STRING, &out_path, 0, 0 },
+        { "--summary", SF_OPT_STRING, &sum_path, 0, 0 },
+        { "--explain", SF_OPT_FLAG, &explain, 0, 0 },
+    };
+    int rc = sf_cli_parse("run", argc, argv, opts, 3, &path, usage);
+    if (rc)
+        return rc == SF_CLI_HELP ? SF_EXIT_OK : rc;
+    sf_scene s;
+    if (sf_cli_load_scene("run", path, &s))
+        return SF_EXIT_USAGE;
+    if (out_path && !s.history) {
+        fprintf(stderr, "slipfield run: %s: the scene sets history = false; drop --out or the key\n", path);
+        return SF_EXIT_USAGE;
+    }
+    char err[256] = "";
+    sf_cof_plan *plan;
+    if ((rc = sf_cof_plan_alloc(&s, &plan, err, sizeof err))) {
+        fprintf(stderr, "slipfield run: %s: %s\n", path, *err ? err : sf_strerror(rc));
+        return rc == SF_ENOMEM ? SF_EXIT_INTERNAL : SF_EXIT_USAGE;
+    }
+    if (explain) {
+        const sf_cof_plan_info *in = sf_cof_plan_get_info(plan);
+        printf("COF: %s", in->kind == SF_COF_UNIFORM ? "uniform (no field, no draw)\n"
+                          : in->kind == SF_COF_VARIABLE ? "one random variable (no field)" : "lognormal field");
+        if (in->kind == SF_COF_VARIABLE)
+            printf("%s\n", in->shortcut ? ": the strip is short against l (correlation >= 1 - 1e-6 across it)" : "");
+        if (in->kind == SF_COF_FIELD)
+            printf(" on the belt strip, %zu x %zu points, spacing %.4g m (l/8), x from %.4g m, |y| <= %.4g m\n",
+                   in->nx, in->ny, in->dx, in->x0, -in->y0);
+    }
+    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+    gsl_rng_set(rng, s.seed);
+    sf_cof *cof = NULL;
+    rc = sf_cof_plan_draw(plan, rng, &cof);
+    gsl_rng_free(rng);
+    sf_cof_plan_free(plan);
+    sf_osc *o = NULL;
+    if (rc || (rc = sf_osc_alloc(&s, cof, &o, err, sizeof err))) {
+        fprintf(stderr, "slipfield run: %s: %s\n", path, *err ? err : sf_strerror(rc));
+        sf_cof_free(cof);
+        return rc == SF_EINVAL ? SF_EXIT_USAGE : SF_EXIT_INTERNAL;
+    }
+    if (explain) {
+        sf_osc_explain(o, stdout);
+        printf("history: %s\n", out_path ? "streamed to the output file (not kept in memory)" : "none");
+        sf_osc_free(o);
+        sf_cof_free(cof);
+        return SF_EXIT_OK;
+    }
+    sf_out out = { 0 }, sum = { 0 };
+    int ok = 1;
+    if (out_path && sf_cli_open("run", out_path, &out))
+        ok = 0;
+    if (ok && sum_path && sf_cli_open("run", sum_path, &sum)) {
+        if (out_path)
+            sf_cli_close("run", &out, 0);
+        ok = 0;
+    }
+    if (!ok) {
+        sf_osc_free(o);
+        sf_cof_free(cof);
+        return SF_EXIT_USAGE;
+    }
+    if (out_path)
+        fprintf(out.f, "t\tx\ty\tphi\tvx\tvy\tomega\tFx\tFy\tT\tstate\n");
+    sf_osc_result res;
+    rc = sf_osc_run(o, out_path ? row_out : NULL, out.f, 0, &res, err, sizeof err);
+    if (rc)
+        fprintf(stderr, "slipfield run: %s: %s\n", path, *err ? err : sf_strerror(rc));
+    else if (sum_path)
+        summary(sum.f, &s, &res);
+    int st = SF_EXIT_OK;
+    if (out_path && sf_cli_close("run", &out, rc == SF_SUCCESS))
+        st = SF_EXIT_INTERNAL;
+    if (sum_path && sf_cli_close("run", &sum, rc == SF_SUCCESS))
+        st = SF_EXIT_INTERNAL;
+    sf_osc_result_free(&res);
+    sf_osc_free(o);
+    sf_cof_free(cof);
+    return rc ? SF_EXIT_INTERNAL : st;
+}

@@ -1,0 +1,111 @@
+/* Unit tests: 1-D closed forms and the oscillator's edge cases. */
+#include "test_util.h"
+#include "cycle1d.h"
+#include "oscillator.h"
+#include "cof.h"
+#include "scene.h"
+#include "sf_error.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+static void closed_form_table1(void **state)
+{
+    (void)state;
+    sf_scene s;
+    sf_scene_default(&s);
+    sf_cycle1d c;
+    assert_int_equal(sf_cycle1d_init(&c, &s, 0), SF_SUCCESS);
+    /* DESIGN.md sec. 3: the Table 1 numbers */
+    assert_close(c.pv_x, 0.400328, 1e-6);
+    assert_close(c.pv_F, 9.81, 1e-12);
+    assert_close(c.t_stick, 1.635, 1e-12);
+    assert_close(c.t_slip, 2.523826, 1e-6);
+    assert_close(c.stick_fraction, 0.393140, 1e-6);
+    /* transitions alternate, one period apart */
+    assert_close(sf_cycle1d_transition(&c, 3) - sf_cycle1d_transition(&c, 1), c.period, 1e-12);
+    assert_close(sf_cycle1d_transition(&c, 2) - sf_cycle1d_transition(&c, 1), c.t_slip, 1e-12);
+    /* no cycle: the belt is faster than the first slip can reach */
+    s.v_b = 10;
+    assert_int_equal(sf_cycle1d_init(&c, &s, 0), SF_EINVAL);
+}
+
+static int run(sf_scene *s, sf_osc_result *r, char *err)
+{
+    sf_cof *cof;
+    sf_cof_alloc_uniform(s->mu_mean, &cof);
+    sf_osc *o;
+    int rc = sf_osc_alloc(s, cof, &o, err, 200);
+    if (!rc)
+        rc = sf_osc_run(o, NULL, NULL, 0.01, r, err, 200);
+    sf_osc_free(o);
+    sf_cof_free(cof);
+    return rc;
+}
+
+/* dof = 1 with a field is refused with a reason; a belt slower than the
+ * threshold starts in stick; T shorter than the first stick ends cleanly. */
+static void edges(void **state)
+{
+    (void)state;
+    sf_scene s;
+    sf_scene_default(&s);
+    char err[200] = "";
+    double g[4] = { 0.5, 0.5, 0.5, 0.5 };
+    sf_cof *grid;
+    sf_cof_alloc_grid(2, 2, -100, -100, 200, 200, g, &grid);
+    sf_osc *o = (sf_osc *)1;
+    s.dof = SF_DOF_1;
+    assert_int_equal(sf_osc_alloc(&s, grid, &o, err, sizeof err), SF_EINVAL);
+    assert_null(o);
+    assert_non_null(strstr(err, "dof = 1"));
+    sf_cof_free(grid);
+    sf_osc_result r;
+    s.cof = SF_COF_UNIFORM;
+    s.v_b = 1e-4;   /* lambda at rest = v_b/(omega_n R) < eps: stick from t = 0 */
+    s.T = 5;
+    assert_int_equal(run(&s, &r, err), SF_SUCCESS);
+    assert_true(r.ntrans >= 1);
+    assert_int_equal(r.trans_kind[0], SF_OSC_STICK_ONSET);
+    assert_close(r.trans_t[0], 0, 0);
+    assert_close(r.x_max, 5e-4, 1e-12);   /* moved with the belt */
+    sf_osc_result_free(&r);
+    s.v_b = 0.2;
+    s.T = 1;
+    assert_int_equal(run(&s, &r, err), SF_SUCCESS);
+    assert_int_equal(r.ncycles, 0);
+    assert_true(isnan(r.pv_x));
+    assert_int_equal(r.nsamples, 101);
+    sf_osc_result_free(&r);
+    sf_osc_result_free(NULL);
+}
+
+/* Eq. 15 between a run and itself is 0; against a shorter or differently
+ * sampled run it is NaN rather than a silent number. */
+static void eq15(void **state)
+{
+    (void)state;
+    sf_scene s;
+    sf_scene_default(&s);
+    s.cof = SF_COF_UNIFORM;
+    s.T = 10;
+    char err[200];
+    sf_osc_result a, b;
+    assert_int_equal(run(&s, &a, err), SF_SUCCESS);
+    assert_int_equal(run(&s, &b, err), SF_SUCCESS);
+    assert_close(sf_osc_error_eq15(&a, &b), 0, 0);
+    b.sample_dt = 0.02;
+    assert_true(isnan(sf_osc_error_eq15(&a, &b)));
+    sf_osc_result_free(&a);
+    sf_osc_result_free(&b);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(closed_form_table1),
+        cmocka_unit_test(edges),
+        cmocka_unit_test(eq15),
+    };
+    return cmocka_run_group_tests_name("oscillator", tests, NULL, NULL);
+}
