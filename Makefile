@@ -100,9 +100,9 @@ $(BUILD)/rel/tests/%: $(BUILD)/rel/tests/%.o $(BUILD)/libsfverify.a $(BUILD)/lib
 $(BUILD)/san/tests/%: $(BUILD)/san/tests/%.o $(BUILD)/san/libsfverify.a $(BUILD)/san/libslipfield.a
 	$(CC) -g $(SAN) $^ -o $@ $(CMOCKA_LIBS) $(HTML_LIBS) $(PKG_LIBS)
 
-$(BUILD)/bench/slipfield-bench: $(call objs,rel,$(BENCH_SRC)) $(BUILD)/libslipfield.a
+$(BUILD)/bench/slipfield-bench: $(call objs,rel,$(BENCH_SRC)) $(BUILD)/libsfverify.a $(BUILD)/libslipfield.a
 	@mkdir -p $(dir $@)
-	$(CC) $(OPT) $^ -o $@ $(PKG_LIBS)
+	$(CC) $(OPT) $^ -o $@ $(HTML_LIBS) $(PKG_LIBS)
 
 test: deps
 	@$(MAKE) --no-print-directory test-run

@@ -2,6 +2,7 @@
  * run (one FFTW execute of the embedding size plus the 2M normal draws).
  * Measurements are interleaved (bare, ours, bare, ours, ...) and the
  * medians compared, so machine noise hits both sides alike. */
+#include "bench.h"
 #include "field.h"
 #include "sf_error.h"
 
@@ -17,12 +18,6 @@
 #include <gsl/gsl_sort.h>
 #include <gsl/gsl_statistics_double.h>
 
-static double now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
 
 typedef struct {
     const char *name;
@@ -87,14 +82,9 @@ static result bench_grid(const grid *g)
     return r;
 }
 
-int main(int argc, char **argv)
+int bench_field(FILE *f, const char *dir)
 {
-    const char *dir = argc > 1 ? argv[1] : "reports/bench";
-    char cmd[600];
-    snprintf(cmd, sizeof cmd, "%s", dir);
-    for (char *q = cmd + 1; *q; q++)
-        if (*q == '/') { *q = 0; mkdir(cmd, 0777); *q = '/'; }
-    mkdir(cmd, 0777);
+    (void)dir;
     const grid grids[] = {
         { "256 x 256", 256, 256 },
         { "1024 x 1024", 1024, 1024 },
@@ -107,15 +97,7 @@ int main(int argc, char **argv)
         fprintf(stderr, "bench: %-22s embedding %zu x %zu: %.4f s per sample pair, bare %.4f s, ratio %.3f (%zu reps)\n",
                 grids[i].name, res[i].px, res[i].py, res[i].ours, res[i].bare, res[i].ratio, res[i].reps);
     }
-    char path[700], tmp[720];
-    snprintf(path, sizeof path, "%s/report.md", dir);
-    snprintf(tmp, sizeof tmp, "%s.tmp", path);
-    FILE *f = fopen(tmp, "w");
-    if (!f) {
-        fprintf(stderr, "bench: cannot write %s: %s\n", tmp, strerror(errno));
-        return 3;
-    }
-    fprintf(f, "# slipfield benchmarks\n\n## Field sampling vs the bare FFT + normal-draw cost\n\n"
+    fprintf(f, "## Field sampling vs the bare FFT + normal-draw cost\n\n"
                "l = 4 dx (minimal embedding suffices; round-off eigenvalues clamped). One sample call\n"
                "produces two independent fields (real and imaginary parts). The bare cost is one\n"
                "FFTW execute (FFTW_ESTIMATE, in place, same size) plus the 2M ziggurat normal draws,\n"
@@ -127,9 +109,5 @@ int main(int argc, char **argv)
                 res[i].ours, res[i].ours / 2, res[i].bare, res[i].ratio);
     fprintf(f, "\nTarget: ratio <= 1.5 per FFT (issue 6). The extra over the bare cost is the\n"
                "amplitude multiply and the extraction of the m x n window of both fields.\n");
-    fclose(f);
-    if (rename(tmp, path) != 0)
-        return 3;
-    printf("bench report: %s\n", path);
     return 0;
 }
