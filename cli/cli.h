@@ -45,5 +45,6 @@ int sf_cmd_field(int argc, char **argv);
 int sf_cmd_surface(int argc, char **argv);
 int sf_cmd_wrench(int argc, char **argv);
 int sf_cmd_run(int argc, char **argv);
+int sf_cmd_sweep(int argc, char **argv);
 
 #endif

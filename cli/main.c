@@ -22,6 +22,7 @@ static const command commands[] = {
     { "verify", sf_verify_main, "run literate verification cases and write reports" },
     { "field", sf_cmd_field, "sample lognormal COF random fields to TSV" },
     { "run", sf_cmd_run, "integrate the stick-slip oscillator: history TSV and QoI summary" },
+    { "sweep", sf_cmd_sweep, "Monte Carlo sweep over a parameter: QoI ratios to the deterministic model" },
     { "surface", sf_cmd_surface, "the static limit surface (Eq. 11) to TSV" },
     { "wrench", sf_cmd_wrench, "the friction force and torque at one motion (Eqs. 7-8)" },
     { "help", cmd_help, "help on a topic: 'slipfield help scene' lists scene keys" },

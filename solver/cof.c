@@ -215,6 +215,7 @@ int sf_cof_plan_draw(sf_cof_plan *p, gsl_rng *rng, sf_cof **out)
         return rc;
     }
     case SF_COF_FIELD: {
+        sf_field_discard(sf_lnfield_gaussian(p->field));
         int rc = sf_lnfield_sample(p->field, rng, NULL, p->buf);
         if (rc)
             return rc;

@@ -65,7 +65,9 @@ typedef struct {
 int sf_cof_plan_alloc(const sf_scene *s, sf_cof_plan **out, char *err, size_t errlen);
 void sf_cof_plan_free(sf_cof_plan *p);
 const sf_cof_plan_info *sf_cof_plan_get_info(const sf_cof_plan *p);
-/* One realisation from rng (nothing is drawn for a uniform COF). */
+/* One realisation from rng (nothing is drawn for a uniform COF).  A
+ * function of the rng state alone: no field is carried over between
+ * draws (each costs one FFT of which the second field is discarded). */
 int sf_cof_plan_draw(sf_cof_plan *p, gsl_rng *rng, sf_cof **out);
 
 /* Convenience: plan, draw one realisation, free the plan. */

@@ -375,6 +375,11 @@ static void extract(const sf_field *f, double *re, double *im)
     }
 }
 
+void sf_field_discard(sf_field *f)
+{
+    f->have_kept = 0;
+}
+
 int sf_field_sample_pair(sf_field *f, gsl_rng *rng, double *re, double *im)
 {
     if (!f || !rng || !re || !im || re == im)

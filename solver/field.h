@@ -72,6 +72,10 @@ const sf_field_info *sf_field_get_info(const sf_field *f);
  * The stream is a deterministic function of the rng state. */
 int sf_field_sample(sf_field *f, gsl_rng *rng, double *out);
 
+/* Forget the kept second field, so the next sample is a function of the
+ * rng state alone (Monte Carlo with per-realisation streams). */
+void sf_field_discard(sf_field *f);
+
 /* Draw both fields of one FFT at once into distinct arrays re, im of m*n.
  * Discards any kept field. */
 int sf_field_sample_pair(sf_field *f, gsl_rng *rng, double *re, double *im);

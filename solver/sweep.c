@@ -1,0 +1,146 @@
+#include "sweep.h"
+#include "cof.h"
+#include "montecarlo.h"
+#include "oscillator.h"
+#include "sf_error.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <gsl/gsl_statistics_double.h>
+
+int sf_sweep_set(sf_scene *s, const char *name, double value, char *err, size_t errlen)
+{
+    if (!strcmp(name, "l_over_R")) {
+        if (!(value > 0) || !isfinite(value)) {
+            snprintf(err, errlen, "l_over_R must be > 0 (got %g)", value);
+            return SF_EPARSE;
+        }
+        s->l = value * s->R;
+        return SF_SUCCESS;
+    }
+    double cv = s->mu_std / s->mu_mean;
+    char line[160];
+    snprintf(line, sizeof line, "%s = %.17g\n", name, value);
+    int rc = sf_scene_parse(s, line, "--param", 1, err, errlen);
+    if (!rc && !strcmp(name, "mu_mean"))
+        s->mu_std = cv * s->mu_mean;   /* fixed CV (Fig. 13) */
+    return rc;
+}
+
+typedef struct {
+    const sf_scene *s;
+    const double *det;
+    sf_cof_plan *plan;
+} ws_t;
+
+static void *ws_alloc(void *ctx)
+{
+    const ws_t *c = ctx;
+    ws_t *w = malloc(sizeof *w);
+    if (!w)
+        return NULL;
+    *w = *c;
+    int rc;
+    /* FFTW's planner is not thread-safe: plan one thread at a time */
+#pragma omp critical(sf_fftw_plan)
+    rc = sf_cof_plan_alloc(c->s, &w->plan, NULL, 0);
+    if (rc) {
+        free(w);
+        return NULL;
+    }
+    return w;
+}
+
+static void ws_free(void *p)
+{
+    ws_t *w = p;
+#pragma omp critical(sf_fftw_plan)
+    sf_cof_plan_free(w->plan);
+    free(w);
+}
+
+static int realise(void *p, size_t i, gsl_rng *rng, double *out)
+{
+    ws_t *w = p;
+    (void)i;
+    sf_cof *cof;
+    int rc = sf_cof_plan_draw(w->plan, rng, &cof);
+    if (rc)
+        return rc;
+    sf_osc *o;
+    sf_osc_result r;
+    rc = sf_osc_alloc(w->s, cof, &o, NULL, 0);
+    if (!rc) {
+        rc = sf_osc_run(o, NULL, NULL, 0, &r, NULL, 0);
+        out[SF_SWEEP_PVX] = r.pv_x / w->det[SF_SWEEP_PVX];
+        out[SF_SWEEP_PVF] = r.pv_F / w->det[SF_SWEEP_PVF];
+        out[SF_SWEEP_SF] = r.stick_fraction / w->det[SF_SWEEP_SF];
+        sf_osc_result_free(&r);
+        sf_osc_free(o);
+    }
+    sf_cof_free(cof);
+    return rc;
+}
+
+int sf_sweep_run(const sf_scene *s, size_t n, int threads, const char *checkpoint, int resume,
+                 const char *label, sf_sweep_point *out, char *err, size_t errlen)
+{
+    memset(out, 0, sizeof *out);
+    /* the deterministic reference, same definitions */
+    sf_scene d = *s;
+    d.cof = SF_COF_UNIFORM;
+    sf_cof *u;
+    sf_osc *o;
+    sf_osc_result r;
+    int rc = sf_cof_alloc_uniform(s->mu_mean, &u);
+    if (rc)
+        return rc;
+    rc = sf_osc_alloc(&d, u, &o, err, errlen);
+    if (!rc)
+        rc = sf_osc_run(o, NULL, NULL, 0, &r, err, errlen);
+    sf_osc_free(o);
+    sf_cof_free(u);
+    if (rc)
+        return rc;
+    out->det[SF_SWEEP_PVX] = r.pv_x;
+    out->det[SF_SWEEP_PVF] = r.pv_F;
+    out->det[SF_SWEEP_SF] = r.stick_fraction;
+    sf_osc_result_free(&r);
+    if (!(out->det[SF_SWEEP_PVX] > 0) || !(out->det[SF_SWEEP_SF] > 0)) {
+        snprintf(err, errlen, "the deterministic reference has no complete cycle after t_skip: raise T");
+        return SF_EINVAL;
+    }
+    out->n = n;
+    out->ratio = calloc(n * SF_SWEEP_NQ, sizeof *out->ratio);
+    if (!out->ratio)
+        return SF_ENOMEM;
+    ws_t ctx = { s, out->det, NULL };
+    sf_mc_spec spec = { n, SF_SWEEP_NQ, s->seed, threads, checkpoint, resume, 0, label };
+    /* the checkpoint's identity: the effective scene as text (no padding bytes) */
+    char *text = NULL;
+    size_t len = 0;
+    FILE *m = open_memstream(&text, &len);
+    if (!m)
+        return SF_ENOMEM;
+    sf_scene_write(s, m);
+    fclose(m);
+    spec.key = sf_mc_hash(text, len, 0);
+    free(text);
+    sf_mc_ops ops = { ws_alloc, ws_free, realise };
+    rc = sf_mc_run(&spec, &ops, &ctx, out->ratio, &out->from_checkpoint, err, errlen);
+    if (rc)
+        return rc;
+    for (int q = 0; q < SF_SWEEP_NQ; q++) {
+        out->mean[q] = gsl_stats_mean(out->ratio + q, SF_SWEEP_NQ, n);
+        out->std[q] = n > 1 ? gsl_stats_sd(out->ratio + q, SF_SWEEP_NQ, n) : 0;
+    }
+    return SF_SUCCESS;
+}
+
+void sf_sweep_point_free(sf_sweep_point *p)
+{
+    free(p->ratio);
+    p->ratio = NULL;
+}
