@@ -11,6 +11,7 @@ static const sf_check_def *const families[] = {
     sf_checks_stress,
     sf_checks_deterministic,
     sf_checks_dynamics,
+    sf_checks_limits,
 };
 
 const sf_check_def *sf_check_at(size_t i)
