@@ -78,6 +78,7 @@ static const key_t_ keys[] = {
     { "vv", K_ENUM, OFF(vv), 0, 0, 0, 0, 0, "code", "", "code|solution|validation", "code verification, solution verification or validation" },
     { "tags", K_STRING, OFF(tags), sizeof(((sf_scene *)0)->tags), 0, 0, 0, 0, "", "", NULL, "comma-separated tags" },
     { "sweep", K_LIST, OFF(sweep), 0, -INF, INF, 0, 0, "", "", NULL, "list of values a check sweeps over" },
+    { "sweep_param", K_STRING, OFF(sweep_param), sizeof(((sf_scene *)0)->sweep_param), 0, 0, 0, 0, "", "", NULL, "parameter a sweep varies: a numeric key, l_over_R or mu_mean (fixed CV)" },
     { "sweep2", K_LIST, OFF(sweep2), 0, -INF, INF, 0, 0, "", "", NULL, "second list of values" },
 };
 

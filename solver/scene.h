@@ -52,6 +52,7 @@ typedef struct {
     int tier, vv;
     char tags[128];
     sf_list sweep, sweep2;
+    char sweep_param[32];    /* the scene key (or l_over_R) a sweep varies */
     /* which keys the file set (index into the key table) */
     unsigned char set[SF_SCENE_MAX_KEYS];
 } sf_scene;

@@ -132,10 +132,20 @@ int sf_sweep_run(const sf_scene *s, size_t n, int threads, const char *checkpoin
     rc = sf_mc_run(&spec, &ops, &ctx, out->ratio, &out->from_checkpoint, err, errlen);
     if (rc)
         return rc;
+    double *v = malloc(n * sizeof *v);
+    if (!v)
+        return SF_ENOMEM;
     for (int q = 0; q < SF_SWEEP_NQ; q++) {
-        out->mean[q] = gsl_stats_mean(out->ratio + q, SF_SWEEP_NQ, n);
-        out->std[q] = n > 1 ? gsl_stats_sd(out->ratio + q, SF_SWEEP_NQ, n) : 0;
+        size_t m = 0;
+        for (size_t i = 0; i < n; i++)
+            if (isfinite(out->ratio[i * SF_SWEEP_NQ + q]))
+                v[m++] = out->ratio[i * SF_SWEEP_NQ + q];
+        out->mean[q] = m ? gsl_stats_mean(v, 1, m) : NAN;
+        out->std[q] = m > 1 ? gsl_stats_sd(v, 1, m) : NAN;
+        if (q == SF_SWEEP_PVX)
+            out->n_valid = m;
     }
+    free(v);
     return SF_SUCCESS;
 }
 

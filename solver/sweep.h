@@ -22,8 +22,10 @@ enum { SF_SWEEP_PVX = 0, SF_SWEEP_PVF = 1, SF_SWEEP_SF = 2, SF_SWEEP_NQ = 3 };
 typedef struct {
     double det[SF_SWEEP_NQ];    /* deterministic pv_x [m], pv_F [N], stick fraction [-] */
     double *ratio;              /* n x SF_SWEEP_NQ, realisation-major */
-    double mean[SF_SWEEP_NQ], std[SF_SWEEP_NQ];
+    double mean[SF_SWEEP_NQ], std[SF_SWEEP_NQ];   /* over the realisations with a complete cycle */
     size_t n, from_checkpoint;
+    size_t n_valid;             /* realisations with at least one complete cycle after t_skip
+                                   (the others have NaN ratios: no cycle to measure) */
 } sf_sweep_point;
 
 /* Apply parameter `name` = value to s (SF_EPARSE with the reason). */

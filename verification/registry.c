@@ -12,6 +12,7 @@ static const sf_check_def *const families[] = {
     sf_checks_deterministic,
     sf_checks_dynamics,
     sf_checks_limits,
+    sf_checks_validation,
 };
 
 const sf_check_def *sf_check_at(size_t i)

@@ -12,5 +12,6 @@ extern const sf_check_def sf_checks_stress[];
 extern const sf_check_def sf_checks_deterministic[];
 extern const sf_check_def sf_checks_dynamics[];
 extern const sf_check_def sf_checks_limits[];
+extern const sf_check_def sf_checks_validation[];
 
 #endif
