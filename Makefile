@@ -42,7 +42,7 @@ CLI_OBJ := $(call objs,rel,$(CLI_SRC))
 TESTS := $(patsubst tests/%.c,$(BUILD)/rel/tests/%,$(TEST_SRC))
 TESTS_SAN := $(patsubst tests/%.c,$(BUILD)/san/tests/%,$(TEST_SRC))
 
-.PHONY: all deps verify test bench mutants clean help report-test
+.PHONY: all deps verify test bench mutants clean help report-test fuzz valgrind catalogue
 .SECONDARY:
 .DEFAULT_GOAL := all
 
@@ -51,6 +51,8 @@ help:
 	@echo "make test     install deps if missing, run the CMocka unit tests (plain and under ASan+UBSan)"
 	@echo "make bench    benchmarks -> reports/bench/report.md"
 	@echo "make mutants  seeded defects that the cases must catch"
+	@echo "make fuzz     libFuzzer on the scene parser and case reader (FUZZ_TIME=60 s each; needs clang)"
+	@echo "make valgrind a few cases and the CLI under valgrind (errors and leaks fail)"
 	@echo "make report-test  JUnit XML schema + headless-Chromium test of reports/ (after test and verify)"
 	@echo "make deps     install libgsl-dev libfftw3-dev libcmocka-dev gnuplot-nox pkg-config libcmark-gfm(-extensions)-dev when missing"
 
@@ -108,11 +110,20 @@ test: deps
 	@$(MAKE) --no-print-directory test-run
 
 .PHONY: test-run
-test-run: $(TESTS) $(TESTS_SAN)
-	@sh scripts/run-tests.sh $(BUILD) $(TESTS) -- $(TESTS_SAN)
+test-run: $(TESTS) $(TESTS_SAN) $(BUILD)/slipfield
+	@st=0; sh scripts/run-tests.sh $(BUILD) $(TESTS) -- $(TESTS_SAN) || st=1; \
+	 sh scripts/bad-input.sh $(BUILD)/slipfield || st=1; \
+	 sh scripts/catalogue.sh $(BUILD)/slipfield $(BUILD)/catalogue.md && \
+	 if cmp -s $(BUILD)/catalogue.md cases/README.md; then echo "catalogue: cases/README.md up to date"; \
+	 else echo "catalogue: cases/README.md is stale: run make catalogue" >&2; st=1; fi; exit $$st
 
+REPEAT ?=
 verify: all
+ifneq ($(REPEAT),)
+	@sh scripts/false-alarm.sh $(REPEAT) $(TIER) $(JOBS)
+else
 	@$(BUILD)/slipfield verify --jobs $(JOBS) --tier $(TIER) $(if $(SEED),--seed $(SEED)) $(VERIFY_FLAGS) $(CASES)
+endif
 
 # after `make test` and `make verify`: JUnit schema and the browser test
 report-test:
@@ -129,3 +140,16 @@ clean:
 	rm -rf $(BUILD)
 
 -include $(shell find $(BUILD) -name '*.d' 2>/dev/null)
+
+FUZZ_TIME ?= 60
+fuzz: all
+	@sh scripts/deps.sh clang
+	@sh scripts/fuzz.sh $(FUZZ_TIME)
+
+valgrind: all
+	@sh scripts/deps.sh valgrind
+	@sh scripts/valgrind.sh
+
+catalogue: all
+	@sh scripts/catalogue.sh $(BUILD)/slipfield cases/README.md
+	@echo "catalogue: cases/README.md"

@@ -328,7 +328,13 @@ int sf_scene_read_file(sf_scene *s, const char *path, char *err, size_t errlen)
         return SF_ENOMEM;
     }
     n = fread(buf, 1, cap + 1, f);
+    int rd = ferror(f) ? errno : 0;
     fclose(f);
+    if (rd) {   /* e.g. a directory: fopen succeeds, reading fails */
+        free(buf);
+        seterr(err, errlen, "%s: cannot read: %s", path, strerror(rd));
+        return SF_EIO;
+    }
     if (n > cap) {
         free(buf);
         return seterr(err, errlen, "%s: scene file larger than 1 MiB", path);

@@ -64,7 +64,10 @@ static int make_id(sf_case *c, const char *path, char *err, size_t errlen)
     return SF_SUCCESS;
 }
 
-int sf_case_read(sf_case *c, const char *path, char *err, size_t errlen)
+/* The parse proper, on a NUL-terminated copy buf of n bytes (freed here). */
+static int parse_buf(sf_case *c, const char *path, char *buf, size_t n, char *err, size_t errlen);
+
+int sf_case_parse(sf_case *c, const char *path, const char *text, size_t n, char *err, size_t errlen)
 {
     memset(c, 0, sizeof *c);
     if (strlen(path) >= sizeof c->path)
@@ -73,7 +76,21 @@ int sf_case_read(sf_case *c, const char *path, char *err, size_t errlen)
     int rc = make_id(c, path, err, errlen);
     if (rc)
         return rc;
+    if (n > (1u << 20))
+        return fail(err, errlen, SF_EPARSE, "%s: case file larger than 1 MiB", path);
+    if (memchr(text, '\0', n))
+        return fail(err, errlen, SF_EPARSE, "%s: case file contains a NUL byte", path);
+    char *buf = malloc(n + 1);
+    if (!buf)
+        return SF_ENOMEM;
+    memcpy(buf, text, n);
+    buf[n] = '\0';
+    return parse_buf(c, path, buf, n, err, errlen);
+}
 
+int sf_case_read(sf_case *c, const char *path, char *err, size_t errlen)
+{
+    memset(c, 0, sizeof *c);
     FILE *f = fopen(path, "rb");
     if (!f)
         return fail(err, errlen, SF_EIO, "%s: cannot open: %s", path, strerror(errno));
@@ -84,17 +101,20 @@ int sf_case_read(sf_case *c, const char *path, char *err, size_t errlen)
         return SF_ENOMEM;
     }
     size_t n = fread(buf, 1, cap + 1, f);
+    int rd_err = ferror(f);
     fclose(f);
-    if (n > cap) {
+    if (rd_err) {
         free(buf);
-        return fail(err, errlen, SF_EPARSE, "%s: case file larger than 1 MiB", path);
+        return fail(err, errlen, SF_EIO, "%s: cannot read (a directory?)", path);
     }
-    buf[n] = '\0';
-    if (strlen(buf) != n) {
-        free(buf);
-        return fail(err, errlen, SF_EPARSE, "%s: case file contains a NUL byte", path);
-    }
+    int rc = sf_case_parse(c, path, buf, n, err, errlen);
+    free(buf);
+    return rc;
+}
 
+static int parse_buf(sf_case *c, const char *path, char *buf, size_t n, char *err, size_t errlen)
+{
+    int rc;
     /* Walk lines: title, the single ```scene fence. */
     const char *p = buf, *open = NULL, *body = NULL, *close_ = NULL, *after = NULL;
     const char *title = NULL, *title_end = NULL, *after_title = buf;

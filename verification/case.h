@@ -29,6 +29,10 @@ typedef struct {
 int sf_case_read(sf_case *c, const char *path, char *err, size_t errlen);
 void sf_case_free(sf_case *c);
 
+/* The same from text[n] (need not be NUL-terminated); path names the case
+ * (its id) and appears in messages. */
+int sf_case_parse(sf_case *c, const char *path, const char *text, size_t n, char *err, size_t errlen);
+
 /* A fresh MT19937 seeded from the scene (caller frees). */
 gsl_rng *sf_case_rng(const sf_case *c);
 

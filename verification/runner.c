@@ -328,6 +328,10 @@ int sf_verify_main(int argc, char **argv)
             }
             if (pid == 0) {
                 close(fd[0]);
+                /* the parent's bookkeeping is not the child's: free it so
+                   a leak check of the case process sees only its own */
+                free(run);
+                free(out);
                 run_child(&cases[next], root, fd[1], timeout);
             }
             close(fd[1]);
