@@ -109,7 +109,14 @@ int sf_osc_alloc(const sf_scene *s, const sf_cof *cof, sf_osc **out, char *err, 
     o->sys = (gsl_odeiv2_system){ rhs, NULL, NSTATE, o };
     o->step = gsl_odeiv2_step_alloc(T, NSTATE);
     o->bstep = gsl_odeiv2_step_alloc(T, NSTATE);
-    o->con = gsl_odeiv2_control_y_new(s->rtol, s->rtol);
+    /* error control in the problem's own scales: a displacement x_s =
+     * mu m g / k, its speed x_s omega_n, angles x_s / R, energy mu m g x_s;
+     * an absolute tolerance in SI units would be meaningless for a stick
+     * distance of a micrometre or of a metre */
+    double xs = fmax((s->mu_mean + s->mu_std) * o->N / s->k, 1e-300);
+    double sc[NSTATE] = { xs, xs, xs / s->R, xs * o->wn, xs * o->wn, xs * o->wn / s->R,
+                          (s->mu_mean + s->mu_std) * o->N * xs };
+    o->con = gsl_odeiv2_control_scaled_new(s->rtol, s->rtol, 1.0, 0.0, sc, NSTATE);
     o->ev = gsl_odeiv2_evolve_alloc(NSTATE);
     if (!o->step || !o->bstep || !o->con || !o->ev) {
         sf_osc_free(o);

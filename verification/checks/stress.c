@@ -7,6 +7,8 @@
 #include "cof.h"
 #include "field.h"
 #include "sf_error.h"
+#include "oscillator.h"
+#include "sweep.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -189,7 +191,47 @@ static int chk_wrench_extremes(const sf_case *c, sf_result *r)
     return SF_SUCCESS;
 }
 
+
+/* A run at extreme parameters (optionally over a sweep of one): it must
+ * finish (SF_SUCCESS) with finite states, |x| and |y| within the
+ * spring-excursion bound 2 mu_hi m g / k, and the energy balance to the
+ * tolerance (relative to the energy turned over). */
+static int chk_run(const sf_case *c, sf_result *r)
+{
+    const sf_scene *s0 = &c->scene;
+    size_t K = *s0->sweep_param ? s0->sweep.n : 1;
+    size_t bad = 0;
+    double worst_e = 0;
+    sf_note(r, "| %s | result | transitions | cycles | stick fraction | x range [m] | max abs y [m] | energy residual (rel.) | steps |\n"
+               "|---|---|---|---|---|---|---|---|---|", *s0->sweep_param ? s0->sweep_param : "run");
+    for (size_t k = 0; k < K; k++) {
+        sf_scene s = *s0;
+        char err[256] = "";
+        if (*s0->sweep_param && sf_sweep_set(&s, s0->sweep_param, s0->sweep.v[k], err, sizeof err))
+            return SF_EINVAL;
+        gsl_rng *rng = sf_case_rng(c);
+        sf_osc_result res;
+        int rc = check_osc_run(&s, rng, NULL, 0, &res, NULL, NULL, r);
+        gsl_rng_free(rng);
+        double bound = 2 * (s.mu_mean + 4 * s.mu_std) * s.m * s.g / s.k;
+        double e = fabs(res.energy_residual) / fmax(fabs(res.friction_work) + fabs(res.energy_change), 1e-300);
+        int ok = rc == SF_SUCCESS && isfinite(res.x_min) && isfinite(res.x_max) &&
+                 fmax(fabs(res.x_min), fabs(res.x_max)) <= bound && res.y_absmax <= bound && e <= s0->tolerance;
+        bad += !ok;
+        worst_e = fmax(worst_e, rc ? INFINITY : e);
+        sf_note(r, "| %g | %s | %zu | %zu | %.4g | [%.4g, %.4g] | %.3g | %.2e | %lu |",
+                *s0->sweep_param ? s0->sweep.v[k] : 0.0, rc ? sf_strerror(rc) : (ok ? "ok" : "**out of bounds**"),
+                res.ntrans, res.ncycles, res.stick_fraction, res.x_min, res.x_max, res.y_absmax, e, res.steps);
+        sf_osc_result_free(&res);
+    }
+    sf_check_le(r, "runs that failed, went non-finite, left the bound 2 mu_hi m g / k, or broke the energy balance",
+                (double)bad, 0);
+    sf_check_le(r, "worst relative energy residual", worst_e, s0->tolerance);
+    return SF_SUCCESS;
+}
+
 const sf_check_def sf_checks_stress[] = {
+    { "stress_run", chk_run, "runs at extreme parameters: finish, finite, bounded, energy balance" },
     { "stress_cof_plan_range", chk_cof_plan_range, "COF plan over l/R 1e-3..1e4: field, shortcut or a clear refusal" },
     { "stress_near_singular", chk_near_singular, "embedding of near-singular covariances: PSD or reported truncation" },
     { "stress_wrench_extremes", chk_wrench_extremes, "wrench and closed forms finite and bounded at extremes" },
