@@ -1,6 +1,7 @@
 /* Unit tests: 1-D closed forms and the oscillator's edge cases. */
 #include "test_util.h"
 #include "cycle1d.h"
+#include "qoi.h"
 #include "oscillator.h"
 #include "cof.h"
 #include "scene.h"
@@ -8,6 +9,7 @@
 
 #include <stdlib.h>
 #include <string.h>
+#include <gsl/gsl_math.h>
 
 static void closed_form_table1(void **state)
 {
@@ -100,12 +102,39 @@ static void eq15(void **state)
     sf_osc_result_free(&b);
 }
 
+/* A sine of known frequency: the periodogram peaks in its bin, and
+ * Parseval holds (sum p df = variance). */
+static void periodogram(void **state)
+{
+    (void)state;
+    size_t n = 1000;
+    double dt = 0.01, x[1000], f[501], p[501], var = 0;
+    for (size_t i = 0; i < n; i++) {
+        x[i] = 3 + 0.5 * sin(2 * M_PI * 5.0 * (double)i * dt);
+        var += 0.25 * sin(2 * M_PI * 5.0 * (double)i * dt) * sin(2 * M_PI * 5.0 * (double)i * dt);
+    }
+    var /= (double)n;
+    assert_int_equal(sf_periodogram(x, n, dt, f, p), SF_SUCCESS);
+    size_t kmax = 0;
+    double sum = 0;
+    for (size_t k = 0; k <= n / 2; k++) {
+        if (p[k] > p[kmax])
+            kmax = k;
+        sum += p[k] / ((double)n * dt);
+    }
+    assert_close(f[kmax], 5.0, 1e-12);
+    assert_close(sum, var, 1e-10);
+    assert_close(p[0], 0, 1e-20);   /* mean removed */
+    assert_int_equal(sf_periodogram(x, 1, dt, f, p), SF_EINVAL);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(closed_form_table1),
         cmocka_unit_test(edges),
         cmocka_unit_test(eq15),
+        cmocka_unit_test(periodogram),
     };
     return cmocka_run_group_tests_name("oscillator", tests, NULL, NULL);
 }
