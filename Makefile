@@ -113,6 +113,7 @@ test: deps
 test-run: $(TESTS) $(TESTS_SAN) $(BUILD)/slipfield
 	@st=0; sh scripts/run-tests.sh $(BUILD) $(TESTS) -- $(TESTS_SAN) || st=1; \
 	 sh scripts/bad-input.sh $(BUILD)/slipfield || st=1; \
+	 sh scripts/isolation.sh $(BUILD)/slipfield || st=1; \
 	 sh scripts/catalogue.sh $(BUILD)/slipfield $(BUILD)/catalogue.md && \
 	 if cmp -s $(BUILD)/catalogue.md cases/README.md; then echo "catalogue: cases/README.md up to date"; \
 	 else echo "catalogue: cases/README.md is stale: run make catalogue" >&2; st=1; fi; exit $$st

@@ -13,6 +13,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
@@ -89,6 +90,11 @@ static void fill_outcome(sf_outcome *o, const sf_case *c)
 /* Child: run the check, write the report, send one line to the parent. */
 static void run_child(const sf_case *c, const char *root, int fd, unsigned timeout)
 {
+    /* die with the runner: a killed `make verify` leaves no case running
+       on to write a report nobody asked for any more */
+    prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (getppid() == 1)
+        _exit(3);
     alarm(timeout);
     sf_outcome o;
     fill_outcome(&o, c);
@@ -303,6 +309,16 @@ int sf_verify_main(int argc, char **argv)
         char p[1100];
         snprintf(p, sizeof p, "%s/%s", root, summaries[k]);
         unlink(p);
+    }
+    /* nor a selected case's old report: each is rewritten when (and only
+     * when) this run reaches its verdict */
+    for (size_t k = 0; k < kept; k++) {
+        static const char *files[] = { "report.md", "report.html" };
+        for (int f = 0; f < 2; f++) {
+            char p[1100];
+            snprintf(p, sizeof p, "%s/%s/%s", root, cases[k].id, files[f]);
+            unlink(p);
+        }
     }
     if (skipped)
         printf("(%zu full-tier cases skipped; run with TIER=full / --tier full)\n", skipped);

@@ -1,0 +1,37 @@
+#!/bin/sh
+# The runner's isolation, proven: a case that aborts, one that segfaults and
+# one that hangs past its time limit are each reported as that case's
+# failure (with a report saying so) while the passing case still passes;
+# and killing a run mid-way leaves no summary and no report for a case whose
+# verdict it did not reach.
+set -u
+top=$(cd "$(dirname "$0")/.." && pwd)
+cd "$top"
+bin=${1:-build/slipfield}
+tmp=$(mktemp -d /tmp/sf-iso.XXXXXX)
+trap 'rm -rf "$tmp"' EXIT INT TERM
+fail=0
+ok() { :; }
+bad() { echo "isolation: FAIL $*" >&2; fail=1; }
+SF_SELFTEST=1 "$bin" verify --jobs 2 --timeout 2 --reports "$tmp/r" tests/isolation/*.md > "$tmp/out" 2>&1
+rc=$?
+[ $rc -eq 1 ] || bad "verify exit $rc, expected 1"
+for k in abort segv hang; do
+    grep -qE "^ERROR +isolation/$k " "$tmp/out" || bad "$k not reported as ERROR"
+    grep -qiE "signal|time|killed" "$tmp/r/isolation/$k/report.md" 2>/dev/null || bad "$k: no report naming the crash"
+done
+grep -qE "^PASS +isolation/pass " "$tmp/out" || bad "the passing case did not pass"
+grep -c '<testcase' "$tmp/r/junit.xml" | grep -qx 4 || bad "junit.xml does not list the 4 cases"
+# kill mid-run: the hang case is in flight when the runner is killed
+SF_SELFTEST=1 "$bin" verify --jobs 1 --timeout 60 --reports "$tmp/k" tests/isolation/pass.md tests/isolation/hang.md > /dev/null 2>&1 &
+pid=$!
+sleep 1.5
+kill -TERM $pid 2>/dev/null
+wait $pid 2>/dev/null
+sleep 0.5
+[ ! -e "$tmp/k/index.md" ] && [ ! -e "$tmp/k/junit.xml" ] || bad "a killed run left a summary"
+[ ! -e "$tmp/k/isolation/hang/report.md" ] || bad "a killed run left a report for the unfinished case"
+pgrep -f "reports $tmp/k" > /dev/null && bad "case processes outlived the killed runner"
+ls "$tmp/k"/isolation/*/*.tmp* > /dev/null 2>&1 && bad "temporary files left behind"
+[ $fail -eq 0 ] && echo "isolation: crash, abort, time-out and kill handled"
+exit $fail

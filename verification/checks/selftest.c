@@ -1,0 +1,62 @@
+/* Checks that misbehave on purpose, to prove the runner's isolation (a
+ * crash, an abort or a hang in one case is that case's failure; the rest
+ * still run): tests/isolation/, run by `make test`.  They refuse to run
+ * unless SF_SELFTEST=1, so no catalogue case can use them by mistake. */
+#include "checks.h"
+#include "sf_error.h"
+
+#include <signal.h>
+#include <stdlib.h>
+#include <unistd.h>
+
+static int armed(sf_result *r)
+{
+    const char *e = getenv("SF_SELFTEST");
+    if (e && e[0] == '1')
+        return 1;
+    sf_note(r, "selftest checks run only with SF_SELFTEST=1");
+    return 0;
+}
+
+static int chk_abort(const sf_case *c, sf_result *r)
+{
+    (void)c;
+    if (!armed(r))
+        return SF_EINVAL;
+    abort();
+}
+
+static int chk_segv(const sf_case *c, sf_result *r)
+{
+    (void)c;
+    if (!armed(r))
+        return SF_EINVAL;
+    raise(SIGSEGV);
+    return SF_EFAIL;
+}
+
+static int chk_hang(const sf_case *c, sf_result *r)
+{
+    (void)c;
+    if (!armed(r))
+        return SF_EINVAL;
+    for (;;)
+        pause();
+}
+
+static int chk_pass(const sf_case *c, sf_result *r)
+{
+    (void)c;
+    if (!armed(r))
+        return SF_EINVAL;
+    sf_check_abs(r, "1 + 1", 1.0 + 1.0, 2.0, 0);
+    return SF_SUCCESS;
+}
+
+const sf_check_def sf_checks_selftest[] = {
+    { "selftest_abort", chk_abort, "calls abort() (isolation test)" },
+    { "selftest_segv", chk_segv, "raises SIGSEGV (isolation test)" },
+    { "selftest_hang", chk_hang, "never returns (time-out test)" },
+    { "selftest_pass", chk_pass, "passes (isolation test)" },
+    { NULL, NULL, NULL }
+};
