@@ -3,6 +3,14 @@
 SHELL := /bin/sh
 CC ?= cc
 BUILD := build
+# make MPI=1: an MPI build in build-mpi/ (OpenMPI's mpicc); `make mpi-test`
+# checks that `mpirun -np 2 ... sweep` gives the serial run's bytes
+MPI ?=
+ifeq ($(MPI),1)
+CC := mpicc
+BUILD := build-mpi
+MPI_FLAGS := -DSF_MPI
+endif
 JOBS ?= $(shell nproc 2>/dev/null || echo 1)
 TIER ?= quick
 CASES ?= $(sort $(wildcard cases/*/*.md))
@@ -12,7 +20,7 @@ VERIFY_FLAGS ?=
 PKGS := gsl fftw3
 GIT_REV := $(shell git rev-parse --short HEAD 2>/dev/null || echo unknown)
 WARN := -Wall -Wextra -Wpedantic -Werror
-BASE_CFLAGS := -std=c11 -D_POSIX_C_SOURCE=200809L $(WARN) -Isolver -Iverification -Icli -Itests -I$(BUILD)/gen -fopenmp
+BASE_CFLAGS := -std=c11 -D_POSIX_C_SOURCE=200809L $(WARN) -Isolver -Iverification -Icli -Itests -I$(BUILD)/gen -fopenmp $(MPI_FLAGS)
 # The git revision lives in a generated header rewritten only when it
 # changes, so a commit does not rebuild everything.
 _rev := $(shell mkdir -p $(BUILD)/gen && echo '#define SF_GIT_REV "$(GIT_REV)"' > $(BUILD)/gen/sf_rev.h.new && \
@@ -42,7 +50,7 @@ CLI_OBJ := $(call objs,rel,$(CLI_SRC))
 TESTS := $(patsubst tests/%.c,$(BUILD)/rel/tests/%,$(TEST_SRC))
 TESTS_SAN := $(patsubst tests/%.c,$(BUILD)/san/tests/%,$(TEST_SRC))
 
-.PHONY: all deps verify test bench mutants clean help report-test fuzz valgrind catalogue
+.PHONY: all deps verify test bench mutants clean help report-test fuzz valgrind catalogue mpi-test
 .SECONDARY:
 .DEFAULT_GOAL := all
 
@@ -53,6 +61,8 @@ help:
 	@echo "make mutants  seeded defects that the cases must catch"
 	@echo "make fuzz     libFuzzer on the scene parser and case reader (FUZZ_TIME=60 s each; needs clang)"
 	@echo "make valgrind a few cases and the CLI under valgrind (errors and leaks fail)"
+	@echo "make MPI=1    an MPI build in build-mpi/ (mpirun -np P build-mpi/slipfield sweep ...)"
+	@echo "make mpi-test the MPI sweep gives the serial bytes (installs OpenMPI if missing)"
 	@echo "make report-test  JUnit XML schema + headless-Chromium test of reports/ (after test and verify)"
 	@echo "make deps     install libgsl-dev libfftw3-dev libcmocka-dev gnuplot-nox pkg-config libcmark-gfm(-extensions)-dev when missing"
 
@@ -114,6 +124,7 @@ test-run: $(TESTS) $(TESTS_SAN) $(BUILD)/slipfield
 	@st=0; sh scripts/run-tests.sh $(BUILD) $(TESTS) -- $(TESTS_SAN) || st=1; \
 	 sh scripts/bad-input.sh $(BUILD)/slipfield || st=1; \
 	 sh scripts/isolation.sh $(BUILD)/slipfield || st=1; \
+	 sh scripts/resume-test.sh $(BUILD)/slipfield || st=1; \
 	 sh scripts/catalogue.sh $(BUILD)/slipfield $(BUILD)/catalogue.md && \
 	 if cmp -s $(BUILD)/catalogue.md cases/README.md; then echo "catalogue: cases/README.md up to date"; \
 	 else echo "catalogue: cases/README.md is stale: run make catalogue" >&2; st=1; fi; exit $$st
@@ -154,3 +165,9 @@ valgrind: all
 catalogue: all
 	@sh scripts/catalogue.sh $(BUILD)/slipfield cases/README.md
 	@echo "catalogue: cases/README.md"
+
+mpi-test:
+	@sh scripts/deps.sh libopenmpi-dev openmpi-bin
+	@$(MAKE) --no-print-directory all
+	@$(MAKE) --no-print-directory MPI=1 all
+	@sh scripts/mpi-test.sh build/slipfield build-mpi/slipfield

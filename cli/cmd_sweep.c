@@ -4,6 +4,7 @@
  * deterministic model at the same parameters. */
 #include "cli.h"
 #include "sweep.h"
+#include "montecarlo.h"
 #include "sf_error.h"
 
 #include <errno.h>
@@ -86,12 +87,23 @@ int sf_cmd_sweep(int argc, char **argv)
             return SF_EXIT_USAGE;
         }
     }
-    sf_out out, sum = { 0 };
-    if (sf_cli_open("sweep", out_path, &out))
-        return SF_EXIT_USAGE;
-    if (sum_path && sf_cli_open("sweep", sum_path, &sum)) {
-        sf_cli_close("sweep", &out, 0);
-        return SF_EXIT_USAGE;
+    /* under MPI every rank computes, rank 0 writes */
+    int writer = sf_mc_rank(NULL) == 0;
+    sf_out out = { 0 }, sum = { 0 };
+    FILE *null = NULL;
+    if (!writer) {
+        null = fopen("/dev/null", "w");
+        if (!null)
+            return SF_EXIT_INTERNAL;
+        out.f = sum.f = null;
+        out.is_stdout = sum.is_stdout = 1;
+    } else {
+        if (sf_cli_open("sweep", out_path, &out))
+            return SF_EXIT_USAGE;
+        if (sum_path && sf_cli_open("sweep", sum_path, &sum)) {
+            sf_cli_close("sweep", &out, 0);
+            return SF_EXIT_USAGE;
+        }
     }
     fprintf(out.f, "param\tvalue\trealisation\tpv_x_ratio\tpv_F_ratio\tstick_fraction_ratio\n");
     if (sum_path)
@@ -122,6 +134,10 @@ int sf_cmd_sweep(int argc, char **argv)
                         p.det[2]);
         }
         sf_sweep_point_free(&p);
+    }
+    if (!writer) {
+        fclose(null);
+        return ok ? SF_EXIT_OK : SF_EXIT_INTERNAL;
     }
     int st = sf_cli_close("sweep", &out, ok);
     if (sum_path && sf_cli_close("sweep", &sum, ok))

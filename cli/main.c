@@ -51,7 +51,7 @@ static int cmd_help(int argc, char **argv)
     return SF_EXIT_OK;
 }
 
-int main(int argc, char **argv)
+static int dispatch(int argc, char **argv)
 {
     /* Every GSL status is checked where it is returned: no abort(). */
     gsl_set_error_handler_off();
@@ -73,4 +73,22 @@ int main(int argc, char **argv)
     fprintf(stderr, "slipfield: unknown command '%s'\n", argv[1]);
     usage(stderr);
     return SF_EXIT_USAGE;
+}
+
+#ifdef SF_MPI
+#include <mpi.h>
+#endif
+
+int main(int argc, char **argv)
+{
+#ifdef SF_MPI
+    /* make MPI=1: `mpirun -np P slipfield sweep ...` spreads realisations
+       over ranks (solver/montecarlo.h); other commands run on each rank */
+    MPI_Init(&argc, &argv);
+    int rc = dispatch(argc, argv);
+    MPI_Finalize();
+    return rc;
+#else
+    return dispatch(argc, argv);
+#endif
 }

@@ -9,6 +9,9 @@
 #ifdef _OPENMP
 #include <omp.h>
 #endif
+#ifdef SF_MPI
+#include <mpi.h>
+#endif
 
 static uint64_t splitmix64(uint64_t x)
 {
@@ -91,18 +94,97 @@ static int ck_read(const sf_mc_spec *s, double *out, unsigned char *done, size_t
     return SF_SUCCESS;
 }
 
-int sf_mc_run(const sf_mc_spec *s, const sf_mc_ops *ops, void *ctx, double *out,
+int sf_mc_rank(int *size)
+{
+    int rank = 0, sz = 1;
+#ifdef SF_MPI
+    int init = 0;
+    MPI_Initialized(&init);
+    if (init) {
+        MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+        MPI_Comm_size(MPI_COMM_WORLD, &sz);
+    }
+#endif
+    if (size)
+        *size = sz;
+    return rank;
+}
+
+/* MPI: realisation i belongs to rank i mod size; the others are marked
+ * done (they are not this rank's), computed elsewhere and gathered. */
+static int gather(const sf_mc_spec *s, double *out, int rc)
+{
+#ifdef SF_MPI
+    int size, rank = sf_mc_rank(&size);
+    if (size == 1)
+        return rc;
+    int all;
+    MPI_Allreduce(&rc, &all, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+    if (all)
+        return all;
+    size_t mine = 0;
+    for (size_t i = (size_t)rank; i < s->n; i += (size_t)size)
+        mine++;
+    double *send = malloc((mine ? mine : 1) * s->nout * sizeof *send);
+    double *recv = malloc((s->n ? s->n : 1) * s->nout * sizeof *recv);
+    int *cnt = malloc((size_t)size * sizeof *cnt), *dsp = malloc((size_t)size * sizeof *dsp);
+    if (!send || !recv || !cnt || !dsp) {
+        free(send); free(recv); free(cnt); free(dsp);
+        return SF_ENOMEM;
+    }
+    size_t k = 0;
+    for (size_t i = (size_t)rank; i < s->n; i += (size_t)size, k++)
+        memcpy(send + k * s->nout, out + i * s->nout, s->nout * sizeof *send);
+    int off = 0;
+    for (int q = 0; q < size; q++) {
+        size_t m = s->n > (size_t)q ? (s->n - (size_t)q + (size_t)size - 1) / (size_t)size : 0;
+        cnt[q] = (int)(m * s->nout);
+        dsp[q] = off;
+        off += cnt[q];
+    }
+    MPI_Allgatherv(send, cnt[rank], MPI_DOUBLE, recv, cnt, dsp, MPI_DOUBLE, MPI_COMM_WORLD);
+    for (int q = 0; q < size; q++) {   /* unpack: rank q's k-th value is realisation q + k size */
+        k = 0;
+        for (size_t i = (size_t)q; i < s->n; i += (size_t)size, k++)
+            memcpy(out + i * s->nout, recv + (size_t)dsp[q] + k * s->nout, s->nout * sizeof *out);
+    }
+    free(send); free(recv); free(cnt); free(dsp);
+    return SF_SUCCESS;
+#else
+    (void)s;
+    (void)out;
+    return rc;
+#endif
+}
+
+int sf_mc_run(const sf_mc_spec *s0, const sf_mc_ops *ops, void *ctx, double *out,
               size_t *done_before, char *err, size_t errlen)
 {
+    sf_mc_spec sl = *s0, *s = &sl;
+    int size, rank = sf_mc_rank(&size);
+    char ckpath[4200];
+    if (size > 1 && s->checkpoint) {   /* one checkpoint per rank (resume with the same rank count) */
+        snprintf(ckpath, sizeof ckpath, "%s.rank%dof%d", s->checkpoint, rank, size);
+        s->checkpoint = ckpath;
+    }
+    if (size > 1 && rank != 0)
+        s->label = NULL;
     unsigned char *done = calloc(s->n ? s->n : 1, 1);
-    if (!done)
+    unsigned char *theirs = calloc(s->n ? s->n : 1, 1);
+    if (!done || !theirs) {
+        free(done);
+        free(theirs);
         return SF_ENOMEM;
+    }
+    for (size_t i = 0; i < s->n; i++)
+        theirs[i] = size > 1 && (int)(i % (size_t)size) != rank;
     size_t before = 0;
     FILE *ck = NULL;
     int rc = SF_SUCCESS;
     if (s->checkpoint) {
         if (s->resume && (rc = ck_read(s, out, done, &before, err, errlen))) {
             free(done);
+            free(theirs);
             return rc;
         }
         /* rewrite the kept lines, then append: the file only ever holds
@@ -112,6 +194,7 @@ int sf_mc_run(const sf_mc_spec *s, const sf_mc_ops *ops, void *ctx, double *out,
         ck = fopen(tmp, "w");
         if (!ck) {
             free(done);
+            free(theirs);
             seterr(err, errlen, "cannot write the checkpoint", s->checkpoint);
             return SF_EIO;
         }
@@ -127,6 +210,7 @@ int sf_mc_run(const sf_mc_spec *s, const sf_mc_ops *ops, void *ctx, double *out,
         if (fflush(ck) || rename(tmp, s->checkpoint)) {
             fclose(ck);
             free(done);
+            free(theirs);
             seterr(err, errlen, "cannot write the checkpoint", s->checkpoint);
             return SF_EIO;
         }
@@ -154,7 +238,7 @@ int sf_mc_run(const sf_mc_spec *s, const sf_mc_ops *ops, void *ctx, double *out,
             int stop;
 #pragma omp atomic read
             stop = failed;
-            if (done[i] || stop || !ready)
+            if (done[i] || theirs[i] || stop || !ready)
                 continue;
             gsl_rng_set(rng, sf_mc_seed(s->seed, i));
             int r = ops->realise(ws, i, rng, out + i * s->nout);
@@ -191,5 +275,6 @@ int sf_mc_run(const sf_mc_spec *s, const sf_mc_ops *ops, void *ctx, double *out,
     if (done_before)
         *done_before = before;
     free(done);
-    return rc;
+    free(theirs);
+    return gather(s, out, rc);
 }

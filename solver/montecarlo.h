@@ -39,6 +39,12 @@ typedef struct {
 
 unsigned long sf_mc_seed(unsigned long seed, size_t i);
 
+/* This process's MPI rank (0 without MPI) and *size (may be NULL).  In an
+ * MPI build (make MPI=1, run under mpirun) sf_mc_run gives realisation i
+ * to rank i mod size and gathers every value on every rank: the bytes are
+ * those of the serial run. */
+int sf_mc_rank(int *size);
+
 /* FNV-1a over bytes, chained through h (start with 0). */
 unsigned long sf_mc_hash(const void *p, size_t n, unsigned long h);
 
