@@ -17,7 +17,7 @@ tmp=$(mktemp -d /tmp/sf-fa.XXXXXX)
 trap 'rm -rf "$tmp"' EXIT INT TERM
 cases=""
 for f in cases/*/*.md; do
-    grep -q '^alpha' "$f" || continue
+    awk '/^```scene/ { f = 1; next } /^```/ { f = 0 } f && /^alpha = / { found = 1 } END { exit !found }' "$f" || continue
     if [ "$TIER" = quick ] && grep -q '^tier = full' "$f"; then continue; fi
     cases="$cases $f"
 done
@@ -33,7 +33,7 @@ done
     echo "case	alpha	failures	runs"
     for f in $cases; do
         id=$(echo "$f" | sed 's|^cases/||; s|\.md$||')
-        a=$(sed -n 's/^alpha = //p' "$f")
+        a=$(awk '/^```scene/ { f = 1; next } /^```/ { f = 0 } f && /^alpha = / { print $3 }' "$f")
         k=$(cat "$tmp"/run*.log | grep -E "^(FAIL|ERROR) +$id " | wc -l)
         echo "$id	$a	$k	$N"
     done

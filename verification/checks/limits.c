@@ -152,8 +152,8 @@ static int chk_large_lr(const sf_case *c, sf_result *r)
 
 /* Small l/R: homogenisation.  Over a sweep of l/R below the spread's peak
  * (l/R ~ 1), the spread of the PV_F and PV_x ratios over realisations and
- * the distance of their means from 1 both fall with l/R (slopes of log std
- * and log |mean - 1| vs log l/R positive, one-sided t tests). */
+ * the distance of their means from 1 fall with l/R: tested between the
+ * sweep's ends, the values in between tabled and plotted. */
 static int chk_small_lr(const sf_case *c, sf_result *r)
 {
     const sf_scene *s0 = &c->scene;
@@ -183,34 +183,28 @@ static int chk_small_lr(const sf_case *c, sf_result *r)
         sf_note(r, "| %g | %.4f | %.4f | %.4f | %.4f |", lr[k], mn[0][k], sd[0][k], mn[1][k], sd[1][k]);
         sf_sweep_point_free(&pt);
     }
+    /* The trend is tested between the ends of the sweep, where the effect
+     * is large: a regression slope over 4 points has 2 degrees of freedom
+     * and too little power (measured: it failed 17 of 20 fresh-seed runs
+     * of a true trend).  Four one-sided tests, Bonferroni: alpha / 4 each. */
     const char *nm[2] = { "PV_x", "PV_F" };
+    size_t n = s0->samples;
+    double a4 = s0->alpha / 4;
     for (int q = 0; q < 2; q++) {
-        for (size_t k = 0; k < K; k++) {
-            lx[k] = log(lr[k]);
-            ly[k] = log(sd[q][k]);
-        }
-        double c0, c1, c00, c01, c11, ss;
-        gsl_fit_linear(lx, 1, ly, 1, K, &c0, &c1, &c00, &c01, &c11, &ss);
-        /* one-sided t test of slope > 0 with K - 2 dof, via the normal tail
-           as a conservative stand-in is not valid for small K: use the exact
-           t distribution */
-        double tstat = c1 / sqrt(c11), p = gsl_cdf_tdist_Q(tstat, (double)(K - 2));
-        char t[160];
-        snprintf(t, sizeof t, "%s ratio: spread falls with l/R (slope %.2f of log std vs log l/R; t test, H0: slope <= 0)",
-                 nm[q], c1);
-        /* reject H0 (slope <= 0) is what we need: pass when p < alpha */
-        sf_check_le(r, t, p, s0->alpha);
-        /* the means' distance from 1 shrinks the same way (slope of
-           log |mean - 1| vs log l/R, same test) */
-        for (size_t k = 0; k < K; k++)
-            ly[k] = log(fabs(mn[q][k] - 1));
-        gsl_fit_linear(lx, 1, ly, 1, K, &c0, &c1, &c00, &c01, &c11, &ss);
-        tstat = c1 / sqrt(c11);
-        p = gsl_cdf_tdist_Q(tstat, (double)(K - 2));
-        snprintf(t, sizeof t, "%s ratio: |mean - 1| falls with l/R (slope %.2f; t test, H0: slope <= 0)", nm[q], c1);
-        sf_check_le(r, t, p, s0->alpha);
+        double F = (sd[q][K - 1] * sd[q][K - 1]) / (sd[q][0] * sd[q][0]);
+        double pF = gsl_cdf_fdist_Q(F, (double)(n - 1), (double)(n - 1));
+        char t[200];
+        snprintf(t, sizeof t, "%s ratio: variance larger at l/R = %g than at %g (F = %.1f; one-sided F test p-value)",
+                 nm[q], lr[K - 1], lr[0], F);
+        sf_check_le(r, t, pF, a4);
+        double se0 = sd[q][0] / sqrt((double)n), se1 = sd[q][K - 1] / sqrt((double)n);
+        double z = (fabs(mn[q][K - 1] - 1) - fabs(mn[q][0] - 1)) / hypot(se0, se1);
+        snprintf(t, sizeof t, "%s ratio: |mean - 1| larger at l/R = %g than at %g (z = %.1f; one-sided z test p-value)",
+                 nm[q], lr[K - 1], lr[0], z);
+        sf_check_le(r, t, 1 - gsl_cdf_ugaussian_P(z), a4);
     }
-    (void)s0->tolerance;
+    (void)lx;
+    (void)ly;
     sf_note(r, "\n%zu realisations per l/R, T = %g s. As l/R falls the disc averages over more independent "
                "patches: the spread of every ratio falls (homogenisation) and the means approach the "
                "deterministic model's.\n", s0->samples, s0->T);
