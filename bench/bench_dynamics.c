@@ -57,6 +57,35 @@ static void table(FILE *f, const char *what, point *p, size_t n)
                 p[i].err, p[i].time, p[i].steps);
 }
 
+/* Time RK4 at each dt and rk8pd at each rtol; err(result, ctx) scores a run. */
+static size_t sweep_points(const sf_scene *s, const sf_cof *cof, double sample_dt, int reps, const double *dts, size_t ndt,
+                           const double *rtols, size_t nrt, double (*err)(const sf_osc_result *, const void *),
+                           const void *ctx, point *p)
+{
+    size_t n = 0;
+    for (size_t i = 0; i < ndt + nrt; i++) {
+        sf_scene t = *s;
+        int rk4 = i < ndt;
+        if (rk4) {
+            t.integrator = SF_INTEG_RK4;
+            t.dt = dts[i];
+        } else {
+            t.rtol = rtols[i - ndt];
+        }
+        sf_osc_result r;
+        double tm = run_time(&t, cof, sample_dt, reps, &r);
+        p[n++] = (point){ rk4, rk4 ? t.dt : t.rtol, err(&r, ctx), tm, r.steps };
+        if (reps == 1)
+            fprintf(stderr, "bench: %s %g: error %.3e in %.2f s\n", rk4 ? "RK4 dt" : "rk8pd rtol", p[n - 1].knob,
+                    p[n - 1].err, tm);
+        sf_osc_result_free(&r);
+    }
+    return n;
+}
+
+static double err_1d(const sf_osc_result *r, const void *c) { return transition_error(r, c); }
+static double err_eq15(const sf_osc_result *r, const void *ref) { return sf_osc_error_eq15(r, ref); }
+
 /* time of the cheapest adaptive point reaching error <= target */
 static double cheapest(const point *p, size_t n, int rk4, double target)
 {
@@ -95,24 +124,7 @@ int bench_dynamics(FILE *f, const char *dir)
     sf_cycle1d_init(&cf, &s, s.eps_lambda);
     const double dts[] = { 1e-2, 5e-3, 2e-3, 1e-3, 5e-4, 2.5e-4 }, rtols[] = { 1e-4, 1e-6, 1e-8, 1e-10, 1e-12 };
     point p1[16];
-    size_t n1 = 0;
-    for (size_t i = 0; i < 6; i++) {
-        sf_scene t = s;
-        t.integrator = SF_INTEG_RK4;
-        t.dt = dts[i];
-        sf_osc_result r;
-        double tm = run_time(&t, u, 0, 5, &r);
-        p1[n1++] = (point){ 1, dts[i], transition_error(&r, &cf), tm, r.steps };
-        sf_osc_result_free(&r);
-    }
-    for (size_t i = 0; i < 5; i++) {
-        sf_scene t = s;
-        t.rtol = rtols[i];
-        sf_osc_result r;
-        double tm = run_time(&t, u, 0, 5, &r);
-        p1[n1++] = (point){ 0, rtols[i], transition_error(&r, &cf), tm, r.steps };
-        sf_osc_result_free(&r);
-    }
+    size_t n1 = sweep_points(&s, u, 0, 5, dts, 6, rtols, 5, err_1d, &cf, p1);
     sf_cof_free(u);
     fprintf(f, "## Stick-slip integrators: work-precision\n\n### 1-D Table 1 oscillator, exact answer\n\n"
                "Error: max |transition time - closed form| over the 46 transitions of 100 s (eps_lambda = 1e-3, "
@@ -137,26 +149,7 @@ int bench_dynamics(FILE *f, const char *dir)
     double tref = run_time(&sr, fc, sdt, 1, &ref);
     const double dts2[] = { 2e-3, 1e-3, 5e-4 }, rtols2[] = { 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10 };
     point p2[16];
-    size_t n2 = 0;
-    for (size_t i = 0; i < 3; i++) {
-        sf_scene t = st;
-        t.integrator = SF_INTEG_RK4;
-        t.dt = dts2[i];
-        sf_osc_result r;
-        double tm = run_time(&t, fc, sdt, 1, &r);
-        p2[n2++] = (point){ 1, dts2[i], sf_osc_error_eq15(&r, &ref), tm, r.steps };
-        fprintf(stderr, "bench: stochastic RK4 dt %g: %.3e in %.2f s\n", dts2[i], p2[n2 - 1].err, tm);
-        sf_osc_result_free(&r);
-    }
-    for (size_t i = 0; i < 6; i++) {
-        sf_scene t = st;
-        t.rtol = rtols2[i];
-        sf_osc_result r;
-        double tm = run_time(&t, fc, sdt, 1, &r);
-        p2[n2++] = (point){ 0, rtols2[i], sf_osc_error_eq15(&r, &ref), tm, r.steps };
-        fprintf(stderr, "bench: stochastic rk8pd rtol %g: %.3e in %.2f s\n", rtols2[i], p2[n2 - 1].err, tm);
-        sf_osc_result_free(&r);
-    }
+    size_t n2 = sweep_points(&st, fc, sdt, 1, dts2, 3, rtols2, 6, err_eq15, &ref, p2);
     sf_osc_result_free(&ref);
     sf_cof_free(fc);
     fprintf(f, "\n### Table 1 stochastic baseline, converged reference\n\nError: Eq. 15 (sum of (x - x_ref)^2 dt, "

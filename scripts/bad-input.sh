@@ -5,11 +5,9 @@
 # Generated inputs: @missing (no such file), @directory (a directory),
 # @hugeline (a 100 MB line, made here, not committed).
 set -u
-top=$(cd "$(dirname "$0")/.." && pwd)
-cd "$top"
+sf_name=bad
+. "$(dirname "$0")/common.sh"
 bin=${1:-build/slipfield}
-tmp=$(mktemp -d /tmp/sf-bad.XXXXXX)
-trap 'rm -rf "$tmp"' EXIT INT TERM
 pass=0; fail=0
 while IFS='	' read -r file kind frag; do
     case "$file" in ''|'#'*) continue ;; esac

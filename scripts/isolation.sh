@@ -5,11 +5,9 @@
 # and killing a run mid-way leaves no summary and no report for a case whose
 # verdict it did not reach.
 set -u
-top=$(cd "$(dirname "$0")/.." && pwd)
-cd "$top"
+sf_name=iso
+. "$(dirname "$0")/common.sh"
 bin=${1:-build/slipfield}
-tmp=$(mktemp -d /tmp/sf-iso.XXXXXX)
-trap 'rm -rf "$tmp"' EXIT INT TERM
 fail=0
 ok() { :; }
 bad() { echo "isolation: FAIL $*" >&2; fail=1; }

@@ -3,10 +3,8 @@
 # forked case processes are followed) and the CLI under memcheck; any
 # memory error or definite leak fails.
 set -eu
-top=$(cd "$(dirname "$0")/.." && pwd)
-cd "$top"
-tmp=$(mktemp -d /tmp/sf-vg.XXXXXX)
-trap 'rm -rf "$tmp"' EXIT INT TERM
+sf_name=vg
+. "$(dirname "$0")/common.sh"
 VG="valgrind -q --error-exitcode=99 --leak-check=full --errors-for-leak-kinds=definite --show-leak-kinds=definite"
 $VG build/slipfield verify --jobs 1 --reports "$tmp/reports" \
     cases/field/exact-covariance-minimal.md cases/lognormal/nataf-map-roundtrip.md \
