@@ -11,7 +11,11 @@ args="sweep $tmp/s.scene --param l_over_R --values 1 --realisations 200 --thread
 "$bin" $args --out "$tmp/full.tsv" 2>/dev/null || { echo "resume-test: the reference sweep failed" >&2; exit 1; }
 "$bin" $args --out "$tmp/cut.tsv" 2>/dev/null &
 pid=$!
-sleep 0.8
+# kill once a few realisations are checkpointed (poll: no timing assumption)
+for _ in $(seq 1 600); do
+    [ "$(wc -l < "$tmp/cut.tsv.ckpt0" 2>/dev/null || echo 0)" -ge 6 ] && break
+    sleep 0.05
+done
 kill -TERM $pid 2>/dev/null
 wait $pid 2>/dev/null
 [ -e "$tmp/cut.tsv" ] && { echo "resume-test: a killed sweep left its output as if complete" >&2; exit 1; }
