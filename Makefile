@@ -112,9 +112,16 @@ $(BUILD)/rel/tests/%: $(BUILD)/rel/tests/%.o $(BUILD)/libsfverify.a $(BUILD)/lib
 $(BUILD)/san/tests/%: $(BUILD)/san/tests/%.o $(BUILD)/san/libsfverify.a $(BUILD)/san/libslipfield.a
 	$(CC) -g $(SAN) $^ -o $@ $(CMOCKA_LIBS) $(HTML_LIBS) $(PKG_LIBS)
 
+# SUNDIALS CVODE is a benchmark-only peer: compiled in when its header is
+# there ($(BUILD)/gen/bench_config.h records the choice, so installing it
+# rebuilds the bench).
+CVODE_OK := $(shell test -f /usr/include/cvode/cvode.h && echo 1)
+CVODE_LIBS := $(if $(CVODE_OK),-lsundials_cvode -lsundials_nvecserial)
+_benchcfg := $(shell mkdir -p $(BUILD)/gen && echo '#define SF_HAVE_CVODE $(if $(CVODE_OK),1,0)' > $(BUILD)/gen/bench_config.h.new && \
+          (cmp -s $(BUILD)/gen/bench_config.h.new $(BUILD)/gen/bench_config.h || mv $(BUILD)/gen/bench_config.h.new $(BUILD)/gen/bench_config.h))
 $(BUILD)/bench/slipfield-bench: $(call objs,rel,$(BENCH_SRC)) $(BUILD)/libsfverify.a $(BUILD)/libslipfield.a
 	@mkdir -p $(dir $@)
-	$(CC) $(OPT) $^ -o $@ $(HTML_LIBS) $(PKG_LIBS)
+	$(CC) $(OPT) $^ -o $@ $(HTML_LIBS) $(CVODE_LIBS) $(PKG_LIBS)
 
 test: deps
 	@$(MAKE) --no-print-directory test-run
@@ -141,9 +148,17 @@ endif
 report-test:
 	@sh scripts/report-test.sh reports
 
+# make bench also installs the benchmark-only peers when it can (never
+# linked into slipfield; their sections are skipped with a note when
+# absent).  BENCH_PEERS=0: don't try.  BENCH_SECTIONS='field dynamics': a subset.
+BENCH_PEERS ?= 1
+BENCH_PEER_PKGS := libsundials-dev python3-openturns python3-scipy r-cran-randomfields
+BENCH_SECTIONS ?=
 bench: all
-	@$(MAKE) --no-print-directory $(BUILD)/bench/slipfield-bench
-	@$(BUILD)/bench/slipfield-bench reports/bench
+	@if [ "$(BENCH_PEERS)" != 0 ]; then sh scripts/deps.sh $(BENCH_PEER_PKGS) || \
+	   echo "bench: peers not installed: their sections will say so" >&2; fi
+	@$(MAKE) --no-print-directory $(BUILD)/bench/slipfield-bench $(BUILD)/slipfield
+	@$(BUILD)/bench/slipfield-bench reports/bench $(BENCH_SECTIONS)
 
 mutants: all
 	@sh scripts/mutants.sh $(MUTANTS)
