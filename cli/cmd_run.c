@@ -72,13 +72,25 @@ int sf_cmd_run(int argc, char **argv)
     }
     if (explain) {
         const sf_cof_plan_info *in = sf_cof_plan_get_info(plan);
-        printf("COF: %s", in->kind == SF_COF_UNIFORM ? "uniform (no field, no draw)\n"
-                          : in->kind == SF_COF_VARIABLE ? "one random variable (no field)" : "lognormal field");
-        if (in->kind == SF_COF_VARIABLE)
-            printf("%s\n", in->shortcut ? ": the strip is short against l (correlation >= 1 - 1e-6 across it)" : "");
-        if (in->kind == SF_COF_FIELD)
-            printf(" on the belt strip, %zu x %zu points, spacing %.4g m (l/8), x from %.4g m, |y| <= %.4g m\n",
-                   in->nx, in->ny, in->dx, in->x0, -in->y0);
+        printf("plan for %s (shortcuts %s)\n", path, s.shortcuts ? "on" : "off: everything computed in full");
+        if (in->kind == SF_COF_UNIFORM)
+            printf("COF: uniform %g (no field, no draw)\n", s.mu_mean);
+        else if (in->kind == SF_COF_VARIABLE && !in->shortcut)
+            printf("COF: one lognormal random variable per realisation (no field)\n");
+        else if (in->kind == SF_COF_VARIABLE && s.mu_std == 0)
+            printf("COF: field with mu_std = 0, i.e. uniform %g (no field, no draw)\n", s.mu_mean);
+        else if (in->kind == SF_COF_VARIABLE)
+            printf("COF: one random variable, no field: the strip the disc can visit (diagonal E = %.4g m) is short "
+                   "against l = %.4g m, (E/l)^2 = %.3g <= %g, so any two of its points correlate at >= 1 - %g "
+                   "(cases/plan/variable-shortcut-boundary)\n",
+                   in->strip_diag, s.l, (in->strip_diag / s.l) * (in->strip_diag / s.l), SF_COF_SHORTCUT_E2,
+                   SF_COF_SHORTCUT_E2);
+        else
+            printf("COF: lognormal field on the belt strip, %zu x %zu points, spacing %.4g m (l/8), x from %.4g m, "
+                   "|y| <= %.4g m; (E/l)^2 = %.3g, above the one-variable threshold %g; one FFTW plan "
+                   "(FFTW_ESTIMATE), reused for every realisation\n",
+                   in->nx, in->ny, in->dx, in->x0, -in->y0, (in->strip_diag / s.l) * (in->strip_diag / s.l),
+                   SF_COF_SHORTCUT_E2);
     }
     gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
     gsl_rng_set(rng, s.seed);
@@ -94,7 +106,9 @@ int sf_cmd_run(int argc, char **argv)
     }
     if (explain) {
         sf_osc_explain(o, stdout);
-        printf("history: %s\n", out_path ? "streamed to the output file (not kept in memory)" : "none");
+        printf("limit surface: not computed (the stick test needs only its T = 0 section)\n");
+        printf("history: %s\n", out_path ? "streamed to the output file (not kept in memory)"
+                                          : "none: the quantities of interest are accumulated online");
         sf_osc_free(o);
         sf_cof_free(cof);
         return SF_EXIT_OK;

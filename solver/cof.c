@@ -147,7 +147,8 @@ int sf_cof_plan_alloc(const sf_scene *s, sf_cof_plan **out, char *err, size_t er
         double W0 = s->strip_halfwidth > 0 ? s->strip_halfwidth + s->R : B0;
         double E = hypot(s->v_b * s->T + 2 * B0, 2 * W0);   /* the strip the disc can visit */
         double B = B0 + 2 * h, W = W0 + 2 * h, len = s->v_b * s->T + 2 * B;
-        if ((E / s->l) * (E / s->l) <= 1e-6 || s->mu_std == 0) {
+        p->info.strip_diag = E;
+        if (s->shortcuts && ((E / s->l) * (E / s->l) <= SF_COF_SHORTCUT_E2 || s->mu_std == 0)) {
             p->info.kind = SF_COF_VARIABLE;
             p->info.shortcut = 1;
             *out = p;

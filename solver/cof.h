@@ -51,7 +51,10 @@ unsigned long sf_cof_outside(const sf_cof *c);
  * Shortcut: when the strip's diagonal E is so short against l that any
  * two of its points have correlation >= 1 - 1e-6 ((E/l)^2 <= 1e-6), the
  * field is one random variable over the run and the plan draws one
- * (kind SF_COF_VARIABLE; info.shortcut = 1). */
+ * (kind SF_COF_VARIABLE; info.shortcut = 1); so it does when mu_std = 0.
+ * A scene with shortcuts = false gets the field whatever l and E
+ * (cases/plan verify the shortcut against it). */
+#define SF_COF_SHORTCUT_E2 1e-6
 typedef struct sf_cof_plan sf_cof_plan;
 
 typedef struct {
@@ -60,6 +63,7 @@ typedef struct {
     size_t nx, ny;           /* strip grid points */
     double bound;            /* B [m] */
     int shortcut;            /* 1: a field scene planned as one variable */
+    double strip_diag;       /* E: diagonal of the strip the disc can visit [m] (field scenes) */
 } sf_cof_plan_info;
 
 int sf_cof_plan_alloc(const sf_scene *s, sf_cof_plan **out, char *err, size_t errlen);

@@ -97,7 +97,9 @@ int sf_osc_alloc(const sf_scene *s, const sf_cof *cof, sf_osc **out, char *err, 
     o->J = 0.5 * s->m * s->R * s->R;
     o->wn = sqrt(s->k / s->m);
     o->delta = s->eps_lambda * o->wn * s->R;
-    if (!constant) {
+    /* a constant COF has closed forms (Eq. 4, Contensou): no quadrature,
+     * unless the scene asks for the full computation (shortcuts = false) */
+    if (!constant || (o->dof3 && !s->shortcuts)) {
         sf_contact_spec spec = { s->R, o->N, (sf_layout)s->layout, s->cells };
         int rc = sf_contact_alloc(&spec, cof, &o->ct);
         if (rc) {
@@ -143,8 +145,9 @@ void sf_osc_explain(const sf_osc *o, FILE *f)
     const sf_scene *s = &o->s;
     fprintf(f, "model: %s\n", o->dof3 ? "3-DOF disc (x, y, phi), Eq. 5" : "1-D oscillator, Eqs. 3-4");
     if (o->ct)
-        fprintf(f, "slip wrench: %s quadrature, %zu cells, COF interpolated from the strip field (Eqs. 7-8)\n",
-                s->layout == SF_LAYOUT_POLAR ? "polar" : "Cartesian", sf_contact_ncells(o->ct));
+        fprintf(f, "slip wrench: %s quadrature, %zu cells, %s (Eqs. 7-8)\n",
+                s->layout == SF_LAYOUT_POLAR ? "polar" : "Cartesian", sf_contact_ncells(o->ct),
+                isnan(o->mu) ? "COF interpolated from the strip field" : "constant COF (shortcuts = false)");
     else
         fprintf(f, "slip wrench: closed form (constant COF %.6g: %s), no quadrature\n", o->mu,
                 o->dof3 ? "Contensou elliptic integrals" : "Eq. 4");

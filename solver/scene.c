@@ -70,6 +70,7 @@ static const key_t_ keys[] = {
     { "velocity_jump", K_BOOL, OFF(velocity_jump), 0, 0, 0, 0, 0, "true", "", NULL, "apply Eqs. 12 and 14" },
     { "exact_section", K_BOOL, OFF(exact_section), 0, 0, 0, 0, 0, "false", "", NULL, "stick test on the exact T = 0 section" },
     { "history", K_BOOL, OFF(history), 0, 0, 0, 0, 0, "true", "", NULL, "keep the time history" },
+    { "shortcuts", K_BOOL, OFF(shortcuts), 0, 0, 0, 0, 0, "true", "", NULL, "false: compute in full where the plan would take a shortcut" },
     /* the check */
     { "check", K_STRING, OFF(check), sizeof(((sf_scene *)0)->check), 0, 0, 0, 0, "", "", NULL, "check to run (cases)" },
     { "tolerance", K_DOUBLE, OFF(tolerance), 0, 0, INF, 0, 0, "0", "", NULL, "tolerance of the check (its units are the check's)" },

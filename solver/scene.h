@@ -46,6 +46,7 @@ typedef struct {
     int dof;                 /* SF_DOF_1: the 1-D model of Eqs. 3-4; SF_DOF_3: x, y, phi (Eq. 5) */
     double rtol, t_skip;
     int velocity_jump, exact_section, history;
+    int shortcuts;           /* 0: the plan computes in full (cases verifying its shortcuts) */
     /* the check a case runs */
     char check[64];
     double tolerance, alpha;
