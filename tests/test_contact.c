@@ -103,6 +103,30 @@ static void cof_plan(void **state)
     assert_int_equal(sf_cof_plan_draw(p, rng, &c), SF_SUCCESS);
     assert_int_equal(sf_cof_get_kind(c), SF_COF_VARIABLE);
     sf_cof_free(c);
+    double E = sf_cof_plan_get_info(p)->strip_diag;
+    assert_true((E / s.l) * (E / s.l) <= SF_COF_SHORTCUT_E2);
+    sf_cof_plan_free(p);
+    s.shortcuts = 0;   /* the same scene in full: a (tiny) strip field */
+    assert_int_equal(sf_cof_plan_alloc(&s, &p, err, sizeof err), SF_SUCCESS);
+    assert_int_equal(sf_cof_plan_get_info(p)->kind, SF_COF_FIELD);
+    assert_int_equal(sf_cof_plan_get_info(p)->shortcut, 0);
+    assert_close(sf_cof_plan_get_info(p)->strip_diag, E, 0);
+    sf_cof_plan_free(p);
+    s.shortcuts = 1;
+    s.l = 0.1;
+    s.mu_std = 0;      /* no spread: uniform unless computed in full */
+    assert_int_equal(sf_cof_plan_alloc(&s, &p, err, sizeof err), SF_SUCCESS);
+    assert_int_equal(sf_cof_plan_get_info(p)->shortcut, 1);
+    assert_int_equal(sf_cof_plan_draw(p, rng, &c), SF_SUCCESS);
+    assert_close(sf_cof_eval(c, 0, 0), s.mu_mean, 0);
+    sf_cof_free(c);
+    sf_cof_plan_free(p);
+    s.shortcuts = 0;
+    assert_int_equal(sf_cof_plan_alloc(&s, &p, err, sizeof err), SF_SUCCESS);
+    assert_int_equal(sf_cof_plan_get_info(p)->kind, SF_COF_FIELD);
+    assert_int_equal(sf_cof_plan_draw(p, rng, &c), SF_SUCCESS);
+    assert_close(sf_cof_eval(c, -1.0, 0.3), s.mu_mean, 1e-15);
+    sf_cof_free(c);
     sf_cof_plan_free(p);
     gsl_rng_free(rng);
 }
