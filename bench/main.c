@@ -1,5 +1,6 @@
 /* slipfield-bench DIR [SECTION...]: run the benchmark sections (all by
- * default: field, contact, dynamics, sweep, memory) and write DIR/report.md (temporary
+ * default: field, contact, dynamics, fftw, sweep,
+ * memory) and write DIR/report.md (temporary
  * name, renamed when complete) with the plots beside it. */
 #include "bench.h"
 #include "version.h"
@@ -32,7 +33,7 @@ int main(int argc, char **argv)
                "only ratios measured in this run are claims.\n\n", SF_VERSION, GSL_VERSION, fftw_version);
     struct { const char *name; int (*fn)(FILE *, const char *); } sec[] = {
         { "field", bench_field },   { "contact", bench_contact }, { "dynamics", bench_dynamics },
-        { "sweep", bench_sweep },   { "memory", bench_memory },
+        { "fftw", bench_fftw },     { "sweep", bench_sweep },     { "memory", bench_memory },
     };
     int rc = 0;
     for (size_t i = 0; i < sizeof sec / sizeof sec[0]; i++) {

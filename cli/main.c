@@ -4,7 +4,11 @@
 #include "runner.h"
 #include "version.h"
 
+#include "field.h"
+#include "montecarlo.h"
+
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <fftw3.h>
 #include <gsl/gsl_errno.h>
@@ -38,7 +42,9 @@ static void usage(FILE *f)
         fprintf(f, "  %-8s %s\n", commands[i].name, commands[i].summary);
     fprintf(f, "\n'slipfield COMMAND --help' for a command's options.\n"
                "Scenes are 'key = value' files in SI units; defaults are the paper's Table 1.\n"
-               "Exit status: 0 ok, 1 a check failed, 2 bad input or usage, 3 internal error.\n");
+               "Exit status: 0 ok, 1 a check failed, 2 bad input or usage, 3 internal error.\n"
+               "Environment: SLIPFIELD_FFTW_WISDOM=FILE keeps FFTW wisdom for scenes with\n"
+               "fftw_planner = measure (imported before a command, saved after it).\n");
 }
 
 static int cmd_help(int argc, char **argv)
@@ -49,6 +55,23 @@ static int cmd_help(int argc, char **argv)
     }
     usage(stdout);
     return SF_EXIT_OK;
+}
+
+/* SLIPFIELD_FFTW_WISDOM=FILE: FFTW wisdom imported before the command and
+ * saved after it (rank 0 only), so scenes with fftw_planner = measure plan
+ * once per machine and every process that imports the file makes the same
+ * plans (so the same bits). */
+static int with_wisdom(const command *c, int argc, char **argv)
+{
+    const char *w = getenv("SLIPFIELD_FFTW_WISDOM");
+    if (w && *w && sf_field_wisdom_import(w)) {
+        fprintf(stderr, "slipfield: SLIPFIELD_FFTW_WISDOM=%s: not an FFTW wisdom file\n", w);
+        return SF_EXIT_USAGE;
+    }
+    int rc = c->fn(argc, argv);
+    if (w && *w && sf_mc_rank(NULL) == 0 && sf_field_wisdom_export(w))
+        fprintf(stderr, "slipfield: cannot save FFTW wisdom to %s\n", w);
+    return rc;
 }
 
 static int dispatch(int argc, char **argv)
@@ -69,7 +92,7 @@ static int dispatch(int argc, char **argv)
     }
     for (size_t i = 0; i < NCMD; i++)
         if (!strcmp(argv[1], commands[i].name))
-            return commands[i].fn(argc - 1, argv + 1);
+            return with_wisdom(&commands[i], argc - 1, argv + 1);
     fprintf(stderr, "slipfield: unknown command '%s'\n", argv[1]);
     usage(stderr);
     return SF_EXIT_USAGE;

@@ -11,7 +11,9 @@
 #include "sf_error.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
+#include <unistd.h>
 #include <string.h>
 #include <complex.h>
 #include <fftw3.h>
@@ -315,9 +317,11 @@ int sf_field_alloc(const sf_field_spec *spec, sf_field **out)
             rc = SF_ENOMEM;
     }
     if (!rc) {
-        /* FFTW_ESTIMATE: deterministic plan, arrays untouched (DESIGN sec. 8) */
-        f->plan = fftw_plan_dft_2d((int)f->info.py, (int)f->info.px, f->work,
-                                   f->work, FFTW_FORWARD, FFTW_ESTIMATE);
+        /* FFTW_ESTIMATE: the same plan in every process (DESIGN sec. 8).
+         * FFTW_MEASURE overwrites work while timing: nothing in it is
+         * needed any more (finish_plan has extracted the covariance). */
+        f->plan = fftw_plan_dft_2d((int)f->info.py, (int)f->info.px, f->work, f->work, FFTW_FORWARD,
+                                   spec->measure ? FFTW_MEASURE : FFTW_ESTIMATE);
         if (!f->plan)
             rc = SF_ENOMEM;
     }
@@ -434,5 +438,24 @@ int sf_field_eigenvalues(const sf_field *f, double *lambda)
     if (!f || !lambda)
         return SF_EINVAL;
     memcpy(lambda, f->lam, f->M * sizeof *lambda);
+    return SF_SUCCESS;
+}
+
+int sf_field_wisdom_import(const char *path)
+{
+    if (access(path, F_OK) != 0)
+        return SF_SUCCESS;
+    return fftw_import_wisdom_from_filename(path) ? SF_SUCCESS : SF_EIO;
+}
+
+int sf_field_wisdom_export(const char *path)
+{
+    char tmp[4096];
+    if (snprintf(tmp, sizeof tmp, "%s.tmp%ld", path, (long)getpid()) >= (int)sizeof tmp)
+        return SF_EIO;
+    if (!fftw_export_wisdom_to_filename(tmp) || rename(tmp, path) != 0) {
+        unlink(tmp);
+        return SF_EIO;
+    }
     return SF_SUCCESS;
 }

@@ -38,6 +38,12 @@ typedef struct {
                              the minimal one; 0 -> 16 */
     size_t max_points;    /* cap on the embedding size M; 0 -> 2^25 */
     int no_padding;       /* 1: minimal embedding only (truncate if needed) */
+    int measure;          /* 1: plan the sampling FFT with FFTW_MEASURE (up to ~3x
+                             faster on large power-of-two embeddings, make bench);
+                             the plan it times its way to, and so the last bits of
+                             a sample, may differ between processes unless they
+                             import the same wisdom (sf_field_wisdom_*).  0:
+                             FFTW_ESTIMATE, the same plan everywhere. */
 } sf_field_spec;
 
 typedef struct {
@@ -91,6 +97,14 @@ double sf_field_target(const sf_field *f, double hx, double hy);
 /* The first row of the block-circulant embedding (Appendix A, step 2):
  * row[i + px*j] = rho(min(i, px-i) dx, min(j, py-j) dy); length px*py. */
 int sf_field_first_row(const sf_field *f, double *row);
+
+/* FFTW wisdom (plans found by FFTW_MEASURE) from and to a file, so that
+ * processes importing the same file make the same plans.  Import: SF_EIO
+ * when the file exists but is unreadable or not wisdom (a missing file is
+ * SF_SUCCESS: nothing to import).  Export: written to a temporary name
+ * and renamed, so a killed run leaves the old file whole. */
+int sf_field_wisdom_import(const char *path);
+int sf_field_wisdom_export(const char *path);
 
 /* The 2-D embedding eigenvalues (length px*py, index kx + px*ky), before
  * clamping.  Exposed for verification (FFT vs direct DFT). */

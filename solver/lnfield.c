@@ -27,6 +27,7 @@ void sf_field_spec_from_scene(const sf_scene *s, sf_field_spec *spec)
     spec->pad_cap = s->pad_cap;
     spec->eig_rel_tol = s->eig_tol;
     spec->no_padding = s->no_padding;
+    spec->measure = s->fftw_planner;
 }
 
 int sf_lnfield_alloc(const sf_scene *s, sf_lnfield **out)

@@ -51,6 +51,7 @@ static const key_t_ keys[] = {
     { "pad_cap", K_DOUBLE, OFF(pad_cap), 0, 1, 1e6, 0, 0, "16", "1", NULL, "max embedding period / minimal period" },
     { "eig_tol", K_DOUBLE, OFF(eig_tol), 0, 0, 1, 0, 0, "1e-12", "1", NULL, "accept lambda_min >= -eig_tol lambda_max" },
     { "no_padding", K_BOOL, OFF(no_padding), 0, 0, 0, 0, 0, "false", "", NULL, "minimal embedding only" },
+    { "fftw_planner", K_ENUM, OFF(fftw_planner), 0, 0, 0, 0, 0, "estimate", "", "estimate|measure", "sampling FFT plan: estimate (same bits in every process) or measure (timed, faster on large grids; see SLIPFIELD_FFTW_WISDOM)" },
     { "precorrect", K_BOOL, OFF(precorrect), 0, 0, 0, 0, 0, "false", "", NULL, "pre-correct the Gaussian correlation so the lognormal field has Eq. 2" },
     { "strip_halfwidth", K_DOUBLE, OFF(strip_halfwidth), 0, 0, INF, 0, 0, "0.5", "m", NULL, "lateral excursion |y| the COF strip covers beyond R (0: the spring-excursion bound); a run that leaves it fails" },
     { "samples", K_SIZE, OFF(samples), 0, 1, 1e9, 0, 0, "1000", "1", NULL, "number of samples or realisations" },

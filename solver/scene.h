@@ -34,6 +34,7 @@ typedef struct {
     size_t nx, ny;
     double dx, dy, pad_cap, eig_tol;
     int no_padding, precorrect;
+    int fftw_planner;        /* 0: FFTW_ESTIMATE, 1: FFTW_MEASURE (sf_field_spec.measure) */
     double strip_halfwidth;  /* belt strip half-width in y [m]; 0: automatic bound */
     size_t samples;
     /* contact */

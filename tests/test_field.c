@@ -3,7 +3,9 @@
 #include "field.h"
 #include "sf_error.h"
 
+#include <stdio.h>
 #include <stdlib.h>
+#include <unistd.h>
 #include <string.h>
 #include <gsl/gsl_math.h>
 
@@ -174,6 +176,33 @@ static void general_path_matches_separable(void **state)
     sf_field_free(b);
 }
 
+/* Wisdom: missing file = nothing to import; garbage = SF_EIO; a saved
+ * file imports; an unwritable path fails cleanly and leaves no file. */
+static void wisdom_round_trip(void **state)
+{
+    (void)state;
+    char path[64];
+    snprintf(path, sizeof path, "/tmp/sf-wisdom-%ld", (long)getpid());
+    unlink(path);
+    assert_int_equal(sf_field_wisdom_import(path), SF_SUCCESS);
+    sf_field_spec spec;
+    sf_field_spec_default(&spec, 16, 8, 0.1, 0.1, 0.2);
+    spec.measure = 1;
+    sf_field *f;
+    assert_int_equal(sf_field_alloc(&spec, &f), SF_SUCCESS);
+    sf_field_free(f);
+    assert_int_equal(sf_field_wisdom_export(path), SF_SUCCESS);
+    assert_int_equal(sf_field_wisdom_import(path), SF_SUCCESS);
+    FILE *g = fopen(path, "w");
+    assert_non_null(g);
+    fputs("not wisdom\n", g);
+    fclose(g);
+    assert_int_equal(sf_field_wisdom_import(path), SF_EIO);
+    unlink(path);
+    assert_int_equal(sf_field_wisdom_export("/nonexistent-dir/w"), SF_EIO);
+    assert_int_equal(access("/nonexistent-dir/w", F_OK), -1);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -184,6 +213,7 @@ int main(void)
         cmocka_unit_test(sampling_is_deterministic_and_pairs_match),
         cmocka_unit_test(single_point),
         cmocka_unit_test(general_path_matches_separable),
+        cmocka_unit_test(wisdom_round_trip),
     };
     return cmocka_run_group_tests_name("field", tests, NULL, NULL);
 }
