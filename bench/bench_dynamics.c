@@ -2,10 +2,13 @@
  * converged answer vs CPU time, for fixed-step RK4 (the paper's dt = 1e-3
  * s and neighbours) and the adaptive rk8pd at several tolerances.
  *  - 1-D Table 1 (T = 100 s): max transition-time error vs the
- *    eps-corrected closed form (solver/cycle1d.h).
+ *    eps-corrected closed form (solver/cycle1d.h); with SUNDIALS CVODE
+ *    (BDF and Adams, root-finding; bench/cvode_peer.h) as a peer when the
+ *    build has it, all runs timed interleaved.
  *  - Table 1 stochastic baseline (T = 100 s, one field, 12 rings): Eq. 15
  *    error vs a run at rtol = 1e-12 on the same field. */
 #include "bench.h"
+#include "cvode_peer.h"
 #include "cof.h"
 #include "cycle1d.h"
 #include "oscillator.h"
@@ -17,8 +20,20 @@
 #include <string.h>
 #include <gsl/gsl_rng.h>
 #include <gsl/gsl_sort.h>
+#if SF_HAVE_CVODE
+#include <sundials/sundials_config.h>
+#endif
 
-typedef struct { int rk4; double knob; double err, time; unsigned long steps; } point;
+/* kind: which stepper (0 and 1 as the old rk4 flag) */
+enum { K_RK8PD = 0, K_RK4 = 1, K_BDF = 2, K_ADAMS = 3, NKIND };
+static const char *kind_name[NKIND] = { "rk8pd (adaptive)", "RK4 (fixed)", "CVODE BDF", "CVODE Adams" };
+
+typedef struct {
+    int kind;
+    double knob, err, time;
+    unsigned long steps, fevals;
+    size_t ntrans;
+} point;
 
 static double run_time(const sf_scene *s, const sf_cof *cof, double sample_dt, int reps, sf_osc_result *keep)
 {
@@ -41,20 +56,12 @@ static double run_time(const sf_scene *s, const sf_cof *cof, double sample_dt, i
     return t[reps / 2];
 }
 
-static double transition_error(const sf_osc_result *r, const sf_cycle1d *c)
-{
-    double e = 0;
-    for (size_t i = 0; i < r->ntrans; i++)
-        e = fmax(e, fabs(r->trans_t[i] - sf_cycle1d_transition(c, (unsigned)i)));
-    return e;
-}
-
 static void table(FILE *f, const char *what, point *p, size_t n)
 {
     fprintf(f, "| stepper | dt or rtol | %s | CPU time [s] | steps |\n|---|---|---|---|---|\n", what);
     for (size_t i = 0; i < n; i++)
-        fprintf(f, "| %s | %g | %.3e | %.4f | %lu |\n", p[i].rk4 ? "RK4 (fixed)" : "rk8pd (adaptive)", p[i].knob,
-                p[i].err, p[i].time, p[i].steps);
+        fprintf(f, "| %s | %g | %.3e | %.4f | %lu |\n", kind_name[p[i].kind], p[i].knob, p[i].err, p[i].time,
+                p[i].steps);
 }
 
 /* Time RK4 at each dt and rk8pd at each rtol; err(result, ctx) scores a run. */
@@ -74,7 +81,8 @@ static size_t sweep_points(const sf_scene *s, const sf_cof *cof, double sample_d
         }
         sf_osc_result r;
         double tm = run_time(&t, cof, sample_dt, reps, &r);
-        p[n++] = (point){ rk4, rk4 ? t.dt : t.rtol, err(&r, ctx), tm, r.steps };
+        p[n++] = (point){ rk4 ? K_RK4 : K_RK8PD, rk4 ? t.dt : t.rtol, err(&r, ctx), tm, r.steps, r.wrench_evals,
+                          r.ntrans };
         if (reps == 1)
             fprintf(stderr, "bench: %s %g: error %.3e in %.2f s\n", rk4 ? "RK4 dt" : "rk8pd rtol", p[n - 1].knob,
                     p[n - 1].err, tm);
@@ -83,34 +91,238 @@ static size_t sweep_points(const sf_scene *s, const sf_cof *cof, double sample_d
     return n;
 }
 
-static double err_1d(const sf_osc_result *r, const void *c) { return transition_error(r, c); }
 static double err_eq15(const sf_osc_result *r, const void *ref) { return sf_osc_error_eq15(r, ref); }
 
-/* time of the cheapest adaptive point reaching error <= target */
-static double cheapest(const point *p, size_t n, int rk4, double target)
+/* time of the cheapest point of this kind reaching error <= target */
+static double cheapest(const point *p, size_t n, int kind, double target)
 {
     double best = INFINITY;
     for (size_t i = 0; i < n; i++)
-        if (p[i].rk4 == rk4 && p[i].err <= target)
+        if (p[i].kind == kind && p[i].err <= target)
             best = fmin(best, p[i].time);
     return best;
 }
 
+/* 1e-4 rather than 0.0001 for powers of ten */
+static const char *knob_str(double x, char b[24])
+{
+    double e = round(log10(x));
+    if (x > 0 && fabs(x / pow(10, e) - 1) < 1e-9)
+        snprintf(b, 24, "1e%d", (int)e);
+    else
+        snprintf(b, 24, "%g", x);
+    return b;
+}
+
+/* error vs time, log-log, one series per stepper kind present */
 static void plot(sf_result *r, const char *stem, const char *title, const char *ylabel, point *p, size_t n)
 {
-    double x[2][16], y[2][16];
-    size_t m[2] = { 0, 0 };
-    for (size_t i = 0; i < n; i++) {
-        int k = p[i].rk4;
-        x[k][m[k]] = p[i].time;
-        y[k][m[k]] = fmax(p[i].err, 1e-300);
-        m[k]++;
-    }
     sf_plot *pl = sf_result_plot(r, stem, title, "CPU time per run [s]", ylabel);
     sf_plot_log(pl, 1, 1);
-    sf_plot_series(pl, "rk8pd, rtol 1e-4 ... 1e-12", SF_STYLE_LINESPOINTS, m[0], x[0], y[0]);
-    sf_plot_series(pl, "RK4, dt 1e-2 ... 2.5e-4 s", SF_STYLE_LINESPOINTS, m[1], x[1], y[1]);
+    static const int order[NKIND] = { K_RK8PD, K_BDF, K_ADAMS, K_RK4 };
+    for (int j = 0; j < NKIND; j++) {
+        int k = order[j];
+        double x[64], y[64], k0 = NAN, k1 = NAN;
+        size_t m = 0;
+        for (size_t i = 0; i < n && m < 64; i++) {
+            if (p[i].kind != k || !isfinite(p[i].err))
+                continue;
+            if (m == 0)
+                k0 = p[i].knob;
+            k1 = p[i].knob;
+            x[m] = p[i].time;
+            y[m] = fmax(p[i].err, 1e-300);
+            m++;
+        }
+        if (!m)
+            continue;
+        char label[120], a[24], b[24];
+        snprintf(label, sizeof label, "%s, %s %s ... %s%s", k == K_RK4 ? "RK4" : kind_name[k],
+                 k == K_RK4 ? "dt" : "rtol", knob_str(k0, a), knob_str(k1, b), k == K_RK4 ? " s" : "");
+        sf_plot_series(pl, label, SF_STYLE_LINESPOINTS, m, x, y);
+    }
 }
+
+/* ---- 1-D: the solver and the CVODE peer, timed interleaved */
+
+static double trans_error(const double *t, size_t n, const sf_cycle1d *c)
+{
+    double e = 0;
+    for (size_t i = 0; i < n; i++)
+        e = fmax(e, fabs(t[i] - sf_cycle1d_transition(c, (unsigned)i)));
+    return e;
+}
+
+/* One timed run of one configuration (set-up outside the timer, as
+ * run_time does); p->err is NAN when the run failed. */
+static void run_1d(const sf_scene *s, const sf_cof *cof, const sf_cycle1d *c, int kind, double knob, point *p)
+{
+    char err[400] = "";
+    *p = (point){ kind, knob, NAN, NAN, 0, 0, 0 };
+    if (kind == K_RK4 || kind == K_RK8PD) {
+        sf_scene t = *s;
+        if (kind == K_RK4) {
+            t.integrator = SF_INTEG_RK4;
+            t.dt = knob;
+        } else {
+            t.rtol = knob;
+        }
+        sf_osc *o;
+        if (sf_osc_alloc(&t, cof, &o, err, sizeof err)) {
+            fprintf(stderr, "bench: %s %g: %s\n", kind_name[kind], knob, err);
+            return;
+        }
+        sf_osc_result r;
+        double t0 = now();
+        int rc = sf_osc_run(o, NULL, NULL, 0, &r, err, sizeof err);
+        p->time = now() - t0;
+        if (rc)
+            fprintf(stderr, "bench: %s %g: %s\n", kind_name[kind], knob, err);
+        else
+            p->err = trans_error(r.trans_t, r.ntrans, c);
+        p->steps = r.steps;
+        p->fevals = r.wrench_evals;
+        p->ntrans = r.ntrans;
+        sf_osc_result_free(&r);
+        sf_osc_free(o);
+        return;
+    }
+#if SF_HAVE_CVODE
+    sf_cvpeer *cv;
+    if (sf_cvpeer_alloc(s, cof, kind == K_ADAMS ? SF_CVPEER_ADAMS : SF_CVPEER_BDF, knob, &cv, err, sizeof err)) {
+        fprintf(stderr, "bench: %s %g: %s\n", kind_name[kind], knob, err);
+        return;
+    }
+    sf_cvpeer_result r;
+    double t0 = now();
+    int rc = sf_cvpeer_run(cv, &r, err, sizeof err);
+    p->time = now() - t0;
+    if (rc)
+        fprintf(stderr, "bench: %s %g: %s\n", kind_name[kind], knob, err);
+    else
+        p->err = trans_error(r.trans_t, r.ntrans, c);
+    p->steps = (unsigned long)r.steps;
+    p->fevals = (unsigned long)r.fevals;
+    p->ntrans = r.ntrans;
+    sf_cvpeer_result_free(&r);
+    sf_cvpeer_free(cv);
+#else
+    (void)c;
+#endif
+}
+
+/* Each of the n configurations (kind[i], knob[i]) reps times, round-robin
+ * (every round runs all of them once, so drifts of the machine's load hit
+ * all alike); time = the median, the rest from the last round. */
+static void sweep_1d(const sf_scene *s, const sf_cof *cof, const sf_cycle1d *c, const int *kind, const double *knob,
+                     size_t n, int reps, point *p)
+{
+    double t[64][7];
+    for (int k = 0; k < reps; k++)
+        for (size_t i = 0; i < n; i++) {
+            run_1d(s, cof, c, kind[i], knob[i], &p[i]);
+            t[i][k] = p[i].time;
+        }
+    for (size_t i = 0; i < n; i++) {
+        gsl_sort(t[i], 1, (size_t)reps);
+        p[i].time = t[i][reps / 2];
+    }
+}
+
+/* Points with a wrong transition count are not scored (a missed event). */
+static void table_1d(FILE *f, point *p, size_t n, size_t ntrans)
+{
+    fprintf(f, "| stepper | dt or rtol | max transition-time error [s] | CPU time [s] | steps | f evaluations | "
+               "transitions |\n|---|---|---|---|---|---|---|\n");
+    for (size_t i = 0; i < n; i++) {
+        char e[64];
+        if (p[i].ntrans != ntrans)
+            snprintf(e, sizeof e, "not scored (%zu of %zu transitions)", p[i].ntrans, ntrans);
+        else
+            snprintf(e, sizeof e, "%.3e", p[i].err);
+        fprintf(f, "| %s | %g | %s | %.5f | %lu | %lu | %zu |\n", kind_name[p[i].kind], p[i].knob, e, p[i].time,
+                p[i].steps, p[i].fevals, p[i].ntrans);
+    }
+}
+
+#if SF_HAVE_CVODE
+/* the point of this kind and knob (NULL if absent) */
+static const point *find(const point *p, size_t n, int kind, double knob)
+{
+    for (size_t i = 0; i < n; i++)
+        if (p[i].kind == kind && p[i].knob == knob)
+            return &p[i];
+    return NULL;
+}
+
+/* the cheapest scored point of this kind reaching error <= target (NULL: none) */
+static const point *cheapest_pt(const point *p, size_t n, int kind, double target)
+{
+    const point *b = NULL;
+    for (size_t i = 0; i < n; i++)
+        if (p[i].kind == kind && isfinite(p[i].err) && p[i].err <= target && (!b || p[i].time < b->time))
+            b = &p[i];
+    return b;
+}
+
+static void cell(FILE *f, const point *q)
+{
+    if (q)
+        fprintf(f, " %.5f s (rtol %g, error %.1e) |", q->time, q->knob, q->err);
+    else
+        fprintf(f, " not reached |");
+}
+
+/* CVODE vs rk8pd at equal error: the issue-6 target. */
+static void cvode_ratios(FILE *f, point *p, size_t n, double e_paper)
+{
+    const double targets[3] = { 1e-6, 1e-9, e_paper };
+    double rmin = INFINITY, rmax = 0;
+    int all = 1;
+    fprintf(f, "\nCVODE against our adaptive scheme at equal error (the cheapest run of each reaching the target; "
+               "times from this run, interleaved medians):\n\n| target error [s] | rk8pd | CVODE BDF | CVODE Adams | "
+               "CVODE time / rk8pd time |\n|---|---|---|---|---|\n");
+    for (int j = 0; j < 3; j++) {
+        const point *a = cheapest_pt(p, n, K_RK8PD, targets[j]), *b = cheapest_pt(p, n, K_BDF, targets[j]),
+                    *d = cheapest_pt(p, n, K_ADAMS, targets[j]);
+        fprintf(f, "| %.1e%s |", targets[j], j == 2 ? " (RK4 at dt = 1e-3 s)" : "");
+        cell(f, a);
+        cell(f, b);
+        cell(f, d);
+        double cv = fmin(b ? b->time : INFINITY, d ? d->time : INFINITY);
+        if (a && isfinite(cv)) {
+            double q = cv / a->time;
+            fprintf(f, " %.1f (best of BDF and Adams) |\n", q);
+            rmin = fmin(rmin, q);
+            rmax = fmax(rmax, q);
+            all &= q > 1;
+        } else {
+            fprintf(f, " %s |\n", a ? "CVODE did not reach it in this sweep" : "rk8pd did not reach it");
+            all &= a != NULL;
+        }
+    }
+    fprintf(f, "\nTarget (issue 6): our adaptive scheme faster than CVODE at equal error on the 1-D case: **%s**",
+            all ? "met" : "missed");
+    if (isfinite(rmin))
+        fprintf(f, " (CVODE takes %.1f to %.1f times as long at the targets above)", rmin, rmax);
+    fprintf(f, ".");
+    const point *a12 = find(p, n, K_RK8PD, 1e-12), *b12 = find(p, n, K_BDF, 1e-12), *d12 = find(p, n, K_ADAMS, 1e-12);
+    if (a12 && b12 && d12 && a12->err > 0 && a12->fevals && d12->fevals)
+        fprintf(f, " Why: (1) at the same rtol = 1e-12 CVODE's error is %.0f (BDF) and %.0f (Adams) times rk8pd's: it "
+                   "controls the local error per step with methods of order <= 5 (BDF) or <= 12 (Adams) and restarts "
+                   "at order 1 with a small step after each of the %zu transitions (CVodeReInit: the velocity jumps "
+                   "of Eqs. 12 and 14 are discontinuities), so it needs a far tighter rtol and many more steps for "
+                   "the same error (%lu BDF and %lu Adams steps at rtol 1e-12 against rk8pd's %lu); (2) on a "
+                   "2-component state the cost is per-step machinery, not the right-hand side: CVODE spends about "
+                   "%.0f ns per f evaluation (Nordsieck history, weighted norms, nonlinear iteration, root checks, all "
+                   "through N_Vector calls) against rk8pd's %.0f ns. Our event location (bisection with single rk8pd "
+                   "steps) costs most of our %lu f evaluations, against CVODE's cheap root-finding on its "
+                   "interpolant: that is our cost floor, and why our times barely move with rtol.",
+                b12->err / a12->err, d12->err / a12->err, a12->ntrans, b12->steps, d12->steps, a12->steps,
+                1e9 * d12->time / (double)d12->fevals, 1e9 * a12->time / (double)a12->fevals, a12->fevals);
+    fprintf(f, "\n");
+}
+#endif
 
 int bench_dynamics(FILE *f, const char *dir)
 {
@@ -122,17 +334,74 @@ int bench_dynamics(FILE *f, const char *dir)
     sf_cof_alloc_uniform(s.mu_mean, &u);
     sf_cycle1d cf;
     sf_cycle1d_init(&cf, &s, s.eps_lambda);
+    size_t nexp = 0;   /* transitions of [0, T) in the closed form */
+    while (sf_cycle1d_transition(&cf, (unsigned)nexp) < s.T)
+        nexp++;
     const double dts[] = { 1e-2, 5e-3, 2e-3, 1e-3, 5e-4, 2.5e-4 }, rtols[] = { 1e-4, 1e-6, 1e-8, 1e-10, 1e-12 };
-    point p1[16];
-    size_t n1 = sweep_points(&s, u, 0, 5, dts, 6, rtols, 5, err_1d, &cf, p1);
+    int kind[64];
+    double knob[64];
+    size_t nc = 0;
+    for (size_t i = 0; i < 6; i++, nc++)
+        kind[nc] = K_RK4, knob[nc] = dts[i];
+    for (size_t i = 0; i < 5; i++, nc++)
+        kind[nc] = K_RK8PD, knob[nc] = rtols[i];
+#if SF_HAVE_CVODE
+    /* rtol 1e-4 ... 1e-15: CVODE reaches RK4's error only below 1e-12 */
+    for (int m = K_BDF; m <= K_ADAMS; m++)
+        for (int e = 4; e <= 15; e++, nc++)
+            kind[nc] = m, knob[nc] = pow(10.0, -e);
+#endif
+    point p1[64];
+    double t1d = now();
+    sweep_1d(&s, u, &cf, kind, knob, nc, 5, p1);
+    t1d = now() - t1d;
+    size_t n1 = nc;
+    for (size_t i = 0; i < n1; i++)   /* a missed or extra event: not scored */
+        if (p1[i].ntrans != nexp)
+            p1[i].err = NAN;
+#if SF_HAVE_CVODE
+    point loose[2];   /* the DESIGN.md remark: events missed at rtol 1e-3 */
+    run_1d(&s, u, &cf, K_BDF, 1e-3, &loose[0]);
+    run_1d(&s, u, &cf, K_ADAMS, 1e-3, &loose[1]);
+#endif
     sf_cof_free(u);
     fprintf(f, "## Stick-slip integrators: work-precision\n\n### 1-D Table 1 oscillator, exact answer\n\n"
-               "Error: max |transition time - closed form| over the 46 transitions of 100 s (eps_lambda = 1e-3, "
-               "closed form corrected for it). Medians of 5 runs.\n\n");
-    table(f, "max transition-time error [s]", p1, n1);
-    double rk4_paper = p1[3].time, e_paper = p1[3].err, ad = cheapest(p1, n1, 0, e_paper);
+               "Error: max |transition time - closed form| over the %zu transitions of 100 s (eps_lambda = 1e-3, "
+               "closed form corrected for it). Medians of 5 runs, all configurations run round-robin (%.1f s in "
+               "all). f evaluations: right-hand sides, including the bisection steps of our event location.\n\n",
+            nexp, t1d);
+#if SF_HAVE_CVODE
+    fprintf(f, "SUNDIALS CVODE %s (benchmark-only peer, bench/cvode_peer.h) integrates the same model: same start, "
+               "same stick closed form and exit, same switching function (lambda - eps_lambda, stick admissible) "
+               "located by CVODE's root-finding, same Eq. 14 jump, CVodeReInit after each transition; BDF with a "
+               "dense direct solver and the exact Jacobian, Adams with the fixed-point solver; atol = rtol times "
+               "the solver's scales (x_s, x_s omega_n). For both, the set-up (sf_osc_alloc; CVodeCreate, CVodeInit, "
+               "solver objects) is outside the timer.\n\n", SUNDIALS_VERSION);
+#endif
+    table_1d(f, p1, n1, nexp);
+    double rk4_paper = p1[3].time, e_paper = p1[3].err, ad = cheapest(p1, n1, K_RK8PD, e_paper);
     fprintf(f, "\nRK4 at the paper's dt = 1e-3 s reaches %.1e s in %.4f s; the cheapest adaptive run at least as "
                "accurate takes %.4f s: ratio RK4/adaptive = %.1f.\n", e_paper, rk4_paper, ad, rk4_paper / ad);
+#if SF_HAVE_CVODE
+    cvode_ratios(f, p1, n1, e_paper);
+    fprintf(f, "\nAt rtol = 1e-3 (not in the table) CVODE finds %zu (BDF) and %zu (Adams) of the %zu transitions of "
+               "[0, T).", loose[0].ntrans, loose[1].ntrans, nexp);
+    for (int j = 0; j < 2; j++) {
+        const point *q = &loose[j];
+        if (q->ntrans == nexp)
+            continue;
+        /* each found transition within a quarter period of its closed-form time: nothing skipped, the
+         * window cut the last one off */
+        if (q->ntrans < nexp && isfinite(q->err) && q->err < 0.25 * cf.period)
+            fprintf(f, " %s misses none: its transition times drift (by up to %.2f s at the end), which moves the "
+                       "last one (closed form %.2f s) past T = %g s.", j ? "Adams" : "BDF", q->err,
+                    sf_cycle1d_transition(&cf, (unsigned)(nexp - 1)), s.T);
+        else
+            fprintf(f, " %s's transitions do not pair with the closed form's (an event missed or added; max "
+                       "error over the pairs %.2e s).", j ? "Adams" : "BDF", q->err);
+    }
+    fprintf(f, "\n");
+#endif
     /* stochastic baseline */
     sf_scene st;
     sf_scene_default(&st);
@@ -170,7 +439,14 @@ int bench_dynamics(FILE *f, const char *dir)
     char e[200];
     int rc = sf_result_render_plots(r, dir, e, sizeof e);
     sf_result_free(r);
-    fprintf(f, "\n![1-D work-precision](dyn_wp_1d.png)\n\n![Stochastic work-precision](dyn_wp_stochastic.png)\n\n"
-               "SUNDIALS CVODE (a benchmark-only peer, issue 6) is not in this run yet.\n");
+    fprintf(f, "\n![1-D work-precision](dyn_wp_1d.png)\n\n![Stochastic work-precision](dyn_wp_stochastic.png)\n\n");
+#if SF_HAVE_CVODE
+    fprintf(f, "SUNDIALS CVODE is in the 1-D study only: a 3-DOF CVODE driver would have to duplicate the solver's "
+               "stick logic (switching function, stick exit, Eq. 14 direction), which is private to "
+               "solver/oscillator.c; the 1-D peer duplicates its few lines of it (bench/cvode_peer.h).\n");
+#else
+    fprintf(f, "SUNDIALS CVODE (the benchmark-only peer of issue 6) was absent from this build: install it "
+               "(`apt-get install libsundials-dev`, CVODE 6.x) and rebuild the bench to add it to the 1-D study.\n");
+#endif
     return rc ? 1 : 0;
 }
