@@ -300,7 +300,93 @@ static int chk_section_vs_circle(const sf_case *c, sf_result *r)
     return SF_SUCCESS;
 }
 
+/* The T* = 0 contour of the full limit surface sampled on an ntheta x npsi
+ * grid (theta over [-pi/2, pi/2]; the contour by linear interpolation of
+ * Q* between the two thetas that bracket T* = 0), against the exact
+ * section the stick test uses.  Largest force-plane distance over psi,
+ * for ntheta = n, 2n - 1, 4n - 3, ... (the grid halves each time). */
+static double contour_error(const sf_surface *sf, size_t nth, size_t npsi, double *evals)
+{
+    double err = 0;
+    for (size_t j = 0; j < npsi; j++) {
+        double psi = 2 * M_PI * (double)j / (double)npsi, th, qe[3], qa[3], qb[3];
+        if (sf_surface_section(sf, psi, &th, qe))
+            return INFINITY;
+        sf_surface_point(sf, -M_PI / 2, psi, qa);
+        for (size_t i = 1; i < nth; i++) {
+            double t = -M_PI / 2 + M_PI * (double)i / (double)(nth - 1);
+            sf_surface_point(sf, t, psi, qb);
+            if (qa[2] <= 0 && qb[2] > 0) {
+                double w = qa[2] / (qa[2] - qb[2]);
+                err = fmax(err, hypot(qa[0] + w * (qb[0] - qa[0]) - qe[0], qa[1] + w * (qb[1] - qa[1]) - qe[1]));
+            }
+            memcpy(qa, qb, sizeof qa);
+        }
+        *evals += (double)nth;
+    }
+    return err;
+}
+
+static int chk_section_vs_full(const sf_case *c, sf_result *r)
+{
+    const sf_scene *s = &c->scene;
+    size_t K = s->sweep.n, npsi = s->npsi;
+    enum { NL = 5 };
+    if (!K)
+        return SF_EINVAL;
+    gsl_rng *rng = sf_case_rng(c);
+    double nth[NL], err[NL][16], evals = 0;
+    if (K > 16)
+        return SF_EINVAL;
+    sf_note(r, "Force-plane distance (units of N) between the T* = 0 contour of the full limit surface on an "
+               "ntheta x %zu grid and the exact section, largest over the %zu twist azimuths.\n\n"
+               "| l/R | ntheta = %zu | %zu | %zu | %zu | %zu | observed order (last two) |\n|---|---|---|---|---|---|---|",
+            npsi, npsi, s->ntheta, 2 * s->ntheta - 1, 4 * s->ntheta - 3, 8 * s->ntheta - 7, 16 * s->ntheta - 15);
+    for (size_t k = 0; k < K; k++) {
+        sf_scene t = *s;
+        t.l = s->sweep.v[k] * s->R;
+        disc d = { 0 };
+        if (disc_make(&t, rng, s->cells, SF_LAYOUT_POLAR, &d)) {
+            disc_free(&d);
+            gsl_rng_free(rng);
+            return SF_EFAIL;
+        }
+        size_t n = s->ntheta;
+        for (int L = 0; L < NL; L++, n = 2 * n - 1) {
+            nth[L] = (double)n;
+            err[L][k] = contour_error(d.sf, n, npsi, &evals);
+        }
+        disc_free(&d);
+        double order = log2(err[NL - 2][k] / err[NL - 1][k]);
+        sf_note(r, "| %g | %.3e | %.3e | %.3e | %.3e | %.3e | %.2f |", s->sweep.v[k], err[0][k], err[1][k], err[2][k],
+                err[3][k], err[4][k], order);
+        char q[160];
+        snprintf(q, sizeof q, "l/R = %g: contour error on the finest grid (ntheta = %.0f)", s->sweep.v[k], nth[NL - 1]);
+        sf_check_le(r, q, err[NL - 1][k], s->tolerance);
+        snprintf(q, sizeof q, "l/R = %g: observed order of the contour's convergence to the section", s->sweep.v[k]);
+        sf_check_ge(r, q, order, 1.8);
+    }
+    gsl_rng_free(rng);
+    sf_note(r, "\nThe full surface cost %.0f surface evaluations per l/R over the five grids (%zu x %zu at the "
+               "coarsest); the section needs one Brent solve per azimuth (about 10 evaluations each).",
+            evals / (double)K, s->ntheta, npsi);
+    sf_plot *p = sf_result_plot(r, "section_vs_full", "Full limit surface T* = 0 contour vs the exact section",
+                                "theta samples of the full surface, ntheta [-]", "max force-plane distance [N/N]");
+    sf_plot_log(p, 1, 1);
+    for (size_t k = 0; k < K; k++) {
+        double y[NL];
+        char lab[48];
+        for (int L = 0; L < NL; L++)
+            y[L] = fmax(err[L][k], 1e-17);
+        snprintf(lab, sizeof lab, "l/R = %g", s->sweep.v[k]);
+        sf_plot_series(p, lab, SF_STYLE_LINESPOINTS, NL, nth, y);
+    }
+    sf_plot_hline(p, "tolerance", s->tolerance);
+    return SF_SUCCESS;
+}
+
 const sf_check_def sf_checks_surface[] = {
+    { "surface_section_vs_full", chk_section_vs_full, "exact T = 0 section vs the contour of the full limit surface" },
     { "surface_uniform_shape", chk_uniform_shape, "uniform COF: equator mu_s, poles (2/3) mu_s, axisymmetry, mirror" },
     { "surface_convexity", chk_convexity, "maximum-power principle and central symmetry of the limit surface" },
     { "surface_equator_mean_cof", chk_equator_mean_cof, "theta = 0 curve is the circle of radius mu_bar = disc average" },
