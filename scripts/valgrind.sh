@@ -8,9 +8,12 @@ sf_name=vg
 VG="valgrind -q --error-exitcode=99 --leak-check=full --errors-for-leak-kinds=definite --show-leak-kinds=definite"
 $VG build/slipfield verify --jobs 1 --reports "$tmp/reports" \
     cases/field/exact-covariance-minimal.md cases/lognormal/nataf-map-roundtrip.md \
-    cases/contact/pure-spin-polar.md cases/surface/equator-mean-cof.md cases/deterministic/energy-1d.md
+    cases/contact/pure-spin-polar.md cases/surface/equator-mean-cof.md cases/deterministic/energy-1d.md \
+    cases/plan/section-vs-full-surface.md
 printf 'T = 20\nt_skip = 2\ncells = 8\nrtol = 1e-6\n' > "$tmp/s.scene"
 $VG build/slipfield run "$tmp/s.scene" --out "$tmp/h.tsv" --summary "$tmp/q.txt"
-$VG build/slipfield field "$tmp/s.scene" --samples 1 --out "$tmp/f.tsv"
+$VG build/slipfield run "$tmp/s.scene" --explain > /dev/null
+printf 'fftw_planner = measure\nnx = 32\nny = 32\n' >> "$tmp/s.scene"
+SLIPFIELD_FFTW_WISDOM="$tmp/w.wis" $VG build/slipfield field "$tmp/s.scene" --samples 1 --out "$tmp/f.tsv"
 $VG build/slipfield sweep "$tmp/s.scene" --param l_over_R --values 1,1000000 --realisations 2 --threads 1 --out "$tmp/w.tsv"
 echo "valgrind: clean"
