@@ -13,8 +13,12 @@
 #include <gsl/gsl_odeiv2.h>
 #include <gsl/gsl_roots.h>
 
-/* state layout (the 1-D model uses the same vector with y, phi frozen) */
-enum { X, Y, P, VX, VY, W, WK, NSTATE };
+/* state layout (oscillator.h; the 1-D model uses the same vector with y,
+ * phi frozen), short names */
+enum {
+    X = SF_OSC_X, Y = SF_OSC_Y, P = SF_OSC_PHI, VX = SF_OSC_VX, VY = SF_OSC_VY, W = SF_OSC_W, WK = SF_OSC_WORK,
+    NSTATE = SF_OSC_NSTATE
+};
 
 struct sf_osc {
     sf_scene s;
@@ -23,6 +27,7 @@ struct sf_osc {
     int dof3;
     double mu;               /* the constant static COF (constant case) */
     double N, J, wn, delta;  /* m g [N], m R^2/2 [kg m^2], sqrt(k/m) [1/s], eps wn R [m/s] */
+    double sc[NSTATE];       /* the error control's scales (sf_osc_scales) */
     gsl_odeiv2_system sys;
     gsl_odeiv2_step *step, *bstep;
     gsl_odeiv2_control *con;
@@ -64,11 +69,12 @@ static void wrench(sf_osc *o, double t, const double *y, double q[3])
         q[2] = -muk * o->N * s->R * tt * (w > 0 ? 1 : -1);
 }
 
-static int rhs(double t, const double *y, double *f, void *params)
+void sf_osc_slip_rhs(sf_osc *o, double t, const double *y, double *f, double q[3])
 {
-    sf_osc *o = params;
     const sf_scene *s = &o->s;
-    double q[3];
+    double qq[3];
+    if (!q)
+        q = qq;
     wrench(o, t, y, q);
     f[X] = y[VX];
     f[Y] = y[VY];
@@ -77,6 +83,11 @@ static int rhs(double t, const double *y, double *f, void *params)
     f[VY] = (-s->k * y[Y] + q[1]) / s->m;
     f[W] = q[2] / o->J;
     f[WK] = q[0] * y[VX] + q[1] * y[VY] + q[2] * y[W];
+}
+
+static int rhs(double t, const double *y, double *f, void *params)
+{
+    sf_osc_slip_rhs(params, t, y, f, NULL);
     return GSL_SUCCESS;
 }
 
@@ -118,6 +129,7 @@ int sf_osc_alloc(const sf_scene *s, const sf_cof *cof, sf_osc **out, char *err, 
     double xs = fmax((s->mu_mean + s->mu_std) * o->N / s->k, 1e-300);
     double sc[NSTATE] = { xs, xs, xs / s->R, xs * o->wn, xs * o->wn, xs * o->wn / s->R,
                           (s->mu_mean + s->mu_std) * o->N * xs };
+    memcpy(o->sc, sc, sizeof sc);
     o->con = gsl_odeiv2_control_scaled_new(s->rtol, s->rtol, 1.0, 0.0, sc, NSTATE);
     o->ev = gsl_odeiv2_evolve_alloc(NSTATE);
     if (!o->step || !o->bstep || !o->con || !o->ev) {
@@ -159,6 +171,11 @@ void sf_osc_explain(const sf_osc *o, FILE *f)
             s->velocity_jump ? "on" : "off");
 }
 
+void sf_osc_scales(const sf_osc *o, double sc[SF_OSC_NSTATE])
+{
+    memcpy(sc, o->sc, sizeof o->sc);
+}
+
 static double lambda_of(const sf_osc *o, const double *y)
 {
     double r = o->wn * o->s.R;
@@ -167,7 +184,7 @@ static double lambda_of(const sf_osc *o, const double *y)
 
 /* Stick admissibility margin [N] of the stick wrench (k x, k y) at the
  * belt point under the disc at time t (> 0 admissible). */
-static double stick_margin(sf_osc *o, double t, const double *y)
+static double stick_margin(const sf_osc *o, double t, const double *y)
 {
     const sf_scene *s = &o->s;
     double F = s->k * hypot(y[X], y[Y]);
@@ -180,7 +197,7 @@ static double stick_margin(sf_osc *o, double t, const double *y)
 
 /* Slip-to-stick switching function: < 0 when lambda < eps and stick is
  * admissible. Mixed units are fine: only its sign is used. */
-static double g_stick(sf_osc *o, double t, const double *y)
+double sf_osc_g_stick(const sf_osc *o, double t, const double *y)
 {
     double c = lambda_of(o, y) - o->s.eps_lambda;
     if (c >= 0)   /* the sign is already decided: skip the (costly) margin */
@@ -208,7 +225,7 @@ static double bisect(sf_osc *o, int kind, double t0, const double *y0, double t1
     while (hi - lo > tol) {
         double mid = 0.5 * (lo + hi), ym[NSTATE];
         advance(o, t0, y0, mid, ym);
-        int holds = kind == EV_STICK ? g_stick(o, t0 + mid, ym) < 0 : (ym[VX] * s0 <= 0);
+        int holds = kind == EV_STICK ? sf_osc_g_stick(o, t0 + mid, ym) < 0 : (ym[VX] * s0 <= 0);
         if (holds)
             hi = mid;
         else
@@ -220,7 +237,7 @@ static double bisect(sf_osc *o, int kind, double t0, const double *y0, double t1
 }
 
 /* Time to the stick break from (t0, y) with the belt patch fixed. */
-static double stick_duration(sf_osc *o, double t0, const double *y)
+double sf_osc_stick_duration(const sf_osc *o, double t0, const double *y)
 {
     const sf_scene *s = &o->s;
     double xb = y[X] - s->v_b * t0, yb = y[Y];
@@ -249,6 +266,36 @@ static double stick_duration(sf_osc *o, double t0, const double *y)
     }
     sf_surface_free(sf);
     return hi;
+}
+
+void sf_osc_stick_move(const sf_osc *o, double *y, double dt)
+{
+    const sf_scene *s = &o->s;
+    double x0 = y[X];
+    y[WK] += s->k * s->v_b * (x0 * dt + 0.5 * s->v_b * dt * dt);   /* = k (x1^2 - x0^2)/2 */
+    y[X] = x0 + s->v_b * dt;
+}
+
+double sf_osc_stick_onset(const sf_osc *o, double *y)
+{
+    const sf_scene *s = &o->s;
+    double dE = 0.5 * s->m * (s->v_b * s->v_b - y[VX] * y[VX] - y[VY] * y[VY]) - 0.5 * o->J * y[W] * y[W];
+    y[VX] = s->v_b;
+    y[VY] = 0;
+    y[W] = 0;
+    return dE;
+}
+
+double sf_osc_slip_onset(const sf_osc *o, double *y)
+{
+    const sf_scene *s = &o->s;
+    if (!s->velocity_jump)
+        return 0;
+    double psi = atan2(s->k * y[Y], s->k * y[X]);   /* the direction of the stick wrench */
+    y[VX] = s->v_b - o->delta * cos(psi);
+    y[VY] = o->dof3 ? -o->delta * sin(psi) : 0;
+    y[W] = 0;
+    return 0.5 * s->m * (y[VX] * y[VX] + y[VY] * y[VY] - s->v_b * s->v_b);
 }
 
 /* ---- online QoIs */
@@ -390,11 +437,13 @@ int sf_osc_run(sf_osc *o, sf_osc_row_fn row, void *ctx, double sample_dt, sf_osc
     o->wrench_evals = 0;
     double t = 0, y[NSTATE] = { 0 }, q[3], h = s->dt, jumps = 0;
     unsigned long budget = 200000000UL;
-    double g0 = g_stick(o, 0, y);
+    double g0 = sf_osc_g_stick(o, 0, y);
     /* armed from the start unless the run starts on the threshold */
     int stick = g0 < 0, armed = g0 > 0, rc = SF_SUCCESS;
     gsl_odeiv2_evolve_reset(o->ev);
     if (stick) {   /* a belt slower than eps_lambda omega_n R: stick from the start (Eq. 12) */
+        /* from rest: sf_osc_stick_onset's jump, its energy in the product
+         * order of the first release (bits of jump_energy kept) */
         jumps += 0.5 * s->m * s->v_b * s->v_b;
         y[VX] = s->v_b;
         if ((rc = transition(&a, SF_OSC_STICK_ONSET, 0, 0, 0)))
@@ -406,17 +455,16 @@ int sf_osc_run(sf_osc *o, sf_osc_row_fn row, void *ctx, double sample_dt, sf_osc
     emit(o, row, ctx, 0, y, stick ? (double[3]){ 0, 0, 0 } : q, stick);
     while (t < s->T && rc == SF_SUCCESS) {
         if (stick) {
-            double tau = stick_duration(o, t, y), t1 = fmin(t + tau, s->T), x0 = y[X];
-            double x1 = x0 + s->v_b * (t1 - t);
+            double tau = sf_osc_stick_duration(o, t, y), t1 = fmin(t + tau, s->T), x0 = y[X];
+            sf_osc_stick_move(o, y, t1 - t);
+            double x1 = y[X];
             double kq0[3] = { s->k * x0, s->k * y[Y], 0 }, kq1[3] = { s->k * x1, s->k * y[Y], 0 };
             note(&a, x0, kq0[0]);
             note(&a, x1, kq1[0]);
             if (a.open)
                 a.stick += t1 - t;
-            y[WK] += s->k * s->v_b * (x0 * (t1 - t) + 0.5 * s->v_b * (t1 - t) * (t1 - t));   /* = k (x1^2 - x0^2)/2 */
             double p0[3] = { x0, s->v_b, 0 }, p1[3] = { x1, s->v_b, 0 };
             sample(res, &next, t, p0, t1, p1);
-            y[X] = x1;
             t = t1;
             track(res, y);
             emit(o, row, ctx, t, y, kq1, 1);
@@ -425,13 +473,7 @@ int sf_osc_run(sf_osc *o, sf_osc_row_fn row, void *ctx, double sample_dt, sf_osc
             /* break: Eq. 14 */
             if ((rc = transition(&a, SF_OSC_SLIP_ONSET, t, y[X], kq1[0])))
                 break;
-            if (s->velocity_jump) {
-                double psi = atan2(kq1[1], kq1[0]);
-                y[VX] = s->v_b - o->delta * cos(psi);
-                y[VY] = o->dof3 ? -o->delta * sin(psi) : 0;
-                y[W] = 0;
-                jumps += 0.5 * s->m * (y[VX] * y[VX] + y[VY] * y[VY] - s->v_b * s->v_b);
-            }
+            jumps += sf_osc_slip_onset(o, y);
             stick = 0;
             armed = 0;
             h = s->dt;
@@ -472,7 +514,7 @@ int sf_osc_run(sf_osc *o, sf_osc_row_fn row, void *ctx, double sample_dt, sf_osc
             rc = seterr(err, errlen, SF_EMAXITER, "step budget (2e8 steps) exhausted");
             break;
         }
-        double g1 = g_stick(o, t, y);
+        double g1 = sf_osc_g_stick(o, t, y);
         int to_stick = armed && g1 < 0;
         double ye[NSTATE], te = t;
         if (to_stick) {
@@ -501,10 +543,7 @@ int sf_osc_run(sf_osc *o, sf_osc_row_fn row, void *ctx, double sample_dt, sf_osc
             continue;
         }
         /* slip -> stick: Eq. 12 */
-        jumps += 0.5 * s->m * (s->v_b * s->v_b - y[VX] * y[VX] - y[VY] * y[VY]) - 0.5 * o->J * y[W] * y[W];
-        y[VX] = s->v_b;
-        y[VY] = 0;
-        y[W] = 0;
+        jumps += sf_osc_stick_onset(o, y);
         stick = 1;
         if ((rc = transition(&a, SF_OSC_STICK_ONSET, t, y[X], s->k * y[X])))
             break;

@@ -100,4 +100,58 @@ void sf_osc_result_free(sf_osc_result *r);
 /* Eq. 15: sum (x_i - x_ref,i)^2 dt over common uniform samples [m^2 s]. */
 double sf_osc_error_eq15(const sf_osc_result *a, const sf_osc_result *ref);
 
+/* ---- The model's pieces, for peers.
+ * A benchmark peer that integrates the same model with another ODE code
+ * (bench/cvode_peer.h: SUNDIALS CVODE) calls these on a plan of
+ * sf_osc_alloc instead of keeping its own copies of the physics: they are
+ * the very functions sf_osc_run calls, so a peer differs from the solver
+ * in its integrator and its event location only.  They leave the plan's
+ * GSL steppers alone (a peer allocates a plan of its own and never runs
+ * it); the wrench counts into the plan's wrench evaluations.
+ *
+ * The state vector (ground frame, SI): the 1-D model uses the same vector
+ * with y, phi, vy, w staying 0.  SF_OSC_WORK is the friction work W(t)
+ * (integral of the wrench's power) for the energy balance. */
+enum { SF_OSC_X, SF_OSC_Y, SF_OSC_PHI, SF_OSC_VX, SF_OSC_VY, SF_OSC_W, SF_OSC_WORK, SF_OSC_NSTATE };
+
+/* Slip right-hand side f = dy/dt at (t, y) (Eqs. 3-5 with the kinetic
+ * wrench: Eq. 4, the Contensou closed form or the quadrature of Eqs. 7-8,
+ * as the plan decided); q (may be NULL) receives the wrench (Fx, Fy, T). */
+void sf_osc_slip_rhs(sf_osc *o, double t, const double *y, double *f, double q[3]);
+
+/* The error control's scale of each state component (the problem's own
+ * scales: x_s = (mu_mean + mu_std) m g / k for lengths, x_s omega_n for
+ * speeds, x_s / R and x_s omega_n / R for angle and spin,
+ * (mu_mean + mu_std) m g x_s for the work): sf_osc_run's error control
+ * asks rtol (|y_i| + sc[i]) of component i. */
+void sf_osc_scales(const sf_osc *o, double sc[SF_OSC_NSTATE]);
+
+/* Slip-to-stick switching function: lambda - eps_lambda while that is
+ * >= 0, else max(lambda - eps_lambda, -margin / (m g)) with margin the stick
+ * admissibility margin [N] of the stick wrench (k x, k y) at the belt
+ * point under the disc at time t.  Stick may start where it is < 0; only
+ * its sign is meaningful.  The solver arms it after it has been > 0 in a
+ * slip phase (it starts each slip phase at zero); a peer's root-finding on
+ * decreasing crossings plays that role. */
+double sf_osc_g_stick(const sf_osc *o, double t, const double *y);
+
+/* Duration of the stick phase starting at (t, y) (>= 0): the belt patch
+ * stays fixed, the disc moves with the belt, the break is the exit of the
+ * stick wrench from the equatorial circle (closed form) or from the exact
+ * T = 0 section (scene exact_section). */
+double sf_osc_stick_duration(const sf_osc *o, double t, const double *y);
+
+/* Stick motion over dt (exact, no quadrature): x += v_b dt, and the stick
+ * wrench's work into y[SF_OSC_WORK]. */
+void sf_osc_stick_move(const sf_osc *o, double *y, double dt);
+
+/* Eq. 12 at a slip-to-stick instant: velocities (v_b, 0, 0).  Returns the
+ * kinetic-energy change of that jump [J]. */
+double sf_osc_stick_onset(const sf_osc *o, double *y);
+
+/* Eq. 14 at a stick-to-slip instant: the relative velocity jumps to
+ * eps_lambda omega_n R opposite the stick wrench (k x, k y), spin 0; a
+ * no-op with velocity_jump = false.  Returns the kinetic-energy change [J]. */
+double sf_osc_slip_onset(const sf_osc *o, double *y);
+
 #endif
