@@ -75,6 +75,14 @@ void sf_cof_free(sf_cof *c)
 sf_cof_kind sf_cof_get_kind(const sf_cof *c) { return c->kind; }
 unsigned long sf_cof_outside(const sf_cof *c) { return c->outside; }
 
+int sf_cof_covers(const sf_cof *c, double xb, double yb, double r)
+{
+    if (c->kind != SF_COF_FIELD)
+        return 1;
+    return xb - r >= c->x0 && xb + r <= c->x0 + c->dx * (double)(c->m - 1) && yb - r >= c->y0 &&
+           yb + r <= c->y0 + c->dy * (double)(c->n - 1);
+}
+
 /* Cell index and local coordinate along one axis, clamped to the grid. */
 static size_t locate(double x, double x0, double h, size_t n, double *t, int *clamped)
 {

@@ -30,10 +30,16 @@ void sf_cof_free(sf_cof *c);
 sf_cof_kind sf_cof_get_kind(const sf_cof *c);
 
 /* mu_s at belt point (xb, yb); bilinear on a grid.  Points outside the
- * grid are clamped to its edge (callers size the strip so that this does
- * not happen; sf_cof_outside() counts how often it did). */
+ * grid are clamped to its edge; sf_cof_outside() counts how often.  Such
+ * look-ups are harmless at the trial stages of a step the error control
+ * rejects (they can lie far off the path); what must stay on the grid is
+ * the accepted path: sf_cof_covers(). */
 double sf_cof_eval(const sf_cof *c, double xb, double yb);
 unsigned long sf_cof_outside(const sf_cof *c);
+
+/* 1 when the disc of radius r centred at belt point (xb, yb) lies on the
+ * grid (always, for a uniform COF). */
+int sf_cof_covers(const sf_cof *c, double xb, double yb, double r);
 
 /* ---- The COF of a run, planned once per scene, drawn per realisation.
  *

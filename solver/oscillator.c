@@ -32,6 +32,7 @@ struct sf_osc {
     gsl_odeiv2_step *step, *bstep;
     gsl_odeiv2_control *con;
     gsl_odeiv2_evolve *ev;
+    gsl_root_fsolver *root;  /* Brent, for event location */
     unsigned long wrench_evals;
 };
 
@@ -132,7 +133,8 @@ int sf_osc_alloc(const sf_scene *s, const sf_cof *cof, sf_osc **out, char *err, 
     memcpy(o->sc, sc, sizeof sc);
     o->con = gsl_odeiv2_control_scaled_new(s->rtol, s->rtol, 1.0, 0.0, sc, NSTATE);
     o->ev = gsl_odeiv2_evolve_alloc(NSTATE);
-    if (!o->step || !o->bstep || !o->con || !o->ev) {
+    o->root = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
+    if (!o->step || !o->bstep || !o->con || !o->ev || !o->root) {
         sf_osc_free(o);
         return SF_ENOMEM;
     }
@@ -149,6 +151,7 @@ void sf_osc_free(sf_osc *o)
     if (o->bstep) gsl_odeiv2_step_free(o->bstep);
     if (o->con) gsl_odeiv2_control_free(o->con);
     if (o->ev) gsl_odeiv2_evolve_free(o->ev);
+    if (o->root) gsl_root_fsolver_free(o->root);
     free(o);
 }
 
@@ -167,7 +170,7 @@ void sf_osc_explain(const sf_osc *o, FILE *f)
             s->exact_section ? "exact T = 0 section (Brent, bracketed by the circle's exit time)"
                              : "equatorial circle (closed-form exit time)");
     fprintf(f, "stepper: %s\n", s->integrator == SF_INTEG_RK4 ? "GSL rk4, fixed dt" : "GSL rk8pd with error control");
-    fprintf(f, "events: bisection to max(%g s, 8 ulp(t)); velocity jump of Eq. 14 %s\n", SF_OSC_TIME_TOL,
+    fprintf(f, "events: Brent (GSL) on single trial steps, to max(%g s, 8 ulp(t)); velocity jump of Eq. 14 %s\n", SF_OSC_TIME_TOL,
             s->velocity_jump ? "on" : "off");
 }
 
@@ -216,21 +219,55 @@ static void advance(sf_osc *o, double t0, const double *y0, double h, double *yo
 
 enum { EV_STICK, EV_VX0 };
 
-/* Bisection for the first time in (t0, t1] where the event holds, given it
- * does not at t0 and does at t1. */
+/* The event function along a trial step of length h from (t0, y0): < 0
+ * (stick) or <= 0 (vx = 0) where the event holds, > 0 before it. */
+typedef struct {
+    sf_osc *o;
+    int kind;
+    double t0;
+    const double *y0;
+    unsigned long *count;
+} ev_par;
+
+static double ev_state(const ev_par *e, double h, double *ym)
+{
+    advance(e->o, e->t0, e->y0, h, ym);
+    (*e->count)++;
+    return e->kind == EV_STICK ? sf_osc_g_stick(e->o, e->t0 + h, ym) : ym[VX] * (e->y0[VX] > 0 ? 1 : -1);
+}
+
+static double ev_value(double h, void *p)
+{
+    double ym[NSTATE];
+    return ev_state(p, h, ym);
+}
+
+static int ev_holds(int kind, double v) { return kind == EV_STICK ? v < 0 : v <= 0; }
+
+/* The first event time in (t0, t1] to max(1e-12 s, 8 ulp(t)), given that
+ * it does not hold at t0 and holds at t1: GSL's Brent solver on the event
+ * function of single steps of the same stepper from the step's start
+ * (superlinear where bisection gains one bit per trial step), returning the
+ * bracket end where the event holds, and its state in ye. */
 static double bisect(sf_osc *o, int kind, double t0, const double *y0, double t1, double *ye, unsigned long *count)
 {
     double lo = 0, hi = t1 - t0, tol = fmax(SF_OSC_TIME_TOL, 8 * DBL_EPSILON * fabs(t1));
-    double s0 = y0[VX];
-    while (hi - lo > tol) {
-        double mid = 0.5 * (lo + hi), ym[NSTATE];
-        advance(o, t0, y0, mid, ym);
-        int holds = kind == EV_STICK ? sf_osc_g_stick(o, t0 + mid, ym) < 0 : (ym[VX] * s0 <= 0);
-        if (holds)
-            hi = mid;
-        else
-            lo = mid;
-        (*count)++;
+    ev_par par = { o, kind, t0, y0, count };
+    gsl_function F = { ev_value, &par };
+    if (hi - lo > tol && gsl_root_fsolver_set(o->root, &F, lo, hi) == GSL_SUCCESS) {
+        for (int it = 0; it < 200; it++) {
+            gsl_root_fsolver_iterate(o->root);
+            lo = gsl_root_fsolver_x_lower(o->root);
+            hi = gsl_root_fsolver_x_upper(o->root);
+            if (gsl_root_test_interval(lo, hi, tol, 0) == GSL_SUCCESS)
+                break;
+        }
+        double yl[NSTATE];
+        if (!ev_holds(kind, ev_state(&par, hi, ye)) && ev_holds(kind, ev_state(&par, lo, yl))) {
+            hi = lo;   /* the bracket is oriented the other way */
+            memcpy(ye, yl, sizeof yl);
+        }
+        return t0 + hi;
     }
     advance(o, t0, y0, hi, ye);
     return t0 + hi;
@@ -411,11 +448,14 @@ static void emit(sf_osc *o, sf_osc_row_fn row, void *ctx, double t, const double
     row(ctx, &r);
 }
 
-static void track(sf_osc_result *r, const double *y)
+/* Extremes of the accepted path, and whether its contact patch stayed
+ * on the COF strip (checked at step ends and x extrema). */
+static void track(const sf_osc *o, double t, sf_osc_result *r, const double *y)
 {
     r->x_min = fmin(r->x_min, y[X]);
     r->x_max = fmax(r->x_max, y[X]);
     r->y_absmax = fmax(r->y_absmax, fabs(y[Y]));
+    r->off_strip += !sf_cof_covers(o->cof, y[X] - o->s.v_b * t, y[Y], o->s.R);
 }
 
 int sf_osc_run(sf_osc *o, sf_osc_row_fn row, void *ctx, double sample_dt, sf_osc_result *res,
@@ -466,7 +506,7 @@ int sf_osc_run(sf_osc *o, sf_osc_row_fn row, void *ctx, double sample_dt, sf_osc
             double p0[3] = { x0, s->v_b, 0 }, p1[3] = { x1, s->v_b, 0 };
             sample(res, &next, t, p0, t1, p1);
             t = t1;
-            track(res, y);
+            track(o, t, res, y);
             emit(o, row, ctx, t, y, kq1, 1);
             if (t >= s->T)
                 break;
@@ -524,18 +564,17 @@ int sf_osc_run(sf_osc *o, sf_osc_row_fn row, void *ctx, double sample_dt, sf_osc
         }
         if (y0[VX] * y[VX] < 0) {   /* an extremum of x inside the step */
             double yx[NSTATE];
-            bisect(o, EV_VX0, t0, y0, t, yx, &res->bisections);
-            double qx[3];
-            wrench(o, t, yx, qx);
+            double tx = bisect(o, EV_VX0, t0, y0, t, yx, &res->bisections), qx[3];
+            wrench(o, tx, yx, qx);   /* at the extremum's own time: the belt has moved on by t */
             note(&a, yx[X], qx[0]);
-            track(res, yx);
+            track(o, tx, res, yx);
         }
         wrench(o, t, y, q);
         double p1[3] = { y[X], y[VX], (-s->k * y[X] + q[0]) / s->m };
         sample(res, &next, t0, pa, t, p1);
         memcpy(pa, p1, sizeof pa);
         note(&a, y[X], q[0]);
-        track(res, y);
+        track(o, t, res, y);
         emit(o, row, ctx, t, y, q, 0);
         if (!to_stick) {
             if (g1 > 0)
@@ -555,10 +594,8 @@ int sf_osc_run(sf_osc *o, sf_osc_row_fn row, void *ctx, double sample_dt, sf_osc
     res->energy_residual = res->energy_change - res->friction_work - res->jump_energy;
     res->rejected = o->ev->failed_steps;
     res->wrench_evals = o->wrench_evals;
-    res->cof_outside = sf_cof_outside(o->cof);
-    if (!rc && res->cof_outside)
-        rc = seterr(err, errlen, SF_EFAIL, "the disc left the belt strip of the COF field (COF clamped at its "
-                                           "edge): raise strip_halfwidth");
+    if (!rc && res->off_strip)
+        rc = seterr(err, errlen, SF_EFAIL, "the disc left the belt strip of the COF field: raise strip_halfwidth");
     if (res->ncycles) {
         double sx = 0, sF = 0;
         for (size_t i = 0; i < res->ncycles; i++) {

@@ -77,7 +77,7 @@ typedef struct {
     double energy_change, friction_work, jump_energy, energy_residual;
     /* cost */
     unsigned long steps, rejected, bisections, wrench_evals;
-    unsigned long cof_outside;   /* COF look-ups clamped to the strip edge */
+    unsigned long off_strip;     /* accepted states whose contact patch left the COF strip */
     double x_min, x_max, y_absmax;
 } sf_osc_result;
 

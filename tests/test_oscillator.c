@@ -128,6 +128,44 @@ static void periodogram(void **state)
     assert_int_equal(sf_periodogram(x, 1, dt, f, p), SF_EINVAL);
 }
 
+/* A disc whose accepted path leaves the COF grid fails with a reason; on
+ * a grid that covers the path the run succeeds, whatever trial stages of
+ * rejected steps looked up (sf_cof_covers judges the accepted path). */
+static void leaves_strip(void **state)
+{
+    (void)state;
+    sf_scene s;
+    sf_scene_default(&s);
+    s.T = 30;
+    s.cells = 4;
+    double g[4 * 4];
+    for (int i = 0; i < 16; i++)
+        g[i] = 0.5;
+    char err[256] = "";
+    sf_cof *small, *big;
+    /* stick keeps the patch under the disc; slips move it back by about one
+     * cycle's belt travel (v_b x 4.2 s): a 3 m grid is left within 30 s */
+    assert_int_equal(sf_cof_alloc_grid(4, 4, -1.5, -1.5, 1.0, 1.0, g, &small), SF_SUCCESS);
+    assert_int_equal(sf_cof_alloc_grid(4, 4, -20, -10, 10.0, 10.0, g, &big), SF_SUCCESS);
+    assert_true(sf_cof_covers(big, -2, 0, s.R));
+    assert_false(sf_cof_covers(small, -2, 0, s.R));
+    sf_osc *o;
+    sf_osc_result r;
+    assert_int_equal(sf_osc_alloc(&s, small, &o, err, sizeof err), SF_SUCCESS);
+    assert_int_equal(sf_osc_run(o, NULL, NULL, 0, &r, err, sizeof err), SF_EFAIL);
+    assert_non_null(strstr(err, "left the belt strip"));
+    assert_true(r.off_strip > 0);
+    sf_osc_result_free(&r);
+    sf_osc_free(o);
+    assert_int_equal(sf_osc_alloc(&s, big, &o, err, sizeof err), SF_SUCCESS);
+    assert_int_equal(sf_osc_run(o, NULL, NULL, 0, &r, err, sizeof err), SF_SUCCESS);
+    assert_int_equal(r.off_strip, 0);
+    sf_osc_result_free(&r);
+    sf_osc_free(o);
+    sf_cof_free(small);
+    sf_cof_free(big);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -135,6 +173,7 @@ int main(void)
         cmocka_unit_test(edges),
         cmocka_unit_test(eq15),
         cmocka_unit_test(periodogram),
+        cmocka_unit_test(leaves_strip),
     };
     return cmocka_run_group_tests_name("oscillator", tests, NULL, NULL);
 }
