@@ -1,12 +1,14 @@
 /* Work-precision of the stick-slip integrators: error against an exact or
  * converged answer vs CPU time, for fixed-step RK4 (the paper's dt = 1e-3
- * s and neighbours) and the adaptive rk8pd at several tolerances.
+ * s and neighbours) and the adaptive steppers at several tolerances (the
+ * plan's choice: rk8pd for the closed-form 1-D wrench, rkck for the 3-DOF
+ * quadrature; rk8pd too on the stochastic case, for comparison).
  *  - 1-D Table 1 (T = 100 s): max transition-time error vs the
  *    eps-corrected closed form (solver/cycle1d.h); with SUNDIALS CVODE
  *    (BDF and Adams, root-finding; bench/cvode_peer.h) as a peer when the
  *    build has it, all runs timed interleaved.
  *  - Table 1 stochastic baseline (T = 100 s, one field, 12 rings): Eq. 15
- *    error vs a run at rtol = 1e-12 on the same field; with the CVODE peer
+ *    error vs an rk8pd run at rtol = 1e-12 on the same field; with the CVODE peer
  *    in its 3-DOF mode on the same field when the build has it. */
 #include "bench.h"
 #include "cvode_peer.h"
@@ -26,8 +28,12 @@
 #endif
 
 /* kind: which stepper (0 and 1 as the old rk4 flag) */
-enum { K_RK8PD = 0, K_RK4 = 1, K_BDF = 2, K_ADAMS = 3, NKIND };
-static const char *kind_name[NKIND] = { "rk8pd (adaptive)", "RK4 (fixed)", "CVODE BDF", "CVODE Adams" };
+enum { K_RK8PD = 0, K_RK4 = 1, K_BDF = 2, K_ADAMS = 3, K_RKCK = 4, NKIND };
+static const char *kind_name[NKIND] = { "rk8pd", "RK4 (fixed)", "CVODE BDF", "CVODE Adams", "rkck" };
+/* f evaluations per accepted step of our steppers: stages + the wrench at
+ * the step's end (online QoIs) */
+static double evals_per_step(int kind) { return kind == K_RKCK ? 7.0 : 14.0; }
+static int integ_of(int kind) { return kind == K_RKCK ? SF_INTEG_RKCK : kind == K_RK4 ? SF_INTEG_RK4 : SF_INTEG_RK8PD; }
 
 typedef struct {
     int kind;
@@ -66,9 +72,10 @@ static void table(FILE *f, const char *what, point *p, size_t n)
                 p[i].time, p[i].steps, p[i].fevals, p[i].ntrans);
 }
 
-/* Time RK4 at each dt and rk8pd at each rtol; err(result, ctx) scores a run. */
+/* Time RK4 at each dt and the adaptive stepper `ad` (K_RK8PD or K_RKCK) at
+ * each rtol; err(result, ctx) scores a run. */
 static size_t sweep_points(const sf_scene *s, const sf_cof *cof, double sample_dt, int reps, const double *dts, size_t ndt,
-                           const double *rtols, size_t nrt, double (*err)(const sf_osc_result *, const void *),
+                           const double *rtols, size_t nrt, int ad, double (*err)(const sf_osc_result *, const void *),
                            const void *ctx, point *p)
 {
     size_t n = 0;
@@ -79,14 +86,15 @@ static size_t sweep_points(const sf_scene *s, const sf_cof *cof, double sample_d
             t.integrator = SF_INTEG_RK4;
             t.dt = dts[i];
         } else {
+            t.integrator = integ_of(ad);
             t.rtol = rtols[i - ndt];
         }
         sf_osc_result r;
         double tm = run_time(&t, cof, sample_dt, reps, &r);
-        p[n++] = (point){ rk4 ? K_RK4 : K_RK8PD, rk4 ? t.dt : t.rtol, err(&r, ctx), tm, r.steps, r.wrench_evals,
+        p[n++] = (point){ rk4 ? K_RK4 : ad, rk4 ? t.dt : t.rtol, err(&r, ctx), tm, r.steps, r.wrench_evals,
                           r.ntrans };
         if (reps == 1)
-            fprintf(stderr, "bench: %s %g: error %.3e in %.2f s\n", rk4 ? "RK4 dt" : "rk8pd rtol", p[n - 1].knob,
+            fprintf(stderr, "bench: %s %g: error %.3e in %.2f s\n", rk4 ? "RK4 dt" : kind_name[ad], p[n - 1].knob,
                     p[n - 1].err, tm);
         sf_osc_result_free(&r);
     }
@@ -121,7 +129,7 @@ static void plot(sf_result *r, const char *stem, const char *title, const char *
 {
     sf_plot *pl = sf_result_plot(r, stem, title, "CPU time per run [s]", ylabel);
     sf_plot_log(pl, 1, 1);
-    static const int order[NKIND] = { K_RK8PD, K_BDF, K_ADAMS, K_RK4 };
+    static const int order[NKIND] = { K_RKCK, K_RK8PD, K_BDF, K_ADAMS, K_RK4 };
     for (int j = 0; j < NKIND; j++) {
         int k = order[j];
         double x[64], y[64], k0 = NAN, k1 = NAN;
@@ -338,7 +346,7 @@ static void cvode_ratios(FILE *f, point *p, size_t n, double e_paper)
                    "the same error (%lu BDF and %lu Adams steps at rtol 1e-12 against rk8pd's %lu); (2) on a "
                    "2-component state the cost is per-step machinery, not the right-hand side: CVODE spends about "
                    "%.0f ns per f evaluation (Nordsieck history, weighted norms, nonlinear iteration, root checks, all "
-                   "through N_Vector calls) against rk8pd's %.0f ns. Our event location (bisection with single rk8pd "
+                   "through N_Vector calls) against rk8pd's %.0f ns. Our event location (GSL's Brent solver on single rk8pd "
                    "steps) costs most of our %lu f evaluations, against CVODE's cheap root-finding on its "
                    "interpolant: that is our cost floor, and why our times barely move with rtol.",
                 b12->err / a12->err, d12->err / a12->err, a12->ntrans, b12->steps, d12->steps, a12->steps,
@@ -371,8 +379,9 @@ static size_t sweep_cvode_eq15(const sf_scene *s, const sf_cof *cof, double samp
  * stochastic scene s. */
 static double rerun(const sf_scene *s, const sf_cof *cof, double sample_dt, const point *q)
 {
-    if (q->kind == K_RK8PD) {
+    if (q->kind == K_RK8PD || q->kind == K_RKCK) {
         sf_scene t = *s;
+        t.integrator = integ_of(q->kind);
         t.rtol = q->knob;
         sf_osc_result r;
         double tm = run_time(&t, cof, sample_dt, 1, &r);
@@ -392,8 +401,8 @@ static void cvode_why_eq15(FILE *f, point q[2][3])
 {
     static const char *at[2] = { "At 1e-6", "At RK4's error" };
     fprintf(f, " Why: the 3-DOF slip wrench is a quadrature over the disc, so the cost follows the f evaluations, "
-               "not the per-step machinery that decides the 1-D case. rk8pd makes 14 per accepted step (13 stages "
-               "and the wrench at the step's end), plus rejected steps and the single steps of the bisection that "
+               "not the per-step machinery that decides the 1-D case. rkck makes 7 per accepted step (6 stages "
+               "and the wrench at the step's end; rk8pd 14), plus rejected steps and the single trial steps of the Brent search that "
                "locates the transitions and x extrema to 1e-12 s; CVODE about one per step plus its Newton or "
                "fixed-point iterations, and locates events on its interpolant.");
     for (int j = 0; j < 2; j++) {
@@ -402,10 +411,11 @@ static void cvode_why_eq15(FILE *f, point q[2][3])
             b = &q[j][2];
         if (!isfinite(a->time) || !isfinite(b->time) || !a->steps || !b->steps || !a->fevals || !b->fevals)
             continue;
-        double extra = (double)a->fevals - 14.0 * (double)a->steps;
-        fprintf(f, " %s: rk8pd (rtol %g) %lu f evaluations in %lu steps, %.0f%% of them beyond the 14 per step, "
-                   "%.1f us each; %s (rtol %g) %lu in %lu steps, %.1f us each.", at[j], a->knob,
-                a->fevals, a->steps, 100 * fmax(extra, 0) / (double)a->fevals, 1e6 * a->time / (double)a->fevals,
+        double extra = (double)a->fevals - evals_per_step(a->kind) * (double)a->steps;
+        fprintf(f, " %s: %s (rtol %g) %lu f evaluations in %lu steps, %.0f%% of them beyond the %.0f per step, "
+                   "%.1f us each; %s (rtol %g) %lu in %lu steps, %.1f us each.", at[j], kind_name[a->kind], a->knob,
+                a->fevals, a->steps, 100 * fmax(extra, 0) / (double)a->fevals, evals_per_step(a->kind),
+                1e6 * a->time / (double)a->fevals,
                 kind_name[b->kind], b->knob, b->fevals, b->steps, 1e6 * b->time / (double)b->fevals);
     }
 }
@@ -418,10 +428,10 @@ static void cvode_ratios_eq15(FILE *f, const sf_scene *s, const sf_cof *cof, dou
                               size_t n, const double targets[2], double ratio[2], point q[2][3])
 {
     enum { REPS = 3 };
-    static const int kinds[3] = { K_RK8PD, K_BDF, K_ADAMS };
-    fprintf(f, "\nCVODE against our adaptive scheme at equal Eq. 15 error (the cheapest run of each kind reaching "
-               "the target, re-timed: medians of %d runs round-robin):\n\n| target error [m^2 s] | rk8pd | CVODE "
-               "BDF | CVODE Adams | CVODE time / rk8pd time |\n|---|---|---|---|---|\n", REPS);
+    static const int kinds[3] = { K_RKCK, K_BDF, K_ADAMS };
+    fprintf(f, "\nCVODE against our adaptive scheme (rkck here) at equal Eq. 15 error (the cheapest run of each kind "
+               "reaching the target, re-timed: medians of %d runs round-robin):\n\n| target error [m^2 s] | rkck "
+               "(adaptive) | CVODE BDF | CVODE Adams | CVODE time / rkck time |\n|---|---|---|---|---|\n", REPS);
     for (int j = 0; j < 2; j++) {
         const point *c[3];
         double tm[3][REPS];
@@ -446,7 +456,7 @@ static void cvode_ratios_eq15(FILE *f, const sf_scene *s, const sf_cof *cof, dou
         if (isfinite(ratio[j]))
             fprintf(f, " %.2f (best of BDF and Adams) |\n", ratio[j]);
         else
-            fprintf(f, " %s |\n", c[0] ? "CVODE did not reach it in this sweep" : "rk8pd did not reach it");
+            fprintf(f, " %s |\n", c[0] ? "CVODE did not reach it in this sweep" : "rkck did not reach it");
     }
 }
 #endif
@@ -495,7 +505,7 @@ int bench_dynamics(FILE *f, const char *dir)
     fprintf(f, "## Stick-slip integrators: work-precision\n\n### 1-D Table 1 oscillator, exact answer\n\n"
                "Error: max |transition time - closed form| over the %zu transitions of 100 s (eps_lambda = 1e-3, "
                "closed form corrected for it). Medians of 5 runs, all configurations run round-robin (%.1f s in "
-               "all). f evaluations: right-hand sides, including the bisection steps of our event location.\n\n",
+               "all). f evaluations: right-hand sides, including the trial steps of our event location (Brent).\n\n",
             nexp, t1d);
 #if SF_HAVE_CVODE
     fprintf(f, "SUNDIALS CVODE %s (benchmark-only peer, bench/cvode_peer.h) integrates the same model by calling the "
@@ -541,6 +551,7 @@ int bench_dynamics(FILE *f, const char *dir)
     gsl_rng_free(rng);
     const double sdt = 1e-3;
     sf_scene sr = st;
+    sr.integrator = SF_INTEG_RK8PD;   /* the most accurate of ours */
     sr.rtol = 1e-12;
     sf_osc_result ref;
     double tref = run_time(&sr, fc, sdt, 1, &ref);
@@ -548,7 +559,8 @@ int bench_dynamics(FILE *f, const char *dir)
     (void)ref_ntrans;
     const double dts2[] = { 2e-3, 1e-3, 5e-4 }, rtols2[] = { 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10 };
     point p2[32];
-    size_t n2 = sweep_points(&st, fc, sdt, 1, dts2, 3, rtols2, 6, err_eq15, &ref, p2);
+    size_t n2 = sweep_points(&st, fc, sdt, 1, dts2, 3, rtols2, 6, K_RKCK, err_eq15, &ref, p2);
+    n2 += sweep_points(&st, fc, sdt, 1, NULL, 0, rtols2, 6, K_RK8PD, err_eq15, &ref, p2 + n2);
 #if SF_HAVE_CVODE
     /* CVODE's error at a given rtol is ~100x rk8pd's: two decades further */
     const double cvrt[] = { 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12 };
@@ -558,7 +570,7 @@ int bench_dynamics(FILE *f, const char *dir)
     fprintf(f, "\n### Table 1 stochastic baseline, converged reference\n\nError: Eq. 15 (sum of (x - x_ref)^2 dt, "
                "samples every 1e-3 s) against rk8pd at rtol = 1e-12 on the same field (%.2f s). Polar quadrature, "
                "12 rings. Single runs (the RK4 runs take seconds: the RK4 ratios below are far above the noise; the CVODE "
-               "ratios are re-timed). f evaluations: friction wrenches (quadratures over the disc), ours including the bisection steps of "
+               "ratios are re-timed). f evaluations: friction wrenches (quadratures over the disc), ours including the trial steps of "
                "the event location.\n\n", tref);
 #if SF_HAVE_CVODE
     fprintf(f, "SUNDIALS CVODE in the peer's 3-DOF mode on the same field: the solver's own slip right-hand side "
@@ -569,17 +581,21 @@ int bench_dynamics(FILE *f, const char *dir)
                "error-control scales of all 7 state components; x on the same sample grid, from CVODE's "
                "interpolant (CVodeGetDky) in slip and the exact belt motion in stick. Reference: %zu "
                "transitions. The peer computes what Eq. 15 needs only: our runs also locate the x extrema for "
-               "PV_x (bisection on vx = 0; on CVODE's interpolant that would add root-function evaluations, not "
+               "PV_x (Brent on vx = 0; on CVODE's interpolant that would add root-function evaluations, not "
                "steps).\n\n", ref_ntrans);
 #endif
     table(f, "Eq. 15 error [m^2 s]", p2, n2);
-    double rk = p2[1].time, erk = p2[1].err, a6 = cheapest(p2, n2, 0, 1e-6), arl = cheapest(p2, n2, 0, erk);
+    double rk = p2[1].time, erk = p2[1].err, a6 = cheapest(p2, n2, K_RKCK, 1e-6), arl = cheapest(p2, n2, K_RKCK, erk);
+    double b6 = cheapest(p2, n2, K_RK8PD, 1e-6), brl = cheapest(p2, n2, K_RK8PD, erk);
     fprintf(f, "\nTarget (issue 6): Eq. 15 error 1e-6 at least 10x faster than RK4 at dt = 1e-3 s reaching the same "
                "error. Measured: RK4 at dt = 1e-3 s reaches %.2e in %.2f s; the cheapest adaptive run reaching "
                "1e-6 takes %.2f s (ratio RK4/adaptive %.1f at the target error), and reaching RK4's own error "
                "%.2f s (ratio %.1f). RK4 at dt >= 2e-3 s loses the cycle: the relative speed crosses the "
                "slip-to-stick band (2 eps omega_n R wide) within one step, the paper's remark that a smaller "
-               "threshold needs a smaller step.\n", erk, rk, a6, rk / a6, arl, rk / arl);
+               "threshold needs a smaller step.\n\nThe adaptive stepper is Cash-Karp 4(5) (rkck) here, the plan's choice "
+               "for a quadrature wrench (6 stages a step against rk8pd's 13); rk8pd, the choice for a closed-form "
+               "wrench, needs %.2f s to reach 1e-6 and %.2f s to reach RK4's error: ratio rk8pd/rkck %.2f and %.2f "
+               "at equal error.\n", erk, rk, a6, rk / a6, arl, rk / arl, b6, brl, b6 / a6, brl / arl);
 #if SF_HAVE_CVODE
     const double tg[2] = { 1e-6, erk };
     double ratio[2];

@@ -13,7 +13,9 @@ args="sweep $tmp/s.scene --param l_over_R --values 1 --realisations 200 --thread
 pid=$!
 # kill once a few realisations are checkpointed (poll: no timing assumption)
 for _ in $(seq 1 600); do
-    [ "$(wc -l < "$tmp/cut.tsv.ckpt0" 2>/dev/null || echo 0)" -ge 6 ] && break
+    n=0
+    [ -f "$tmp/cut.tsv.ckpt0" ] && n=$(wc -l < "$tmp/cut.tsv.ckpt0")
+    [ "$n" -ge 6 ] && break
     sleep 0.05
 done
 kill -TERM $pid 2>/dev/null

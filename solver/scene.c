@@ -64,7 +64,7 @@ static const key_t_ keys[] = {
     { "ntheta", K_SIZE, OFF(ntheta), 0, 1, 1e5, 0, 0, "37", "1", NULL, "limit-surface theta samples" },
     { "npsi", K_SIZE, OFF(npsi), 0, 1, 1e5, 0, 0, "72", "1", NULL, "limit-surface psi samples" },
     /* dynamics */
-    { "integrator", K_ENUM, OFF(integrator), 0, 0, 0, 0, 0, "adaptive", "", "adaptive|rk4", "time stepper" },
+    { "integrator", K_ENUM, OFF(integrator), 0, 0, 0, 0, 0, "adaptive", "", "adaptive|rk4|rk8pd|rkck", "time stepper: adaptive = rk8pd for a closed-form wrench, rkck for a quadrature one; rk4 at fixed dt" },
     { "dof", K_ENUM, OFF(dof), 0, 0, 0, 0, 0, "3", "", "1|3", "degrees of freedom: 1 (Eqs. 3-4, uniform COF) or 3 (x, y, phi; Eq. 5)" },
     { "rtol", K_DOUBLE, OFF(rtol), 0, 0, 1, 1, 0, "1e-8", "1", NULL, "adaptive stepper relative tolerance" },
     { "t_skip", K_DOUBLE, OFF(t_skip), 0, 0, INF, 0, 0, "10", "s", NULL, "transient discarded before QoIs" },
