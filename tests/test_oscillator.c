@@ -166,6 +166,38 @@ static void leaves_strip(void **state)
     sf_cof_free(big);
 }
 
+/* Every stepper choice runs the same model: the 1-D Table 1 cycle from
+ * rk8pd, rkck (forced), adaptive and RK4 agree with each other. */
+static void stepper_choices(void **state)
+{
+    (void)state;
+    sf_scene s;
+    sf_scene_default(&s);
+    s.T = 30;
+    s.rtol = 1e-10;
+    s.cof = SF_COF_UNIFORM;
+    sf_cof *u;
+    assert_int_equal(sf_cof_alloc_uniform(s.mu_mean, &u), SF_SUCCESS);
+    const int integ[4] = { SF_INTEG_ADAPTIVE, SF_INTEG_RK8PD, SF_INTEG_RKCK, SF_INTEG_RK4 };
+    double pv[4];
+    for (int k = 0; k < 4; k++) {
+        sf_scene t = s;
+        t.integrator = integ[k];
+        char err[256] = "";
+        sf_osc *o;
+        sf_osc_result r;
+        assert_int_equal(sf_osc_alloc(&t, u, &o, err, sizeof err), SF_SUCCESS);
+        assert_int_equal(sf_osc_run(o, NULL, NULL, 0, &r, err, sizeof err), SF_SUCCESS);
+        pv[k] = r.pv_x;
+        sf_osc_result_free(&r);
+        sf_osc_free(o);
+    }
+    assert_close(pv[1], pv[0], 0);      /* adaptive with a closed form is rk8pd */
+    assert_close(pv[2], pv[0], 1e-8);
+    assert_close(pv[3], pv[0], 1e-8);
+    sf_cof_free(u);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -174,6 +206,7 @@ int main(void)
         cmocka_unit_test(eq15),
         cmocka_unit_test(periodogram),
         cmocka_unit_test(leaves_strip),
+        cmocka_unit_test(stepper_choices),
     };
     return cmocka_run_group_tests_name("oscillator", tests, NULL, NULL);
 }
