@@ -8,9 +8,11 @@
  * Slip: m x'' = -k x + Fx, m y'' = -k y + Fy, J phi'' = T (J = m R^2/2),
  * (Fx, Fy, T) the kinetic friction wrench on the disc (contact.h; for a
  * spatially constant COF the exact Contensou closed form, no quadrature;
- * 1-D: Fx = -mu_k m g sign(vx - v_b)).  Integrated with gsl_odeiv2:
- * rk8pd under an error control at `rtol` (adaptive) or classical RK4 at a
- * fixed step `dt`.
+ * 1-D: Fx = -mu_k m g sign(vx - v_b)).  Integrated with gsl_odeiv2 under
+ * an error control at `rtol`: `adaptive` takes rk8pd when the wrench is a
+ * closed form and Cash-Karp 4(5) when it is a quadrature (fewer stages per
+ * step pay when each costs a pass over the cells: make bench), or forced
+ * (`rk8pd`, `rkck`); or classical RK4 at a fixed step `dt`.
  * Stick: the disc moves with the belt; exact motion, no quadrature.  The
  * stick wrench is (k x, k y, 0) (Eq. 6) and stick holds while it is inside
  * the T = 0 section of the limit surface at the (fixed) belt point: the
@@ -19,8 +21,8 @@
  * time and located with GSL's Brent solver.
  * Slip -> stick: lambda = |(vx - v_b, vy)/(omega_n R), w/omega_n| (Sec.
  * 2.4) falls below eps_lambda AND the stick wrench is admissible; located
- * by bisection (single steps of the same stepper from the step's start) to
- * SF_OSC_TIME_TOL; then Eq. 12 (velocities (v_b, 0, 0)).
+ * by GSL's Brent solver on single steps of the same stepper from the step's
+ * start, to SF_OSC_TIME_TOL; then Eq. 12 (velocities (v_b, 0, 0)).
  * Stick -> slip: Eq. 14 with the jump magnitude eps_lambda omega_n R in
  * m/s (lambda = eps_lambda just after it; the paper's Eq. 14 writes
  * eps_lambda, a dimensionless number, as a speed).  With
@@ -76,7 +78,7 @@ typedef struct {
     /* energy: E(T) - E(0) - W - J, and its parts [J] */
     double energy_change, friction_work, jump_energy, energy_residual;
     /* cost */
-    unsigned long steps, rejected, bisections, wrench_evals;
+    unsigned long steps, rejected, bisections, wrench_evals;   /* bisections: trial steps of the event search */
     unsigned long off_strip;     /* accepted states whose contact patch left the COF strip */
     double x_min, x_max, y_absmax;
 } sf_osc_result;
