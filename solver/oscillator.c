@@ -246,8 +246,12 @@ typedef struct {
 
 static double ev_state(const ev_par *e, double h, double *ym)
 {
-    advance(e->o, e->t0, e->y0, h, ym);
-    (*e->count)++;
+    if (h == 0) {   /* Brent's left end: the step's start, no trial step */
+        memcpy(ym, e->y0, sizeof(double) * NSTATE);
+    } else {
+        advance(e->o, e->t0, e->y0, h, ym);
+        (*e->count)++;
+    }
     return e->kind == EV_STICK ? sf_osc_g_stick(e->o, e->t0 + h, ym) : ym[VX] * (e->y0[VX] > 0 ? 1 : -1);
 }
 
@@ -264,7 +268,7 @@ static int ev_holds(int kind, double v) { return kind == EV_STICK ? v < 0 : v <=
  * function of single steps of the same stepper from the step's start
  * (superlinear where bisection gains one bit per trial step), returning the
  * bracket end where the event holds, and its state in ye. */
-static double bisect(sf_osc *o, int kind, double t0, const double *y0, double t1, double *ye, unsigned long *count)
+static double locate_event(sf_osc *o, int kind, double t0, const double *y0, double t1, double *ye, unsigned long *count)
 {
     double lo = 0, hi = t1 - t0, tol = fmax(SF_OSC_TIME_TOL, 8 * DBL_EPSILON * fabs(t1));
     ev_par par = { o, kind, t0, y0, count };
@@ -573,13 +577,13 @@ int sf_osc_run(sf_osc *o, sf_osc_row_fn row, void *ctx, double sample_dt, sf_osc
         int to_stick = armed && g1 < 0;
         double ye[NSTATE], te = t;
         if (to_stick) {
-            te = bisect(o, EV_STICK, t0, y0, t, ye, &res->bisections);
+            te = locate_event(o, EV_STICK, t0, y0, t, ye, &res->bisections);
             t = te;
             memcpy(y, ye, sizeof ye);
         }
         if (y0[VX] * y[VX] < 0) {   /* an extremum of x inside the step */
             double yx[NSTATE];
-            double tx = bisect(o, EV_VX0, t0, y0, t, yx, &res->bisections), qx[3];
+            double tx = locate_event(o, EV_VX0, t0, y0, t, yx, &res->bisections), qx[3];
             wrench(o, tx, yx, qx);   /* at the extremum's own time: the belt has moved on by t */
             note(&a, yx[X], qx[0]);
             track(o, tx, res, yx);

@@ -186,3 +186,20 @@ void check_hist_free(check_hist *h)
     free(h->t); free(h->x); free(h->y); free(h->phi); free(h->vx); free(h->Fx); free(h->stick);
     memset(h, 0, sizeof *h);
 }
+
+/* One COF realisation of the scene (kept across runs that must share it). */
+sf_cof *check_case_cof(const sf_case *c, const sf_scene *s, sf_result *r)
+{
+    char err[256] = "";
+    sf_cof_plan *p;
+    sf_cof *cof = NULL;
+    if (sf_cof_plan_alloc(s, &p, err, sizeof err)) {
+        sf_note(r, "**Cannot plan the COF:** %s", err);
+        return NULL;
+    }
+    gsl_rng *rng = sf_case_rng(c);
+    sf_cof_plan_draw(p, rng, &cof);
+    gsl_rng_free(rng);
+    sf_cof_plan_free(p);
+    return cof;
+}

@@ -52,6 +52,11 @@ typedef struct {
 void check_hist_row(void *ctx, const sf_osc_row *row);
 void check_hist_free(check_hist *h);
 
+/* One COF realisation of the scene from the case's stream (kept across
+ * runs that must share it); NULL with the reason noted when the plan is
+ * refused. */
+sf_cof *check_case_cof(const sf_case *c, const sf_scene *s, sf_result *r);
+
 int check_osc_run(const sf_scene *s, gsl_rng *rng, const sf_cof *cof, double sample_dt, sf_osc_result *res,
                   sf_osc_row_fn row, void *ctx, sf_result *r);
 

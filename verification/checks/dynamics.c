@@ -18,23 +18,6 @@
 #include <gsl/gsl_math.h>
 #include <gsl/gsl_statistics_double.h>
 
-/* One COF realisation of the scene (kept across runs that must share it). */
-static sf_cof *draw_cof(const sf_case *c, const sf_scene *s, sf_result *r)
-{
-    char err[256] = "";
-    sf_cof_plan *p;
-    sf_cof *cof = NULL;
-    if (sf_cof_plan_alloc(s, &p, err, sizeof err)) {
-        sf_note(r, "**Cannot plan the COF:** %s", err);
-        return NULL;
-    }
-    gsl_rng *rng = sf_case_rng(c);
-    sf_cof_plan_draw(p, rng, &cof);
-    gsl_rng_free(rng);
-    sf_cof_plan_free(p);
-    return cof;
-}
-
 /* Fig. 7: Eq. 15 error against the eps_lambda = 1e-5 reference over T,
  * same field realisation; it must fall monotonically with eps, at an
  * observed order of at least `tolerance` (x errors are first order in eps,
@@ -45,7 +28,7 @@ static int chk_eps_study(const sf_case *c, sf_result *r)
     size_t K = s0->sweep.n;
     if (K < 3)
         return SF_EINVAL;
-    sf_cof *cof = draw_cof(c, s0, r);
+    sf_cof *cof = check_case_cof(c, s0, r);
     if (!cof)
         return SF_EFAIL;
     const double dt = 1e-3;
@@ -130,7 +113,7 @@ static void jump_row(void *ctx, const sf_osc_row *row)
 static int chk_velocity_jump(const sf_case *c, sf_result *r)
 {
     const sf_scene *s0 = &c->scene;
-    sf_cof *cof = draw_cof(c, s0, r);
+    sf_cof *cof = check_case_cof(c, s0, r);
     if (!cof)
         return SF_EFAIL;
     sf_scene on = *s0, off = *s0;
@@ -264,7 +247,7 @@ static int chk_baseline(const sf_case *c, sf_result *r)
 static int chk_exact_section(const sf_case *c, sf_result *r)
 {
     const sf_scene *s0 = &c->scene;
-    sf_cof *cof = draw_cof(c, s0, r);
+    sf_cof *cof = check_case_cof(c, s0, r);
     if (!cof)
         return SF_EFAIL;
     sf_scene se = *s0, sc = *s0;

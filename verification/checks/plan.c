@@ -54,7 +54,7 @@ static int boundary_point(const sf_scene *s, sf_result *r, double *dq, double *d
     char err[256] = "";
     sf_cof_plan *p;
     int rc = sf_cof_plan_alloc(s, &p, err, sizeof err);
-    if (rc && rc != SF_ECAP) {
+    if (rc) {
         sf_note(r, "**Plan failed:** %s", err);
         return rc;
     }
@@ -64,7 +64,7 @@ static int boundary_point(const sf_scene *s, sf_result *r, double *dq, double *d
     sf_cof_plan_free(p);
     sf_scene full = *s;
     full.shortcuts = 0;
-    if ((rc = sf_cof_plan_alloc(&full, &p, err, sizeof err)) && rc != SF_ECAP) {
+    if ((rc = sf_cof_plan_alloc(&full, &p, err, sizeof err))) {
         sf_note(r, "**Full plan failed:** %s", err);
         return rc;
     }
@@ -178,18 +178,10 @@ static void count_row(void *ctx, const sf_osc_row *row)
 static int chk_history_skip(const sf_case *c, sf_result *r)
 {
     const sf_scene *s = &c->scene;
-    gsl_rng *rng = sf_case_rng(c);
-    sf_cof_plan *p;
-    char err[256] = "";
-    sf_cof *cof = NULL;
-    int rc = sf_cof_plan_alloc(s, &p, err, sizeof err);
-    if (rc && rc != SF_ECAP)
-        return rc;
-    rc = sf_cof_plan_draw(p, rng, &cof);
-    sf_cof_plan_free(p);
-    gsl_rng_free(rng);
-    if (rc)
-        return rc;
+    sf_cof *cof = check_case_cof(c, s, r);
+    int rc;
+    if (!cof)
+        return SF_EINVAL;
     sf_osc_result full, sum;
     row_count rows = { 0 };
     if ((rc = check_osc_run(s, NULL, cof, 1e-3, &full, count_row, &rows, r))) {
@@ -236,8 +228,10 @@ static int chk_reuse(const sf_case *c, sf_result *r)
     char err[256] = "";
     sf_cof_plan *kept;
     int rc = sf_cof_plan_alloc(s, &kept, err, sizeof err);
-    if (rc && rc != SF_ECAP)
+    if (rc) {
+        sf_note(r, "**Plan failed:** %s", err);
         return rc;
+    }
     const sf_cof_plan_info *in = sf_cof_plan_get_info(kept);
     if (in->kind != SF_COF_FIELD) {
         sf_cof_plan_free(kept);
@@ -252,8 +246,8 @@ static int chk_reuse(const sf_case *c, sf_result *r)
         sf_cof_plan *fresh = NULL;
         sf_cof *a = NULL, *b = NULL;
         rc = sf_cof_plan_draw(kept, g1, &a);
-        if (!rc && (rc = sf_cof_plan_alloc(s, &fresh, err, sizeof err)) == SF_ECAP)
-            rc = SF_SUCCESS;
+        if (!rc)
+            rc = sf_cof_plan_alloc(s, &fresh, err, sizeof err);
         if (!rc)
             rc = sf_cof_plan_draw(fresh, g2, &b);
         for (size_t j = 0; !rc && j < in->ny; j++)
