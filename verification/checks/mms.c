@@ -98,9 +98,10 @@ typedef struct {
     size_t gm, gn;
     double gx0, gy0, gdx, gdy;
     const double *grid;
-    /* quadrature: nr Gauss-Legendre radii (r, weight r dr) x na angles */
+    /* quadrature: nr Gauss-Legendre radii x na angles, as nodes (x, y)
+     * [m] from the centre and weights dS = r dr dtheta [m^2] */
     size_t nr, na;
-    double *r, *wr;
+    double *x, *y, *dS;
     unsigned long evals;
 } mms_ref;
 
@@ -109,19 +110,34 @@ static void ref_quad(mms_ref *q, size_t nr, size_t na)
     gsl_integration_glfixed_table *gl = gsl_integration_glfixed_table_alloc(nr);
     if (!gl)
         exit(3);
-    free(q->r);
-    free(q->wr);
-    q->r = check_alloc(nr * sizeof *q->r);
-    q->wr = check_alloc(nr * sizeof *q->wr);
+    free(q->x);
+    free(q->y);
+    free(q->dS);
+    q->x = check_alloc(nr * na * sizeof *q->x);
+    q->y = check_alloc(nr * na * sizeof *q->y);
+    q->dS = check_alloc(nr * na * sizeof *q->dS);
+    double dth = 2 * M_PI / (double)na;
     for (size_t j = 0; j < nr; j++) {
-        double x, w;
-        gsl_integration_glfixed_point(0, q->R, j, &x, &w, gl);
-        q->r[j] = x;
-        q->wr[j] = w * x;   /* dS = r dr dtheta */
+        double r, w;
+        gsl_integration_glfixed_point(0, q->R, j, &r, &w, gl);
+        for (size_t a = 0; a < na; a++) {
+            double th = ((double)a + 0.5) * dth;
+            q->x[j * na + a] = r * cos(th);
+            q->y[j * na + a] = r * sin(th);
+            q->dS[j * na + a] = w * r * dth;   /* dS = r dr dtheta */
+        }
     }
     gsl_integration_glfixed_table_free(gl);
     q->nr = nr;
     q->na = na;
+}
+
+static void ref_quad_free(mms_ref *q)
+{
+    free(q->x);
+    free(q->y);
+    free(q->dS);
+    q->x = q->y = q->dS = NULL;
 }
 
 /* mu_s at belt point (xb, yb): the uniform value, or this check's own
@@ -147,18 +163,16 @@ static double ref_mu(const mms_ref *q, double xb, double yb)
  * P = m g / (pi R^2) (Eq. 7), H_k = mu_k_ratio H_s (Eq. 1). */
 static void ref_eq8(mms_ref *q, double xb, double yb, double xd, double yd, double pd, double Fs[3])
 {
-    double P = q->N / (M_PI * q->R * q->R), dth = 2 * M_PI / (double)q->na, u = xd - q->v_b;
+    double P = q->N / (M_PI * q->R * q->R), u = xd - q->v_b;
     double fx = 0, fy = 0, ts = 0;
     q->evals++;
-    for (size_t j = 0; j < q->nr; j++) {
-        for (size_t a = 0; a < q->na; a++) {
-            double th = ((double)a + 0.5) * dth, x = q->r[j] * cos(th), y = q->r[j] * sin(th);
-            double den = sqrt((u - pd * y) * (u - pd * y) + (yd + pd * x) * (yd + pd * x));
-            double dS = q->wr[j] * dth, H = q->muk_ratio * ref_mu(q, xb + x, yb + y);
-            fx += P * H * (u - pd * y) / den * dS;
-            fy += P * H * (yd + pd * x) / den * dS;
-            ts += P * H * (pd * (x * x + y * y) + x * yd - y * u) / den * dS;
-        }
+    for (size_t i = 0; i < q->nr * q->na; i++) {
+        double x = q->x[i], y = q->y[i];
+        double den = sqrt((u - pd * y) * (u - pd * y) + (yd + pd * x) * (yd + pd * x));
+        double H = q->muk_ratio * ref_mu(q, xb + x, yb + y), a = P * H * q->dS[i] / den;
+        fx += a * (u - pd * y);
+        fy += a * (yd + pd * x);
+        ts += a * (pd * (x * x + y * y) + x * yd - y * u);
     }
     Fs[0] = fx;
     Fs[1] = fy;
@@ -297,7 +311,7 @@ static int chk_mms_slip(const sf_case *c, sf_result *r)
     double selfd = 0, solvd = 0, Fmag = 0, Tmag = 0, Fy_max = 0, eps_min = INFINITY;
     double tf[NFLOOR], dsol[NFLOOR], dself[NFLOOR];
     mms_ref q2 = q;
-    q2.r = q2.wr = NULL;
+    q2.x = q2.y = q2.dS = NULL;
     ref_quad(&q2, 2 * REF_NR, 2 * REF_NA);
     ref_quad(&q, REF_NR, REF_NA);
     double fs = s->mu_mean * q.N, ts = fs * s->R;   /* force and torque scales [N], [N m] */
@@ -318,9 +332,7 @@ static int chk_mms_slip(const sf_case *c, sf_result *r)
         double u = hypot(y[SF_OSC_VX] - s->v_b, y[SF_OSC_VY]);
         eps_min = fmin(eps_min, u / (fabs(y[SF_OSC_W]) * s->R));
     }
-    free(q2.r);
-    free(q2.wr);
-    q2.r = q2.wr = NULL;
+    ref_quad_free(&q2);
     sf_osc_free(o0);
     /* how a wrench difference d [N] propagates to the state at T: the
      * disturbance d/m integrated twice, (T^2/2) d/m, a bound for the
@@ -342,8 +354,7 @@ static int chk_mms_slip(const sf_case *c, sf_result *r)
         sf_osc *o = NULL;
         if (sf_osc_alloc(&sk, cof, &o, err, sizeof err)) {
             sf_note(r, "sf_osc_alloc (%s): %s", names[k], err);
-            free(q.r);
-            free(q.wr);
+            ref_quad_free(&q);
             sf_cof_free(cof);
             return SF_EFAIL;
         }
@@ -428,8 +439,7 @@ static int chk_mms_slip(const sf_case *c, sf_result *r)
     }
     sf_plot_series(pf, "solver vs reference", SF_STYLE_LINESPOINTS, NFLOOR, tf, dsol);
     sf_plot_series(pf, "reference vs its doubled self", SF_STYLE_LINESPOINTS, NFLOOR, tf, dself);
-    free(q.r);
-    free(q.wr);
+    ref_quad_free(&q);
     sf_cof_free(cof);
     return SF_SUCCESS;
 }
