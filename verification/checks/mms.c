@@ -324,13 +324,14 @@ static int chk_mms_slip(const sf_case *c, sf_result *r)
         tf[i] = t;
         dself[i] = fmax(fmax(fabs(Q1[0] - Q2[0]), fabs(Q1[1] - Q2[1])) / fs, fabs(Q1[2] - Q2[2]) / ts);
         dsol[i] = fmax(fmax(fabs(qs[0] - Q2[0]), fabs(qs[1] - Q2[1])) / fs, fabs(qs[2] - Q2[2]) / ts);
-        selfd = isnan(dself[i]) ? NAN : fmax(selfd, dself[i]);
-        solvd = isnan(dsol[i]) ? NAN : fmax(solvd, dsol[i]);
+        selfd = isnan(selfd) || isnan(dself[i]) ? NAN : fmax(selfd, dself[i]);   /* NaN sticks: it fails the row */
+        solvd = isnan(solvd) || isnan(dsol[i]) ? NAN : fmax(solvd, dsol[i]);
         Fmag = fmax(Fmag, hypot(Q2[0], Q2[1]));
         Tmag = fmax(Tmag, fabs(Q2[2]));
         Fy_max = fmax(Fy_max, fabs(Q2[1]) / fs);
         double u = hypot(y[SF_OSC_VX] - s->v_b, y[SF_OSC_VY]);
-        eps_min = fmin(eps_min, u / (fabs(y[SF_OSC_W]) * s->R));
+        double e = u / (fabs(y[SF_OSC_W]) * s->R);
+        eps_min = isnan(eps_min) || isnan(e) ? NAN : fmin(eps_min, e);
     }
     ref_quad_free(&q2);
     sf_osc_free(o0);
@@ -378,7 +379,7 @@ static int chk_mms_slip(const sf_case *c, sf_result *r)
         }
         sf_osc_free(o);
         size_t n = hl->n;
-        finest_min = isnan(es[n - 1]) ? NAN : fmin(finest_min, es[n - 1]);
+        finest_min = isnan(finest_min) || isnan(es[n - 1]) ? NAN : fmin(finest_min, es[n - 1]);
         double slope = fit_slope(hs, es, n), last = log(es[n - 2] / es[n - 1]) / log(hs[n - 2] / hs[n - 1]);
         char qn[160], line[1024];
         snprintf(qn, sizeof qn, "%s: observed order (least squares, h = %g..%g s), not below %g - %g", names[k],
