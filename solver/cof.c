@@ -118,6 +118,21 @@ double sf_cof_eval(const sf_cof *c, double xb, double yb)
     return a + ty * (b - a);
 }
 
+int sf_cof_grid_view(const sf_cof *c, size_t *m, size_t *n, double *x0, double *y0, double *dx, double *dy,
+                     const double **mu)
+{
+    if (!c || c->kind != SF_COF_FIELD)
+        return SF_EINVAL;
+    *m = c->m;
+    *n = c->n;
+    *x0 = c->x0;
+    *y0 = c->y0;
+    *dx = c->dx;
+    *dy = c->dy;
+    *mu = c->grid;
+    return SF_SUCCESS;
+}
+
 /* ---- plans */
 
 struct sf_cof_plan {

@@ -121,6 +121,27 @@ enum { SF_OSC_X, SF_OSC_Y, SF_OSC_PHI, SF_OSC_VX, SF_OSC_VY, SF_OSC_W, SF_OSC_WO
  * as the plan decided); q (may be NULL) receives the wrench (Fx, Fy, T). */
 void sf_osc_slip_rhs(sf_osc *o, double t, const double *y, double *f, double q[3]);
 
+/* ---- Code verification (manufactured solutions, cases/mms).
+ *
+ * An optional source term added to the slip equations: fn(ctx, t, S)
+ * fills S = (S_x [N], S_y [N], S_phi [N m]), added to the right of rows
+ * x, y, phi of Eq. 5 (m x'' = -k x + Fx + S_x, m y'' = -k y + Fy + S_y,
+ * J phi'' = T + S_phi).  It is not friction: the work row and the wrench q
+ * sf_osc_slip_rhs returns leave it out.  fn = NULL removes it; a plan
+ * without a source computes exactly as before (same bits).  Meant for
+ * sf_osc_slip_integrate: sf_osc_run would also see it, but a manufactured
+ * source has no meaning across stick phases. */
+typedef void (*sf_osc_source_fn)(void *ctx, double t, double S[3]);
+void sf_osc_set_source(sf_osc *o, sf_osc_source_fn fn, void *ctx);
+
+/* The slip equations alone (no events, no stick, no error control) from
+ * y0 at t0 to t1 > t0 with n = ceil((t1 - t0)/h) equal fixed steps of
+ * (t1 - t0)/n, by gsl_odeiv2_step_apply of the plan's stepper (rk4, rkck,
+ * rk8pd; adaptive: the one it chose); y0, y1 hold SF_OSC_NSTATE values and
+ * may alias.  For observed orders.  Returns SF_SUCCESS, SF_EINVAL (t1 <=
+ * t0, h <= 0, more than 1e8 steps) or SF_EFAIL (non-finite state). */
+int sf_osc_slip_integrate(sf_osc *o, double t0, const double *y0, double t1, double h, double *y1);
+
 /* The error control's scale of each state component (the problem's own
  * scales: x_s = (mu_mean + mu_std) m g / k for lengths, x_s omega_n for
  * speeds, x_s / R and x_s omega_n / R for angle and spin,

@@ -9,6 +9,7 @@
 
 #include <stdlib.h>
 #include <string.h>
+#include <gsl/gsl_errno.h>
 #include <gsl/gsl_math.h>
 
 static void closed_form_table1(void **state)
@@ -198,6 +199,88 @@ static void stepper_choices(void **state)
     sf_cof_free(u);
 }
 
+/* The manufactured-source hook (cases/mms): the source reaches rows x, y
+ * and phi as S/m, S/m, S/J and nothing else; removing it restores the
+ * plan's bits; the fixed-step slip integrator refuses bad arguments and
+ * reports a non-finite state. */
+static void src_const(void *ctx, double t, double S[3])
+{
+    (void)t;
+    memcpy(S, ctx, 3 * sizeof *S);
+}
+
+static void source_hook(void **state)
+{
+    (void)state;
+    sf_scene s;
+    sf_scene_default(&s);
+    s.cof = SF_COF_UNIFORM;
+    s.integrator = SF_INTEG_RK4;
+    s.T = 20;
+    sf_cof *u;
+    assert_int_equal(sf_cof_alloc_uniform(s.mu_mean, &u), SF_SUCCESS);
+    char err[256] = "";
+    sf_osc *o;
+    assert_int_equal(sf_osc_alloc(&s, u, &o, err, sizeof err), SF_SUCCESS);
+    double y[SF_OSC_NSTATE] = { 0.01, -0.02, 0.3, 0.05, 0.04, 0.2, 0 }, f0[SF_OSC_NSTATE], f1[SF_OSC_NSTATE];
+    double q0[3], q1[3], S[3] = { 1.5, -2.0, 0.25 }, J = 0.5 * s.m * s.R * s.R;
+    sf_osc_slip_rhs(o, 1.0, y, f0, q0);
+    sf_osc_set_source(o, src_const, S);
+    sf_osc_slip_rhs(o, 1.0, y, f1, q1);
+    for (int i = 0; i < 3; i++)
+        assert_close(q1[i], q0[i], 0);   /* the source is not friction */
+    assert_close(f1[SF_OSC_X], f0[SF_OSC_X], 0);
+    assert_close(f1[SF_OSC_Y], f0[SF_OSC_Y], 0);
+    assert_close(f1[SF_OSC_PHI], f0[SF_OSC_PHI], 0);
+    assert_close(f1[SF_OSC_VX] - f0[SF_OSC_VX], S[0] / s.m, 1e-15);
+    assert_close(f1[SF_OSC_VY] - f0[SF_OSC_VY], S[1] / s.m, 1e-15);
+    assert_close(f1[SF_OSC_W] - f0[SF_OSC_W], S[2] / J, 1e-15);
+    assert_close(f1[SF_OSC_WORK], f0[SF_OSC_WORK], 0);
+    /* fixed steps: bad arguments, a non-finite state */
+    double y1[SF_OSC_NSTATE];
+    assert_int_equal(sf_osc_slip_integrate(o, 1, y, 1, 0.1, y1), SF_EINVAL);
+    assert_int_equal(sf_osc_slip_integrate(o, 0, y, 1, 0, y1), SF_EINVAL);
+    assert_int_equal(sf_osc_slip_integrate(o, 0, y, 1, 0.3, y1), SF_SUCCESS);
+    double bad[3] = { NAN, 0, 0 };
+    sf_osc_set_source(o, src_const, bad);
+    /* a NaN state reaches GSL's elliptic integrals: the CLI runs with
+     * GSL's error handler off, and so does this call */
+    gsl_error_handler_t *old = gsl_set_error_handler_off();
+    assert_int_equal(sf_osc_slip_integrate(o, 0, y, 1, 0.3, y1), SF_EFAIL);
+    gsl_set_error_handler(old);
+    /* removed: the run is the plan's own, bit for bit */
+    sf_osc_set_source(o, NULL, NULL);
+    sf_osc_result a, b;
+    assert_int_equal(sf_osc_run(o, NULL, NULL, 0, &a, err, sizeof err), SF_SUCCESS);
+    sf_osc *o2;
+    assert_int_equal(sf_osc_alloc(&s, u, &o2, err, sizeof err), SF_SUCCESS);
+    assert_int_equal(sf_osc_run(o2, NULL, NULL, 0, &b, err, sizeof err), SF_SUCCESS);
+    assert_int_equal(a.ntrans, b.ntrans);
+    assert_memory_equal(a.trans_t, b.trans_t, a.ntrans * sizeof *a.trans_t);
+    assert_close(a.friction_work, b.friction_work, 0);
+    sf_osc_result_free(&a);
+    sf_osc_result_free(&b);
+    sf_osc_free(o2);
+    sf_osc_free(o);
+    /* the grid view: refused for a non-grid COF, the values as given */
+    size_t m, n;
+    double x0, y0, dx, dy, g[6] = { 1, 2, 3, 4, 5, 6 };
+    const double *mu;
+    assert_int_equal(sf_cof_grid_view(u, &m, &n, &x0, &y0, &dx, &dy, &mu), SF_EINVAL);
+    sf_cof *gr;
+    assert_int_equal(sf_cof_alloc_grid(3, 2, -1, 2, 0.5, 0.25, g, &gr), SF_SUCCESS);
+    assert_int_equal(sf_cof_grid_view(gr, &m, &n, &x0, &y0, &dx, &dy, &mu), SF_SUCCESS);
+    assert_int_equal(m, 3);
+    assert_int_equal(n, 2);
+    assert_close(x0, -1, 0);
+    assert_close(y0, 2, 0);
+    assert_close(dx, 0.5, 0);
+    assert_close(dy, 0.25, 0);
+    assert_memory_equal(mu, g, sizeof g);
+    sf_cof_free(gr);
+    sf_cof_free(u);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -207,6 +290,7 @@ int main(void)
         cmocka_unit_test(periodogram),
         cmocka_unit_test(leaves_strip),
         cmocka_unit_test(stepper_choices),
+        cmocka_unit_test(source_hook),
     };
     return cmocka_run_group_tests_name("oscillator", tests, NULL, NULL);
 }
