@@ -138,6 +138,7 @@ test-run: $(TESTS) $(TESTS_SAN) $(BUILD)/slipfield
 	 sh scripts/isolation.sh $(BUILD)/slipfield || st=1; \
 	 sh scripts/resume-test.sh $(BUILD)/slipfield || st=1; \
 	 sh scripts/results-test.sh $(BUILD)/slipfield || st=1; \
+	 sh scripts/drift-test.sh || st=1; \
 	 sh scripts/install-test.sh || st=1; \
 	 sh scripts/catalogue.sh $(BUILD)/slipfield $(BUILD)/catalogue.md && \
 	 if cmp -s $(BUILD)/catalogue.md cases/README.md; then echo "catalogue: cases/README.md up to date"; \

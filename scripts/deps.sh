@@ -18,9 +18,10 @@ else
         pkg-config --exists "$m" 2>/dev/null || missing="$missing $m"
     done
     command -v gnuplot >/dev/null 2>&1 || missing="$missing gnuplot"
+    python3 -c 'import jsonschema' 2>/dev/null || missing="$missing python3-jsonschema"
     if [ -n "$missing" ]; then
         echo "slipfield: missing:$missing" >&2
-        echo "slipfield: install GSL, FFTW3, CMocka, gnuplot and pkg-config with your package manager." >&2
+        echo "slipfield: install GSL, FFTW3, CMocka, cmark-gfm, jansson, gnuplot, pkg-config and Python jsonschema with your package manager." >&2
         exit 1
     fi
     exit 0
