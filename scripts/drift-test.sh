@@ -29,7 +29,7 @@ for m in $list; do
     cases=$(sed -n 's/^cases: //p' "$m")
     dir="$work/$name"
     mkdir -p "$dir/build"
-    git ls-files -co --exclude-standard | grep -v '^reports/' | tar -cf - -T - | tar -xf - -C "$dir"
+    git ls-files -co --exclude-standard | grep -v '^reports/' | while read -r f; do [ -e "$f" ] && echo "$f"; done | tar -cf - -T - | tar -xf - -C "$dir"
     # the objects keep their times, so make rebuilds only what the defect touches
     cp -a build/rel build/gen build/libslipfield.a build/libsfverify.a build/slipfield "$dir/build/"
     n=$(FIND="$find" perl -0ne '$c = () = /\Q$ENV{FIND}\E/g; print $c' "$dir/$file" 2>/dev/null || echo 0)
