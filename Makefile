@@ -16,8 +16,10 @@ TIER ?= quick
 CASES ?= $(sort $(wildcard cases/*/*.md))
 SEED ?=
 VERIFY_FLAGS ?=
+# make verify BASELINE=old/results.json: also write reports/drift.md
+BASELINE ?=
 
-PKGS := gsl fftw3
+PKGS := gsl fftw3 jansson
 GIT_REV := $(shell git rev-parse --short HEAD 2>/dev/null || echo unknown)
 WARN := -Wall -Wextra -Wpedantic -Werror
 BASE_CFLAGS := -std=c11 -D_POSIX_C_SOURCE=200809L $(WARN) -Isolver -Iverification -Icli -Itests -I$(BUILD)/gen -fopenmp $(MPI_FLAGS)
@@ -27,7 +29,7 @@ _rev := $(shell mkdir -p $(BUILD)/gen && echo '#define SF_GIT_REV "$(GIT_REV)"' 
           (cmp -s $(BUILD)/gen/sf_rev.h.new $(BUILD)/gen/sf_rev.h || mv $(BUILD)/gen/sf_rev.h.new $(BUILD)/gen/sf_rev.h))
 OPT ?= -O2 -g
 PKG_CFLAGS = $(shell pkg-config --cflags $(PKGS) 2>/dev/null)
-PKG_LIBS = $(shell pkg-config --libs $(PKGS) 2>/dev/null || echo -lgsl -lgslcblas -lfftw3) -lm -fopenmp
+PKG_LIBS = $(shell pkg-config --libs $(PKGS) 2>/dev/null || echo -lgsl -lgslcblas -lfftw3 -ljansson) -lm -fopenmp
 # cmark-gfm renders the HTML reports (its table extension has no .pc file)
 HTML_CFLAGS = $(shell pkg-config --cflags libcmark-gfm 2>/dev/null)
 HTML_LIBS = -lcmark-gfm-extensions $(shell pkg-config --libs libcmark-gfm 2>/dev/null || echo -lcmark-gfm)
@@ -50,7 +52,7 @@ CLI_OBJ := $(call objs,rel,$(CLI_SRC))
 TESTS := $(patsubst tests/%.c,$(BUILD)/rel/tests/%,$(TEST_SRC))
 TESTS_SAN := $(patsubst tests/%.c,$(BUILD)/san/tests/%,$(TEST_SRC))
 
-.PHONY: all deps verify test bench mutants clean help report-test fuzz valgrind catalogue mpi-test
+.PHONY: all deps verify test bench mutants clean help report-test fuzz valgrind catalogue mpi-test install uninstall
 .SECONDARY:
 .DEFAULT_GOAL := all
 
@@ -64,6 +66,9 @@ help:
 	@echo "make MPI=1    an MPI build in build-mpi/ (mpirun -np P build-mpi/slipfield sweep ...)"
 	@echo "make mpi-test the MPI sweep gives the serial bytes (installs OpenMPI if missing)"
 	@echo "make report-test  JUnit XML schema + headless-Chromium test of reports/ (after test and verify)"
+	@echo "make install  PREFIX=/usr/local (DESTDIR honoured): libslipfield (.a, .so), headers, slipfield.pc, slipfield, slipfield(1)"
+	@echo "make uninstall  remove what make install put there (same PREFIX and DESTDIR)"
+	@echo "make verify BASELINE=old/results.json   also list what changed since that run (reports/drift.md)"
 	@echo "make deps     install libgsl-dev libfftw3-dev libcmocka-dev gnuplot-nox pkg-config libcmark-gfm(-extensions)-dev when missing"
 
 deps:
@@ -132,6 +137,9 @@ test-run: $(TESTS) $(TESTS_SAN) $(BUILD)/slipfield
 	 sh scripts/bad-input.sh $(BUILD)/slipfield || st=1; \
 	 sh scripts/isolation.sh $(BUILD)/slipfield || st=1; \
 	 sh scripts/resume-test.sh $(BUILD)/slipfield || st=1; \
+	 sh scripts/results-test.sh $(BUILD)/slipfield || st=1; \
+	 sh scripts/drift-test.sh || st=1; \
+	 sh scripts/install-test.sh || st=1; \
 	 sh scripts/catalogue.sh $(BUILD)/slipfield $(BUILD)/catalogue.md && \
 	 if cmp -s $(BUILD)/catalogue.md cases/README.md; then echo "catalogue: cases/README.md up to date"; \
 	 else echo "catalogue: cases/README.md is stale: run make catalogue" >&2; st=1; fi; exit $$st
@@ -141,7 +149,7 @@ verify: all
 ifneq ($(REPEAT),)
 	@sh scripts/false-alarm.sh $(REPEAT) $(TIER) $(JOBS)
 else
-	@$(BUILD)/slipfield verify --jobs $(JOBS) --tier $(TIER) $(if $(SEED),--seed $(SEED)) $(VERIFY_FLAGS) $(CASES)
+	@$(BUILD)/slipfield verify --jobs $(JOBS) --tier $(TIER) $(if $(SEED),--seed $(SEED)) $(if $(BASELINE),--baseline $(BASELINE)) $(VERIFY_FLAGS) $(CASES)
 endif
 
 # after `make test` and `make verify`: JUnit schema and the browser test
@@ -186,3 +194,57 @@ mpi-test:
 	@$(MAKE) --no-print-directory all
 	@$(MAKE) --no-print-directory MPI=1 all
 	@sh scripts/mpi-test.sh build/slipfield build-mpi/slipfield
+
+# ---- make install / uninstall -------------------------------------------
+# The solver library, static (the objects every test and case uses) and
+# shared (the same sources compiled again with -fPIC in $(BUILD)/pic/), its
+# public headers under include/slipfield/, slipfield.pc, the slipfield
+# command and its man page (generated from --help and `help scene`).
+PREFIX ?= /usr/local
+DESTDIR ?=
+BINDIR = $(PREFIX)/bin
+LIBDIR = $(PREFIX)/lib
+INCLUDEDIR = $(PREFIX)/include
+MANDIR = $(PREFIX)/share/man
+PCDIR = $(LIBDIR)/pkgconfig
+SF_VERSION := $(shell sed -n 's/^\#define SF_VERSION "\(.*\)"/\1/p' verification/version.h)
+SO_MAJOR := $(firstword $(subst ., ,$(SF_VERSION)))
+SONAME := libslipfield.so.$(SO_MAJOR)
+SHLIB := libslipfield.so.$(SF_VERSION)
+PUBLIC_HEADERS := $(sort $(wildcard solver/*.h))
+LIB_PKGS := gsl fftw3
+LIB_LIBS = $(shell pkg-config --libs $(LIB_PKGS) 2>/dev/null || echo -lgsl -lgslcblas -lfftw3) -lm -fopenmp
+
+$(BUILD)/pic/%.o: %.c
+	@mkdir -p $(dir $@)
+	$(CC) $(BASE_CFLAGS) $(OPT) -fPIC $(PKG_CFLAGS) -MMD -MP -c $< -o $@
+
+# -z defs: the shared library must not lean on symbols of the harness or CLI
+$(BUILD)/$(SHLIB): $(call objs,pic,$(SOLVER_SRC))
+	$(CC) -shared -Wl,-soname,$(SONAME) -Wl,-z,defs $(OPT) $^ -o $@ $(LIB_LIBS)
+
+$(BUILD)/slipfield.1: $(BUILD)/slipfield scripts/man.sh
+	sh scripts/man.sh $(BUILD)/slipfield $(SF_VERSION) > $@.tmp && mv $@.tmp $@
+
+.PHONY: install-files
+install: all
+	@$(MAKE) --no-print-directory install-files
+
+install-files: $(BUILD)/slipfield $(BUILD)/libslipfield.a $(BUILD)/$(SHLIB) $(BUILD)/slipfield.1
+	install -d $(DESTDIR)$(BINDIR) $(DESTDIR)$(LIBDIR) $(DESTDIR)$(PCDIR) $(DESTDIR)$(INCLUDEDIR)/slipfield $(DESTDIR)$(MANDIR)/man1
+	install -m 755 $(BUILD)/slipfield $(DESTDIR)$(BINDIR)/slipfield
+	install -m 644 $(BUILD)/libslipfield.a $(DESTDIR)$(LIBDIR)/libslipfield.a
+	install -m 755 $(BUILD)/$(SHLIB) $(DESTDIR)$(LIBDIR)/$(SHLIB)
+	ln -sf $(SHLIB) $(DESTDIR)$(LIBDIR)/$(SONAME)
+	ln -sf $(SONAME) $(DESTDIR)$(LIBDIR)/libslipfield.so
+	install -m 644 $(PUBLIC_HEADERS) $(DESTDIR)$(INCLUDEDIR)/slipfield/
+	install -m 644 $(BUILD)/slipfield.1 $(DESTDIR)$(MANDIR)/man1/slipfield.1
+	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@LIBDIR@|$(LIBDIR)|' -e 's|@INCLUDEDIR@|$(INCLUDEDIR)|' \
+	    -e 's|@VERSION@|$(SF_VERSION)|' slipfield.pc.in > $(DESTDIR)$(PCDIR)/slipfield.pc
+	chmod 644 $(DESTDIR)$(PCDIR)/slipfield.pc
+
+uninstall:
+	rm -f $(DESTDIR)$(BINDIR)/slipfield $(DESTDIR)$(LIBDIR)/libslipfield.a $(DESTDIR)$(LIBDIR)/$(SHLIB) \
+	      $(DESTDIR)$(LIBDIR)/$(SONAME) $(DESTDIR)$(LIBDIR)/libslipfield.so $(DESTDIR)$(PCDIR)/slipfield.pc \
+	      $(DESTDIR)$(MANDIR)/man1/slipfield.1 $(addprefix $(DESTDIR)$(INCLUDEDIR)/slipfield/,$(notdir $(PUBLIC_HEADERS)))
+	-rmdir $(DESTDIR)$(INCLUDEDIR)/slipfield 2>/dev/null

@@ -3,7 +3,7 @@
 # Debian packages; apt-get as root, or through sudo when that needs no
 # password; otherwise print the exact command and fail.
 set -u
-PKGS="libgsl-dev libfftw3-dev libcmocka-dev gnuplot-nox pkg-config libcmark-gfm-dev libcmark-gfm-extensions-dev"
+PKGS="libgsl-dev libfftw3-dev libcmocka-dev gnuplot-nox pkg-config libcmark-gfm-dev libcmark-gfm-extensions-dev libjansson-dev python3-jsonschema"
 [ $# -gt 0 ] && PKGS="$PKGS $*"
 
 missing=""
@@ -14,13 +14,14 @@ if command -v dpkg-query >/dev/null 2>&1; then
 else
     # not Debian: check what the build actually uses
     command -v pkg-config >/dev/null 2>&1 || missing="$missing pkg-config"
-    for m in gsl fftw3 cmocka libcmark-gfm; do
+    for m in gsl fftw3 cmocka libcmark-gfm jansson; do
         pkg-config --exists "$m" 2>/dev/null || missing="$missing $m"
     done
     command -v gnuplot >/dev/null 2>&1 || missing="$missing gnuplot"
+    python3 -c 'import jsonschema' 2>/dev/null || missing="$missing python3-jsonschema"
     if [ -n "$missing" ]; then
         echo "slipfield: missing:$missing" >&2
-        echo "slipfield: install GSL, FFTW3, CMocka, gnuplot and pkg-config with your package manager." >&2
+        echo "slipfield: install GSL, FFTW3, CMocka, cmark-gfm, jansson, gnuplot, pkg-config and Python jsonschema with your package manager." >&2
         exit 1
     fi
     exit 0

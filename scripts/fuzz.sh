@@ -11,8 +11,8 @@ cd "$top"
 out=build/fuzz
 mkdir -p "$out/obj"
 CC=${FUZZ_CC:-clang}
-PKG=$(pkg-config --cflags gsl fftw3 libcmark-gfm 2>/dev/null || true)
-LIBS="-lcmark-gfm-extensions $(pkg-config --libs libcmark-gfm gsl fftw3 2>/dev/null || echo -lcmark-gfm -lgsl -lgslcblas -lfftw3) -lm"
+PKG=$(pkg-config --cflags gsl fftw3 libcmark-gfm jansson 2>/dev/null || true)
+LIBS="-lcmark-gfm-extensions $(pkg-config --libs libcmark-gfm gsl fftw3 jansson 2>/dev/null || echo -lcmark-gfm -lgsl -lgslcblas -lfftw3 -ljansson) -lm"
 FL="-std=c11 -D_POSIX_C_SOURCE=200809L -g -O1 -fno-omit-frame-pointer -Isolver -Iverification -Ibuild/gen -Wno-unknown-pragmas"
 objs=""
 for src in solver/*.c verification/*.c verification/checks/*.c; do

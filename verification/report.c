@@ -1,5 +1,7 @@
 #include "report.h"
+#include "drift.h"
 #include "html.h"
+#include "results.h"
 #include "sf_error.h"
 #include "version.h"
 
@@ -185,6 +187,8 @@ int sf_report_case(const char *root, const sf_case *c, const sf_result *r,
     fclose(f);
     int rc = write_md_and_html(tmp, c->title, md, err, errlen);
     free(md);
+    if (rc == SF_SUCCESS)
+        rc = sf_results_case_write(tmp, c, r, o, err, errlen);
     if (rc)
         return rc;
     if (commit_dir(tmp, fin) != 0) {
@@ -218,6 +222,8 @@ int sf_report_crash(const char *root, const sf_case *c, const sf_outcome *o,
     fclose(f);
     int rc = write_md_and_html(tmp, c->title, md, err, errlen);
     free(md);
+    if (rc == SF_SUCCESS)
+        rc = sf_results_case_write(tmp, c, NULL, o, err, errlen);
     if (rc)
         return rc;
     return commit_dir(tmp, fin) == 0 ? SF_SUCCESS : SF_EIO;
@@ -253,11 +259,26 @@ static void write_index(FILE *f, const sf_run_meta *meta, const sf_outcome *o, s
             np, nf, ne, meta->skipped, n + meta->skipped);
     fprintf(f, "- Tier: %s; seeds: %s; total wall time: %.1f s\n", meta->tier_name, meta->seed_note,
             meta->total_seconds);
-    fprintf(f, "- slipfield %s (git %s); GSL %s; %s\n\n", SF_VERSION, SF_GIT_REV, GSL_VERSION, fftw_version);
-    fprintf(f, "| case | family | kind | verdict | key metric (measured, criterion) | time [s] |\n|---|---|---|---|---|---|\n");
+    fprintf(f, "- slipfield %s (git %s); GSL %s; %s\n", SF_VERSION, SF_GIT_REV, GSL_VERSION, fftw_version);
+    size_t nedge = 0;
+    for (size_t i = 0; i < n; i++)
+        nedge += o[i].near_edge != 0;
+    fprintf(f, "- Margin: the share of its tolerance the case's tightest row uses (measured / tolerance, "
+               "or alpha / p); above 1 fails. %zu passing case%s within %.0f%% of the tolerance %s "
+               "flagged *near the edge* (not a failure).\n", nedge, nedge == 1 ? "" : "s",
+            100 * (1 - SF_NEAR_EDGE), nedge == 1 ? "is" : "are");
+    fprintf(f, "- Machine-readable: [results.json](results.json) (schema: `verification/results.schema.json`)\n");
+    if (meta->drift)
+        sf_drift_index_line(f, meta->drift, page);
+    fprintf(f, "\n| case | family | kind | verdict | margin | key metric (measured, criterion) | time [s] |\n"
+               "|---|---|---|---|---|---|---|\n");
     for (size_t i = 0; i < n; i++) {
-        fprintf(f, "| [%s](%s/%s) | %s | %s | **%s** | ", o[i].id, o[i].id, page, o[i].family,
-                vv_name(o[i].vv), sf_verdict_name(o[i].verdict));
+        char m[64];
+        if (isnan(o[i].margin)) snprintf(m, sizeof m, "—");
+        else if (isinf(o[i].margin)) snprintf(m, sizeof m, "inf");
+        else snprintf(m, sizeof m, "%.3g", o[i].margin);
+        fprintf(f, "| [%s](%s/%s) | %s | %s | **%s** | %s%s | ", o[i].id, o[i].id, page, o[i].family,
+                vv_name(o[i].vv), sf_verdict_name(o[i].verdict), m, o[i].near_edge ? " *near the edge*" : "");
         cell(f, o[i].key);
         fprintf(f, " | %.2f |\n", o[i].seconds);
     }

@@ -15,7 +15,15 @@ typedef struct {
     int verdict;
     double seconds;
     char key[320];       /* one line: the quantity, measured value, criterion */
+    /* results.json (results.h) */
+    unsigned long seed;  /* the seed the case ran with */
+    char check[64];
+    double margin;       /* the tightest row's margin; NAN when none */
+    int near_edge;       /* passed with margin >= SF_NEAR_EDGE */
+    double cpu_seconds;  /* CPU time of the case process (runner) */
 } sf_outcome;
+
+struct sf_drift_summary;     /* drift.h */
 
 typedef struct {
     const char *root;        /* report folder, e.g. "reports" */
@@ -23,6 +31,7 @@ typedef struct {
     const char *tier_name;
     double total_seconds;
     size_t skipped;          /* selected cases not run (other tier) */
+    const struct sf_drift_summary *drift;  /* NULL: no baseline given */
 } sf_run_meta;
 
 /* Write <root>/<id>/report.md and its plots.  `error` (may be NULL) is a

@@ -83,6 +83,14 @@ static sf_row *add_row(sf_result *r, const char *q)
     return row;
 }
 
+/* What the row compares (results.json, drift). */
+static void set_limit(sf_row *row, int test, double limit, size_t n)
+{
+    row->test = test;
+    row->limit = limit;
+    row->n = n;
+}
+
 /* NaN measured values always fail: comparisons below are written so that
  * a NaN makes the predicate false. */
 int sf_check_abs(sf_result *r, const char *q, double m, double e, double tol)
@@ -94,6 +102,7 @@ int sf_check_abs(sf_result *r, const char *q, double m, double e, double tol)
     snprintf(row->criterion, sizeof row->criterion, "|diff| <= %.3g", tol);
     row->ratio = tol > 0 ? d / tol : (d == 0 ? 0 : INFINITY);
     row->pass = d <= tol;
+    set_limit(row, SF_ROW_ABS, tol, 0);
     return row->pass;
 }
 
@@ -106,6 +115,7 @@ int sf_check_rel(sf_result *r, const char *q, double m, double e, double tol)
     snprintf(row->criterion, sizeof row->criterion, "|rel diff| <= %.3g", tol);
     row->ratio = b > 0 ? d / b : (d == 0 ? 0 : INFINITY);
     row->pass = d <= b;
+    set_limit(row, SF_ROW_REL, tol, 0);
     return row->pass;
 }
 
@@ -116,6 +126,7 @@ int sf_check_le(sf_result *r, const char *q, double m, double bound)
     snprintf(row->criterion, sizeof row->criterion, "<= %.3g", bound);
     row->ratio = bound != 0 ? m / bound : (m <= 0 ? 0 : INFINITY);
     row->pass = m <= bound;
+    set_limit(row, SF_ROW_LE, bound, 0);
     return row->pass;
 }
 
@@ -128,6 +139,7 @@ int sf_check_ge(sf_result *r, const char *q, double m, double bound)
     if (bound <= 0 && m >= bound)
         row->ratio = 0;
     row->pass = m >= bound;
+    set_limit(row, SF_ROW_GE, bound, 0);
     return row->pass;
 }
 
@@ -140,6 +152,7 @@ int sf_check_pvalue(sf_result *r, const char *test, double p, double alpha, size
     snprintf(row->criterion, sizeof row->criterion, "p >= alpha = %.3g", alpha);
     row->ratio = p > 0 ? alpha / p : INFINITY;
     row->pass = p >= alpha;
+    set_limit(row, SF_ROW_PVALUE, alpha, n);
     return row->pass;
 }
 
@@ -151,6 +164,7 @@ int sf_check_true(sf_result *r, const char *q, int ok, const char *found)
     snprintf(row->criterion, sizeof row->criterion, "%s", found ? found : "holds");
     row->ratio = ok ? 0 : INFINITY;
     row->pass = ok != 0;
+    set_limit(row, SF_ROW_TRUE, NAN, 0);
     return row->pass;
 }
 

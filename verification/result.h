@@ -21,7 +21,17 @@ typedef struct {
     char criterion[96];         /* e.g. "|diff| <= 1e-13", "p >= 1e-3" */
     double ratio;               /* how much of the tolerance is used: > 1 fails */
     int pass;
+    /* what the row compares, for reports/results.json and the drift page:
+     * which sf_check_* made it (SF_ROW_*), its tolerance, bound or alpha
+     * in the units of the criterion, and the sample size of a p-value */
+    int test;
+    double limit;
+    size_t n;
 } sf_row;
+
+/* sf_row.test: abs, rel, le, ge are exact rows (a tolerance or bound),
+ * pvalue a statistical row (alpha), true a boolean property. */
+enum { SF_ROW_ABS = 1, SF_ROW_REL, SF_ROW_LE, SF_ROW_GE, SF_ROW_PVALUE, SF_ROW_TRUE };
 
 sf_result *sf_result_alloc(void);
 void sf_result_free(sf_result *r);

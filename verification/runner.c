@@ -3,17 +3,21 @@
  * the reports and gate on the verdicts. */
 #include "runner.h"
 #include "case.h"
+#include "drift.h"
 #include "registry.h"
 #include "report.h"
 #include "result.h"
+#include "results.h"
 #include "sf_error.h"
 
 #include <errno.h>
+#include <math.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/prctl.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
@@ -37,6 +41,8 @@ static void usage(FILE *f)
           "  --seed N|random     override every case's seed (mixed with the case id)\n"
           "  --tags A,B          only cases carrying at least one of these tags\n"
           "  --only TEXT         only cases whose id contains TEXT (repeatable)\n"
+          "  --baseline FILE     compare with an older results.json: DIR/drift.md lists verdict\n"
+          "                      changes, moved metrics and slower cases (never fails the run)\n"
           "  --list              list the selected cases with tier, kind, check and tags\n"
           "  --checks            list the registered checks\n"
           "  -h, --help          this help\n\n"
@@ -85,6 +91,9 @@ static void fill_outcome(sf_outcome *o, const sf_case *c)
     snprintf(o->title, sizeof o->title, "%s", c->title);
     o->tier = c->scene.tier;
     o->vv = c->scene.vv;
+    o->seed = c->scene.seed;
+    snprintf(o->check, sizeof o->check, "%s", c->scene.check);
+    o->margin = NAN;
 }
 
 /* Child: run the check, write the report, send one line to the parent. */
@@ -182,7 +191,7 @@ int sf_verify_main(int argc, char **argv)
     unsigned timeout = 900;
     unsigned long seed = 0;
     char seed_note[64] = "fixed (per case)";
-    const char *tags = NULL, *only[16];
+    const char *tags = NULL, *only[16], *baseline_path = NULL;
     int nonly = 0;
     int i = 1;
     for (; i < argc && argv[i][0] == '-'; i++) {
@@ -198,6 +207,9 @@ int sf_verify_main(int argc, char **argv)
             return 0;
         } else if (!strcmp(a, "--list")) {
             list = 1;
+        } else if (!strcmp(a, "--baseline") && v) {
+            baseline_path = v;
+            i++;
         } else if (!strcmp(a, "--tags") && v) {
             tags = v;
             i++;
@@ -298,14 +310,26 @@ int sf_verify_main(int argc, char **argv)
         free(cases);
         return 0;
     }
+    /* the baseline is read now: this run may be about to overwrite it */
+    sf_baseline *baseline = NULL;
+    if (baseline_path) {
+        char err[700];
+        if (sf_baseline_load(baseline_path, &baseline, err, sizeof err) != SF_SUCCESS) {
+            fprintf(stderr, "slipfield verify: %s\n", err);
+            for (size_t k = 0; k < kept; k++) sf_case_free(&cases[k]);
+            free(cases);
+            return 2;
+        }
+    }
     if (sf_mkdirs(root) != 0) {
         fprintf(stderr, "slipfield verify: cannot create %s: %s\n", root, strerror(errno));
         return 3;
     }
     /* A run that is killed must not leave the previous run's summary
      * claiming verdicts: remove it now, write the new one at the end. */
-    static const char *summaries[] = { "index.md", "index.html", "junit.xml" };
-    for (size_t k = 0; k < 3; k++) {
+    static const char *summaries[] = { "index.md", "index.html", "junit.xml", "results.json",
+                                       "drift.md", "drift.html" };
+    for (size_t k = 0; k < sizeof summaries / sizeof *summaries; k++) {
         char p[1100];
         snprintf(p, sizeof p, "%s/%s", root, summaries[k]);
         unlink(p);
@@ -313,8 +337,8 @@ int sf_verify_main(int argc, char **argv)
     /* nor a selected case's old report: each is rewritten when (and only
      * when) this run reaches its verdict */
     for (size_t k = 0; k < kept; k++) {
-        static const char *files[] = { "report.md", "report.html" };
-        for (int f = 0; f < 2; f++) {
+        static const char *files[] = { "report.md", "report.html", "result.json" };
+        for (int f = 0; f < 3; f++) {
             char p[1100];
             snprintf(p, sizeof p, "%s/%s/%s", root, cases[k].id, files[f]);
             unlink(p);
@@ -330,6 +354,12 @@ int sf_verify_main(int argc, char **argv)
     fflush(stdout);
     double t0 = now();
     size_t next = 0, active = 0;
+    /* CPU time of each case process (and of the gnuplot it ran): the
+     * growth of RUSAGE_CHILDREN across the wait() that reaped it.  Unlike
+     * wall time it hardly depends on what else the machine runs, so the
+     * drift page compares it. */
+    struct rusage ru_prev;
+    getrusage(RUSAGE_CHILDREN, &ru_prev);
     while (next < kept || active > 0) {
         while (next < kept && active < (size_t)jobs) {
             int fd[2];
@@ -365,9 +395,15 @@ int sf_verify_main(int argc, char **argv)
             if (errno == EINTR) continue;
             break;
         }
+        struct rusage ru;
+        getrusage(RUSAGE_CHILDREN, &ru);
+        double cpu = (double)(ru.ru_utime.tv_sec - ru_prev.ru_utime.tv_sec + ru.ru_stime.tv_sec - ru_prev.ru_stime.tv_sec) +
+                     1e-6 * (double)(ru.ru_utime.tv_usec - ru_prev.ru_utime.tv_usec + ru.ru_stime.tv_usec - ru_prev.ru_stime.tv_usec);
+        ru_prev = ru;
         for (int s = 0; s < jobs; s++)
             if (run[s].pid == pid) {
                 finish_job(&run[s], status, cases, out, root);
+                out[run[s].idx].cpu_seconds = cpu;
                 run[s].pid = 0;
                 active--;
                 break;
@@ -378,12 +414,32 @@ int sf_verify_main(int argc, char **argv)
         if (out[k].verdict == SF_VERDICT_PASS) np++;
         else nf++;
     }
-    sf_run_meta meta = { root, seed_note, tier_full ? "full" : "quick", now() - t0, skipped };
+    sf_run_meta meta = { root, seed_note, tier_full ? "full" : "quick", now() - t0, skipped, NULL };
     char err[512];
-    int rc = sf_report_index(&meta, out, kept, err, sizeof err);
+    int rc = sf_results_write(&meta, out, kept, baseline_path, err, sizeof err);
+    sf_drift_summary drift;
+    if (!rc && baseline) {
+        rc = sf_drift_write(baseline, root, &drift, err, sizeof err);
+        if (!rc)
+            meta.drift = &drift;
+    }
+    sf_baseline_free(baseline);
     if (rc)
         fprintf(stderr, "slipfield verify: %s\n", err);
-    printf("reports: %s/index.html, %s/index.md, %s/junit.xml\n", root, root, root);
+    int rc2 = sf_report_index(&meta, out, kept, err, sizeof err);
+    if (rc2)
+        fprintf(stderr, "slipfield verify: %s\n", err);
+    rc = rc ? rc : rc2;
+    printf("reports: %s/index.html, %s/index.md, %s/junit.xml, %s/results.json\n", root, root, root, root);
+    if (meta.drift) {
+        if (sf_drift_any(&drift))
+            printf("drift: %zu verdict change%s (%zu to FAIL or ERROR), %zu metric%s moved, %zu run time%s grew, "
+                   "%zu case%s added, %zu removed: %s/drift.html\n", drift.verdicts, drift.verdicts == 1 ? "" : "s",
+                   drift.to_fail, drift.moved, drift.moved == 1 ? "" : "s", drift.slower,
+                   drift.slower == 1 ? "" : "s", drift.added, drift.added == 1 ? "" : "s", drift.removed, root);
+        else
+            printf("drift: none against %s (%s/drift.html)\n", baseline_path, root);
+    }
     printf("%zu passed, %zu failed\n", np, nf);
     for (size_t k = 0; k < kept; k++) sf_case_free(&cases[k]);
     free(cases);

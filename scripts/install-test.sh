@@ -1,0 +1,108 @@
+#!/bin/sh
+# make test: `make install` into a temporary DESTDIR + PREFIX (and into a
+# temporary PREFIX alone), then examples/cycle.c is built against what was
+# installed with pkg-config -- shared and static -- and run; the installed
+# slipfield and its man page work; `make uninstall` removes every file.
+# Needs no root: everything goes under /tmp.
+set -u
+cd "$(dirname "$0")/.." || exit 3
+make=${MAKE:-make}
+work=$(mktemp -d /tmp/sf-install.XXXXXX)
+trap 'rm -rf "$work"' EXIT INT TERM
+pass=0; fail=0
+ok()  { pass=$((pass + 1)); echo "ok    $*"; }
+bad() { fail=$((fail + 1)); echo "FAIL  $*"; }
+cc=${CC:-cc}
+sh scripts/deps.sh groff-base >/dev/null || exit 1   # renders the man page
+
+stage=$work/stage
+prefix=/opt/slipfield
+if $make -s --no-print-directory install DESTDIR="$stage" PREFIX="$prefix" > "$work/install.log" 2>&1; then
+    ok "make install DESTDIR=... PREFIX=$prefix"
+else
+    bad "make install failed"; tail -20 "$work/install.log"
+    # the README shows the example: the same text
+sed -n '/^#include <slipfield\/cof.h>/,/^}/p' README.md > "$work/readme.c"
+sed -n '/^#include <slipfield\/cof.h>/,/^}/p' examples/cycle.c > "$work/example.c"
+if [ -s "$work/example.c" ] && cmp -s "$work/readme.c" "$work/example.c"; then ok "README.md shows examples/cycle.c as it is"
+else bad "README.md's example differs from examples/cycle.c"; fi
+echo "install: $pass passed, $fail failed"; exit 1
+fi
+root=$stage$prefix
+missing=""
+for f in bin/slipfield lib/libslipfield.a lib/libslipfield.so lib/libslipfield.so.0 lib/pkgconfig/slipfield.pc \
+         include/slipfield/oscillator.h include/slipfield/scene.h share/man/man1/slipfield.1; do
+    [ -e "$root/$f" ] || missing="$missing $f"
+done
+[ -z "$missing" ] && ok "installed: binary, static and shared library, headers, slipfield.pc, man page" \
+                  || bad "not installed:$missing"
+[ -z "$(find "$stage" -mindepth 1 -maxdepth 1 ! -name opt)" ] && ok "nothing outside DESTDIR/PREFIX" || bad "files outside PREFIX: $(ls "$stage")"
+soname=$(readelf -d "$root/lib/libslipfield.so" 2>/dev/null | sed -n 's/.*(SONAME).*\[\(.*\)\].*/\1/p')
+target=$(readlink "$root/lib/libslipfield.so.0")
+if [ "$soname" = libslipfield.so.0 ] && [ -f "$root/lib/$target" ] && [ "$(readlink "$root/lib/libslipfield.so")" = libslipfield.so.0 ]; then
+    ok "shared library $target, soname $soname, linker name libslipfield.so"
+else
+    bad "shared library: soname '$soname', libslipfield.so.0 -> '$target'"
+fi
+nheaders=$(ls solver/*.h | wc -l)
+[ "$(ls "$root/include/slipfield/"*.h | wc -l)" -eq "$nheaders" ] && ok "all $nheaders public solver headers" || bad "headers missing"
+
+# the example, against the installed library, with pkg-config
+export PKG_CONFIG_SYSROOT_DIR="$stage" PKG_CONFIG_PATH="$root/lib/pkgconfig"
+if pkg-config --exists slipfield && [ "$(pkg-config --modversion slipfield)" = "$(sed -n 's/^#define SF_VERSION "\(.*\)"/\1/p' verification/version.h)" ]; then
+    ok "pkg-config finds slipfield $(pkg-config --modversion slipfield)"
+else
+    bad "pkg-config does not find slipfield"
+fi
+# shellcheck disable=SC2046
+if $cc -std=c11 -Wall -Wextra -Wpedantic -Werror examples/cycle.c $(pkg-config --cflags --libs slipfield) -o "$work/cycle-shared" 2> "$work/cc.log"; then
+    ok "examples/cycle.c builds with pkg-config --cflags --libs slipfield"
+    if LD_LIBRARY_PATH="$root/lib" ldd "$work/cycle-shared" | grep -q "libslipfield.so.0 => $root/lib/"; then ok "it links the installed shared library"
+    else bad "it does not load the installed shared library"; fi
+    if out=$(LD_LIBRARY_PATH="$root/lib" "$work/cycle-shared"); then ok "it runs: $out"; else bad "it fails: $out"; fi
+else
+    bad "examples/cycle.c does not build against the installed library"; sed 's/^/      /' "$work/cc.log" | head -10
+fi
+# static: the archive plus what pkg-config --static adds
+static_libs=$(pkg-config --static --libs slipfield | sed 's/-lslipfield//')
+# shellcheck disable=SC2086
+if $cc -std=c11 examples/cycle.c $(pkg-config --cflags slipfield) "$root/lib/libslipfield.a" $static_libs -o "$work/cycle-static" 2> "$work/cc2.log" \
+   && ! ldd "$work/cycle-static" | grep -q libslipfield && out=$("$work/cycle-static"); then
+    ok "static link (libslipfield.a + pkg-config --static) runs: $out"
+else
+    bad "static link failed"; sed 's/^/      /' "$work/cc2.log" | head -10
+fi
+unset PKG_CONFIG_SYSROOT_DIR PKG_CONFIG_PATH
+
+if "$root/bin/slipfield" --version | grep -q '^slipfield '; then ok "installed slipfield runs"; else bad "installed slipfield does not run"; fi
+man_text=$(groff -man -Tutf8 -P-cbou "$root/share/man/man1/slipfield.1" 2>/dev/null)
+if printf '%s' "$man_text" | grep -q 'SCENE KEYS' && printf '%s' "$man_text" | grep -q 'mu_k_ratio' &&
+   printf '%s' "$man_text" | grep -q -- '--baseline FILE'; then
+    ok "slipfield.1 renders (groff -man), with --help, each command's options and 'help scene'"
+else
+    bad "slipfield.1 does not render or lacks the help text"
+fi
+if [ -z "$(groff -man -Tutf8 -ww -z "$root/share/man/man1/slipfield.1" 2>&1)" ]; then ok "groff -ww: no warnings"; else bad "groff warns on slipfield.1"; fi
+
+$make -s --no-print-directory uninstall DESTDIR="$stage" PREFIX="$prefix" > "$work/uninstall.log" 2>&1
+left=$(find "$stage" -type f -o -type l)
+[ -z "$left" ] && ok "make uninstall removes every file" || bad "make uninstall left: $left"
+
+# PREFIX alone (what a user without DESTDIR does)
+p2=$work/prefix
+if $make -s --no-print-directory install PREFIX="$p2" > "$work/install2.log" 2>&1 &&
+   PKG_CONFIG_PATH="$p2/lib/pkgconfig" $cc -std=c11 examples/cycle.c $(PKG_CONFIG_PATH="$p2/lib/pkgconfig" pkg-config --cflags --libs slipfield) \
+       -Wl,-rpath,"$p2/lib" -o "$work/cycle-prefix" 2>&1 && "$work/cycle-prefix" > /dev/null; then
+    ok "make install PREFIX=tmp: the example builds and runs (rpath)"
+else
+    bad "make install PREFIX=tmp: the example does not build or run"
+fi
+$make -s --no-print-directory uninstall PREFIX="$p2" > /dev/null 2>&1
+[ -z "$(find "$p2" -type f -o -type l)" ] && ok "make uninstall PREFIX=tmp removes every file" || bad "uninstall PREFIX=tmp left files"
+# the README shows the example: the same text
+sed -n '/^#include <slipfield\/cof.h>/,/^}/p' README.md > "$work/readme.c"
+sed -n '/^#include <slipfield\/cof.h>/,/^}/p' examples/cycle.c > "$work/example.c"
+if [ -s "$work/example.c" ] && cmp -s "$work/readme.c" "$work/example.c"; then ok "README.md shows examples/cycle.c as it is"
+else bad "README.md's example differs from examples/cycle.c"; fi
+echo "install: $pass passed, $fail failed"
+[ $fail -eq 0 ]

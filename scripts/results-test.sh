@@ -1,0 +1,101 @@
+#!/bin/sh
+# make test: reports/results.json and the drift page, end to end, on a few
+# fast cases (about a second).
+#  1. a run's results.json validates against verification/results.schema.json
+#     (Debian's python3-jsonschema, a real validator);
+#  2. the same run again with --baseline: exit 0 and "No drift";
+#  3. a baseline where one exact metric, one p-value and one verdict
+#     differ: each is on the drift page, and the run still exits 0;
+#  4. a case that now fails against a baseline where it passed: exit 1,
+#     "to FAIL" on the page;
+#  5. a missing or foreign baseline is bad input (exit 2).
+# A seeded code defect that moves a metric is scripts/drift-test.sh.
+set -u
+bin=${1:-build/slipfield}
+cd "$(dirname "$0")/.." || exit 3
+py=/usr/bin/python3
+sh scripts/deps.sh >/dev/null || exit 1
+work=$(mktemp -d /tmp/sf-results.XXXXXX)
+trap 'rm -rf "$work"' EXIT INT TERM
+pass=0; fail=0
+ok()  { pass=$((pass + 1)); echo "ok    $*"; }
+bad() { fail=$((fail + 1)); echo "FAIL  $*"; }
+
+validate() {  # validate FILE
+    $py - "$1" verification/results.schema.json <<'EOF'
+import json, sys, jsonschema
+doc = json.load(open(sys.argv[1]))
+schema = json.load(open(sys.argv[2]))
+jsonschema.Draft202012Validator.check_schema(schema)
+errs = sorted(jsonschema.Draft202012Validator(schema).iter_errors(doc), key=lambda e: list(e.path))
+for e in errs[:5]:
+    print("      %s: %s" % ("/".join(str(p) for p in e.path), e.message))
+sys.exit(1 if errs else 0)
+EOF
+}
+
+cases="cases/field/exact-covariance-padded.md cases/field/sampled-covariance-lrt.md cases/contact/pure-spin-polar.md"
+"$bin" verify --reports "$work/a" $cases > "$work/a.log" 2>&1
+rc=$?
+[ $rc -eq 0 ] && ok "a first run passes" || { bad "a first run exits $rc"; cat "$work/a.log"; }
+if validate "$work/a/results.json"; then ok "results.json validates against verification/results.schema.json"
+else bad "results.json does not validate"; fi
+grep -q 'results.json' "$work/a/index.md" && ok "the index links results.json" || bad "the index does not link results.json"
+
+"$bin" verify --reports "$work/b" --baseline "$work/a/results.json" $cases > "$work/b.log" 2>&1
+rc=$?
+[ $rc -eq 0 ] && ok "the same run against itself exits 0" || bad "the same run against itself exits $rc"
+grep -q 'No drift' "$work/b/drift.md" && ok "drift page: no drift" || { bad "drift reported on an unchanged run"; sed 's/^/      /' "$work/b/drift.md"; }
+validate "$work/b/results.json" && ok "results.json with a baseline validates" || bad "results.json with a baseline does not validate"
+grep -q 'drift.html' "$work/b/index.html" && ok "the HTML index links drift.html" || bad "the HTML index does not link drift.html"
+[ -f "$work/b/drift.html" ] && ok "drift.html written" || bad "drift.html missing"
+
+# 3. a baseline that differs in one exact metric (by 1e-9 relative, far
+# above round-off, far below the tolerance), one p-value and one verdict
+$py - "$work/a/results.json" "$work/c.json" <<'EOF'
+import json, sys
+d = json.load(open(sys.argv[1]))
+for c in d["cases"]:
+    if c["id"] == "contact/pure-spin-polar":
+        r = c["rows"][0]
+        r["measured"] = r["measured"] * (1 + 1e-9)
+    if c["id"] == "field/sampled-covariance-lrt":
+        for r in c["rows"]:
+            if r["kind"] == "statistical":
+                r["measured"] = 1e-6
+                break
+    if c["id"] == "field/exact-covariance-padded":
+        c["verdict"] = "fail"
+json.dump(d, open(sys.argv[2], "w"))
+EOF
+"$bin" verify --reports "$work/c" --baseline "$work/c.json" $cases > "$work/c.log" 2>&1
+rc=$?
+[ $rc -eq 0 ] && ok "drift alone does not fail the run" || bad "a run with drift exits $rc"
+page="$work/c/drift.md"
+q=$($py -c 'import json,sys; d=json.load(open(sys.argv[1])); print([c for c in d["cases"] if c["id"]=="contact/pure-spin-polar"][0]["rows"][0]["quantity"])' "$work/a/results.json")
+if grep -F "contact/pure-spin-polar | $q" "$page" | grep -q '| exact |'; then ok "a moved exact metric is on the drift page"
+else bad "the moved exact metric is not on the drift page"; sed 's/^/      /' "$page"; fi
+grep -q 'field/sampled-covariance-lrt .*| statistical |' "$page" && ok "a moved p-value is on the drift page" || bad "the moved p-value is not on the drift page"
+grep -q '| field/exact-covariance-padded | fail | \*\*pass\*\*' "$page" && ok "a verdict change is on the drift page" || bad "the verdict change is not on the drift page"
+grep -q ', 2 metrics moved,' "$page" && ok "exactly the two changed rows moved" || bad "a row that did not change counted as moved (or one that did, not)"
+
+# 4. a case that now fails where it passed: a copy of a case whose
+# tolerance is tightened below its measured error
+mkdir -p "$work/cases/drifttest"
+cp cases/field/exact-covariance-padded.md "$work/cases/drifttest/cov.md"
+"$bin" verify --reports "$work/d" "$work/cases/drifttest/cov.md" > "$work/d.log" 2>&1
+sed -i 's/^tolerance = .*/tolerance = 1e-30/' "$work/cases/drifttest/cov.md"
+"$bin" verify --reports "$work/e" --baseline "$work/d/results.json" "$work/cases/drifttest/cov.md" > "$work/e.log" 2>&1
+rc=$?
+[ $rc -eq 1 ] && ok "a verdict that changed to FAIL fails the run (exit 1)" || bad "a verdict changed to FAIL exits $rc"
+grep -q '1 to FAIL or ERROR' "$work/e/drift.md" && ok "the drift page counts the change to FAIL" || bad "the drift page misses the change to FAIL"
+validate "$work/e/results.json" && ok "results.json of a failing run validates" || bad "results.json of a failing run does not validate"
+
+# 5. bad baselines
+"$bin" verify --reports "$work/f" --baseline "$work/missing.json" $cases > /dev/null 2>&1
+rc=$?; [ $rc -eq 2 ] && ok "a missing baseline: exit 2" || bad "a missing baseline exits $rc"
+echo '{"cases": []}' > "$work/foreign.json"
+"$bin" verify --reports "$work/f" --baseline "$work/foreign.json" $cases > /dev/null 2>&1
+rc=$?; [ $rc -eq 2 ] && ok "a JSON file that is not a results.json: exit 2" || bad "a foreign baseline exits $rc"
+echo "results: $pass passed, $fail failed"
+[ $fail -eq 0 ]

@@ -1,0 +1,161 @@
+/* Unit tests: results.json (margins, the JSON of a case, non-finite values,
+ * escaping) and the drift rules (verification/results.c, drift.c). */
+#include "test_util.h"
+#include "drift.h"
+#include "report.h"
+#include "result.h"
+#include "results.h"
+
+#include <float.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+#include <jansson.h>
+
+static void results_row_margins(void **state)
+{
+    (void)state;
+    sf_result *r = sf_result_alloc();
+    sf_check_abs(r, "abs", 1.5, 1.0, 1.0);       /* 0.5 of 1 */
+    sf_check_rel(r, "rel", 10.3, 10.0, 0.1);     /* 0.3 of 1.0 */
+    sf_check_le(r, "le", 0.95, 1.0);             /* 0.95: near the edge */
+    sf_check_le(r, "le negative value", -3, 1.0); /* far below: 0 */
+    sf_check_le(r, "le negative bound", -5, -1);  /* passes, 1/5 of the way */
+    sf_check_ge(r, "ge", 4, 2);                  /* 2/4 */
+    sf_check_ge(r, "ge negative bound", -0.5, -1); /* passes: half the allowance */
+    sf_check_ge(r, "ge fails", -2, -1);           /* fails: 2 */
+    sf_check_pvalue(r, "test", 0.02, 0.01, 100); /* alpha / p = 0.5 */
+    sf_check_true(r, "holds", 1, "yes");
+    const double want[] = { 0.5, 0.3, 0.95, 0, 0.2, 0.5, 0.5, 2, 0.5 };
+    for (size_t i = 0; i < 9; i++) {
+        assert_close(sf_row_margin(sf_result_row(r, i)), want[i], 1e-12);
+        /* above 1 exactly when the row fails */
+        assert_int_equal(sf_row_margin(sf_result_row(r, i)) <= 1, sf_result_row(r, i)->pass);
+    }
+    assert_true(isnan(sf_row_margin(sf_result_row(r, 9))));
+    assert_string_equal(sf_row_kind_name(sf_result_row(r, 8)->test), "statistical");
+    assert_string_equal(sf_row_kind_name(sf_result_row(r, 9)->test), "boolean");
+    assert_string_equal(sf_row_test_name(sf_result_row(r, 6)->test), "ge");
+    size_t at;
+    assert_close(sf_result_margin(r, &at), 2, 0);
+    assert_int_equal(at, 7);
+    sf_result_free(r);
+
+    /* a NaN measured value: NaN margin, and the case's margin is +inf */
+    r = sf_result_alloc();
+    sf_check_le(r, "ok", 0.1, 1);
+    sf_check_abs(r, "nan", NAN, 0, 1);
+    assert_true(isnan(sf_row_margin(sf_result_row(r, 1))));
+    assert_true(isinf(sf_result_margin(r, &at)));
+    assert_int_equal(at, 1);
+    sf_result_free(r);
+    /* only boolean rows: no margin */
+    r = sf_result_alloc();
+    sf_check_true(r, "holds", 1, NULL);
+    assert_true(isnan(sf_result_margin(r, NULL)));
+    sf_result_free(r);
+}
+
+static void results_case_json(void **state)
+{
+    (void)state;
+    char dir[] = "/tmp/sf-results-test.XXXXXX";
+    assert_non_null(mkdtemp(dir));
+    sf_result *r = sf_result_alloc();
+    sf_check_abs(r, "quote \" backslash \\ newline \n tab \t", 1.0 / 3.0, 0.25, 0.1);
+    sf_check_le(r, "nan measured", NAN, 1e-12);
+    sf_check_rel(r, "inf measured", INFINITY, 1, 0.1);
+    sf_check_pvalue(r, "bad bytes \xff\xfe", 0.5, 1e-3, 4000);
+    sf_check_true(r, "holds", 1, "fine");
+    sf_outcome o;
+    memset(&o, 0, sizeof o);
+    snprintf(o.id, sizeof o.id, "fam/name");
+    snprintf(o.family, sizeof o.family, "fam");
+    snprintf(o.key, sizeof o.key, "key");
+    o.verdict = SF_VERDICT_FAIL;
+    o.seed = 4294967295UL;
+    o.seconds = 0.25;
+    char err[256];
+    assert_int_equal(sf_results_case_write(dir, NULL, r, &o, err, sizeof err), 0);
+    char path[300];
+    snprintf(path, sizeof path, "%s/result.json", dir);
+    json_error_t je;
+    json_t *j = json_load_file(path, 0, &je);
+    assert_non_null(j);
+    assert_string_equal(json_string_value(json_object_get(j, "verdict")), "fail");
+    assert_int_equal(json_integer_value(json_object_get(j, "seed")), 4294967295LL);
+    json_t *rows = json_object_get(j, "rows");
+    assert_int_equal(json_array_size(rows), 5);
+    json_t *r0 = json_array_get(rows, 0);
+    assert_string_equal(json_string_value(json_object_get(r0, "quantity")),
+                        "quote \" backslash \\ newline \n tab \t");
+    /* 17 digits: the double reads back to the same bits */
+    assert_true(json_real_value(json_object_get(r0, "measured")) == 1.0 / 3.0);
+    assert_true(json_real_value(json_object_get(r0, "tolerance")) == 0.1);
+    assert_null(json_object_get(r0, "nonfinite"));
+    json_t *r1 = json_array_get(rows, 1);
+    assert_true(json_is_null(json_object_get(r1, "measured")));
+    assert_string_equal(json_string_value(json_object_get(json_object_get(r1, "nonfinite"), "measured")), "nan");
+    assert_true(json_is_null(json_object_get(r1, "expected")));   /* a bound row: none */
+    assert_null(json_object_get(json_object_get(r1, "nonfinite"), "expected"));
+    assert_false(json_is_true(json_object_get(r1, "pass")));
+    json_t *r2 = json_array_get(rows, 2);
+    assert_string_equal(json_string_value(json_object_get(json_object_get(r2, "nonfinite"), "measured")), "inf");
+    json_t *r3 = json_array_get(rows, 3);
+    assert_string_equal(json_string_value(json_object_get(r3, "quantity")), "bad bytes ?? (n = 4000): p-value");
+    assert_string_equal(json_string_value(json_object_get(r3, "kind")), "statistical");
+    assert_int_equal(json_integer_value(json_object_get(r3, "n")), 4000);
+    assert_true(json_real_value(json_object_get(r3, "alpha")) == 1e-3);
+    assert_true(json_is_null(json_object_get(json_array_get(rows, 4), "margin")));
+    /* the case's margin is +inf (the NaN row): null plus the flag */
+    assert_true(json_is_null(json_object_get(j, "margin")));
+    assert_string_equal(json_string_value(json_object_get(json_object_get(j, "nonfinite"), "margin")), "inf");
+    json_decref(j);
+    sf_result_free(r);
+    unlink(path);
+    rmdir(dir);
+}
+
+static void drift_rules(void **state)
+{
+    (void)state;
+    /* exact: 10 units of round-off of the values compared */
+    assert_false(sf_drift_exact_moved(1.0, 1.0, 1.0));
+    assert_false(sf_drift_exact_moved(1.0, 1.0 + 8 * DBL_EPSILON, 1.0));
+    assert_true(sf_drift_exact_moved(1.0, 1.0 + 16 * DBL_EPSILON, 1.0));
+    assert_true(sf_drift_exact_moved(100.0, 100.0 + 1e-12, NAN));
+    assert_false(sf_drift_exact_moved(100.0, 100.0 + 1e-13, NAN));
+    /* an error metric at round-off level: the round-off of its O(1) operands */
+    assert_false(sf_drift_exact_moved(3e-16, 6e-16, 0));
+    assert_false(sf_drift_exact_moved(1.8e-15, 1.9e-15, NAN));
+    assert_true(sf_drift_exact_moved(3e-16, 3e-15, 0));
+    assert_true(sf_drift_exact_moved(3.0e-10, 3.1e-10, NAN));   /* an error that grew */
+    assert_false(sf_drift_exact_moved(1e6, 1e6 + 1e-9, 1e6));   /* the scale is the values' */
+    assert_true(sf_drift_exact_moved(1e6, 1e6 + 1e-8, 1e6));
+    assert_true(sf_drift_exact_moved(1.0, NAN, 1.0));
+    assert_false(sf_drift_exact_moved(NAN, NAN, 1.0));
+    assert_false(sf_drift_exact_moved(INFINITY, INFINITY, 1.0));
+    assert_true(sf_drift_exact_moved(INFINITY, -INFINITY, 1.0));
+    /* statistical: |dz| > 2 sqrt 2 */
+    assert_false(sf_drift_pvalue_moved(0.5, 0.5));
+    assert_false(sf_drift_pvalue_moved(0.5, 0.05));    /* z 0 -> 1.64 */
+    assert_true(sf_drift_pvalue_moved(0.5, 1e-3));     /* z 0 -> 3.09 */
+    assert_false(sf_drift_pvalue_moved(1.0, 0.9));
+    assert_false(sf_drift_pvalue_moved(0.0, 1e-300));
+    assert_true(sf_drift_pvalue_moved(0.3, NAN));
+    /* run time: more than 2x and more than 0.5 s */
+    assert_false(sf_drift_time_grew(0.01, 0.1));
+    assert_false(sf_drift_time_grew(1.0, 1.9));
+    assert_true(sf_drift_time_grew(1.0, 2.1));
+    assert_false(sf_drift_time_grew(10.0, 15.0));
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(results_row_margins),
+        cmocka_unit_test(results_case_json),
+        cmocka_unit_test(drift_rules),
+    };
+    return cmocka_run_group_tests_name("results", tests, NULL, NULL);
+}

@@ -1,0 +1,79 @@
+/* slipfield verification: what changed since a baseline run.
+ *
+ * `slipfield verify --baseline OLD/results.json` (make verify
+ * BASELINE=...) compares this run's results.json with an older one and
+ * writes <root>/drift.md and drift.html.  Cases are matched by id, rows by
+ * quantity text (in order).  What counts as a change:
+ *
+ *  - a verdict that differs;
+ *  - an exact row (abs, rel, le, ge: a tolerance or bound) whose measured
+ *    value moved by more than 10x its round-off, taken as one unit in the
+ *    last place of the values compared, and of 1: |m1 - m0| > 10 eps
+ *    max(|m0|, |m1|, |expected|, 1) (eps = DBL_EPSILON).  The 1 is there
+ *    because the suite's metrics are in SI or dimensionless units on
+ *    operands of order one: an error metric near zero (3e-16) carries the
+ *    round-off of those operands, not of itself (e.g. the FFTW "measure"
+ *    planner picks a plan by timing, so its round-off differs from run to
+ *    run by ~1e-16).  With fixed seeds the same code gives the same bits,
+ *    so anything larger is a change of code, settings or seed; the page
+ *    also gives the move as a share of the tolerance;
+ *  - a statistical row (a p-value against alpha) whose p moved by more
+ *    than its sampling error: under the null hypothesis
+ *    z = Phi^-1(1 - p) is standard normal, so two independent runs differ
+ *    by a N(0, 2) amount; a move counts when |z1 - z0| > 2 sqrt(2) (a
+ *    two-sided 5% test that both come from the same null distribution).
+ *    p above 0.5 counts as 0.5 (z = 0): far from alpha either way, and a
+ *    Bonferroni-adjusted p is clamped at 1;
+ *  - a boolean row whose outcome changed; a value that became or stopped
+ *    being non-finite;
+ *  - a run time that grew by more than 2x, and by more than 0.5 s (below
+ *    that, scheduling noise).  The time compared is the CPU time of the
+ *    case process (cpu_seconds), which a busy machine hardly changes;
+ *    wall time only when a run lacks it;
+ *  - cases and rows present in one run only, and seeds that differ.
+ *
+ * Only a verdict that changed to FAIL or ERROR is a failure, and the run
+ * already fails on it; drift never changes the exit status.
+ */
+#ifndef SF_DRIFT_H
+#define SF_DRIFT_H
+
+#include <stdio.h>
+#include <stddef.h>
+
+typedef struct sf_drift_summary {
+    char baseline[512];
+    size_t verdicts;     /* verdicts that changed */
+    size_t to_fail;      /* ... to fail or error */
+    size_t moved;        /* rows that moved */
+    size_t slower;       /* cases whose run time grew */
+    size_t added, removed;           /* cases in one run only */
+    size_t rows_added, rows_removed; /* rows in one run only */
+    size_t seeds;        /* cases run with another seed */
+} sf_drift_summary;
+
+typedef struct sf_baseline sf_baseline;
+
+/* Read an older results.json (kept in memory: this run may overwrite
+ * the file).  Returns SF_SUCCESS, or SF_EIO / SF_EPARSE with err set. */
+int sf_baseline_load(const char *path, sf_baseline **out, char *err, size_t errlen);
+void sf_baseline_free(sf_baseline *b);
+
+/* The rules above, one value pair at a time. */
+int sf_drift_exact_moved(double m0, double m1, double expected);
+int sf_drift_pvalue_moved(double p0, double p1);
+int sf_drift_time_grew(double t0, double t1);
+
+/* Compare <root>/results.json with the baseline; write <root>/drift.md
+ * and <root>/drift.html; fill *s. */
+int sf_drift_write(const sf_baseline *b, const char *root, sf_drift_summary *s,
+                   char *err, size_t errlen);
+
+/* One Markdown list item for the index, linking drift.md or drift.html
+ * (page is "report.md" or "report.html"). */
+void sf_drift_index_line(FILE *f, const sf_drift_summary *s, const char *page);
+
+/* Has anything changed? */
+int sf_drift_any(const sf_drift_summary *s);
+
+#endif

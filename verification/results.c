@@ -1,0 +1,297 @@
+/* reports/results.json: see results.h.  jansson builds and writes the JSON
+ * (escaping, UTF-8 checks, 17 significant digits so every double reads
+ * back to the same bits). */
+#include "results.h"
+#include "sf_error.h"
+#include "version.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+#include <fftw3.h>
+#include <gsl/gsl_version.h>
+#include <jansson.h>
+
+#define DUMP_FLAGS (JSON_INDENT(1) | JSON_PRESERVE_ORDER | JSON_REAL_PRECISION(17))
+
+/* For a bound, the share of the allowance between 0 and the bound that
+ * the value uses, so that a margin is >= 0 and above 1 exactly when the
+ * row fails, whatever the signs (sf_row.ratio is that for the error rows
+ * and p-values, which are >= 0). */
+static double bound_margin(double m, double b, int upper)
+{
+    if (isnan(m) || isnan(b))
+        return NAN;
+    if (!upper) {           /* m >= b: the same as -m <= -b */
+        m = -m;
+        b = -b;
+    }
+    if (b > 0)              /* m <= b, b > 0: m / b, and 0 below zero */
+        return m <= 0 ? 0 : m / b;
+    if (b == 0)
+        return m <= 0 ? 0 : INFINITY;
+    return m < 0 ? b / m : INFINITY;   /* m <= b < 0: b / m, 1 at the bound */
+}
+
+double sf_row_margin(const sf_row *row)
+{
+    switch (row->test) {
+    case SF_ROW_ABS: case SF_ROW_REL: case SF_ROW_PVALUE:
+        return row->ratio;
+    case SF_ROW_LE:
+        return bound_margin(row->measured, row->limit, 1);
+    case SF_ROW_GE:
+        return bound_margin(row->measured, row->limit, 0);
+    default:
+        return NAN;
+    }
+}
+
+double sf_result_margin(const sf_result *r, size_t *which)
+{
+    double best = NAN;
+    size_t at = 0;
+    for (size_t i = 0; r && i < sf_result_nrows(r); i++) {
+        const sf_row *row = sf_result_row(r, i);
+        double m = sf_row_margin(row);
+        if (row->test == SF_ROW_TRUE || row->test == 0)
+            continue;
+        /* a NaN margin (NaN measured) is the worst there is */
+        if (isnan(m))
+            m = INFINITY;
+        if (isnan(best) || m > best) {
+            best = m;
+            at = i;
+        }
+    }
+    if (which)
+        *which = at;
+    return best;
+}
+
+const char *sf_row_test_name(int test)
+{
+    static const char *names[] = { "other", "abs", "rel", "le", "ge", "pvalue", "true" };
+    return test >= SF_ROW_ABS && test <= SF_ROW_TRUE ? names[test] : names[0];
+}
+
+const char *sf_row_kind_name(int test)
+{
+    return test == SF_ROW_PVALUE ? "statistical" : test == SF_ROW_TRUE ? "boolean" : "exact";
+}
+
+static const char *verdict_word(int v)
+{
+    return v == SF_VERDICT_PASS ? "pass" : v == SF_VERDICT_FAIL ? "fail" : "error";
+}
+
+/* A JSON string from C text; bytes that are not valid UTF-8 become '?'. */
+static json_t *jstr(const char *s)
+{
+    json_t *j = json_string(s ? s : "");
+    if (j)
+        return j;
+    size_t n = strlen(s);
+    char *t = malloc(n + 1);
+    if (!t)
+        return json_null();
+    for (size_t i = 0; i <= n; i++)
+        t[i] = (unsigned char)s[i] >= 0x80 ? '?' : s[i];
+    j = json_string(t);
+    free(t);
+    return j ? j : json_null();
+}
+
+static const char *nonfinite_word(double x)
+{
+    return isnan(x) ? "nan" : x > 0 ? "inf" : "-inf";
+}
+
+/* obj[key] = x, or null and nonfinite[key] = "nan" | "inf" | "-inf". */
+static void set_num(json_t *obj, const char *key, double x, json_t *nonfinite)
+{
+    if (isfinite(x)) {
+        json_object_set_new(obj, key, json_real(x));
+        return;
+    }
+    json_object_set_new(obj, key, json_null());
+    if (nonfinite)
+        json_object_set_new(nonfinite, key, json_string(nonfinite_word(x)));
+}
+
+static json_t *row_json(const sf_row *row)
+{
+    json_t *j = json_object(), *nf = json_object();
+    int has_expected = row->test == SF_ROW_ABS || row->test == SF_ROW_REL || row->test == SF_ROW_TRUE;
+    json_object_set_new(j, "quantity", jstr(row->quantity));
+    json_object_set_new(j, "test", json_string(sf_row_test_name(row->test)));
+    json_object_set_new(j, "kind", json_string(sf_row_kind_name(row->test)));
+    set_num(j, "measured", row->measured, nf);
+    /* le, ge and p-value rows compare against a bound, not a value: no
+     * expected value (null, and not a non-finite one) */
+    if (has_expected)
+        set_num(j, "expected", row->expected, nf);
+    else
+        json_object_set_new(j, "expected", json_null());
+    json_object_set_new(j, "criterion", jstr(row->criterion));
+    if (row->test == SF_ROW_PVALUE) {
+        json_object_set_new(j, "tolerance", json_null());
+        set_num(j, "alpha", row->limit, nf);
+        json_object_set_new(j, "n", json_integer((json_int_t)row->n));
+    } else {
+        if (row->test == SF_ROW_TRUE || row->test == 0)
+            json_object_set_new(j, "tolerance", json_null());
+        else
+            set_num(j, "tolerance", row->limit, nf);
+        json_object_set_new(j, "alpha", json_null());
+        json_object_set_new(j, "n", json_null());
+    }
+    double m = sf_row_margin(row);
+    if (row->test == SF_ROW_TRUE || row->test == 0)
+        json_object_set_new(j, "margin", json_null());
+    else
+        set_num(j, "margin", m, nf);
+    json_object_set_new(j, "pass", json_boolean(row->pass));
+    if (json_object_size(nf))
+        json_object_set_new(j, "nonfinite", nf);
+    else
+        json_decref(nf);
+    return j;
+}
+
+static const char *vv_key(int vv)
+{
+    return vv == 0 ? "code" : vv == 1 ? "solution" : "validation";
+}
+
+/* Write j to path through a temporary file and a rename. */
+static int dump_file(json_t *j, const char *path, char *err, size_t errlen)
+{
+    char tmp[1200];
+    snprintf(tmp, sizeof tmp, "%s.tmp%ld", path, (long)getpid());
+    if (json_dump_file(j, tmp, DUMP_FLAGS) != 0 || rename(tmp, path) != 0) {
+        snprintf(err, errlen, "cannot write %s: %s", path, strerror(errno));
+        unlink(tmp);
+        return SF_EIO;
+    }
+    return SF_SUCCESS;
+}
+
+static json_t *case_json(const sf_outcome *o, const sf_result *r)
+{
+    json_t *j = json_object();
+    json_object_set_new(j, "id", jstr(o->id));
+    json_object_set_new(j, "family", jstr(o->family));
+    json_object_set_new(j, "title", jstr(o->title));
+    json_object_set_new(j, "path", jstr(o->path));
+    json_object_set_new(j, "check", jstr(o->check));
+    json_object_set_new(j, "vv", json_string(vv_key(o->vv)));
+    json_object_set_new(j, "tier", json_string(o->tier ? "full" : "quick"));
+    json_object_set_new(j, "verdict", json_string(verdict_word(o->verdict)));
+    json_object_set_new(j, "message", jstr(o->key));
+    json_object_set_new(j, "seed", json_integer((json_int_t)o->seed));
+    json_object_set_new(j, "seconds", json_real(isfinite(o->seconds) ? o->seconds : 0));
+    json_object_set_new(j, "cpu_seconds", json_real(0));
+    json_object_set_new(j, "git_revision", json_string(SF_GIT_REV));
+    size_t at = 0;
+    double m = sf_result_margin(r, &at);
+    json_t *nf = json_object();
+    /* NaN: no row has a margin (null, not a non-finite value) */
+    if (isnan(m))
+        json_object_set_new(j, "margin", json_null());
+    else
+        set_num(j, "margin", m, nf);
+    json_object_set_new(j, "margin_row", isnan(m) ? json_null() : json_integer((json_int_t)at));
+    json_object_set_new(j, "near_edge", json_boolean(o->verdict == SF_VERDICT_PASS && m >= SF_NEAR_EDGE));
+    if (json_object_size(nf))
+        json_object_set_new(j, "nonfinite", nf);
+    else
+        json_decref(nf);
+    json_t *rows = json_array();
+    for (size_t i = 0; r && i < sf_result_nrows(r); i++)
+        json_array_append_new(rows, row_json(sf_result_row(r, i)));
+    json_object_set_new(j, "rows", rows);
+    return j;
+}
+
+int sf_results_case_write(const char *dir, const sf_case *c, const sf_result *r,
+                          const sf_outcome *o, char *err, size_t errlen)
+{
+    (void)c;
+    json_t *j = case_json(o, r);
+    char path[1100];
+    snprintf(path, sizeof path, "%s/result.json", dir);
+    int rc = dump_file(j, path, err, errlen);
+    json_decref(j);
+    return rc;
+}
+
+/* The parent's view of a case: its result.json with verdict, message and
+ * time from the runner, or an object without rows when there is none. */
+static json_t *gather_case(const char *root, sf_outcome *o)
+{
+    char path[1100];
+    snprintf(path, sizeof path, "%s/%s/result.json", root, o->id);
+    json_error_t jerr;
+    json_t *j = json_load_file(path, 0, &jerr);
+    if (!j || !json_is_object(j) || !json_is_array(json_object_get(j, "rows"))) {
+        json_decref(j);
+        j = case_json(o, NULL);
+    }
+    json_object_set_new(j, "verdict", json_string(verdict_word(o->verdict)));
+    json_object_set_new(j, "message", jstr(o->key));
+    json_object_set_new(j, "seconds", json_real(isfinite(o->seconds) ? o->seconds : 0));
+    json_object_set_new(j, "cpu_seconds", json_real(isfinite(o->cpu_seconds) && o->cpu_seconds > 0 ? o->cpu_seconds : 0));
+    /* the case's margin as written; a null one is NAN, or +inf when it
+     * was non-finite (a NaN or infinite row) */
+    json_t *m = json_object_get(j, "margin");
+    o->margin = json_is_number(m) ? json_number_value(m)
+              : json_object_get(json_object_get(j, "nonfinite"), "margin") ? INFINITY : NAN;
+    o->near_edge = o->verdict == SF_VERDICT_PASS && o->margin >= SF_NEAR_EDGE;
+    json_object_set_new(j, "near_edge", json_boolean(o->near_edge));
+    return j;
+}
+
+int sf_results_write(const sf_run_meta *meta, sf_outcome *o, size_t n,
+                     const char *baseline, char *err, size_t errlen)
+{
+    size_t np = 0, nf = 0, ne = 0, nedge = 0;
+    json_t *cases = json_array();
+    for (size_t i = 0; i < n; i++) {
+        json_array_append_new(cases, gather_case(meta->root, &o[i]));
+        np += o[i].verdict == SF_VERDICT_PASS;
+        nf += o[i].verdict == SF_VERDICT_FAIL;
+        ne += o[i].verdict == SF_VERDICT_ERROR;
+        nedge += o[i].near_edge != 0;
+    }
+    json_t *s = json_object();
+    json_object_set_new(s, "cases", json_integer((json_int_t)n));
+    json_object_set_new(s, "passed", json_integer((json_int_t)np));
+    json_object_set_new(s, "failed", json_integer((json_int_t)nf));
+    json_object_set_new(s, "errors", json_integer((json_int_t)ne));
+    json_object_set_new(s, "skipped", json_integer((json_int_t)meta->skipped));
+    json_object_set_new(s, "near_edge", json_integer((json_int_t)nedge));
+    json_object_set_new(s, "tier", jstr(meta->tier_name));
+    json_object_set_new(s, "seeds", jstr(meta->seed_note));
+    json_object_set_new(s, "wall_seconds", json_real(isfinite(meta->total_seconds) ? meta->total_seconds : 0));
+    json_object_set_new(s, "near_edge_threshold", json_real(SF_NEAR_EDGE));
+    json_object_set_new(s, "baseline", baseline ? jstr(baseline) : json_null());
+
+    json_t *j = json_object();
+    json_object_set_new(j, "schema", json_string(SF_RESULTS_SCHEMA));
+    json_object_set_new(j, "tool", json_string("slipfield"));
+    json_object_set_new(j, "version", json_string(SF_VERSION));
+    json_object_set_new(j, "git_revision", json_string(SF_GIT_REV));
+    json_object_set_new(j, "gsl", json_string(GSL_VERSION));
+    json_object_set_new(j, "fftw", jstr(fftw_version));
+    json_object_set_new(j, "summary", s);
+    json_object_set_new(j, "cases", cases);
+    char path[1100];
+    snprintf(path, sizeof path, "%s/results.json", meta->root);
+    int rc = dump_file(j, path, err, errlen);
+    json_decref(j);
+    return rc;
+}
