@@ -41,6 +41,28 @@ unsigned long sf_cof_outside(const sf_cof *c);
  * grid (always, for a uniform COF). */
 int sf_cof_covers(const sf_cof *c, double xb, double yb, double r);
 
+/* ---- Tiled fields (cof_generator = tiles, tiles.h): the grid is a
+ * window of nx x ny points on the lattice x = i l/8 (any integer i), y =
+ * y0 + j l/8, that slides along the belt.  Its values are a function of
+ * (realisation key, lattice point) alone, so the window is a cache of one
+ * field: sliding changes what is held, never a value, and the grid
+ * interface (grid, x0, y0, dx, dy, nx, ny) stays that of a grid.
+ * sf_cof_follow() makes the window hold belt x in [xlo, xhi] (all rows),
+ * sliding it if needed: SF_SUCCESS (also for non-window COFs, which
+ * hold what they hold), SF_ECAP when [xlo, xhi] is wider than the window.
+ * The oscillator calls it before every step with the disc's footprint
+ * plus a margin M = sf_cof_window_margin() (0: not a window) and caps the
+ * step so that the disc moves by less than M/2 (oscillator.c). */
+int sf_cof_follow(const sf_cof *c, double xlo, double xhi);
+double sf_cof_window_margin(const sf_cof *c);
+/* The largest mu_s held (uniform: mu_s). */
+double sf_cof_max(const sf_cof *c);
+/* Grid points held (0 for a uniform COF); slides so far; lattice columns
+ * made (the first fill included). */
+size_t sf_cof_points_held(const sf_cof *c);
+unsigned long sf_cof_slides(const sf_cof *c);
+size_t sf_cof_columns_made(const sf_cof *c);
+
 /* ---- The COF of a run, planned once per scene, drawn per realisation.
  *
  * The plan decides what a scene needs (one place): cof = uniform draws
@@ -70,6 +92,9 @@ typedef struct {
     double bound;            /* B [m] */
     int shortcut;            /* 1: a field scene planned as one variable */
     double strip_diag;       /* E: diagonal of the strip the disc can visit [m] (field scenes) */
+    double strip_points;     /* grid points of the whole strip (field scenes) */
+    int generator;           /* SF_COFGEN_CIRCULANT or SF_COFGEN_TILES (field scenes) */
+    double margin;           /* tiles: M [m]; nx x ny is then the window, x0 the strip's start */
 } sf_cof_plan_info;
 
 int sf_cof_plan_alloc(const sf_scene *s, sf_cof_plan **out, char *err, size_t errlen);
@@ -83,7 +108,12 @@ int sf_cof_plan_draw(sf_cof_plan *p, gsl_rng *rng, sf_cof **out);
 /* Convenience: plan, draw one realisation, free the plan. */
 int sf_cof_from_scene(const sf_scene *s, gsl_rng *rng, sf_cof **out);
 
-/* The largest number of strip grid points a plan accepts. */
+/* cof_generator = auto takes the tiles above this many strip points (the
+ * circulant's memory grows with v_b T / l^2: 286 MB at 4.2e5 points, l/R =
+ * 0.1, measured on Table 1; 1.1 GB at 1.7e6, l/R = 0.05). */
+#define SF_COF_AUTO_POINTS ((size_t)1 << 20)
+
+/* The largest number of strip (or window) grid points a plan accepts. */
 #define SF_COF_MAX_POINTS ((size_t)1 << 24)
 
 #endif
