@@ -95,6 +95,18 @@ size_t sf_cof_points_held(const sf_cof *c) { return c->kind == SF_COF_FIELD ? c-
 unsigned long sf_cof_slides(const sf_cof *c) { return c->slides; }
 size_t sf_cof_columns_made(const sf_cof *c) { return c->columns_made; }
 
+const double *sf_cof_grid_view(const sf_cof *c, size_t *m, size_t *n, double *x0, double *y0, double *dx,
+                               double *dy)
+{
+    *m = c->m;
+    *n = c->n;
+    *x0 = c->x0;
+    *y0 = c->y0;
+    *dx = c->dx;
+    *dy = c->dy;
+    return c->kind == SF_COF_FIELD ? c->grid : NULL;
+}
+
 /* Lattice columns [i, i + cnt) into grid columns [c0, c0 + cnt): the
  * Gaussian values, then the Nataf map pointwise. */
 static int window_make(sf_cof *c, long i, size_t c0, size_t cnt)

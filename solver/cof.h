@@ -61,6 +61,10 @@ double sf_cof_max(const sf_cof *c);
  * made (the first fill included). */
 size_t sf_cof_points_held(const sf_cof *c);
 unsigned long sf_cof_slides(const sf_cof *c);
+/* The values held (NULL for a uniform COF): g[i + m j] at (x0 + i dx,
+ * y0 + j dy); valid until the next sf_cof_follow(). */
+const double *sf_cof_grid_view(const sf_cof *c, size_t *m, size_t *n, double *x0, double *y0, double *dx,
+                               double *dy);
 size_t sf_cof_columns_made(const sf_cof *c);
 
 /* ---- The COF of a run, planned once per scene, drawn per realisation.
