@@ -91,7 +91,7 @@ int sf_cmd_run(int argc, char **argv)
                    "belt (footprint 2R, margin %.4g m each side, slack R ahead); the circulant strip over [0, T] "
                    "would need %.3g points%s\n",
                    s.cof_generator == SF_COFGEN_TILES ? "tiles" : "auto",
-                   s.cof_generator == SF_COFGEN_TILES ? "" : ", strip above 2^20 points", in->nx, in->ny, in->dx,
+                   s.cof_generator == SF_COFGEN_TILES ? "" : ", strip above 2^21 points", in->nx, in->ny, in->dx,
                    -in->y0, in->margin, in->strip_points,
                    in->strip_points > (double)SF_COF_MAX_POINTS ? " (above the cap of 2^24)" : "");
         else
@@ -100,7 +100,7 @@ int sf_cmd_run(int argc, char **argv)
                    "(FFTW_ESTIMATE), reused for every realisation; circulant embedding (cof_generator = %s%s)\n",
                    in->nx, in->ny, in->dx, in->x0, -in->y0, (in->strip_diag / s.l) * (in->strip_diag / s.l),
                    SF_COF_SHORTCUT_E2, s.cof_generator == SF_COFGEN_AUTO ? "auto" : "circulant",
-                   s.cof_generator == SF_COFGEN_AUTO ? ": strip at or below 2^20 points" : "");
+                   s.cof_generator == SF_COFGEN_AUTO ? ": strip at or below 2^21 points" : "");
     }
     gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
     gsl_rng_set(rng, s.seed);

@@ -45,7 +45,10 @@ int sf_cof_covers(const sf_cof *c, double xb, double yb, double r);
  * window of nx x ny points on the lattice x = i l/8 (any integer i), y =
  * y0 + j l/8, that slides along the belt.  Its values are a function of
  * (realisation key, lattice point) alone, so the window is a cache of one
- * field: sliding changes what is held, never a value, and the grid
+ * field: sliding changes what is held, never a node value (between nodes
+ * the bilinear weights come from (x - x0)/dx and may round differently
+ * for another origin: the last bits of a look-up depend on where the
+ * window stands, which is itself a function of the run), and the grid
  * interface (grid, x0, y0, dx, dy, nx, ny) stays that of a grid.
  * sf_cof_follow() makes the window hold belt x in [xlo, xhi] (all rows),
  * sliding it if needed: SF_SUCCESS (also for non-window COFs, which
@@ -112,10 +115,13 @@ int sf_cof_plan_draw(sf_cof_plan *p, gsl_rng *rng, sf_cof **out);
 /* Convenience: plan, draw one realisation, free the plan. */
 int sf_cof_from_scene(const sf_scene *s, gsl_rng *rng, sf_cof **out);
 
-/* cof_generator = auto takes the tiles above this many strip points (the
- * circulant's memory grows with v_b T / l^2: 286 MB at 4.2e5 points, l/R =
- * 0.1, measured on Table 1; 1.1 GB at 1.7e6, l/R = 0.05). */
-#define SF_COF_AUTO_POINTS ((size_t)1 << 20)
+/* cof_generator = auto takes the tiles above this many strip points.  The
+ * circulant's memory grows with v_b T / l^2 (286 MB at 1.7e6 strip points,
+ * l = 0.05 m, Table 1, T = 100 s; 1.1 GB at 6.8e6, l = 0.025 m); 2^21
+ * keeps every existing case on the circulant (their bits unchanged, e.g.
+ * cases/validation/fig16-bifurcation-lr at l/R = 0.1) and takes the tiles
+ * from about l = 0.045 m at Table 1 (issue 14). */
+#define SF_COF_AUTO_POINTS ((size_t)1 << 21)
 
 /* The largest number of strip (or window) grid points a plan accepts. */
 #define SF_COF_MAX_POINTS ((size_t)1 << 24)
