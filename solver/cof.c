@@ -281,11 +281,12 @@ int sf_cof_plan_alloc(const sf_scene *s, sf_cof_plan **out, char *err, size_t er
                     snprintf(err, errlen, "precorrect needs cof_generator = circulant (the tiles make Eq. 2 only)");
                 return SF_EINVAL;
             }
-            /* the window: the disc's footprint 2R, a margin M each side
-             * (a step never moves the disc by more than M/2: sf_osc), a
+            /* the window: the disc's footprint 2R, a margin M = R/4 each
+             * side (a step never moves the disc by more than M/2: sf_osc;
+             * a smaller M caps the steps harder), a
              * slack R towards -x (where the belt carries the disc) so
              * that a slide is due once per R of travel, and M towards +x */
-            double M = fmax(s->R / 10, 2 * h);
+            double M = fmax(s->R / 4, 2 * h);
             double mx = ceil((3 * s->R + 3 * M) / h) + 1;
             if (!(mx * ny <= (double)SF_COF_MAX_POINTS)) {
                 free(p);

@@ -485,14 +485,15 @@ static void track(const sf_osc *o, double t, sf_osc_result *r, const double *y)
  * velocity (vx - v_b, vy), of size u at the step's start; its
  * acceleration is (spring + friction)/m, bounded while the disc stays
  * within M of its start by a = (k (|r| + 2 M) + mu_max m g) / m, mu_max
- * the largest COF the window holds (the kinetic COF is smaller; the
- * friction force is at most mu_max m g); and a Runge-Kutta stage point is
- * y0 + h sum_j a_ij k_j with sum_j a_ij = c_i <= 1, so its displacement is
- * at most h u + C a h^2 with C = (max_i sum_j |a_ij|)^2 = 6.6^2 < 44 for
- * Cash-Karp (the stepper a quadrature wrench runs); h u + 44 a h^2 <=
- * M/2 gives the cap.  A step is also capped at M / v_b, so that the
- * belt's own motion over it stays below M.  Stick phases move the disc
- * with the belt (its belt point is fixed), events are located inside the
+ * the largest COF the window holds (the friction force is at most
+ * mu_max m g).  A Runge-Kutta stage's position is x0 + h sum_j a_ij v_j,
+ * its stage velocities v_j = v0 + h sum_l a_jl acc_l, so with sum_j a_ij
+ * = c_i <= 1 its displacement is at most h u + C a h^2, C = max_i sum_j
+ * |a_ij| sum_l |a_jl|: 4.39 for Cash-Karp (row 5: 2.5 x 0.2 + 70/27 x 0.3
+ * + 35/27 x 2.4), 0.5 for RK4; for rk8pd (13 stages) we take 45, ten
+ * times Cash-Karp's, without a derivation.  h u + C a h^2 <= M/2 gives
+ * the cap; a step is also capped at M / v_b.  Stick phases move the disc
+ * with the belt (its belt point is fixed); events are located inside the
  * step.  Checked, not trusted: sf_cof_outside() counts every look-up off
  * the window, rejected stages included (cases/dynamics/tiles-small-l). */
 static int follow(sf_osc *o, double t, const double *y, double *hcap)
@@ -506,9 +507,10 @@ static int follow(sf_osc *o, double t, const double *y, double *hcap)
     int rc = sf_cof_follow(o->cof, xb - s->R - M, xb + s->R + M);
     if (rc)
         return rc;
+    double C = o->step->type == gsl_odeiv2_step_rk8pd ? 45 : 4.5;
     double u = hypot(y[VX] - s->v_b, y[VY]);
     double a = (s->k * (hypot(y[X], y[Y]) + 2 * M) + sf_cof_max(o->cof) * o->N) / s->m;
-    *hcap = fmin((sqrt(u * u + 88 * a * M) - u) / (88 * a), M / s->v_b);   /* h u + 44 a h^2 = M/2 */
+    *hcap = fmin((sqrt(u * u + 2 * C * a * M) - u) / (2 * C * a), M / s->v_b);   /* h u + C a h^2 = M/2 */
     return SF_SUCCESS;
 }
 

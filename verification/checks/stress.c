@@ -54,10 +54,10 @@ static int chk_cof_plan_range(const sf_case *c, sf_result *r)
         } else {
             /* probe the strip densely along its centre line and edges; a
              * tiled window is made to follow the probe (over the first
-             * 2 m of belt: the whole 20 m would cost seconds at l = 5 mm,
+             * 1 m of belt: the whole 20 m would cost seconds at l = 5 mm,
              * and cases/dynamics/tiles-small-l covers the sliding) */
             int tiled = in->kind == SF_COF_FIELD && in->generator == SF_COFGEN_TILES;
-            double reach = tiled ? fmin(s.v_b * s.T, 2.0) : s.v_b * s.T;
+            double reach = tiled ? fmin(s.v_b * s.T, 1.0) : s.v_b * s.T;
             for (int q = 0; q <= 2000; q++) {
                 double xb = -reach * q / 2000.0;
                 if (tiled && sf_cof_follow(cof, xb - 1e-3, xb + 1e-3))
