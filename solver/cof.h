@@ -74,7 +74,10 @@ size_t sf_cof_columns_made(const sf_cof *c);
  *
  * The plan decides what a scene needs (one place): cof = uniform draws
  * nothing; variable draws one lognormal value; field samples a lognormal
- * field on the belt strip the disc can visit during [0, T]:
+ * field on the belt strip the disc can visit during [0, T] (by circulant
+ * embedding of the whole strip; or, cof_generator = tiles or auto above
+ * SF_COF_AUTO_POINTS strip points, in a window of it that follows the
+ * disc: see below):
  *   xb in [-v_b T - B, B],  yb in [-W, W],
  *   B = R + 2 mu_hi m g / k + 2 h,  W = strip_halfwidth + R + 2 h (0: W = B),
  * where 2 mu_hi m g / k (mu_hi = mu_mean + 4 mu_std) bounds the spring
@@ -109,7 +112,11 @@ void sf_cof_plan_free(sf_cof_plan *p);
 const sf_cof_plan_info *sf_cof_plan_get_info(const sf_cof_plan *p);
 /* One realisation from rng (nothing is drawn for a uniform COF).  A
  * function of the rng state alone: no field is carried over between
- * draws (each costs one FFT of which the second field is discarded). */
+ * draws (each costs one FFT of which the second field is discarded).
+ * Tiles (info.generator = SF_COFGEN_TILES): the draw takes the 64-bit key
+ * of the realisation from two gsl_rng_get calls and returns a window of
+ * info.nx x info.ny points over the disc at the origin; the rest of the
+ * belt is made as sf_cof_follow() asks for it (the oscillator does). */
 int sf_cof_plan_draw(sf_cof_plan *p, gsl_rng *rng, sf_cof **out);
 
 /* Convenience: plan, draw one realisation, free the plan. */
