@@ -21,6 +21,7 @@ int bench_contact(FILE *f, const char *dir);
 int bench_dynamics(FILE *f, const char *dir);
 int bench_sweep(FILE *f, const char *dir);
 int bench_memory(FILE *f, const char *dir);
+int bench_belt(FILE *f, const char *dir);
 int bench_fftw(FILE *f, const char *dir);
 
 #endif

@@ -38,6 +38,7 @@ int main(int argc, char **argv)
         { "field", bench_field, 0, NULL, 0 },   { "contact", bench_contact, 0, NULL, 0 },
         { "dynamics", bench_dynamics, 0, NULL, 0 }, { "fftw", bench_fftw, 0, NULL, 0 },
         { "sweep", bench_sweep, 0, NULL, 0 },   { "memory", bench_memory, 1, NULL, 0 },
+        { "belt", bench_belt, 1, NULL, 0 },
     };
     enum { NSEC = sizeof sec / sizeof sec[0] };
     int rc = 0;

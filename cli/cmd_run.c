@@ -85,12 +85,22 @@ int sf_cmd_run(int argc, char **argv)
                    "(cases/plan/variable-shortcut-boundary)\n",
                    in->strip_diag, s.l, (in->strip_diag / s.l) * (in->strip_diag / s.l), SF_COF_SHORTCUT_E2,
                    SF_COF_SHORTCUT_E2);
+        else if (in->generator == SF_COFGEN_TILES)
+            printf("COF: lognormal field generated on demand from tiles of white noise (cof_generator = %s%s): a "
+                   "window of %zu x %zu points, spacing %.4g m (l/8), |y| <= %.4g m, that follows the disc along the "
+                   "belt (footprint 2R, margin %.4g m each side, slack R ahead); the circulant strip over [0, T] "
+                   "would need %.3g points%s\n",
+                   s.cof_generator == SF_COFGEN_TILES ? "tiles" : "auto",
+                   s.cof_generator == SF_COFGEN_TILES ? "" : ", strip above 2^21 points", in->nx, in->ny, in->dx,
+                   -in->y0, in->margin, in->strip_points,
+                   in->strip_points > (double)SF_COF_MAX_POINTS ? " (above the cap of 2^24)" : "");
         else
             printf("COF: lognormal field on the belt strip, %zu x %zu points, spacing %.4g m (l/8), x from %.4g m, "
                    "|y| <= %.4g m; (E/l)^2 = %.3g, above the one-variable threshold %g; one FFTW plan "
-                   "(FFTW_ESTIMATE), reused for every realisation\n",
+                   "(FFTW_ESTIMATE), reused for every realisation; circulant embedding (cof_generator = %s%s)\n",
                    in->nx, in->ny, in->dx, in->x0, -in->y0, (in->strip_diag / s.l) * (in->strip_diag / s.l),
-                   SF_COF_SHORTCUT_E2);
+                   SF_COF_SHORTCUT_E2, s.cof_generator == SF_COFGEN_AUTO ? "auto" : "circulant",
+                   s.cof_generator == SF_COFGEN_AUTO ? ": strip at or below 2^21 points" : "");
     }
     gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
     gsl_rng_set(rng, s.seed);

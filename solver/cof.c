@@ -2,6 +2,7 @@
 #include "lnfield.h"
 #include "lognormal.h"
 #include "sf_error.h"
+#include "tiles.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -16,6 +17,18 @@ struct sf_cof {
     double x0, y0, dx, dy;
     double *grid;              /* m*n values, x fastest */
     unsigned long outside;     /* evaluations clamped to the grid edge */
+    double mu_max;             /* largest value held (grid or window) */
+    /* a window on a tiled field (cof_generator = tiles): grid column c is
+     * lattice column i_lo + c, x0 = i_lo dx; the values are a function of
+     * (key, lattice point) alone, so the window is a cache of the field */
+    sf_tiles *tiles;
+    sf_lognormal ln;
+    long i_lo;
+    int filled;
+    size_t slack_r;            /* columns kept ahead on the +x side when sliding */
+    double margin;             /* M [m] (sf_cof_window_margin) */
+    unsigned long slides;
+    size_t columns_made;
 };
 
 static sf_cof *cof_new(sf_cof_kind kind)
@@ -34,7 +47,7 @@ int sf_cof_alloc_uniform(double mu_s, sf_cof **out)
     sf_cof *c = cof_new(SF_COF_UNIFORM);
     if (!c)
         return SF_ENOMEM;
-    c->mu = mu_s;
+    c->mu = c->mu_max = mu_s;
     *out = c;
     return SF_SUCCESS;
 }
@@ -54,6 +67,9 @@ int sf_cof_alloc_grid(size_t m, size_t n, double x0, double y0,
         return SF_ENOMEM;
     }
     memcpy(c->grid, mu_s, m * n * sizeof *c->grid);
+    c->mu_max = mu_s[0];
+    for (size_t i = 1; i < m * n; i++)
+        c->mu_max = fmax(c->mu_max, mu_s[i]);
     c->m = m;
     c->n = n;
     c->x0 = x0;
@@ -69,7 +85,83 @@ void sf_cof_free(sf_cof *c)
     if (!c)
         return;
     free(c->grid);
+    sf_tiles_free(c->tiles);
     free(c);
+}
+
+double sf_cof_max(const sf_cof *c) { return c->kind == SF_COF_FIELD ? c->mu_max : c->mu; }
+double sf_cof_window_margin(const sf_cof *c) { return c->tiles ? c->margin : 0; }
+size_t sf_cof_points_held(const sf_cof *c) { return c->kind == SF_COF_FIELD ? c->m * c->n : 0; }
+unsigned long sf_cof_slides(const sf_cof *c) { return c->slides; }
+size_t sf_cof_columns_made(const sf_cof *c) { return c->columns_made; }
+
+/* Lattice columns [i, i + cnt) into grid columns [c0, c0 + cnt): the
+ * Gaussian values, then the Nataf map pointwise. */
+static int window_make(sf_cof *c, long i, size_t c0, size_t cnt)
+{
+    int rc = sf_tiles_fill(c->tiles, i, cnt, c->grid + c0, c->m);
+    if (rc)
+        return rc;
+    for (size_t j = 0; j < c->n; j++) {
+        double *g = c->grid + c0 + c->m * j;
+        for (size_t k = 0; k < cnt; k++)
+            g[k] = sf_lognormal_map(&c->ln, g[k]);
+    }
+    c->columns_made += cnt;
+    return SF_SUCCESS;
+}
+
+/* Move the window so that grid column 0 is lattice column lo: the
+ * columns both windows hold are moved, the others made. */
+static int window_slide(sf_cof *c, long lo)
+{
+    size_t m = c->m;
+    int rc = SF_SUCCESS;
+    long shift = c->filled ? c->i_lo - lo : (long)m;   /* > 0: the window moves towards -x */
+    if (shift >= (long)m || shift <= -(long)m) {
+        rc = window_make(c, lo, 0, m);
+    } else if (shift > 0) {
+        size_t d = (size_t)shift;
+        for (size_t j = 0; j < c->n; j++)
+            memmove(c->grid + c->m * j + d, c->grid + c->m * j, (m - d) * sizeof *c->grid);
+        rc = window_make(c, lo, 0, d);
+    } else if (shift < 0) {
+        size_t d = (size_t)-shift;
+        for (size_t j = 0; j < c->n; j++)
+            memmove(c->grid + c->m * j, c->grid + c->m * j + d, (m - d) * sizeof *c->grid);
+        rc = window_make(c, lo + (long)(m - d), m - d, d);
+    }
+    if (rc) {
+        c->filled = 0;
+        return rc;
+    }
+    c->filled = 1;
+    c->i_lo = lo;
+    c->x0 = (double)lo * c->dx;
+    double mx = c->grid[0];
+    for (size_t i = 1; i < m * c->n; i++)
+        mx = c->grid[i] > mx ? c->grid[i] : mx;
+    c->mu_max = mx;
+    c->slides++;
+    return SF_SUCCESS;
+}
+
+int sf_cof_follow(const sf_cof *cc, double xlo, double xhi)
+{
+    sf_cof *c = (sf_cof *)cc;   /* the window is a cache: the field it shows does not change */
+    if (!c->tiles)
+        return SF_SUCCESS;
+    if (!(xlo <= xhi) || !isfinite(xlo) || !isfinite(xhi))
+        return SF_EINVAL;
+    double h = c->dx;
+    if (c->filled && xlo >= c->x0 && xhi <= c->x0 + h * (double)(c->m - 1))
+        return SF_SUCCESS;
+    if (!(fabs(xhi / h) < 1e15))
+        return SF_EINVAL;
+    long hi = (long)ceil(xhi / h) + (long)c->slack_r, lo = hi - (long)(c->m - 1);
+    if ((double)lo * h > xlo)
+        return SF_ECAP;   /* wider than the window */
+    return window_slide(c, lo);
 }
 
 sf_cof_kind sf_cof_get_kind(const sf_cof *c) { return c->kind; }
@@ -141,6 +233,7 @@ struct sf_cof_plan {
     double mu_mean;
     sf_lnfield *field;
     double *buf;
+    double l, R;               /* tiles: correlation length, disc radius [m] */
 };
 
 static int plan_err(char *err, size_t n, int rc, const char *fmt, double a, double b)
@@ -178,6 +271,44 @@ int sf_cof_plan_alloc(const sf_scene *s, sf_cof_plan **out, char *err, size_t er
             return SF_SUCCESS;
         }
         double nx = ceil(len / h) + 1, ny = ceil(2 * W / h) + 1;
+        p->info.strip_points = nx * ny;
+        int gen = s->cof_generator;
+        if (gen == SF_COFGEN_AUTO)
+            gen = nx * ny > (double)SF_COF_AUTO_POINTS && !(s->precorrect && s->mu_std > 0) ? SF_COFGEN_TILES
+                                                                                          : SF_COFGEN_CIRCULANT;
+        p->info.generator = gen;
+        if (gen == SF_COFGEN_TILES) {
+            if (s->precorrect && s->mu_std > 0) {
+                free(p);
+                if (err && errlen)
+                    snprintf(err, errlen, "precorrect needs cof_generator = circulant (the tiles make Eq. 2 only)");
+                return SF_EINVAL;
+            }
+            /* the window: the disc's footprint 2R, a margin M = R/4 each
+             * side (a step never moves the disc by more than M/2: sf_osc;
+             * a smaller M caps the steps harder), a
+             * slack R towards -x (where the belt carries the disc) so
+             * that a slide is due once per R of travel, and M towards +x */
+            double M = fmax(s->R / 4, 2 * h);
+            double mx = ceil((3 * s->R + 3 * M) / h) + 1;
+            if (!(mx * ny <= (double)SF_COF_MAX_POINTS)) {
+                free(p);
+                return plan_err(err, errlen, SF_ECAP,
+                                "the tiled window needs %.3g grid points (spacing l/8 = %.3g m): above the cap of "
+                                "2^24; raise l or set strip_halfwidth", mx * ny, h);
+            }
+            p->info.nx = (size_t)mx;
+            p->info.ny = (size_t)ny;
+            p->info.dx = p->info.dy = h;
+            p->info.x0 = -s->v_b * s->T - B;
+            p->info.y0 = -W;
+            p->info.bound = B;
+            p->info.margin = M;
+            p->l = s->l;
+            p->R = s->R;
+            *out = p;
+            return SF_SUCCESS;
+        }
         if (!(nx * ny <= (double)SF_COF_MAX_POINTS)) {
             free(p);
             return plan_err(err, errlen, SF_ECAP,
@@ -226,6 +357,41 @@ void sf_cof_plan_free(sf_cof_plan *p)
 
 const sf_cof_plan_info *sf_cof_plan_get_info(const sf_cof_plan *p) { return &p->info; }
 
+/* A tiled realisation: its key is 64 bits from rng (two 32-bit draws);
+ * the window starts over the disc at the origin. */
+static int draw_window(const sf_cof_plan *p, gsl_rng *rng, sf_cof **out)
+{
+    const sf_cof_plan_info *in = &p->info;
+    uint64_t key = (uint64_t)gsl_rng_get(rng) << 32;
+    key ^= (uint64_t)gsl_rng_get(rng);
+    sf_cof *c = cof_new(SF_COF_FIELD);
+    if (!c)
+        return SF_ENOMEM;
+    c->m = in->nx;
+    c->n = in->ny;
+    c->dx = in->dx;
+    c->dy = in->dy;
+    c->y0 = in->y0;
+    c->ln = p->ln;
+    c->margin = in->margin;
+    c->slack_r = (size_t)ceil(in->margin / in->dx);
+    sf_tiles_spec ts = { in->ny, in->dx, in->dy, p->l, 0, 0 };
+    int rc = sf_tiles_alloc(&ts, &c->tiles);
+    if (!rc && !(c->grid = malloc(c->m * c->n * sizeof *c->grid)))
+        rc = SF_ENOMEM;
+    if (!rc) {
+        sf_tiles_set_key(c->tiles, key);
+        rc = sf_cof_follow(c, -p->R - in->margin, p->R + in->margin);
+        c->slides = 0;   /* the first fill is not a slide */
+    }
+    if (rc) {
+        sf_cof_free(c);
+        return rc;
+    }
+    *out = c;
+    return SF_SUCCESS;
+}
+
 int sf_cof_plan_draw(sf_cof_plan *p, gsl_rng *rng, sf_cof **out)
 {
     *out = NULL;
@@ -239,6 +405,8 @@ int sf_cof_plan_draw(sf_cof_plan *p, gsl_rng *rng, sf_cof **out)
         return rc;
     }
     case SF_COF_FIELD: {
+        if (p->info.generator == SF_COFGEN_TILES)
+            return draw_window(p, rng, out);
         sf_field_discard(sf_lnfield_gaussian(p->field));
         int rc = sf_lnfield_sample(p->field, rng, NULL, p->buf);
         if (rc)

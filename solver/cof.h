@@ -48,11 +48,41 @@ int sf_cof_grid_view(const sf_cof *c, size_t *m, size_t *n, double *x0, double *
  * grid (always, for a uniform COF). */
 int sf_cof_covers(const sf_cof *c, double xb, double yb, double r);
 
+/* ---- Tiled fields (cof_generator = tiles, tiles.h): the grid is a
+ * window of nx x ny points on the lattice x = i l/8 (any integer i), y =
+ * y0 + j l/8, that slides along the belt.  Its values are a function of
+ * (realisation key, lattice point) alone, so the window is a cache of one
+ * field: sliding changes what is held, never a node value (between nodes
+ * the bilinear weights come from (x - x0)/dx and may round differently
+ * for another origin: the last bits of a look-up depend on where the
+ * window stands, which is itself a function of the run), and the grid
+ * interface (grid, x0, y0, dx, dy, nx, ny) stays that of a grid.
+ * sf_cof_follow() makes the window hold belt x in [xlo, xhi] (all rows),
+ * sliding it if needed: SF_SUCCESS (also for non-window COFs, which
+ * hold what they hold), SF_ECAP when [xlo, xhi] is wider than the window.
+ * The oscillator calls it before every step with the disc's footprint
+ * plus a margin M = sf_cof_window_margin() (0: not a window) and caps the
+ * step so that the disc moves by less than M/2 (oscillator.c). */
+int sf_cof_follow(const sf_cof *c, double xlo, double xhi);
+double sf_cof_window_margin(const sf_cof *c);
+/* The largest mu_s held (uniform: mu_s). */
+double sf_cof_max(const sf_cof *c);
+/* Grid points held (0 for a uniform COF); slides so far; lattice columns
+ * made (the first fill included). */
+size_t sf_cof_points_held(const sf_cof *c);
+unsigned long sf_cof_slides(const sf_cof *c);
+/* sf_cof_grid_view() (above) gives a window's values too: valid until
+ * the next sf_cof_follow(). */
+size_t sf_cof_columns_made(const sf_cof *c);
+
 /* ---- The COF of a run, planned once per scene, drawn per realisation.
  *
  * The plan decides what a scene needs (one place): cof = uniform draws
  * nothing; variable draws one lognormal value; field samples a lognormal
- * field on the belt strip the disc can visit during [0, T]:
+ * field on the belt strip the disc can visit during [0, T] (by circulant
+ * embedding of the whole strip; or, cof_generator = tiles or auto above
+ * SF_COF_AUTO_POINTS strip points, in a window of it that follows the
+ * disc: see below):
  *   xb in [-v_b T - B, B],  yb in [-W, W],
  *   B = R + 2 mu_hi m g / k + 2 h,  W = strip_halfwidth + R + 2 h (0: W = B),
  * where 2 mu_hi m g / k (mu_hi = mu_mean + 4 mu_std) bounds the spring
@@ -77,6 +107,9 @@ typedef struct {
     double bound;            /* B [m] */
     int shortcut;            /* 1: a field scene planned as one variable */
     double strip_diag;       /* E: diagonal of the strip the disc can visit [m] (field scenes) */
+    double strip_points;     /* grid points of the whole strip (field scenes) */
+    int generator;           /* SF_COFGEN_CIRCULANT or SF_COFGEN_TILES (field scenes) */
+    double margin;           /* tiles: M [m]; nx x ny is then the window, x0 the strip's start */
 } sf_cof_plan_info;
 
 int sf_cof_plan_alloc(const sf_scene *s, sf_cof_plan **out, char *err, size_t errlen);
@@ -84,13 +117,25 @@ void sf_cof_plan_free(sf_cof_plan *p);
 const sf_cof_plan_info *sf_cof_plan_get_info(const sf_cof_plan *p);
 /* One realisation from rng (nothing is drawn for a uniform COF).  A
  * function of the rng state alone: no field is carried over between
- * draws (each costs one FFT of which the second field is discarded). */
+ * draws (each costs one FFT of which the second field is discarded).
+ * Tiles (info.generator = SF_COFGEN_TILES): the draw takes the 64-bit key
+ * of the realisation from two gsl_rng_get calls and returns a window of
+ * info.nx x info.ny points over the disc at the origin; the rest of the
+ * belt is made as sf_cof_follow() asks for it (the oscillator does). */
 int sf_cof_plan_draw(sf_cof_plan *p, gsl_rng *rng, sf_cof **out);
 
 /* Convenience: plan, draw one realisation, free the plan. */
 int sf_cof_from_scene(const sf_scene *s, gsl_rng *rng, sf_cof **out);
 
-/* The largest number of strip grid points a plan accepts. */
+/* cof_generator = auto takes the tiles above this many strip points.  The
+ * circulant's memory grows with v_b T / l^2 (286 MB at 1.7e6 strip points,
+ * l = 0.05 m, Table 1, T = 100 s; 1.1 GB at 6.8e6, l = 0.025 m); 2^21
+ * keeps every existing case on the circulant (their bits unchanged, e.g.
+ * cases/validation/fig16-bifurcation-lr at l/R = 0.1) and takes the tiles
+ * from about l = 0.045 m at Table 1 (issue 14). */
+#define SF_COF_AUTO_POINTS ((size_t)1 << 21)
+
+/* The largest number of strip (or window) grid points a plan accepts. */
 #define SF_COF_MAX_POINTS ((size_t)1 << 24)
 
 #endif

@@ -513,6 +513,43 @@ static void track(const sf_osc *o, double t, sf_osc_result *r, const double *y)
     r->off_strip += !sf_cof_covers(o->cof, y[X] - o->s.v_b * t, y[Y], o->s.R);
 }
 
+/* A tiled COF (sf_cof_follow) holds a window of the belt: before every
+ * step (stick or slip) it is made to hold the disc's footprint plus a
+ * margin M on each side, and the step is capped so that no stage of it
+ * (accepted or rejected) can move the disc by M/2 or more on the belt.
+ * Why the cap suffices: on the belt the centre moves at the relative
+ * velocity (vx - v_b, vy), of size u at the step's start; its
+ * acceleration is (spring + friction)/m, bounded while the disc stays
+ * within M of its start by a = (k (|r| + 2 M) + mu_max m g) / m, mu_max
+ * the largest COF the window holds (the friction force is at most
+ * mu_max m g).  A Runge-Kutta stage's position is x0 + h sum_j a_ij v_j,
+ * its stage velocities v_j = v0 + h sum_l a_jl acc_l, so with sum_j a_ij
+ * = c_i <= 1 its displacement is at most h u + C a h^2, C = max_i sum_j
+ * |a_ij| sum_l |a_jl|: 4.39 for Cash-Karp (row 5: 2.5 x 0.2 + 70/27 x 0.3
+ * + 35/27 x 2.4), 0.5 for RK4; for rk8pd (13 stages) we take 45, ten
+ * times Cash-Karp's, without a derivation.  h u + C a h^2 <= M/2 gives
+ * the cap; a step is also capped at M / v_b.  Stick phases move the disc
+ * with the belt (its belt point is fixed); events are located inside the
+ * step.  Checked, not trusted: sf_cof_outside() counts every look-up off
+ * the window, rejected stages included (cases/dynamics/tiles-small-l). */
+static int follow(sf_osc *o, double t, const double *y, double *hcap)
+{
+    double M = sf_cof_window_margin(o->cof);
+    *hcap = INFINITY;
+    if (!(M > 0))
+        return SF_SUCCESS;
+    const sf_scene *s = &o->s;
+    double xb = y[X] - s->v_b * t;
+    int rc = sf_cof_follow(o->cof, xb - s->R - M, xb + s->R + M);
+    if (rc)
+        return rc;
+    double C = o->step->type == gsl_odeiv2_step_rk8pd ? 45 : 4.5;
+    double u = hypot(y[VX] - s->v_b, y[VY]);
+    double a = (s->k * (hypot(y[X], y[Y]) + 2 * M) + sf_cof_max(o->cof) * o->N) / s->m;
+    *hcap = fmin((sqrt(u * u + 2 * C * a * M) - u) / (2 * C * a), M / s->v_b);   /* h u + C a h^2 = M/2 */
+    return SF_SUCCESS;
+}
+
 int sf_osc_run(sf_osc *o, sf_osc_row_fn row, void *ctx, double sample_dt, sf_osc_result *res,
                char *err, size_t errlen)
 {
@@ -544,11 +581,18 @@ int sf_osc_run(sf_osc *o, sf_osc_row_fn row, void *ctx, double sample_dt, sf_osc
         if ((rc = transition(&a, SF_OSC_STICK_ONSET, 0, 0, 0)))
             return rc;
     }
+    double hcap;
+    if ((rc = follow(o, 0, y, &hcap)))
+        return seterr(err, errlen, rc, "the COF window cannot follow the disc");
     wrench(o, 0, y, q);
     double pa[3] = { 0, y[VX], stick ? 0 : q[0] / s->m };   /* x, vx, ax at the last step end */
     sample(res, &next, 0, pa, 0, pa);
     emit(o, row, ctx, 0, y, stick ? (double[3]){ 0, 0, 0 } : q, stick);
     while (t < s->T && rc == SF_SUCCESS) {
+        if ((rc = follow(o, t, y, &hcap))) {
+            rc = seterr(err, errlen, rc, "the COF window cannot follow the disc");
+            break;
+        }
         if (stick) {
             double tau = sf_osc_stick_duration(o, t, y), t1 = fmin(t + tau, s->T), x0 = y[X];
             sf_osc_stick_move(o, y, t1 - t);
@@ -587,10 +631,15 @@ int sf_osc_run(sf_osc *o, sf_osc_row_fn row, void *ctx, double sample_dt, sf_osc
         memcpy(y0, y, sizeof y0);
         if (s->integrator == SF_INTEG_RK4) {
             double hh = fmin(s->dt, s->T - t), yerr[NSTATE];
+            int last = s->T - t <= s->dt;
+            if (hcap < hh) {
+                hh = hcap;
+                last = 0;
+            }
             gsl_odeiv2_step_apply(o->step, t, hh, y, yerr, NULL, NULL, &o->sys);
-            t = (s->T - t <= s->dt) ? s->T : t + hh;
+            t = last ? s->T : t + hh;
         } else {
-            int st = gsl_odeiv2_evolve_apply(o->ev, o->con, o->step, &o->sys, &t, s->T, &h, y);
+            int st = gsl_odeiv2_evolve_apply(o->ev, o->con, o->step, &o->sys, &t, fmin(s->T, t + hcap), &h, y);
             if (st != GSL_SUCCESS) {
                 rc = seterr(err, errlen, SF_EFAIL, "the adaptive stepper failed (step size underflow)");
                 break;

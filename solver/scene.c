@@ -54,6 +54,7 @@ static const key_t_ keys[] = {
     { "fftw_planner", K_ENUM, OFF(fftw_planner), 0, 0, 0, 0, 0, "estimate", "", "estimate|measure", "sampling FFT plan: estimate (same bits in every process) or measure (timed, faster on large grids; see SLIPFIELD_FFTW_WISDOM)" },
     { "precorrect", K_BOOL, OFF(precorrect), 0, 0, 0, 0, 0, "false", "", NULL, "pre-correct the Gaussian correlation so the lognormal field has Eq. 2" },
     { "strip_halfwidth", K_DOUBLE, OFF(strip_halfwidth), 0, 0, INF, 0, 0, "0.5", "m", NULL, "lateral excursion |y| the COF strip covers beyond R (0: the spring-excursion bound); a run that leaves it fails" },
+    { "cof_generator", K_ENUM, OFF(cof_generator), 0, 0, 0, 0, 0, "auto", "", "auto|circulant|tiles", "belt COF field generator: circulant strip over [0, T], tiles generated on demand in a window that follows the disc, or auto (circulant unless its strip exceeds 2^21 points; slipfield run --explain says which)" },
     { "samples", K_SIZE, OFF(samples), 0, 1, 1e9, 0, 0, "1000", "1", NULL, "number of samples or realisations" },
     /* contact */
     { "layout", K_ENUM, OFF(layout), 0, 0, 0, 0, 0, "polar", "", "polar|cartesian", "disc quadrature layout" },

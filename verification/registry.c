@@ -11,6 +11,7 @@ static const sf_check_def *const families[] = {
     sf_checks_stress,
     sf_checks_deterministic,
     sf_checks_dynamics,
+    sf_checks_belt,
     sf_checks_limits,
     sf_checks_validation,
     sf_checks_plan,

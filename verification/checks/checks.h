@@ -11,6 +11,7 @@ extern const sf_check_def sf_checks_surface[];
 extern const sf_check_def sf_checks_stress[];
 extern const sf_check_def sf_checks_deterministic[];
 extern const sf_check_def sf_checks_dynamics[];
+extern const sf_check_def sf_checks_belt[];
 extern const sf_check_def sf_checks_limits[];
 extern const sf_check_def sf_checks_validation[];
 extern const sf_check_def sf_checks_plan[];

@@ -5,7 +5,9 @@
 #include "common.h"
 #include "../stats.h"
 #include "field.h"
+#include "scene.h"
 #include "sf_error.h"
+#include "tiles.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -87,6 +89,76 @@ static int chk_exact_covariance(const sf_case *c, sf_result *r)
     return SF_SUCCESS;
 }
 
+/* The fields a statistical check samples: the circulant plan of the
+ * scene, or (cof_generator = tiles) the tiled generator on a lattice of
+ * spacing dx/sx, dy/sy (sx, sy the smallest integers that make it at most
+ * l/4, where its produced covariance is Eq. 2 to round-off), read every
+ * sx-th column and sy-th row: an nx x ny patch whose columns straddle
+ * the seam between noise tiles -1 and 0 (lattice column 0), one new key
+ * per field drawn from the case's stream. */
+typedef struct {
+    sf_field *f;
+    sf_tiles *t;
+    size_t m, n, sx, sy, lm, ln;   /* patch, subsampling, lattice patch */
+    long i0;
+    double *buf;
+} field_src;
+
+static int src_open(const sf_case *c, sf_result *r, field_src *src)
+{
+    const sf_scene *s = &c->scene;
+    memset(src, 0, sizeof *src);
+    src->m = s->nx;
+    src->n = s->ny;
+    if (s->cof_generator != SF_COFGEN_TILES) {
+        int rc = check_field_plan(c, r, &src->f);
+        return rc == SF_ECAP ? SF_EFAIL : rc;
+    }
+    src->sx = (size_t)ceil(4 * s->dx / s->l - 1e-12);
+    src->sy = (size_t)ceil(4 * s->dy / s->l - 1e-12);
+    src->lm = (s->nx - 1) * src->sx + 1;
+    src->ln = (s->ny - 1) * src->sy + 1;
+    src->i0 = -(long)(src->lm / 2);
+    sf_tiles_spec ts = { src->ln, s->dx / (double)src->sx, s->dy / (double)src->sy, s->l, 0, 0 };
+    int rc = sf_tiles_alloc(&ts, &src->t);
+    if (rc)
+        return rc;
+    src->buf = check_alloc(src->lm * src->ln * sizeof *src->buf);
+    size_t K;
+    sf_tiles_weights(src->t, 0, &K);
+    sf_note(r, "Tiled generator: lattice %.4g x %.4g m (every %zu-th column, %zu-th row read), kernel half-width %zu "
+               "columns, %zu-column noise tiles; the patch spans lattice columns %ld..%ld (a tile seam at 0); one "
+               "key per field.\n",
+            ts.dx, ts.dy, src->sx, src->sy, K, sf_tiles_tile_cols(src->t), src->i0, src->i0 + (long)src->lm - 1);
+    return SF_SUCCESS;
+}
+
+static uint64_t draw_key(gsl_rng *rng)
+{
+    uint64_t key = (uint64_t)gsl_rng_get(rng) << 32;
+    return key ^ (uint64_t)gsl_rng_get(rng);
+}
+
+static void src_sample(field_src *src, gsl_rng *rng, double *g)
+{
+    if (src->f) {
+        sf_field_sample(src->f, rng, g);
+        return;
+    }
+    sf_tiles_set_key(src->t, draw_key(rng));
+    sf_tiles_fill(src->t, src->i0, src->lm, src->buf, src->lm);
+    for (size_t j = 0; j < src->n; j++)
+        for (size_t i = 0; i < src->m; i++)
+            g[i + src->m * j] = src->buf[i * src->sx + src->lm * j * src->sy];
+}
+
+static void src_close(field_src *src)
+{
+    sf_field_free(src->f);
+    sf_tiles_free(src->t);
+    free(src->buf);
+}
+
 /* Eigenvalues by FFTW vs direct DFT sums (independent of FFTW). */
 static int chk_eigen_direct(const sf_case *c, sf_result *r)
 {
@@ -166,14 +238,16 @@ static int chk_sampled_covariance(const sf_case *c, sf_result *r)
     size_t m = s->nx, n = s->ny, p = m * n, N = s->samples;
     if (p > 400)
         return SF_EINVAL;
-    sf_field *f;
-    int rc = check_field_plan(c, r, &f);
-    if (rc)
-        return rc == SF_ECAP ? SF_EFAIL : rc;
+    field_src f;
+    int rc = src_open(c, r, &f);
+    if (rc) {
+        src_close(&f);
+        return rc;
+    }
     gsl_matrix *L = exact_sigma(s);
     if (gsl_linalg_cholesky_decomp1(L)) {
         gsl_matrix_free(L);
-        sf_field_free(f);
+        src_close(&f);
         return SF_EFAIL;
     }
     gsl_rng *rng = sf_case_rng(c);
@@ -183,7 +257,7 @@ static int chk_sampled_covariance(const sf_case *c, sf_result *r)
     double *acc = check_alloc(H * sizeof *acc), *acc2 = check_alloc(H * sizeof *acc2);
     double *g = check_alloc(p * sizeof *g);
     for (size_t k = 0; k < N; k++) {
-        sf_field_sample(f, rng, g);
+        src_sample(&f, rng, g);
         /* empirical correlation along x, per sample (for the plot) */
         for (size_t h = 0; h < m; h++) {
             double sum = 0;
@@ -247,7 +321,7 @@ static int chk_sampled_covariance(const sf_case *c, sf_result *r)
     gsl_matrix_free(L);
     gsl_vector_free(z);
     gsl_rng_free(rng);
-    sf_field_free(f);
+    src_close(&f);
     return SF_SUCCESS;
 }
 
@@ -257,14 +331,16 @@ static int chk_pointwise_moments(const sf_case *c, sf_result *r)
 {
     const sf_scene *s = &c->scene;
     size_t p = s->nx * s->ny, N = s->samples;
-    sf_field *f;
-    int rc = check_field_plan(c, r, &f);
-    if (rc)
-        return rc == SF_ECAP ? SF_EFAIL : rc;
+    field_src f;
+    int rc = src_open(c, r, &f);
+    if (rc) {
+        src_close(&f);
+        return rc;
+    }
     gsl_rng *rng = sf_case_rng(c);
     double *g = check_alloc(p * sizeof *g), *s1 = check_alloc(p * sizeof *s1), *s2 = check_alloc(p * sizeof *s2);
     for (size_t k = 0; k < N; k++) {
-        sf_field_sample(f, rng, g);
+        src_sample(&f, rng, g);
         for (size_t a = 0; a < p; a++) {
             s1[a] += g[a];
             s2[a] += g[a] * g[a];
@@ -306,7 +382,7 @@ static int chk_pointwise_moments(const sf_case *c, sf_result *r)
     free(lo); free(hi); free(idx); free(mu); free(va);
     free(g); free(s1); free(s2);
     gsl_rng_free(rng);
-    sf_field_free(f);
+    src_close(&f);
     return SF_SUCCESS;
 }
 
@@ -385,14 +461,16 @@ static int chk_cholesky_agreement(const sf_case *c, sf_result *r)
     size_t m = s->nx, n = s->ny, p = m * n, N = s->samples;
     if (p > 400 || p < 2)
         return SF_EINVAL;
-    sf_field *f;
-    int rc = check_field_plan(c, r, &f);
-    if (rc)
-        return rc == SF_ECAP ? SF_EFAIL : rc;
+    field_src f;
+    int rc = src_open(c, r, &f);
+    if (rc) {
+        src_close(&f);
+        return rc;
+    }
     gsl_matrix *L = exact_sigma(s);
     if (gsl_linalg_cholesky_decomp1(L)) {
         gsl_matrix_free(L);
-        sf_field_free(f);
+        src_close(&f);
         return SF_EFAIL;
     }
     gsl_rng *rng = sf_case_rng(c);
@@ -408,7 +486,7 @@ static int chk_cholesky_agreement(const sf_case *c, sf_result *r)
     for (size_t k = 0; k < N; k++) {
         for (int src = 0; src < 2; src++) {
             if (src == 0) {
-                sf_field_sample(f, rng, g);
+                src_sample(&f, rng, g);
             } else {
                 for (size_t a = 0; a < p; a++)
                     gsl_vector_set(w, a, gsl_ran_gaussian(rng2, 1.0));
@@ -461,7 +539,7 @@ static int chk_cholesky_agreement(const sf_case *c, sf_result *r)
     gsl_rng_free(rng);
     gsl_rng_free(rng2);
     gsl_matrix_free(L);
-    sf_field_free(f);
+    src_close(&f);
     return SF_SUCCESS;
 }
 
@@ -613,9 +691,167 @@ static int chk_planner_roundoff(const sf_case *c, sf_result *r)
     return SF_SUCCESS;
 }
 
+/* Largest |e| so far; a NaN sticks (a check on NaN data must fail). */
+static void upd_max(double *m, double e)
+{
+    if (isnan(*m))
+        return;
+    if (isnan(e) || fabs(e) > *m)
+        *m = fabs(e);
+}
+
+/* The oracle's noise: the stream tiles.h documents, indexed here on its
+ * own (floor division into tiles of tw columns, nyp + 2 K rows a column). */
+typedef struct {
+    gsl_rng *rng;
+    uint64_t key;
+    size_t tw, nr;
+    long tile[4];
+    double *buf[4];
+    int used;
+} oracle_noise;
+
+static double oracle_xi(oracle_noise *on, long i, size_t row)
+{
+    long tile = (long)floor((double)i / (double)on->tw);
+    int k = 0;
+    while (k < on->used && on->tile[k] != tile)
+        k++;
+    if (k == on->used) {
+        k = on->used < 4 ? on->used++ : 3;
+        on->tile[k] = tile;
+        if (!on->buf[k])
+            on->buf[k] = check_alloc(on->tw * on->nr * sizeof(double));
+        gsl_rng_set(on->rng, (unsigned long)sf_tiles_tile_seed(on->key, tile));
+        for (size_t n = 0; n < on->tw * on->nr; n++)
+            on->buf[k][n] = gsl_ran_gaussian_ziggurat(on->rng, 1.0);
+    }
+    return on->buf[k][(size_t)(i - tile * (long)on->tw) * on->nr + row];
+}
+
+/* The oracle's kernel: Eq. 2's square root exp(-2 r^2 / l^2) at spacing
+ * h, cut where tiles.h documents (6 l/sqrt(2)), normalised to sum w^2 = 1. */
+static double *oracle_kernel(double h, double l, size_t *K)
+{
+    *K = (size_t)ceil(6 * (l / M_SQRT2) / h);
+    double *w = check_alloc((2 * *K + 1) * sizeof *w), s2 = 0;
+    for (size_t a = 0; a <= 2 * *K; a++) {
+        double x = ((double)a - (double)*K) * h;
+        w[a] = exp(-2 * x * x / (l * l));
+        s2 += w[a] * w[a];
+    }
+    for (size_t a = 0; a <= 2 * *K; a++)
+        w[a] /= sqrt(s2);
+    return w;
+}
+
+/* The tiled generator: (1) the covariance it produces, a finite sum over
+ * its kernel weights recomputed here, against Eq. 2 at every lag up to
+ * and past the kernel's reach; (2) its fields against a direct 2-D
+ * convolution of the documented noise stream with the oracle's own
+ * kernel, over columns that straddle two tile seams and negative indices;
+ * (3) random access: the same columns made one by one, last first, by a
+ * fresh generator are the same bits. */
+static int chk_tiles_exact(const sf_case *c, sf_result *r)
+{
+    const sf_scene *s = &c->scene;
+    sf_tiles_spec ts = { s->ny, s->dx, s->dy, s->l, 0, 0 };
+    sf_tiles *t, *t2;
+    if (sf_tiles_alloc(&ts, &t) || sf_tiles_alloc(&ts, &t2))
+        return SF_EFAIL;
+    size_t Kx, Ky, tw = sf_tiles_tile_cols(t);
+    const double *wx = sf_tiles_weights(t, 0, &Kx), *wy = sf_tiles_weights(t, 1, &Ky);
+    /* (1) produced covariance */
+    size_t Px = 2 * Kx + 3, Py = 2 * Ky + 3;
+    double *cx = check_alloc(Px * sizeof *cx), *cy = check_alloc(Py * sizeof *cy);
+    for (size_t p = 0; p < Px; p++)
+        for (size_t a = 0; a + p <= 2 * Kx; a++)
+            cx[p] += wx[a] * wx[a + p];
+    for (size_t q = 0; q < Py; q++)
+        for (size_t b = 0; b + q <= 2 * Ky; b++)
+            cy[q] += wy[b] * wy[b + q];
+    double err = 0, rep = 0;
+    for (size_t q = 0; q < Py; q++)
+        for (size_t p = 0; p < Px; p++) {
+            double C = cx[p] * cy[q];
+            upd_max(&err, C - ref_sq_exp((double)p * s->dx, (double)q * s->dy, s->l));
+            upd_max(&rep, C - sf_tiles_covariance(t, (long)p, -(long)q));
+        }
+    sf_check_le(r, "max |C_produced - Eq. 2| over lags 0..2K+2 along x and y (2-D)", err, s->tolerance);
+    sf_check_le(r, "covariance the generator reports vs recomputed here from its weights", rep, 1e-15);
+    /* (2) fields vs the oracle */
+    gsl_rng *rng = sf_case_rng(c);
+    uint64_t key = draw_key(rng);
+    gsl_rng_free(rng);
+    long i0 = -(long)tw - 6;
+    size_t m = tw + 12, ny = s->ny, nyp = (ny + 15) / 16 * 16, Kox, Koy;
+    double *ox = oracle_kernel(s->dx, s->l, &Kox), *oy = oracle_kernel(s->dy, s->l, &Koy);
+    oracle_noise on = { gsl_rng_alloc(sf_rng_splitmix64), key, tw, nyp + 2 * Koy, { 0 }, { NULL }, 0 };
+    double *g = check_alloc(m * ny * sizeof *g), *g2 = check_alloc(m * ny * sizeof *g2);
+    sf_tiles_set_key(t, key);
+    sf_tiles_fill(t, i0, m, g, m);
+    double derr = 0;
+    for (size_t j = 0; j < ny; j++)
+        for (size_t cc = 0; cc < m; cc++) {
+            long i = i0 + (long)cc;
+            double sum = 0;
+            for (size_t a = 0; a <= 2 * Kox; a++)
+                for (size_t b = 0; b <= 2 * Koy; b++)   /* xi(i - a', j - b') at noise row j - b' + Ky */
+                    sum += ox[a] * oy[b] * oracle_xi(&on, i - ((long)a - (long)Kox), j + 2 * Koy - b);
+            upd_max(&derr, g[cc + m * j] - sum);
+        }
+    sf_check_le(r, "max |G - direct 2-D convolution of the documented noise| over columns straddling two tile seams",
+                derr, 1e-12);
+    /* (3) random access */
+    sf_tiles_set_key(t2, key);
+    for (size_t cc = m; cc-- > 0;)
+        sf_tiles_fill(t2, i0 + (long)cc, 1, g2 + cc, m);
+    int same = !memcmp(g, g2, m * ny * sizeof *g);
+    sf_check_true(r, "columns made one by one, last first, by a fresh generator: the same bits", same,
+                  same ? "identical" : "differ");
+    sf_note(r, "Kernel half-widths Kx = %zu, Ky = %zu lattice steps (6 l/sqrt(2)); %zu-column noise tiles; columns "
+               "%ld..%ld compared with the oracle (seams at %ld and 0). Produced covariance error %.3g, field error "
+               "%.3g.\n", Kx, Ky, tw, i0, i0 + (long)m - 1, -(long)tw, err, derr);
+    /* plot: produced covariance along the axes vs Eq. 2, and the error */
+    double *lx = check_alloc(Px * sizeof *lx), *ex = check_alloc(Px * sizeof *ex), *ee = check_alloc(Px * sizeof *ee);
+    double *ly = check_alloc(Py * sizeof *ly), *eyv = check_alloc(Py * sizeof *eyv);
+    for (size_t p = 0; p < Px; p++) {
+        lx[p] = (double)p * s->dx;
+        ex[p] = cx[p] * cy[0];
+        ee[p] = fmax(fabs(ex[p] - ref_sq_exp(lx[p], 0, s->l)), 1e-20);
+    }
+    for (size_t q = 0; q < Py; q++) {
+        ly[q] = (double)q * s->dy;
+        eyv[q] = cx[0] * cy[q];
+    }
+    sf_plot *pl = sf_result_plot(r, "covariance", "Tiled generator: produced covariance vs Eq. 2", "lag [m]",
+                                 "correlation [-]");
+    sf_plot_series(pl, "produced, x lags", SF_STYLE_POINTS, Px, lx, ex);
+    sf_plot_series(pl, "produced, y lags", SF_STYLE_POINTS, Py, ly, eyv);
+    for (size_t p = 0; p < Px; p++)
+        cx[p] = ref_sq_exp(lx[p], 0, s->l);
+    sf_plot_series(pl, "Eq. 2 exp(-r^2/l^2)", SF_STYLE_LINES, Px, lx, cx);
+    sf_plot *q = sf_result_plot(r, "covariance_error", "Tiled generator: |C - Eq. 2| along x (floored at 1e-20)",
+                                "lag [m]", "|C - Sigma| [-]");
+    sf_plot_log(q, 0, 1);
+    sf_plot_series(q, "|C - Eq. 2|", SF_STYLE_LINESPOINTS, Px, lx, ee);
+    if (s->tolerance > 0)
+        sf_plot_hline(q, "tolerance", s->tolerance);
+    free(lx); free(ex); free(ee); free(ly); free(eyv);
+    for (int k = 0; k < 4; k++)
+        free(on.buf[k]);
+    gsl_rng_free(on.rng);
+    free(ox); free(oy); free(g); free(g2); free(cx); free(cy);
+    sf_tiles_free(t);
+    sf_tiles_free(t2);
+    return SF_SUCCESS;
+}
+
 const sf_check_def sf_checks_field[] = {
     { "field_planner_roundoff", chk_planner_roundoff,
       "FFTW_MEASURE vs FFTW_ESTIMATE plans: same fields to round-off" },
+    { "field_tiles_exact", chk_tiles_exact,
+      "tiled generator: produced covariance vs Eq. 2, fields vs a direct convolution, random access" },
     { "field_exact_covariance", chk_exact_covariance,
       "produced covariance (no sampling) vs Sigma at every grid lag" },
     { "field_eigen_direct", chk_eigen_direct,
