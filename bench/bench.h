@@ -31,5 +31,7 @@ int bench_dynamics(FILE *f, const char *dir);
 int bench_sweep(FILE *f, const char *dir);
 int bench_memory(FILE *f, const char *dir);
 int bench_fftw(FILE *f, const char *dir);
+int bench_plan(FILE *f, const char *dir);
+int bench_realisation(FILE *f, const char *dir);
 
 #endif

@@ -1,6 +1,6 @@
 /* slipfield-bench DIR [SECTION...]: run the benchmark sections (all by
  * default: field, contact, dynamics, fftw, sweep,
- * memory) and write DIR/report.md (temporary
+ * memory, realisation, plan) and write DIR/report.md (temporary
  * name, renamed when complete) with the plots beside it. */
 #include "bench.h"
 #include "version.h"
@@ -38,6 +38,7 @@ int main(int argc, char **argv)
         { "field", bench_field, 0, NULL, 0 },   { "contact", bench_contact, 0, NULL, 0 },
         { "dynamics", bench_dynamics, 0, NULL, 0 }, { "fftw", bench_fftw, 0, NULL, 0 },
         { "sweep", bench_sweep, 0, NULL, 0 },   { "memory", bench_memory, 1, NULL, 0 },
+        { "realisation", bench_realisation, 0, NULL, 0 }, { "plan", bench_plan, 0, NULL, 0 },
     };
     enum { NSEC = sizeof sec / sizeof sec[0] };
     int rc = 0;

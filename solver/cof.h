@@ -74,11 +74,15 @@ static inline double sf_cof_view_at(const sf_cof_view *v, double sx, double sy)
     return a + ty * (b - a);
 }
 
+/* Grid coordinates of belt point xb (resp. yb) [-]. */
+static inline double sf_cof_view_gx(const sf_cof_view *v, double xb) { return (xb - v->x0) * v->idx; }
+static inline double sf_cof_view_gy(const sf_cof_view *v, double yb) { return (yb - v->y0) * v->idy; }
+
 /* mu_s at belt point (xb, yb), clamped to the grid's edge (*clamped = 1
  * then, else 0; NaN clamps to the origin). */
 static inline double sf_cof_view_eval(const sf_cof_view *v, double xb, double yb, double *clamped)
 {
-    double sx = (xb - v->x0) * v->idx, sy = (yb - v->y0) * v->idy;
+    double sx = sf_cof_view_gx(v, xb), sy = sf_cof_view_gy(v, yb);
     double xm = (double)(v->m - 1), ym = (double)(v->n - 1);
     *clamped = (!(sx >= 0) | (sx > xm) | !(sy >= 0) | (sy > ym)) ? 1.0 : 0.0;
     sx = sx >= 0 ? sx : 0;   /* also NaN */
@@ -92,7 +96,7 @@ static inline double sf_cof_view_eval(const sf_cof_view *v, double xb, double yb
  * no clamping, the same bits as sf_cof_view_eval there. */
 static inline double sf_cof_view_eval_on(const sf_cof_view *v, double xb, double yb)
 {
-    return sf_cof_view_at(v, (xb - v->x0) * v->idx, (yb - v->y0) * v->idy);
+    return sf_cof_view_at(v, sf_cof_view_gx(v, xb), sf_cof_view_gy(v, yb));
 }
 
 /* 1 when every point within r (per axis) of (xb, yb) lies on the grid
