@@ -219,7 +219,8 @@ __attribute__((always_inline)) static inline void cell(int mode, const sf_cof_vi
     fy[k] -= a * dy;
     tq[k] -= a * (rx * dy - ry * dx);
     s2min[k] = s2 < s2min[k] ? s2 : s2min[k];
-    out[k] += cl;
+    if (mode == MU_CLAMPED)   /* (x + 0.0 is not x for x = -0: the compiler keeps what it is given) */
+        out[k] += cl;
 }
 
 /* The fast cell loop: cell i into lane i mod SF_LANES, whole blocks
