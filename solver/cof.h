@@ -43,7 +43,9 @@ unsigned long sf_cof_outside(const sf_cof *c);
  * cache it: a COF may move its grid window (a belt field that slides its
  * window along the belt).  sf_cof_get_view returns 1 and fills *v for a
  * grid (its points are int-indexable: sf_cof_alloc_grid refuses more than
- * INT_MAX), 0 otherwise (uniform, variable: use sf_cof_eval).  Look-ups
+ * INT_MAX), 0 otherwise (uniform, variable: use sf_cof_eval; a field
+ * kind that returns 0 gets the wrench's cell-by-cell sf_cof_eval loop,
+ * correct but about 5x slower).  Look-ups
  * clamped to the grid's edge are counted by the caller and reported with
  * sf_cof_count_outside (so sf_cof_outside stays the count of them all). */
 typedef struct {

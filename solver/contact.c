@@ -291,14 +291,16 @@ int sf_contact_wrench(const sf_contact *c, double xb, double yb,
         double us = ldexp(u, -e), vs = ldexp(v, -e), ws = ldexp(w, -e);
         sf_cof_view cv = { 0 };
         int field = sf_cof_get_view(c->cof, &cv);   /* afresh: the grid may have moved */
-        double mu0 = field ? 0 : sf_cof_eval(c->cof, 0, 0), outside = 0, s2min;
-        if (!field)
+        double mu0 = field ? 0 : sf_cof_eval(c->cof, 0, 0), outside = 0, s2min = 0;
+        if (!field && sf_cof_get_kind(c->cof) == SF_COF_FIELD)   /* a field without a grid view: cell by cell */
+            s2min = 0;
+        else if (!field)
             s2min = wrench_lanes(c, MU_CONST, &cv, mu0, xb, yb, us, vs, ws, acc, &outside);
         else if (sf_cof_view_holds(&cv, xb, yb, c->spec.R))   /* the common case: no clamp */
             s2min = wrench_lanes(c, MU_ON_GRID, &cv, mu0, xb, yb, us, vs, ws, acc, &outside);
         else
             s2min = wrench_lanes(c, MU_CLAMPED, &cv, mu0, xb, yb, us, vs, ws, acc, &outside);
-        if (!(s2min >= SF_TINY2))
+        if (!(s2min >= SF_TINY2))   /* near the pole, or no grid view */
             wrench_hypot(c, xb, yb, u, v, w, acc);   /* counts its own clamped look-ups */
         else if (outside > 0)
             sf_cof_count_outside(c->cof, (unsigned long)outside);
