@@ -22,7 +22,14 @@ BASELINE ?=
 PKGS := gsl fftw3 jansson
 GIT_REV := $(shell git rev-parse --short HEAD 2>/dev/null || echo unknown)
 WARN := -Wall -Wextra -Wpedantic -Werror
-BASE_CFLAGS := -std=c11 -D_POSIX_C_SOURCE=200809L $(WARN) -Isolver -Iverification -Icli -Itests -I$(BUILD)/gen -fopenmp $(MPI_FLAGS)
+# -fno-math-errno -fno-trapping-math: nothing reads errno after a libm
+# call nor the floating-point exception flags (no <fenv.h>); without them
+# sqrt keeps a branch to the library (errno on a negative argument) and a
+# select before a sqrt or a division stays a branch (it could trap), and
+# the wrench's cell loop does not vectorise (-fopt-info-vec).  Values are
+# unchanged: no reassociation, no contraction (-std=c11 keeps
+# -ffp-contract=off).
+BASE_CFLAGS := -std=c11 -D_POSIX_C_SOURCE=200809L -fno-math-errno -fno-trapping-math $(WARN) -Isolver -Iverification -Icli -Itests -I$(BUILD)/gen -fopenmp $(MPI_FLAGS)
 # The git revision lives in a generated header rewritten only when it
 # changes, so a commit does not rebuild everything.
 _rev := $(shell mkdir -p $(BUILD)/gen && echo '#define SF_GIT_REV "$(GIT_REV)"' > $(BUILD)/gen/sf_rev.h.new && \

@@ -15,6 +15,15 @@ static inline double bench_now(void)
 }
 #define now bench_now
 
+/* CPU time of the calling thread [s]: for micro-benchmarks on a shared
+ * machine (time spent descheduled does not count). */
+static inline double bench_cpu(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
 /* Each section appends Markdown to f and may write plots into dir. */
 int bench_field(FILE *f, const char *dir);
 int bench_contact(FILE *f, const char *dir);
@@ -23,5 +32,7 @@ int bench_sweep(FILE *f, const char *dir);
 int bench_memory(FILE *f, const char *dir);
 int bench_belt(FILE *f, const char *dir);
 int bench_fftw(FILE *f, const char *dir);
+int bench_plan(FILE *f, const char *dir);
+int bench_realisation(FILE *f, const char *dir);
 
 #endif

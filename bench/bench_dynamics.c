@@ -32,7 +32,7 @@ enum { K_RK8PD = 0, K_RK4 = 1, K_BDF = 2, K_ADAMS = 3, K_RKCK = 4, NKIND };
 static const char *kind_name[NKIND] = { "rk8pd", "RK4 (fixed)", "CVODE BDF", "CVODE Adams", "rkck" };
 /* f evaluations per accepted step of our steppers: stages + the wrench at
  * the step's end (online QoIs) */
-#if SF_HAVE_CVODE   /* used only by the CVODE comparison */
+#if SF_HAVE_CVODE   /* used by the CVODE comparison only (an unused static is an error) */
 static double evals_per_step(int kind) { return kind == K_RKCK ? 7.0 : 14.0; }
 #endif
 static int integ_of(int kind) { return kind == K_RKCK ? SF_INTEG_RKCK : kind == K_RK4 ? SF_INTEG_RK4 : SF_INTEG_RK8PD; }

@@ -1,6 +1,7 @@
 /* slipfield-bench DIR [SECTION...]: run the benchmark sections (all by
  * default: field, contact, dynamics, fftw, sweep,
- * memory) and write DIR/report.md (temporary
+ * memory, realisation; `plan`, the accuracy plan's calibration, only
+ * when named) and write DIR/report.md (temporary
  * name, renamed when complete) with the plots beside it. */
 #include "bench.h"
 #include "version.h"
@@ -34,17 +35,19 @@ int main(int argc, char **argv)
     /* Report order; `memory` runs first, while this process is small: a
      * forked child's peak RSS (wait4) counts the parent's pages it was
      * copied with until its exec. */
-    struct { const char *name; int (*fn)(FILE *, const char *); int first; char *text; size_t len; } sec[] = {
-        { "field", bench_field, 0, NULL, 0 },   { "contact", bench_contact, 0, NULL, 0 },
-        { "dynamics", bench_dynamics, 0, NULL, 0 }, { "fftw", bench_fftw, 0, NULL, 0 },
-        { "sweep", bench_sweep, 0, NULL, 0 },   { "memory", bench_memory, 1, NULL, 0 },
-        { "belt", bench_belt, 1, NULL, 0 },
+    struct { const char *name; int (*fn)(FILE *, const char *); int first; char *text; size_t len; int named; } sec[] = {
+        { "field", bench_field, 0, NULL, 0, 0 },   { "contact", bench_contact, 0, NULL, 0, 0 },
+        { "dynamics", bench_dynamics, 0, NULL, 0, 0 }, { "fftw", bench_fftw, 0, NULL, 0, 0 },
+        { "sweep", bench_sweep, 0, NULL, 0, 0 },   { "memory", bench_memory, 1, NULL, 0, 0 },
+        { "belt", bench_belt, 1, NULL, 0, 0 },
+        { "realisation", bench_realisation, 0, NULL, 0, 0 },
+        { "plan", bench_plan, 0, NULL, 0, 1 },   /* the plan's calibration (minutes): only when named */
     };
     enum { NSEC = sizeof sec / sizeof sec[0] };
     int rc = 0;
     for (int pass = 1; pass >= 0; pass--)
         for (size_t i = 0; i < NSEC; i++) {
-            int want = argc <= 2;
+            int want = argc <= 2 && !sec[i].named;
             for (int a = 2; a < argc; a++)
                 want |= !strcmp(argv[a], sec[i].name);
             if (!want || sec[i].first != pass)

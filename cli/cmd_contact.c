@@ -7,6 +7,7 @@
 #include "cli.h"
 #include "cof.h"
 #include "contact.h"
+#include "numplan.h"
 #include "surface.h"
 #include "sf_error.h"
 
@@ -38,7 +39,10 @@ static int contact_open(const char *cmd, const char *path, const sf_scene *s, co
     rc = sf_cof_plan_draw(p, rng, &cr->cof);
     gsl_rng_free(rng);
     sf_cof_plan_free(p);
-    sf_contact_spec spec = { s->R, s->m * s->g, (sf_layout)s->layout, s->cells };
+    sf_numplan np;   /* cells = 0: the plan's resolution, as a run would use */
+    if (!rc)
+        rc = sf_numplan_make(s, 1, &np, err, sizeof err);
+    sf_contact_spec spec = { s->R, s->m * s->g, (sf_layout)s->layout, rc ? s->cells : np.cells };
     if (!rc)
         rc = sf_contact_alloc(&spec, cr->cof, &cr->ct);
     if (rc) {

@@ -123,6 +123,8 @@ int sf_cmd_run(int argc, char **argv)
         sf_cof_free(cof);
         return SF_EXIT_OK;
     }
+    if (*sf_osc_get_plan(o)->warning)
+        fprintf(stderr, "slipfield run: %s: warning: %s\n", path, sf_osc_get_plan(o)->warning);
     sf_out out = { 0 }, sum = { 0 };
     int ok = 1;
     if (out_path && sf_cli_open("run", out_path, &out))

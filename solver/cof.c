@@ -4,6 +4,7 @@
 #include "sf_error.h"
 #include "tiles.h"
 
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -56,8 +57,8 @@ int sf_cof_alloc_grid(size_t m, size_t n, double x0, double y0,
                       double dx, double dy, const double *mu_s, sf_cof **out)
 {
     *out = NULL;
-    if (m < 2 || n < 2 || !(dx > 0) || !(dy > 0) || !mu_s)
-        return SF_EINVAL;
+    if (m < 2 || n < 2 || !(dx > 0) || !(dy > 0) || !mu_s || m > INT_MAX / n)
+        return SF_EINVAL;   /* int indices (sf_cof_view) */
     sf_cof *c = cof_new(SF_COF_FIELD);
     if (!c)
         return SF_ENOMEM;
@@ -175,39 +176,29 @@ int sf_cof_covers(const sf_cof *c, double xb, double yb, double r)
            yb + r <= c->y0 + c->dy * (double)(c->n - 1);
 }
 
-/* Cell index and local coordinate along one axis, clamped to the grid. */
-static size_t locate(double x, double x0, double h, size_t n, double *t, int *clamped)
+int sf_cof_get_view(const sf_cof *c, sf_cof_view *v)
 {
-    double s = (x - x0) / h;
-    if (!(s >= 0)) {            /* also catches NaN */
-        *clamped = 1;
-        *t = 0;
+    if (c->kind != SF_COF_FIELD)   /* a grid has fewer than INT_MAX points: sf_cof_alloc_grid */
         return 0;
-    }
-    if (s >= (double)(n - 1)) {
-        *clamped |= s > (double)(n - 1);
-        *t = 1;
-        return n - 2;
-    }
-    size_t i = (size_t)s;
-    *t = s - (double)i;
-    return i;
+    *v = (sf_cof_view){ c->grid, (int)c->m, (int)c->n, c->x0, c->y0, 1 / c->dx, 1 / c->dy };
+    return 1;
+}
+
+void sf_cof_count_outside(const sf_cof *c, unsigned long n)
+{
+    ((sf_cof *)c)->outside += n;   /* a diagnostic counter, not state */
 }
 
 double sf_cof_eval(const sf_cof *c, double xb, double yb)
 {
-    if (c->kind != SF_COF_FIELD)
+    sf_cof_view v;
+    if (!sf_cof_get_view(c, &v))
         return c->mu;
-    int clamped = 0;
-    double tx, ty;
-    size_t i = locate(xb, c->x0, c->dx, c->m, &tx, &clamped);
-    size_t j = locate(yb, c->y0, c->dy, c->n, &ty, &clamped);
-    if (clamped)
-        ((sf_cof *)c)->outside++;   /* a diagnostic counter, not state */
-    const double *g = c->grid + i + c->m * j;
-    double a = g[0] + tx * (g[1] - g[0]);
-    double b = g[c->m] + tx * (g[c->m + 1] - g[c->m]);
-    return a + ty * (b - a);
+    double clamped;
+    double mu = sf_cof_view_eval(&v, xb, yb, &clamped);
+    if (clamped != 0)
+        sf_cof_count_outside(c, 1);
+    return mu;
 }
 
 int sf_cof_grid_view(const sf_cof *c, size_t *m, size_t *n, double *x0, double *y0, double *dx, double *dy,

@@ -44,6 +44,79 @@ unsigned long sf_cof_outside(const sf_cof *c);
 int sf_cof_grid_view(const sf_cof *c, size_t *m, size_t *n, double *x0, double *y0, double *dx, double *dy,
                      const double **mu);
 
+/* A read-only view of a gridded COF for look-ups inlined in a hot loop
+ * (the wrench's cell loop: a call per cell to another translation unit
+ * costs more than the interpolation).  Read it afresh at every use, never
+ * cache it: a COF may move its grid window (a belt field that slides its
+ * window along the belt).  sf_cof_get_view returns 1 and fills *v for a
+ * grid (its points are int-indexable: sf_cof_alloc_grid refuses more than
+ * INT_MAX), 0 otherwise (uniform, variable: use sf_cof_eval; a field
+ * kind that returns 0 gets the wrench's cell-by-cell sf_cof_eval loop,
+ * correct but about 5x slower).  Look-ups
+ * clamped to the grid's edge are counted by the caller and reported with
+ * sf_cof_count_outside (so sf_cof_outside stays the count of them all). */
+typedef struct {
+    const double *grid;     /* m*n values, x fastest */
+    int m, n;               /* grid points along x, y */
+    double x0, y0;          /* origin [m] */
+    double idx, idy;        /* 1 / spacing [1/m] */
+} sf_cof_view;
+
+int sf_cof_get_view(const sf_cof *c, sf_cof_view *v);
+void sf_cof_count_outside(const sf_cof *c, unsigned long n);
+
+/* The one definition of the interpolation (sf_cof_eval and the wrench's
+ * loop use these), written for a loop calling them to vectorise: selects,
+ * no branches; int indices into the grid (gathers); the clamp flag a
+ * double (an int among the doubles keeps GCC 12 from vectorising).
+ * Bilinear at grid coordinates (sx, sy) in [0, m-1] x [0, n-1]. */
+static inline double sf_cof_view_at(const sf_cof_view *v, double sx, double sy)
+{
+    int i = (int)sx, j = (int)sy;
+    i = i < v->m - 2 ? i : v->m - 2;   /* the last node: the last cell at t = 1 */
+    j = j < v->n - 2 ? j : v->n - 2;
+    double tx = sx - (double)i, ty = sy - (double)j;
+    int k0 = i + v->m * j, k1 = k0 + 1, k2 = k0 + v->m, k3 = k2 + 1;
+    const double *g = v->grid;
+    double a = g[k0] + tx * (g[k1] - g[k0]);
+    double b = g[k2] + tx * (g[k3] - g[k2]);
+    return a + ty * (b - a);
+}
+
+/* Grid coordinates of belt point xb (resp. yb) [-]. */
+static inline double sf_cof_view_gx(const sf_cof_view *v, double xb) { return (xb - v->x0) * v->idx; }
+static inline double sf_cof_view_gy(const sf_cof_view *v, double yb) { return (yb - v->y0) * v->idy; }
+
+/* mu_s at belt point (xb, yb), clamped to the grid's edge (*clamped = 1
+ * then, else 0; NaN clamps to the origin). */
+static inline double sf_cof_view_eval(const sf_cof_view *v, double xb, double yb, double *clamped)
+{
+    double sx = sf_cof_view_gx(v, xb), sy = sf_cof_view_gy(v, yb);
+    double xm = (double)(v->m - 1), ym = (double)(v->n - 1);
+    *clamped = (!(sx >= 0) | (sx > xm) | !(sy >= 0) | (sy > ym)) ? 1.0 : 0.0;
+    sx = sx >= 0 ? sx : 0;   /* also NaN */
+    sy = sy >= 0 ? sy : 0;
+    sx = sx <= xm ? sx : xm;
+    sy = sy <= ym ? sy : ym;
+    return sf_cof_view_at(v, sx, sy);
+}
+
+/* The same for a point known to lie on the grid (sf_cof_view_holds):
+ * no clamping, the same bits as sf_cof_view_eval there. */
+static inline double sf_cof_view_eval_on(const sf_cof_view *v, double xb, double yb)
+{
+    return sf_cof_view_at(v, sf_cof_view_gx(v, xb), sf_cof_view_gy(v, yb));
+}
+
+/* 1 when every point within r (per axis) of (xb, yb) lies on the grid
+ * with a grid cell to spare (the spare cell absorbs the rounding of the
+ * grid coordinates): there sf_cof_view_eval_on needs no clamp. */
+static inline int sf_cof_view_holds(const sf_cof_view *v, double xb, double yb, double r)
+{
+    return (xb - r - v->x0) * v->idx >= 1 && (xb + r - v->x0) * v->idx <= (double)(v->m - 2) &&
+           (yb - r - v->y0) * v->idy >= 1 && (yb + r - v->y0) * v->idy <= (double)(v->n - 2);
+}
+
 /* 1 when the disc of radius r centred at belt point (xb, yb) lies on the
  * grid (always, for a uniform COF). */
 int sf_cof_covers(const sf_cof *c, double xb, double yb, double r);

@@ -1,5 +1,6 @@
 #include "oscillator.h"
 #include "contact.h"
+#include "numplan.h"
 #include "surface.h"
 #include "sf_error.h"
 
@@ -21,7 +22,8 @@ enum {
 };
 
 struct sf_osc {
-    sf_scene s;
+    sf_scene s;              /* cells, rtol: as the plan resolved them */
+    sf_numplan plan;         /* the numerical settings and why (numplan.h) */
     const sf_cof *cof;
     sf_contact *ct;          /* NULL: spatially constant COF, closed forms */
     int dof3;
@@ -147,24 +149,26 @@ int sf_osc_alloc(const sf_scene *s, const sf_cof *cof, sf_osc **out, char *err, 
     o->delta = s->eps_lambda * o->wn * s->R;
     /* a constant COF has closed forms (Eq. 4, Contensou): no quadrature,
      * unless the scene asks for the full computation (shortcuts = false) */
-    if (!constant || (o->dof3 && !s->shortcuts)) {
-        sf_contact_spec spec = { s->R, o->N, (sf_layout)s->layout, s->cells };
+    int quadrature = !constant || (o->dof3 && !s->shortcuts);
+    int rc0 = sf_numplan_make(s, quadrature, &o->plan, err, errlen);
+    if (rc0) {
+        free(o);
+        return rc0;
+    }
+    o->s.cells = o->plan.cells ? o->plan.cells : s->cells;
+    o->s.rtol = o->plan.rtol;
+    if (quadrature) {
+        sf_contact_spec spec = { s->R, o->N, (sf_layout)s->layout, o->s.cells };
         int rc = sf_contact_alloc(&spec, cof, &o->ct);
         if (rc) {
             free(o);
             return seterr(err, errlen, rc, "cannot set up the contact quadrature");
         }
     }
-    /* adaptive: the stepper follows the cost of a right-hand side.  A
-     * closed-form wrench is nearly free and rk8pd's order pays; a
-     * quadrature costs a pass over the cells per stage, and Cash-Karp 4(5)
-     * (6 stages to 13) reaches the same Eq. 15 error in about half the
-     * time (make bench, stochastic work-precision). */
-    const gsl_odeiv2_step_type *T = s->integrator == SF_INTEG_RK4     ? gsl_odeiv2_step_rk4
-                                    : s->integrator == SF_INTEG_RK8PD ? gsl_odeiv2_step_rk8pd
-                                    : s->integrator == SF_INTEG_RKCK  ? gsl_odeiv2_step_rkck
-                                    : o->ct                           ? gsl_odeiv2_step_rkck
-                                                                      : gsl_odeiv2_step_rk8pd;
+    /* the stepper: the plan's (numplan.c says why) */
+    const gsl_odeiv2_step_type *T = o->plan.integrator == SF_INTEG_RK4     ? gsl_odeiv2_step_rk4
+                                    : o->plan.integrator == SF_INTEG_RKCK ? gsl_odeiv2_step_rkck
+                                                                          : gsl_odeiv2_step_rk8pd;
     o->sys = (gsl_odeiv2_system){ rhs, NULL, NSTATE, o };
     o->step = gsl_odeiv2_step_alloc(T, NSTATE);
     o->bstep = gsl_odeiv2_step_alloc(T, NSTATE);
@@ -176,7 +180,7 @@ int sf_osc_alloc(const sf_scene *s, const sf_cof *cof, sf_osc **out, char *err, 
     double sc[NSTATE] = { xs, xs, xs / s->R, xs * o->wn, xs * o->wn, xs * o->wn / s->R,
                           (s->mu_mean + s->mu_std) * o->N * xs };
     memcpy(o->sc, sc, sizeof sc);
-    o->con = gsl_odeiv2_control_scaled_new(s->rtol, s->rtol, 1.0, 0.0, sc, NSTATE);
+    o->con = gsl_odeiv2_control_scaled_new(o->s.rtol, o->s.rtol, 1.0, 0.0, sc, NSTATE);
     o->ev = gsl_odeiv2_evolve_alloc(NSTATE);
     o->root = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
     if (!o->step || !o->bstep || !o->con || !o->ev || !o->root) {
@@ -223,7 +227,10 @@ void sf_osc_explain(const sf_osc *o, FILE *f)
                                                    : "");
     fprintf(f, "events: Brent (GSL) on single trial steps, to max(%g s, 8 ulp(t)); velocity jump of Eq. 14 %s\n", SF_OSC_TIME_TOL,
             s->velocity_jump ? "on" : "off");
+    sf_numplan_explain(&o->plan, f);   /* the plan's own record of its choices */
 }
+
+const sf_numplan *sf_osc_get_plan(const sf_osc *o) { return &o->plan; }
 
 void sf_osc_scales(const sf_osc *o, double sc[SF_OSC_NSTATE])
 {

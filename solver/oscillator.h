@@ -42,6 +42,7 @@
 
 #include <stddef.h>
 #include "cof.h"
+#include "numplan.h"
 #include "scene.h"
 
 /* Event times are located to max(1e-12 s, 8 ulp(t)). */
@@ -89,8 +90,14 @@ typedef struct {
 int sf_osc_alloc(const sf_scene *s, const sf_cof *cof, sf_osc **out, char *err, size_t errlen);
 void sf_osc_free(sf_osc *o);
 
-/* What the plan computes and skips, one line each (for --explain). */
+/* What the plan computes and skips, one line each (for --explain),
+ * ending with the numerical plan's record (numplan.h). */
 void sf_osc_explain(const sf_osc *o, FILE *f);
+
+/* The numerical plan the run uses: cells, rtol, stepper, predicted
+ * errors, warnings (numplan.h; decided in sf_osc_alloc from qoi_tol and
+ * the explicit keys). */
+const sf_numplan *sf_osc_get_plan(const sf_osc *o);
 
 /* Run [0, T].  row (may be NULL) receives the history; sample_dt > 0
  * also fills res->x_samples.  Returns SF_SUCCESS, SF_EFAIL (non-finite

@@ -58,7 +58,7 @@ static const key_t_ keys[] = {
     { "samples", K_SIZE, OFF(samples), 0, 1, 1e9, 0, 0, "1000", "1", NULL, "number of samples or realisations" },
     /* contact */
     { "layout", K_ENUM, OFF(layout), 0, 0, 0, 0, 0, "polar", "", "polar|cartesian", "disc quadrature layout" },
-    { "cells", K_SIZE, OFF(cells), 0, 1, 1e5, 0, 0, "32", "1", NULL, "quadrature resolution (rings or cells per diameter)" },
+    { "cells", K_SIZE, OFF(cells), 0, 0, 1e5, 0, 0, "0", "1", NULL, "quadrature resolution (rings or cells per diameter); 0: the plan chooses from qoi_tol and l/R (numplan.h)" },
     { "u", K_DOUBLE, OFF(u), 0, -INF, INF, 0, 0, "-0.2", "m/s", NULL, "relative velocity of the centre, x" },
     { "v", K_DOUBLE, OFF(v), 0, -INF, INF, 0, 0, "0", "m/s", NULL, "relative velocity of the centre, y" },
     { "w", K_DOUBLE, OFF(w), 0, -INF, INF, 0, 0, "0", "rad/s", NULL, "spin" },
@@ -67,7 +67,8 @@ static const key_t_ keys[] = {
     /* dynamics */
     { "integrator", K_ENUM, OFF(integrator), 0, 0, 0, 0, 0, "adaptive", "", "adaptive|rk4|rk8pd|rkck", "time stepper: adaptive = rk8pd for a closed-form wrench, rkck for a quadrature one; rk4 at fixed dt" },
     { "dof", K_ENUM, OFF(dof), 0, 0, 0, 0, 0, "3", "", "1|3", "degrees of freedom: 1 (Eqs. 3-4, uniform COF) or 3 (x, y, phi; Eq. 5)" },
-    { "rtol", K_DOUBLE, OFF(rtol), 0, 0, 1, 1, 0, "1e-8", "1", NULL, "adaptive stepper relative tolerance" },
+    { "rtol", K_DOUBLE, OFF(rtol), 0, 0, 1, 0, 1, "0", "1", NULL, "adaptive stepper relative tolerance; 0: the plan chooses from qoi_tol (numplan.h)" },
+    { "qoi_tol", K_DOUBLE, OFF(qoi_tol), 0, 0, 1, 1, 1, "1e-3", "1", NULL, "relative error wanted in a realisation's PV_x, PV_F and stick fraction: the plan sets cells, rtol and the stepper from it (numplan.h)" },
     { "t_skip", K_DOUBLE, OFF(t_skip), 0, 0, INF, 0, 0, "10", "s", NULL, "transient discarded before QoIs" },
     { "velocity_jump", K_BOOL, OFF(velocity_jump), 0, 0, 0, 0, 0, "true", "", NULL, "apply Eqs. 12 and 14" },
     { "exact_section", K_BOOL, OFF(exact_section), 0, 0, 0, 0, 0, "false", "", NULL, "stick test on the exact T = 0 section" },

@@ -41,13 +41,14 @@ typedef struct {
     size_t samples;
     /* contact */
     int layout;              /* sf_layout */
-    size_t cells;
+    size_t cells;            /* 0: chosen by the plan (numplan.h) */
     double u, v, w;          /* relative velocity [m/s] and spin [rad/s] */
     size_t ntheta, npsi;     /* limit-surface direction grid */
     /* dynamics */
     int integrator;
     int dof;                 /* SF_DOF_1: the 1-D model of Eqs. 3-4; SF_DOF_3: x, y, phi (Eq. 5) */
-    double rtol, t_skip;
+    double rtol, t_skip;     /* rtol 0: chosen by the plan (numplan.h) */
+    double qoi_tol;          /* relative QoI error the plan aims at */
     int velocity_jump, exact_section, history;
     int shortcuts;           /* 0: the plan computes in full (cases verifying its shortcuts) */
     /* the check a case runs */

@@ -169,6 +169,76 @@ static void contensou(void **state)
     }
 }
 
+/* The fast wrench loop (issue 14): the scaled speeds make the wrench a
+ * function of the slip direction field only, so scaling (u, v, w) by a
+ * power of two gives the same bits (no overflow at 2^900, no underflow at
+ * 2^-1000); it agrees with the cell-by-cell hypot loop written here from
+ * the public quadrature; a cell on the pole (Cartesian, odd cells, pure
+ * spin) adds nothing instead of a NaN; clamped look-ups are counted. */
+static void reference_wrench(const sf_contact *c, double xb, double yb, double u, double v, double w, double q[3])
+{
+    const double *rx, *ry, *wt;
+    sf_contact_cells(c, &rx, &ry, &wt);
+    q[0] = q[1] = q[2] = 0;
+    for (size_t i = 0; i < sf_contact_ncells(c); i++) {
+        double vx = u - w * ry[i], vy = v + w * rx[i], sp = hypot(vx, vy);
+        if (sp == 0)
+            continue;
+        double a = wt[i] * sf_cof_eval(sf_contact_get_cof(c), xb + rx[i], yb + ry[i]);
+        q[0] -= a * vx / sp;
+        q[1] -= a * vy / sp;
+        q[2] -= a * (rx[i] * vy - ry[i] * vx) / sp;
+    }
+}
+
+static void wrench_fast_loop(void **state)
+{
+    (void)state;
+    enum { M = 40 };
+    double g[M * M];
+    for (int j = 0; j < M; j++)
+        for (int i = 0; i < M; i++)
+            g[i + M * j] = 0.5 + 0.1 * sin(0.7 * i) * cos(0.4 * j);
+    sf_cof *cof;
+    assert_int_equal(sf_cof_alloc_grid(M, M, -1, -1, 2.0 / (M - 1), 2.0 / (M - 1), g, &cof), SF_SUCCESS);
+    sf_contact_spec spec = { 0.5, 98.1, SF_LAYOUT_POLAR, 13 };
+    sf_contact *c;
+    assert_int_equal(sf_contact_alloc(&spec, cof, &c), SF_SUCCESS);
+    double q[3], r[3], k[3];
+    const double mv[][3] = { { -0.2, 0.05, 0.3 }, { 0.1, 0, -2 }, { 0, 0, 1 }, { 1e-3, -2e-3, 0 } };
+    for (size_t t = 0; t < sizeof mv / sizeof mv[0]; t++) {
+        double u = mv[t][0], v = mv[t][1], w = mv[t][2];
+        sf_contact_wrench(c, 0.1, -0.05, u, v, w, 1, q);
+        reference_wrench(c, 0.1, -0.05, u, v, w, r);
+        for (int i = 0; i < 3; i++)
+            assert_close(q[i], r[i], 1e-12 * 98.1);
+        const int ex[] = { -1000, -500, 500, 900 };
+        for (int e = 0; e < 4; e++) {
+            sf_contact_wrench(c, 0.1, -0.05, ldexp(u, ex[e]), ldexp(v, ex[e]), ldexp(w, ex[e]), 1, k);
+            for (int i = 0; i < 3; i++)
+                assert_true(k[i] == q[i]);   /* the same bits */
+        }
+    }
+    assert_int_equal(sf_cof_outside(cof), 0);
+    sf_contact_wrench(c, 0.9, 0, -0.2, 0, 0.3, 1, q);   /* the disc hangs over the grid's edge */
+    assert_true(sf_cof_outside(cof) > 0);
+    reference_wrench(c, 0.9, 0, -0.2, 0, 0.3, r);
+    for (int i = 0; i < 3; i++)
+        assert_close(q[i], r[i], 1e-12 * 98.1);
+    sf_contact_free(c);
+    /* a cell on the pole: Cartesian, 9 cells across (one at the centre), pure spin */
+    sf_contact_spec cs = { 0.5, 98.1, SF_LAYOUT_CARTESIAN, 9 };
+    assert_int_equal(sf_contact_alloc(&cs, cof, &c), SF_SUCCESS);
+    sf_contact_wrench(c, 0, 0, 0, 0, 1.5, 1, q);
+    reference_wrench(c, 0, 0, 0, 0, 1.5, r);
+    for (int i = 0; i < 3; i++) {
+        assert_true(isfinite(q[i]));
+        assert_close(q[i], r[i], 1e-12 * 98.1);
+    }
+    sf_contact_free(c);
+    sf_cof_free(cof);
+}
+
 static void wrench_and_margins(void **state)
 {
     (void)state;
@@ -250,6 +320,7 @@ int main(void)
         cmocka_unit_test(cof_plan),
         cmocka_unit_test(contensou),
         cmocka_unit_test(wrench_and_margins),
+        cmocka_unit_test(wrench_fast_loop),
         cmocka_unit_test(section_inside_circle),
     };
     return cmocka_run_group_tests_name("contact", tests, NULL, NULL);

@@ -8,7 +8,9 @@
  *  - plan_history_skip: a summary-only run (no history) gives the same
  *    bits as a run that records every step and samples x.
  *  - plan_reuse: a plan reused across realisations draws the same bits as
- *    a fresh plan per realisation. */
+ *    a fresh plan per realisation.
+ *  - plan_qoi_tol: the accuracy-driven numerical plan (numplan.h) meets
+ *    the scene's qoi_tol across l/R. */
 #include "checks.h"
 #include "common.h"
 #include "cof.h"
@@ -273,9 +275,116 @@ static int chk_reuse(const sf_case *c, sf_result *r)
     return SF_SUCCESS;
 }
 
+/* Solution verification of the accuracy-driven plan (numplan.h, issue 14):
+ * at each l/R of the sweep, `samples` realisations run at the plan's own
+ * settings for the scene's qoi_tol (cells and rtol unset: the plan
+ * chooses) and again at 4x its rings and rtol / 100 on the same field
+ * (the reference).  The achieved error of a realisation is the largest
+ * relative difference of PV_x, PV_F and stick fraction; the check: its RMS
+ * over the realisations at or below qoi_tol at every l/R (and the
+ * prediction the plan printed is noted beside it).  Where the plan needs no
+ * quadrature (the strip is one random variable at large l/R) the reference
+ * differs in rtol only.  The reference is the same code at a finer
+ * setting: this verifies the plan's error control, not the model. */
+static int chk_qoi_tol(const sf_case *c, sf_result *r)
+{
+    const sf_scene *s0 = &c->scene;
+    size_t K = s0->sweep.n, n = s0->samples;
+    if (!K || strcmp(s0->sweep_param, "l_over_R") || s0->cells || s0->rtol > 0 || !n) {
+        sf_note(r, "The scene must sweep l_over_R and leave cells and rtol to the plan (unset).");
+        return SF_EINVAL;
+    }
+    double *x = check_alloc(K * sizeof *x), *ach = check_alloc(K * sizeof *ach);
+    double *worst = check_alloc(K * sizeof *worst), *pred = check_alloc(K * sizeof *pred);
+    sf_note(r, "Each realisation at the plan's settings for qoi_tol = %g against 4x its rings and rtol / 100 on the "
+               "same field; %zu realisations per l/R (streams sf_mc_seed(seed, i)); error: the largest relative "
+               "difference of PV_x, PV_F and stick fraction.\n\n| l/R | cells (plan) | rtol (plan) | predicted | "
+               "achieved (RMS) | worst realisation | reference cells, rtol |\n|---|---|---|---|---|---|---|",
+               s0->qoi_tol, n);
+    int rc = SF_SUCCESS;
+    for (size_t k = 0; k < K && !rc; k++) {
+        sf_scene s = *s0;
+        char err[256] = "";
+        if (sf_sweep_set(&s, "l_over_R", s0->sweep.v[k], err, sizeof err)) {
+            sf_note(r, "**Bad sweep value:** %s", err);
+            return SF_EINVAL;
+        }
+        sf_cof_plan *cp;
+        if ((rc = sf_cof_plan_alloc(&s, &cp, err, sizeof err))) {
+            sf_note(r, "**Cannot plan the COF at l/R = %g:** %s", s0->sweep.v[k], err);
+            break;
+        }
+        double e2 = 0, ew = 0;
+        sf_numplan np = { 0 };
+        sf_scene ref = s;
+        for (size_t i = 0; i < n && !rc; i++) {
+            gsl_rng *g = gsl_rng_alloc(gsl_rng_mt19937);
+            gsl_rng_set(g, sf_mc_seed(s.seed, i));
+            sf_cof *cof = NULL;
+            rc = sf_cof_plan_draw(cp, g, &cof);
+            gsl_rng_free(g);
+            sf_osc *o = NULL;
+            if (!rc && !(rc = sf_osc_alloc(&s, cof, &o, err, sizeof err))) {
+                np = *sf_osc_get_plan(o);
+                sf_osc_free(o);
+            }
+            ref.cells = np.quadrature ? 4 * np.cells : 0;
+            ref.rtol = np.rtol / 100;
+            sf_osc_result a, b;
+            double qa[NQ], qb[NQ];
+            if (!rc && !(rc = check_osc_run(&s, NULL, cof, 0, &a, NULL, NULL, r))) {
+                qois(&a, qa);
+                sf_osc_result_free(&a);
+                if (!(rc = check_osc_run(&ref, NULL, cof, 0, &b, NULL, NULL, r))) {
+                    qois(&b, qb);
+                    sf_osc_result_free(&b);
+                    double e = 0;
+                    for (int q = 0; q < NQ; q++) {
+                        double d = fabs(qa[q] - qb[q]) / fabs(qb[q]);
+                        if (!(d <= e))   /* NaN (no complete cycle) too: it fails the case */
+                            e = isnan(d) ? INFINITY : d;
+                    }
+                    e2 += e * e / (double)n;
+                    ew = fmax(ew, e);
+                }
+            }
+            sf_cof_free(cof);
+        }
+        sf_cof_plan_free(cp);
+        if (rc)
+            break;
+        x[k] = s0->sweep.v[k];
+        ach[k] = fmax(sqrt(e2), 1e-17);
+        worst[k] = fmax(ew, 1e-17);
+        pred[k] = np.err_total;
+        char cells[32];
+        snprintf(cells, sizeof cells, np.quadrature ? "%zu" : "none (closed form)", np.cells);
+        sf_note(r, "| %g | %s | %.3g | %.2g | %.2g | %.2g | %zu, %.3g |", x[k], cells, np.rtol, pred[k], ach[k],
+                worst[k], ref.cells, ref.rtol);
+        char t[160];
+        snprintf(t, sizeof t, "l/R = %g: RMS QoI error at the plan's settings (requested qoi_tol)", x[k]);
+        sf_check_le(r, t, ach[k], s0->qoi_tol);
+    }
+    if (!rc) {
+        sf_plot *p = sf_result_plot(r, "qoi_tol", "Accuracy plan: achieved QoI error vs l/R", "l/R [-]",
+                                    "relative QoI error [-]");
+        sf_plot_log(p, 1, 1);
+        sf_plot_series(p, "achieved (RMS over realisations)", SF_STYLE_LINESPOINTS, K, x, ach);
+        sf_plot_series(p, "worst realisation", SF_STYLE_POINTS, K, x, worst);
+        sf_plot_series(p, "predicted by the plan", SF_STYLE_LINESPOINTS, K, x, pred);
+        sf_plot_hline(p, "requested qoi_tol", s0->qoi_tol);
+    }
+    free(x);
+    free(ach);
+    free(worst);
+    free(pred);
+    return rc ? SF_EFAIL : SF_SUCCESS;
+}
+
 const sf_check_def sf_checks_plan[] = {
     { "plan_shortcut_boundary", chk_shortcut_boundary, "a plan shortcut vs the full computation at its boundary" },
     { "plan_history_skip", chk_history_skip, "summary-only run vs full history: identical bits" },
     { "plan_reuse", chk_reuse, "plan reused across realisations vs a fresh plan: identical bits" },
+    { "plan_qoi_tol", chk_qoi_tol, "the accuracy plan's settings meet qoi_tol against 4x rings, rtol / 100" },
     { NULL, NULL, NULL }
 };

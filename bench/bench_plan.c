@@ -1,0 +1,188 @@
+/* Calibration of the accuracy-driven plan (solver/numplan.h): the error of
+ * a realisation's quantities of interest (PV_x, PV_F, stick fraction;
+ * relative, the largest of the three) against the quadrature resolution
+ * (rings, at a tight rtol) and against the stepper's rtol (at a fine
+ * quadrature), across l/R, on the same fields: each error is against a
+ * run at 4x the rings (resp. at rtol 1e-11) of the same realisation.
+ * Table 1 otherwise, T = 60 s (t_skip 10 s).  `make bench
+ * BENCH_SECTIONS=plan`; the numbers behind the rule in numplan.c. */
+#include "bench.h"
+#include "cof.h"
+#include "oscillator.h"
+#include "scene.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <gsl/gsl_rng.h>
+#include <gsl/gsl_sort.h>
+
+static int qoi(const sf_scene *s, const sf_cof *cof, double q[3], double *cpu)
+{
+    sf_osc *o;
+    char err[200];
+    if (sf_osc_alloc(s, cof, &o, err, sizeof err))
+        return 1;
+    sf_osc_result r;
+    double t0 = bench_cpu();
+    int rc = sf_osc_run(o, NULL, NULL, 0, &r, err, sizeof err);
+    if (cpu)
+        *cpu = bench_cpu() - t0;
+    q[0] = r.pv_x;
+    q[1] = r.pv_F;
+    q[2] = r.stick_fraction;
+    sf_osc_result_free(&r);
+    sf_osc_free(o);
+    return rc;
+}
+
+static double relerr(const double a[3], const double b[3])
+{
+    double e = 0;
+    for (int i = 0; i < 3; i++) {
+        double d = fabs(a[i] - b[i]) / fabs(b[i]);
+        if (!(d <= e))   /* NaN: no complete cycle (fmax would drop it) */
+            e = isnan(d) ? INFINITY : d;
+    }
+    return e;
+}
+
+int bench_plan(FILE *f, const char *dir)
+{
+    (void)dir;
+    enum { NS = 4, NL = 5, NRING = 5, NRT = 5 };
+    const double lr[NL] = { 1, 0.2, 5, 50, 0.05 };
+    const size_t rings[NRING] = { 4, 6, 8, 12, 16 };
+    const double rtols[NRT] = { 1e-5, 1e-6, 1e-7, 1e-8, 1e-9 };
+    fprintf(f, "## Plan calibration: QoI error vs rings and rtol across l/R\n\nRelative error of a realisation's "
+               "QoIs (the largest of PV_x, PV_F, stick fraction), RMS and max over %d realisations (seeds 1..%d), "
+               "Table 1, T = 60 s. Rings: at rtol 1e-8 against 4x the rings at rtol 1e-8. rtol: at 16 rings "
+               "against rtol 1e-11 at 16 rings. Same fields throughout.\n\n", NS, NS);
+    fprintf(f, "| l/R | knob | value | RMS error | max error | CPU per realisation [s] |\n|---|---|---|---|---|---|\n");
+    for (int L = 0; L < NL; L++) {
+        sf_scene s;
+        sf_scene_default(&s);
+        s.T = 60;
+        s.l = lr[L] * s.R;
+        s.rtol = 1e-8;
+        s.cells = 32;
+        double e2r[NRING] = { 0 }, emr[NRING] = { 0 }, cr[NRING] = { 0 };
+        double e2t[NRT] = { 0 }, emt[NRT] = { 0 }, ct[NRT] = { 0 };
+        for (int k = 0; k < NS; k++) {
+            gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+            gsl_rng_set(rng, (unsigned long)k + 1);
+            sf_cof *cof;
+            if (sf_cof_from_scene(&s, rng, &cof)) {
+                gsl_rng_free(rng);
+                fprintf(f, "| %g | - | - | cannot draw the field | | |\n", lr[L]);
+                goto next;
+            }
+            gsl_rng_free(rng);
+            for (int i = 0; i < NRING; i++) {
+                double q[3], qr[3], c;
+                sf_scene a = s;
+                a.cells = rings[i];
+                qoi(&a, cof, q, &c);
+                a.cells = 4 * rings[i];
+                qoi(&a, cof, qr, NULL);
+                double e = relerr(q, qr);
+                e2r[i] += e * e / NS;
+                emr[i] = fmax(emr[i], e);
+                cr[i] += c / NS;
+            }
+            double qref[3];
+            sf_scene a = s;
+            a.cells = 16;
+            a.rtol = 1e-11;
+            qoi(&a, cof, qref, NULL);
+            for (int i = 0; i < NRT; i++) {
+                double q[3], c;
+                a.rtol = rtols[i];
+                qoi(&a, cof, q, &c);
+                double e = relerr(q, qref);
+                e2t[i] += e * e / NS;
+                emt[i] = fmax(emt[i], e);
+                ct[i] += c / NS;
+            }
+            sf_cof_free(cof);
+            fprintf(stderr, "bench: plan l/R = %g, realisation %d done\n", lr[L], k + 1);
+        }
+        for (int i = 0; i < NRING; i++)
+            fprintf(f, "| %g | rings | %zu | %.2e | %.2e | %.3f |\n", lr[L], rings[i], sqrt(e2r[i]), emr[i], cr[i]);
+        for (int i = 0; i < NRT; i++)
+            fprintf(f, "| %g | rtol | %g | %.2e | %.2e | %.3f |\n", lr[L], rtols[i], sqrt(e2t[i]), emt[i], ct[i]);
+        fflush(f);
+    next:;
+    }
+    return 0;
+}
+
+/* One realisation at l/R = 1 (Table 1 otherwise, T = 100 s) on one core:
+ * COF plan, draw and run, CPU time of this thread, at the default
+ * qoi_tol (the plan's settings) and at the settings before issue 14
+ * (32 rings, rtol 1e-8); interleaved, medians. */
+static double one_realisation(const sf_scene *s, int *rc)
+{
+    double t0 = bench_cpu();
+    sf_cof_plan *p;
+    sf_cof *cof = NULL;
+    char err[200];
+    *rc = sf_cof_plan_alloc(s, &p, err, sizeof err);
+    if (*rc)
+        return NAN;
+    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+    gsl_rng_set(rng, s->seed);
+    *rc = sf_cof_plan_draw(p, rng, &cof);
+    gsl_rng_free(rng);
+    sf_cof_plan_free(p);
+    sf_osc *o = NULL;
+    if (!*rc && !(*rc = sf_osc_alloc(s, cof, &o, err, sizeof err))) {
+        sf_osc_result r;
+        *rc = sf_osc_run(o, NULL, NULL, 0, &r, err, sizeof err);
+        sf_osc_result_free(&r);
+    }
+    sf_osc_free(o);
+    sf_cof_free(cof);
+    return bench_cpu() - t0;
+}
+
+int bench_realisation(FILE *f, const char *dir)
+{
+    (void)dir;
+    enum { REPS = 9 };
+    sf_scene s[2];
+    sf_scene_default(&s[0]);
+    s[0].l = s[0].R;   /* l/R = 1 */
+    s[1] = s[0];
+    s[1].cells = 32;   /* the defaults before issue 14 */
+    s[1].rtol = 1e-8;
+    double t[2][REPS];
+    int rc = 0;
+    for (int k = 0; k < REPS; k++)
+        for (int j = 0; j < 2; j++)
+            t[j][k] = one_realisation(&s[j], &rc);
+    gsl_sort(t[0], 1, REPS);
+    gsl_sort(t[1], 1, REPS);
+    double a = t[0][REPS / 2], b = t[1][REPS / 2];
+    sf_osc *o;
+    sf_numplan np = { 0 };
+    char err[200];
+    sf_cof *g;
+    {   /* the plan's record at l/R = 1 (any field COF: the plan depends on the scene) */
+        double v[4] = { 0.5, 0.5, 0.5, 0.5 };
+        sf_cof_alloc_grid(2, 2, -1, -1, 2, 2, v, &g);
+        if (!sf_osc_alloc(&s[0], g, &o, err, sizeof err)) {
+            np = *sf_osc_get_plan(o);
+            sf_osc_free(o);
+        }
+        sf_cof_free(g);
+    }
+    fprintf(f, "## One realisation at l/R = 1: default vs the 0.05 s target\n\nTable 1 otherwise (T = 100 s), one core, "
+               "CPU time of this thread for COF plan + draw + run, medians of %d interleaved repetitions. Default: "
+               "qoi_tol = %g, the plan's settings (%zu rings, rtol %.3g, predicted QoI error %.2g).\n\n"
+               "| settings | CPU time per realisation [s] | / 0.05 s target |\n|---|---|---|\n"
+               "| default (plan for qoi_tol) | %.4f | %.2f |\n| before issue 14 (32 rings, rtol 1e-8) | %.4f | %.2f |\n\n"
+               "Default vs before: **%.1fx** faster; the 0.05 s target is **%s** (%.2f of it).\n",
+            REPS, s[0].qoi_tol, np.cells, np.rtol, np.err_total, a, a / 0.05, b, b / 0.05, b / a,
+            a <= 0.05 ? "met" : "NOT met", a / 0.05);
+    return rc ? 1 : 0;
+}

@@ -1,0 +1,66 @@
+/* slipfield: the accuracy-driven numerical plan of a dynamics run (issue
+ * 14, "fast by default").  ONE place decides the numerical settings of
+ * sf_osc_alloc from the scene's `qoi_tol`: the relative error wanted in a
+ * realisation's quantities of interest (PV_x, PV_F, stick fraction).
+ *
+ *  - quadrature resolution (`cells`: polar rings, or Cartesian cells per
+ *    diameter), from l/R and the tolerance;
+ *  - the stepper (`integrator`) and its `rtol`, from the tolerance.
+ *
+ * A key the scene sets explicitly (cells > 0, rtol > 0, integrator other
+ * than adaptive) overrides the plan's choice; the plan then predicts the
+ * error of that setting instead.  A quadrature whose cells are coarse
+ * against l (cell size above l / SF_PLAN_CELLS_PER_L) is reported in
+ * `warning` with the reason (the run goes on: explicit keys are obeyed).
+ * The strip grid spacing (l/8, cof.h) is not a knob here: a solution
+ * verification compares runs on the same strip field, and the field's own
+ * interpolation error is cof.h's concern (cases/contact/interpolation).
+ *
+ * The rule and its calibration (bench section `plan`, error vs rings and
+ * rtol across l/R on the same fields) are in numplan.c. */
+#ifndef SF_NUMPLAN_H
+#define SF_NUMPLAN_H
+
+#include <stddef.h>
+#include <stdio.h>
+#include "scene.h"
+
+/* Cells per correlation length below which a quadrature is warned about. */
+#define SF_PLAN_CELLS_PER_L 1.0
+/* The largest ring count the plan chooses by itself. */
+#define SF_PLAN_MAX_RINGS 128
+
+enum { SF_PLAN_CHOSEN = 0, SF_PLAN_SCENE = 1 };   /* where a setting came from */
+
+typedef struct {
+    double qoi_tol;          /* requested relative QoI error [-] */
+    int quadrature;          /* 1: the slip wrench is a quadrature (field COF, or shortcuts off) */
+    double l_over_R;         /* [-] */
+    size_t cells;            /* resolution (rings or cells per diameter); 0 without quadrature */
+    int cells_from;
+    double cell_size;        /* typical cell size [m]: R / rings (polar), 2R / cells (Cartesian) */
+    double err_quad;         /* predicted relative QoI error of the quadrature [-] */
+    double rtol;             /* the stepper's relative tolerance [-] */
+    int rtol_from;
+    int integrator;          /* SF_INTEG_RK8PD, _RKCK or _RK4: the stepper that runs */
+    int integrator_from;
+    double err_time;         /* predicted relative QoI error of the time integration [-] */
+    double err_total;        /* err_quad + err_time */
+    char warning[240];       /* empty, or why a setting cannot meet qoi_tol or resolve l */
+} sf_numplan;
+
+/* The plan for scene s; quadrature: whether the wrench is a quadrature
+ * (sf_osc_alloc knows: field COF, or shortcuts = false on a constant one).
+ * SF_EINVAL with the reason in err for an impossible request. */
+int sf_numplan_make(const sf_scene *s, int quadrature, sf_numplan *p, char *err, size_t errlen);
+
+/* The plan's record, one line per choice with its predicted error (for
+ * `slipfield run --explain`). */
+void sf_numplan_explain(const sf_numplan *p, FILE *f);
+
+/* The predicted relative QoI errors of the plan's models (numplan.c), for
+ * the checks that verify them. */
+double sf_numplan_err_quad(double l_over_R, size_t rings);
+double sf_numplan_err_time(double rtol);
+
+#endif
