@@ -46,6 +46,7 @@ typedef struct {
     int integrator;
     int dof;                 /* SF_DOF_1: the 1-D model of Eqs. 3-4; SF_DOF_3: x, y, phi (Eq. 5) */
     double rtol, t_skip;
+    double x0, y0, phi0, vx0, vy0, w0;   /* initial state (ground frame, SI): default rest at the origin */
     int velocity_jump, exact_section, history;
     int shortcuts;           /* 0: the plan computes in full (cases verifying its shortcuts) */
     /* the check a case runs */
