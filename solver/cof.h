@@ -37,6 +37,13 @@ sf_cof_kind sf_cof_get_kind(const sf_cof *c);
 double sf_cof_eval(const sf_cof *c, double xb, double yb);
 unsigned long sf_cof_outside(const sf_cof *c);
 
+/* Read-only view of a gridded COF (for independent oracles that
+ * interpolate the same nodal values their own way): m x n values mu[i + m*j]
+ * at (x0 + i dx, y0 + j dy), owned by c.  SF_EINVAL for a non-grid COF
+ * (uniform or variable: read its value with sf_cof_eval at any point). */
+int sf_cof_grid_view(const sf_cof *c, size_t *m, size_t *n, double *x0, double *y0, double *dx, double *dy,
+                     const double **mu);
+
 /* 1 when the disc of radius r centred at belt point (xb, yb) lies on the
  * grid (always, for a uniform COF). */
 int sf_cof_covers(const sf_cof *c, double xb, double yb, double r);

@@ -510,8 +510,7 @@ int sf_osc_run(sf_osc *o, sf_osc_row_fn row, void *ctx, double sample_dt, sf_osc
         jumps += 0.5 * s->m * s->v_b * s->v_b -
                  (0.5 * s->m * (y[VX] * y[VX] + y[VY] * y[VY]) + 0.5 * o->J * y[W] * y[W]);
         y[VX] = s->v_b;
-        y[VY] = 0;
-        y[W] = 0;
+        y[VY] = y[W] = 0;
         if ((rc = transition(&a, SF_OSC_STICK_ONSET, 0, y[X], s->k * y[X])))
             return rc;
     }
