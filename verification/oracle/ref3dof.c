@@ -12,9 +12,7 @@
 /* Events are bisected to this width [s] (the solver's own goal is 1e-12 s:
  * a tenth of it keeps the oracle's share of a transition-time gap small). */
 #define REF_TIME_TOL 1e-13
-/* A step that ends within REF_SCAN eps_lambda of the threshold is scanned
- * at REF_NSCAN interior points for a dip below it. */
-#define REF_SCAN 50
+/* Interior points at which a step near the threshold is scanned. */
 #define REF_NSCAN 32
 
 struct ref3dof {
@@ -23,13 +21,18 @@ struct ref3dof {
     double init[REF_N];
     /* COF: a constant, or the nodal values of a grid */
     int grid;
-    double mu;
+    double mu, mu_max;   /* the constant, and the largest nodal value */
     size_t gm, gn;
     double gx0, gy0, gdx, gdy;
     const double *g;
     /* quadrature: offsets [m] and weights [N] (sum N) */
     size_t nq;
     double *qx, *qy, *qw;
+    /* the disc average's own rule (weights sum to 1): 4x the wrench's
+     * nodes each way -- it runs only at stick tests, and a stick onset
+     * near the circle's edge is decided by it */
+    size_t nm;
+    double *mx, *my, *mw;
     double dt;
 };
 
@@ -50,6 +53,36 @@ static double cof_at(const ref3dof *o, double xb, double yb)
     double a = fx - (double)i, b = fy - (double)j;
     const double *p = o->g + i + o->gm * j;
     return (1 - a) * (1 - b) * p[0] + a * (1 - b) * p[1] + (1 - a) * b * p[o->gm] + a * b * p[o->gm + 1];
+}
+
+/* Gauss-Legendre in r on [0, R] (exact for the area weight r dr) x the
+ * trapezoid (midpoint-offset) rule in angle: nodes r (cos a, sin a),
+ * weights scale r w_r (2 pi / na). */
+static int disc_rule(double R, size_t nr, size_t na, double scale, size_t *n, double **x, double **y, double **w)
+{
+    *n = nr * na;
+    *x = malloc(*n * sizeof **x);
+    *y = malloc(*n * sizeof **y);
+    *w = malloc(*n * sizeof **w);
+    gsl_integration_glfixed_table *tab = gsl_integration_glfixed_table_alloc(nr);
+    if (!*x || !*y || !*w || !tab) {
+        if (tab)
+            gsl_integration_glfixed_table_free(tab);
+        return SF_ENOMEM;
+    }
+    for (size_t i = 0; i < nr; i++) {
+        double r, wr;
+        gsl_integration_glfixed_point(0, R, i, &r, &wr, tab);
+        for (size_t j = 0; j < na; j++) {
+            double a = 2 * M_PI * ((double)j + 0.5) / (double)na;
+            size_t q = i * na + j;
+            (*x)[q] = r * cos(a);
+            (*y)[q] = r * sin(a);
+            (*w)[q] = scale * r * wr * 2 * M_PI / (double)na;
+        }
+    }
+    gsl_integration_glfixed_table_free(tab);
+    return SF_SUCCESS;
 }
 
 int ref3dof_alloc(const sf_scene *s, const sf_cof *cof, double dt, size_t nr, size_t na, ref3dof **out)
@@ -75,36 +108,18 @@ int ref3dof_alloc(const sf_scene *s, const sf_cof *cof, double dt, size_t nr, si
     double init[REF_N] = { s->x0, s->y0, s->phi0, s->vx0, s->vy0, s->w0 };
     memcpy(o->init, init, sizeof init);
     o->dt = dt;
-    if (sf_cof_grid_view(cof, &o->gm, &o->gn, &o->gx0, &o->gy0, &o->gdx, &o->gdy, &o->g) == SF_SUCCESS)
+    if (sf_cof_grid_view(cof, &o->gm, &o->gn, &o->gx0, &o->gy0, &o->gdx, &o->gdy, &o->g) == SF_SUCCESS) {
         o->grid = 1;
-    else
-        o->mu = sf_cof_eval(cof, 0, 0);
-    /* Gauss-Legendre in r on [0, R] (exact for the area weight r dr) x
-     * the trapezoid (midpoint-offset) rule in angle: P r w_r (2 pi / na) */
-    o->nq = nr * na;
-    o->qx = malloc(o->nq * sizeof *o->qx);
-    o->qy = malloc(o->nq * sizeof *o->qy);
-    o->qw = malloc(o->nq * sizeof *o->qw);
-    gsl_integration_glfixed_table *tab = gsl_integration_glfixed_table_alloc(nr);
-    if (!o->qx || !o->qy || !o->qw || !tab) {
-        if (tab)
-            gsl_integration_glfixed_table_free(tab);
+        for (size_t i = 0; i < o->gm * o->gn; i++)
+            o->mu_max = fmax(o->mu_max, o->g[i]);
+    } else
+        o->mu = o->mu_max = sf_cof_eval(cof, 0, 0);
+    /* wrench: weights P dS [N]; disc average: dS / (pi R^2) */
+    if (disc_rule(s->R, nr, na, o->N / (M_PI * s->R * s->R), &o->nq, &o->qx, &o->qy, &o->qw) ||
+        disc_rule(s->R, 4 * nr, 4 * na, 1 / (M_PI * s->R * s->R), &o->nm, &o->mx, &o->my, &o->mw)) {
         ref3dof_free(o);
         return SF_ENOMEM;
     }
-    double P = o->N / (M_PI * s->R * s->R);
-    for (size_t i = 0; i < nr; i++) {
-        double r, wr;
-        gsl_integration_glfixed_point(0, s->R, i, &r, &wr, tab);
-        for (size_t j = 0; j < na; j++) {
-            double a = 2 * M_PI * ((double)j + 0.5) / (double)na;
-            size_t q = i * na + j;
-            o->qx[q] = r * cos(a);
-            o->qy[q] = r * sin(a);
-            o->qw[q] = P * r * wr * 2 * M_PI / (double)na;
-        }
-    }
-    gsl_integration_glfixed_table_free(tab);
     *out = o;
     return SF_SUCCESS;
 }
@@ -116,6 +131,9 @@ void ref3dof_free(ref3dof *o)
     free(o->qx);
     free(o->qy);
     free(o->qw);
+    free(o->mx);
+    free(o->my);
+    free(o->mw);
     free(o);
 }
 
@@ -148,9 +166,9 @@ static double mean_cof(const ref3dof *o, double xb, double yb)
     if (!o->grid)
         return o->mu;
     double a = 0;
-    for (size_t q = 0; q < o->nq; q++)
-        a += o->qw[q] * cof_at(o, xb + o->qx[q], yb + o->qy[q]);
-    return a / o->N;
+    for (size_t q = 0; q < o->nm; q++)
+        a += o->mw[q] * cof_at(o, xb + o->mx[q], yb + o->my[q]);
+    return a;
 }
 
 /* Eq. 9: the dimensionless relative speed. */
@@ -400,7 +418,13 @@ int ref3dof_run(ref3dof *o, double sample_dt, ref3dof_result *res)
             armed = 0;
             continue;
         }
-        double h = fmin(o->dt, o->T - t), s1[REF_N];
+        /* RK4 at dt, shortened near the threshold: as the relative speed
+         * V = lambda omega_n R falls, friction damps the slip direction
+         * on the time scale m V / (mu_k m g) (stiff: RK4 is stable only
+         * below about 2.8 of it), so the step keeps below that scale,
+         * down to its value at V = eps_lambda omega_n R */
+        double V = fmax(lambda(o, s), o->eps) * o->wn * o->R;
+        double h = fmin(fmin(o->dt, o->m * V / (o->ratio * o->mu_max * o->N)), o->T - t), s1[REF_N];
         rk4(o, t, s, h, s1);
         res->steps++;
         for (int i = 0; i < REF_N; i++)
@@ -409,9 +433,15 @@ int ref3dof_run(ref3dof *o, double sample_dt, ref3dof_result *res)
         if (rc)
             break;
         int st = armed && to_stick(o, t + h, s1);
-        if (armed && !st && fmin(lambda(o, s), lambda(o, s1)) < REF_SCAN * o->eps) {
-            /* lambda can dip below eps inside a step and rise again (the
-             * spring pulls on): scan the step near the threshold */
+        /* lambda can dip below eps inside a step and rise again (a V
+         * narrower than the step where the relative velocity passes
+         * zero): a step whose ends are within the largest change lambda
+         * can make over it (|acceleration| bound / (omega_n R), spin part
+         * likewise) of the threshold is scanned at interior points */
+        double rate = (o->k * sqrt(s[REF_X] * s[REF_X] + s[REF_Y] * s[REF_Y]) + o->ratio * o->mu_max * o->N) /
+                          (o->m * o->wn * o->R) +
+                      o->ratio * o->mu_max * o->N * o->R / (o->J * o->wn);
+        if (armed && !st && fmin(lambda(o, s), lambda(o, s1)) < o->eps + h * rate) {
             for (int j = 1; j < REF_NSCAN && !st; j++) {
                 double hj = h * j / REF_NSCAN, sj[REF_N];
                 rk4(o, t, s, hj, sj);

@@ -15,8 +15,11 @@
  *    (the same Gauss-Legendre x trapezoid rule);
  *  - the jumps of Eq. 12 (velocities (v_b, 0, 0)) and Eq. 14 (relative
  *    velocity eps_lambda omega_n R opposite the stick force (k x, k y));
- *  - classical RK4 written out at a fixed step dt (the solver: GSL's
- *    adaptive rkck/rk8pd with Brent event search); events by bisection on
+ *  - classical RK4 written out at a fixed step dt, shortened only near
+ *    the stick threshold to m V / (mu_k,max m g) (V the relative speed:
+ *    the damping time of friction on the slip direction, which makes the
+ *    slip equations stiff as V -> 0) (the solver: GSL's adaptive
+ *    rkck/rk8pd with Brent event search); events by bisection on
  *    the event predicate over single RK4 steps from the step's start; the
  *    stick phase as exact belt motion with its break found by bisection
  *    on k |(x, y)| - mu_bar m g (the solver uses a closed form).
