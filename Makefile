@@ -45,7 +45,7 @@ CMOCKA_LIBS = $(shell pkg-config --libs cmocka 2>/dev/null || echo -lcmocka)
 SAN := -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all
 
 SOLVER_SRC := $(sort $(wildcard solver/*.c))
-VERIF_SRC := $(sort $(wildcard verification/*.c verification/checks/*.c))
+VERIF_SRC := $(sort $(wildcard verification/*.c verification/checks/*.c verification/oracle/*.c))
 CLI_SRC := $(sort $(wildcard cli/*.c))
 TEST_SRC := $(sort $(wildcard tests/test_*.c))
 BENCH_SRC := $(sort $(wildcard bench/*.c))

@@ -168,6 +168,21 @@ int sf_cof_follow(const sf_cof *cc, double xlo, double xhi)
 sf_cof_kind sf_cof_get_kind(const sf_cof *c) { return c->kind; }
 unsigned long sf_cof_outside(const sf_cof *c) { return c->outside; }
 
+int sf_cof_grid_view(const sf_cof *c, size_t *m, size_t *n, double *x0, double *y0, double *dx, double *dy,
+                     const double **mu)
+{
+    if (!c || c->kind != SF_COF_FIELD)
+        return SF_EINVAL;
+    *m = c->m;
+    *n = c->n;
+    *x0 = c->x0;
+    *y0 = c->y0;
+    *dx = c->dx;
+    *dy = c->dy;
+    *mu = c->grid;
+    return SF_SUCCESS;
+}
+
 int sf_cof_covers(const sf_cof *c, double xb, double yb, double r)
 {
     if (c->kind != SF_COF_FIELD)
@@ -199,21 +214,6 @@ double sf_cof_eval(const sf_cof *c, double xb, double yb)
     if (clamped != 0)
         sf_cof_count_outside(c, 1);
     return mu;
-}
-
-int sf_cof_grid_view(const sf_cof *c, size_t *m, size_t *n, double *x0, double *y0, double *dx, double *dy,
-                     const double **mu)
-{
-    if (!c || c->kind != SF_COF_FIELD)
-        return SF_EINVAL;
-    *m = c->m;
-    *n = c->n;
-    *x0 = c->x0;
-    *y0 = c->y0;
-    *dx = c->dx;
-    *dy = c->dy;
-    *mu = c->grid;
-    return SF_SUCCESS;
 }
 
 /* ---- plans */

@@ -136,6 +136,8 @@ int sf_osc_alloc(const sf_scene *s, const sf_cof *cof, sf_osc **out, char *err, 
     int constant = sf_cof_get_kind(cof) != SF_COF_FIELD;
     if (s->dof == SF_DOF_1 && !constant)
         return seterr(err, errlen, SF_EINVAL, "dof = 1 needs a spatially constant COF (cof = uniform or variable)");
+    if (s->dof == SF_DOF_1 && (s->y0 != 0 || s->phi0 != 0 || s->vy0 != 0 || s->w0 != 0))
+        return seterr(err, errlen, SF_EINVAL, "dof = 1 moves along x only: y0, phi0, vy0 and w0 must be 0");
     sf_osc *o = calloc(1, sizeof *o);
     if (!o)
         return SF_ENOMEM;
@@ -574,27 +576,31 @@ int sf_osc_run(sf_osc *o, sf_osc_row_fn row, void *ctx, double sample_dt, sf_osc
             return SF_ENOMEM;
     }
     o->wrench_evals = 0;
-    double t = 0, y[NSTATE] = { 0 }, q[3], h = s->dt, jumps = 0;
+    /* the scene's initial state (x0 ... w0; default rest at the origin;
+     * the 1-D model keeps y, phi, vy, w at 0: sf_osc_alloc refuses others) */
+    double t = 0, y[NSTATE] = { s->x0, s->y0, s->phi0, s->vx0, s->vy0, s->w0, 0 }, q[3], h = s->dt, jumps = 0;
     unsigned long budget = 200000000UL;
-    double g0 = sf_osc_g_stick(o, 0, y);
+    double E0 = energy(o, y), g0 = sf_osc_g_stick(o, 0, y);   /* E0 = 0 from rest at the origin */
     /* armed from the start unless the run starts on the threshold */
     int stick = g0 < 0, armed = g0 > 0, rc = SF_SUCCESS;
     gsl_odeiv2_evolve_reset(o->ev);
-    if (stick) {   /* a belt slower than eps_lambda omega_n R: stick from the start (Eq. 12) */
-        /* from rest: sf_osc_stick_onset's jump, its energy in the product
-         * order of the first release (bits of jump_energy kept) */
-        jumps += 0.5 * s->m * s->v_b * s->v_b;
+    if (stick) {   /* relative speed below eps_lambda omega_n R inside the stick set: stick from the start (Eq. 12) */
+        /* sf_osc_stick_onset's jump, its energy in the product order of
+         * the first release (from rest: bits of jump_energy kept) */
+        jumps += 0.5 * s->m * s->v_b * s->v_b -
+                 (0.5 * s->m * (y[VX] * y[VX] + y[VY] * y[VY]) + 0.5 * o->J * y[W] * y[W]);
         y[VX] = s->v_b;
-        if ((rc = transition(&a, SF_OSC_STICK_ONSET, 0, 0, 0)))
+        y[VY] = y[W] = 0;
+        if ((rc = transition(&a, SF_OSC_STICK_ONSET, 0, y[X], s->k * y[X])))
             return rc;
     }
     double hcap;
     if ((rc = follow(o, 0, y, &hcap)))
         return seterr(err, errlen, rc, "the COF window cannot follow the disc");
     wrench(o, 0, y, q);
-    double pa[3] = { 0, y[VX], stick ? 0 : q[0] / s->m };   /* x, vx, ax at the last step end */
+    double pa[3] = { y[X], y[VX], stick ? 0 : (-s->k * y[X] + q[0]) / s->m };   /* x, vx, ax at the last step end */
     sample(res, &next, 0, pa, 0, pa);
-    emit(o, row, ctx, 0, y, stick ? (double[3]){ 0, 0, 0 } : q, stick);
+    emit(o, row, ctx, 0, y, stick ? (double[3]){ s->k * y[X], s->k * y[Y], 0 } : q, stick);
     while (t < s->T && rc == SF_SUCCESS) {
         if ((rc = follow(o, t, y, &hcap))) {
             rc = seterr(err, errlen, rc, "the COF window cannot follow the disc");
@@ -701,7 +707,7 @@ int sf_osc_run(sf_osc *o, sf_osc_row_fn row, void *ctx, double sample_dt, sf_osc
     }
     res->friction_work = y[WK];
     res->jump_energy = jumps;
-    res->energy_change = energy(o, y);
+    res->energy_change = energy(o, y) - E0;
     res->energy_residual = res->energy_change - res->friction_work - res->jump_energy;
     res->rejected = o->ev->failed_steps;
     res->wrench_evals = o->wrench_evals;

@@ -2,7 +2,11 @@
  * 12-14), 1-D deterministic and 3-DOF stochastic, as a plan.
  *
  * State (ground frame, SI): x, y [m], phi [rad], vx, vy [m/s], w [rad/s].
- * The disc starts at rest at the origin; the belt moves at v_b along +x;
+ * The disc starts from the scene's x0, y0, phi0, vx0, vy0, w0 (default:
+ * rest at the origin), in stick when that state passes the slip-to-stick
+ * test (lambda < eps_lambda and the stick wrench admissible; then Eq. 12
+ * sets the velocities to (v_b, 0, 0)), else in slip; the belt moves at
+ * v_b along +x;
  * the belt point under the centre is (x - v_b t, y).
  *
  * Slip: m x'' = -k x + Fx, m y'' = -k y + Fy, J phi'' = T (J = m R^2/2),

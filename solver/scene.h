@@ -49,6 +49,7 @@ typedef struct {
     int dof;                 /* SF_DOF_1: the 1-D model of Eqs. 3-4; SF_DOF_3: x, y, phi (Eq. 5) */
     double rtol, t_skip;     /* rtol 0: chosen by the plan (numplan.h) */
     double qoi_tol;          /* relative QoI error the plan aims at */
+    double x0, y0, phi0, vx0, vy0, w0;   /* initial state (ground frame, SI): default rest at the origin */
     int velocity_jump, exact_section, history;
     int shortcuts;           /* 0: the plan computes in full (cases verifying its shortcuts) */
     /* the check a case runs */

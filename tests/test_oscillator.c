@@ -281,6 +281,60 @@ static void source_hook(void **state)
     sf_cof_free(u);
 }
 
+/* The scene's initial state (x0 ... w0): a state at belt speed inside the
+ * stick set starts in stick (Eq. 12 sets the rest of the velocity, its
+ * energy booked as a jump) and breaks where the closed form says; a
+ * sliding, spinning start keeps the energy balance; dof = 1 refuses a
+ * lateral or rotational start; the grid view returns the nodal values. */
+static void initial_state(void **state)
+{
+    (void)state;
+    sf_scene s;
+    sf_scene_default(&s);
+    s.cof = SF_COF_UNIFORM;
+    s.T = 10;
+    s.rtol = 1e-10;
+    s.x0 = 0.5;
+    s.vx0 = s.v_b;
+    s.w0 = 1e-4;   /* lambda = w0 / omega_n = 5.8e-5 < eps_lambda: stick */
+    sf_osc_result r;
+    char err[256] = "";
+    assert_int_equal(run(&s, &r, err), SF_SUCCESS);
+    assert_true(r.ntrans >= 2);
+    assert_int_equal(r.trans_kind[0], SF_OSC_STICK_ONSET);
+    assert_true(r.trans_t[0] == 0 && r.trans_x[0] == 0.5);
+    /* break at x_s = mu_s m g / k, reached at belt speed */
+    assert_close(r.trans_t[1], (s.mu_mean * s.m * s.g / s.k - 0.5) / s.v_b, 1e-12);
+    assert_true(fabs(r.energy_residual) < 1e-7 * fabs(r.friction_work));
+    sf_osc_result_free(&r);
+    /* sliding and spinning: slip from the start, balance from E(0) */
+    s.x0 = 0.2;
+    s.y0 = -0.1;
+    s.vx0 = 0;
+    s.vy0 = 0.1;
+    s.w0 = 2;
+    assert_int_equal(run(&s, &r, err), SF_SUCCESS);
+    assert_int_equal(r.trans_kind[0], SF_OSC_STICK_ONSET);
+    assert_true(r.trans_t[0] > 0);
+    assert_true(fabs(r.energy_residual) < 1e-7 * fabs(r.friction_work));
+    sf_osc_result_free(&r);
+    s.dof = SF_DOF_1;
+    assert_int_equal(run(&s, &r, err), SF_EINVAL);
+    assert_non_null(strstr(err, "y0"));
+    /* the grid view */
+    double g[6] = { 1, 2, 3, 4, 5, 6 }, x0, y0, dx, dy;
+    size_t m, n;
+    const double *mu;
+    sf_cof *c;
+    assert_int_equal(sf_cof_alloc_grid(3, 2, -1, -2, 0.5, 0.25, g, &c), SF_SUCCESS);
+    assert_int_equal(sf_cof_grid_view(c, &m, &n, &x0, &y0, &dx, &dy, &mu), SF_SUCCESS);
+    assert_true(m == 3 && n == 2 && x0 == -1 && y0 == -2 && dx == 0.5 && dy == 0.25 && mu[5] == 6);
+    sf_cof_free(c);
+    assert_int_equal(sf_cof_alloc_uniform(0.5, &c), SF_SUCCESS);
+    assert_int_equal(sf_cof_grid_view(c, &m, &n, &x0, &y0, &dx, &dy, &mu), SF_EINVAL);
+    sf_cof_free(c);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -291,6 +345,7 @@ int main(void)
         cmocka_unit_test(leaves_strip),
         cmocka_unit_test(stepper_choices),
         cmocka_unit_test(source_hook),
+        cmocka_unit_test(initial_state),
     };
     return cmocka_run_group_tests_name("oscillator", tests, NULL, NULL);
 }

@@ -17,6 +17,7 @@ static const sf_check_def *const families[] = {
     sf_checks_plan,
     sf_checks_mms,
     sf_checks_selftest,
+    sf_checks_ref3dof,
 };
 
 const sf_check_def *sf_check_at(size_t i)

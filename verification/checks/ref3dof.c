@@ -1,0 +1,484 @@
+/* Code-to-code checks of the 3-DOF integrator against the independent
+ * oracle verification/oracle/ref3dof (DESIGN.md sec. 9): trajectories up
+ * to the first few transitions, QoI distributions beyond, the work-energy
+ * balance with the oracle's wrench along the solver's history, and Eq. 15
+ * computed by both codes. */
+#include "checks.h"
+#include "common.h"
+#include "oracle/ref3dof.h"
+#include "stats.h"
+#include "sf_error.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* Every history row of a solver run (all the state the checks need). */
+typedef struct {
+    size_t n, cap;
+    sf_osc_row *rows;
+} rows_t;
+
+static void rows_add(void *ctx, const sf_osc_row *row)
+{
+    rows_t *h = ctx;
+    if (h->n == h->cap) {
+        h->cap = h->cap ? 2 * h->cap : 4096;
+        h->rows = realloc(h->rows, h->cap * sizeof *h->rows);
+        if (!h->rows)
+            exit(3);
+    }
+    h->rows[h->n++] = *row;
+}
+
+/* The solver's post-jump state at transition time te of kind k: the last
+ * row at te in the mode the transition enters. */
+static const sf_osc_row *post_row(const rows_t *h, double te, int kind)
+{
+    const sf_osc_row *p = NULL;
+    for (size_t i = 0; i < h->n; i++)
+        if (h->rows[i].t == te && h->rows[i].stick == (kind == SF_OSC_STICK_ONSET))
+            p = &h->rows[i];
+    return p;
+}
+
+/* The oracle's Gauss-Legendre radii for a scene (angles: 4x as many). */
+static size_t oracle_nr(const sf_scene *s)
+{
+    return s->cells / 2 > 4 ? s->cells / 2 : 4;
+}
+
+enum { NQ = 7 };
+static const char *qname[NQ] = { "t [s]", "x [m]", "y [m]", "phi [rad]", "vx+ [m/s]", "vy+ [m/s]", "w+ [rad/s]" };
+
+/* The K first transitions of a solver run as rows of NQ values; 0 if it has fewer. */
+static int solver_transitions(const sf_scene *s, const sf_cof *cof, size_t K, double *v, sf_result *r)
+{
+    rows_t h = { 0 };
+    sf_osc_result res;
+    if (check_osc_run(s, NULL, cof, 0, &res, rows_add, &h, r))
+        return SF_EFAIL;
+    int rc = SF_SUCCESS;
+    if (res.ntrans < K) {
+        sf_note(r, "**The solver run has %zu transitions, fewer than %zu.**", res.ntrans, K);
+        rc = SF_EFAIL;
+    }
+    for (size_t i = 0; !rc && i < K; i++) {
+        const sf_osc_row *p = post_row(&h, res.trans_t[i], res.trans_kind[i]);
+        if (!p) {
+            rc = SF_EFAIL;
+            break;
+        }
+        double q[NQ] = { p->t, p->x, p->y, p->phi, p->vx, p->vy, p->w };
+        memcpy(v + NQ * i, q, sizeof q);
+        /* the kind is part of the comparison: encode stick onsets as +, slip as - in a spare slot */
+    }
+    sf_osc_result_free(&res);
+    free(h.rows);
+    return rc;
+}
+
+static int oracle_transitions(const sf_scene *s, const sf_cof *cof, double dt, size_t nr, size_t na, size_t K,
+                              double *v, int *kinds, sf_result *r, double *secs_steps)
+{
+    ref3dof *o;
+    ref3dof_result res;
+    if (ref3dof_alloc(s, cof, dt, nr, na, &o))
+        return SF_EFAIL;
+    int rc = ref3dof_run(o, 0, &res);
+    ref3dof_free(o);
+    if (!rc && res.nev < K) {
+        sf_note(r, "**The oracle run has %zu transitions, fewer than %zu.**", res.nev, K);
+        rc = SF_EFAIL;
+    }
+    for (size_t i = 0; !rc && i < K; i++) {
+        const ref3dof_event *e = &res.ev[i];
+        double q[NQ] = { e->t, e->post[REF_X], e->post[REF_Y], e->post[REF_PHI], e->post[REF_VX], e->post[REF_VY], e->post[REF_W] };
+        memcpy(v + NQ * i, q, sizeof q);
+        if (kinds)
+            kinds[i] = e->kind;
+    }
+    if (secs_steps)
+        *secs_steps = (double)res.steps;
+    ref3dof_result_free(&res);
+    return rc;
+}
+
+/* Trajectory by trajectory: the first `samples` transitions (times and
+ * post-jump states) of the solver and the oracle, each at two resolutions.
+ * Tolerance per quantity: `tolerance` x (estimated error of the solver +
+ * estimated error of the oracle), each estimated as the largest gap over
+ * the compared transitions between its two resolutions (the coarse run's
+ * error, an over-estimate for the fine runs that are compared), plus a
+ * floor of 1e-11 (the event tolerances, 1e-12 s, in the quantity's units
+ * at unit speed). */
+static int chk_ref_trajectory(const sf_case *c, sf_result *r)
+{
+    const sf_scene *s0 = &c->scene;
+    size_t K = s0->samples;
+    sf_cof *cof = check_case_cof(c, s0, r);
+    if (!cof)
+        return SF_EFAIL;
+    sf_scene sc = *s0, sf = *s0;   /* solver: coarse (scene), fine (rtol/100, 2 cells) */
+    sf.rtol = s0->rtol / 100;
+    sf.cells = 2 * s0->cells;
+    /* oracle resolutions: RK4 at the scene's dt with cells/2 Gauss-Legendre
+     * radii x 2 cells angles (a quarter of the solver's polar cells: the
+     * oracle pays a fixed step); fine: dt/2 and twice the nodes each way */
+    size_t nr = oracle_nr(s0), na = 4 * nr;
+    double *Sc = check_alloc(K * NQ * sizeof(double)), *Sf = check_alloc(K * NQ * sizeof(double));
+    double *Oc = check_alloc(K * NQ * sizeof(double)), *Of = check_alloc(K * NQ * sizeof(double));
+    int *kind = check_alloc(K * sizeof(int)), *kindc = check_alloc(K * sizeof(int));
+    int rc = solver_transitions(&sc, cof, K, Sc, r) || solver_transitions(&sf, cof, K, Sf, r) ||
+             oracle_transitions(s0, cof, s0->dt, nr, na, K, Oc, kindc, r, NULL) ||
+             oracle_transitions(s0, cof, s0->dt / 2, 2 * nr, 2 * na, K, Of, kind, r, NULL);
+    if (rc) {
+        sf_cof_free(cof);
+        free(Sc); free(Sf); free(Oc); free(Of); free(kind); free(kindc);
+        return SF_EFAIL;
+    }
+    int kinds_ok = 1;
+    for (size_t i = 0; i < K; i++)
+        kinds_ok &= kind[i] == kindc[i];
+    sf_check_true(r, "the oracle's transition kinds agree at both resolutions", kinds_ok, kinds_ok ? "yes" : "no");
+    sf_note(r, "Oracle: RK4 at dt = %g s and %g s, Gauss-Legendre %zu x trapezoid %zu nodes and %zu x %zu. "
+               "Solver: rtol %g, cells %zu and rtol %g, cells %zu (the fine runs are compared).\n\n"
+               "| quantity | max gap solver-oracle | est. error solver | est. error oracle | tolerance |\n|---|---|---|---|---|",
+            s0->dt, s0->dt / 2, nr, na, 2 * nr, 2 * na, sc.rtol, sc.cells, sf.rtol, sf.cells);
+    double *tt = check_alloc(K * sizeof(double)), *gap = check_alloc(K * sizeof(double));
+    for (int q = 0; q < NQ; q++) {
+        double eS = 0, eO = 0, d = 0;
+        for (size_t i = 0; i < K; i++) {
+            double a = Sf[NQ * i + q], b = Of[NQ * i + q];
+            eS = fmax(eS, fabs(a - Sc[NQ * i + q]));
+            eO = fmax(eO, fabs(b - Oc[NQ * i + q]));
+            d = fmax(d, isfinite(a) && isfinite(b) ? fabs(a - b) : INFINITY);
+            if (q == 0) {
+                tt[i] = b;
+                gap[i] = fmax(fabs(a - b), 1e-16);
+            }
+        }
+        double tol = s0->tolerance * (eS + eO) + 1e-11;
+        char name[160];
+        snprintf(name, sizeof name, "max over %zu transitions |solver - oracle|, %s", K, qname[q]);
+        sf_check_le(r, name, d, tol);
+        sf_note(r, "| %s | %.3g | %.3g | %.3g | %.3g |", qname[q], d, eS, eO, tol);
+    }
+    sf_plot *p = sf_result_plot(r, "ref_trajectory", "Transition times: solver vs independent oracle",
+                                "oracle transition time [s]", "|t_solver - t_oracle| [s]");
+    sf_plot_log(p, 0, 1);
+    sf_plot_series(p, "gap", SF_STYLE_LINESPOINTS, K, tt, gap);
+    free(tt); free(gap);
+    sf_cof_free(cof);
+    free(Sc); free(Sf); free(Oc); free(Of); free(kind); free(kindc);
+    return SF_SUCCESS;
+}
+
+/* Statistics beyond the first transitions: two-sample KS tests on PV_x,
+ * PV_F and the stick fraction, solver vs oracle, on the SAME field
+ * realisations (paired), at each l/R of `sweep`. */
+static int chk_ref_stats(const sf_case *c, sf_result *r)
+{
+    const sf_scene *s0 = &c->scene;
+    size_t K = s0->samples, nl = s0->sweep.n ? s0->sweep.n : 1;
+    double *a[3], *b[3];
+    for (int q = 0; q < 3; q++) {
+        a[q] = check_alloc(K * sizeof(double));
+        b[q] = check_alloc(K * sizeof(double));
+    }
+    static const char *qn[3] = { "PV_x", "PV_F", "stick fraction" };
+    double pmin = 1;
+    for (size_t il = 0; il < nl; il++) {
+        sf_scene s = *s0;
+        if (s0->sweep.n)
+            s.l = s0->sweep.v[il] * s0->R;
+        sf_cof_plan *plan;
+        char err[256];
+        if (sf_cof_plan_alloc(&s, &plan, err, sizeof err)) {
+            sf_note(r, "**Cannot plan the COF:** %s", err);
+            return SF_EFAIL;
+        }
+        gsl_rng *rng = sf_case_rng(c);
+        double worst = 0;
+        size_t n = 0;
+        for (size_t k = 0; k < K; k++) {
+            sf_cof *cof = NULL;
+            sf_cof_plan_draw(plan, rng, &cof);
+            sf_osc_result rs;
+            ref3dof *o;
+            ref3dof_result ro;
+            if (!cof || check_osc_run(&s, NULL, cof, 0, &rs, NULL, NULL, r) ||
+                ref3dof_alloc(&s, cof, s.dt, oracle_nr(&s), 4 * oracle_nr(&s), &o)) {
+                sf_cof_free(cof);
+                sf_cof_plan_free(plan);
+                gsl_rng_free(rng);
+                return SF_EFAIL;
+            }
+            int orc = ref3dof_run(o, 0, &ro);
+            ref3dof_free(o);
+            if (orc) {
+                sf_note(r, "**The oracle run failed.**");
+                return SF_EFAIL;
+            }
+            double va[3] = { rs.pv_x, rs.pv_F, rs.stick_fraction }, vb[3] = { ro.pv_x, ro.pv_F, ro.stick_fraction };
+            if (rs.ncycles != ro.ncycles)
+                sf_note(r, "l/R = %g, realisation %zu: %zu complete cycles (solver), %zu (oracle).", s.l / s.R, k,
+                        rs.ncycles, ro.ncycles);
+            for (int q = 0; q < 3; q++) {
+                a[q][n] = va[q];
+                b[q][n] = vb[q];
+                worst = fmax(worst, fabs(va[q] / vb[q] - 1));
+            }
+            n++;
+            sf_osc_result_free(&rs);
+            ref3dof_result_free(&ro);
+            sf_cof_free(cof);
+        }
+        sf_cof_plan_free(plan);
+        gsl_rng_free(rng);
+        sf_note(r, "l/R = %g: %zu realisations, largest paired relative gap %.3g (chaos beyond the first transitions, "
+                   "and the two codes' discretisation).", s.l / s.R, n, worst);
+        for (int q = 0; q < 3; q++) {
+            int fin = 1;
+            for (size_t i = 0; i < n; i++)
+                fin &= isfinite(a[q][i]) && isfinite(b[q][i]);
+            char name[160];
+            snprintf(name, sizeof name, "l/R = %g: %s finite in every run (both codes)", s.l / s.R, qn[q]);
+            sf_check_true(r, name, fin, fin ? "yes" : "NaN/Inf");
+            if (q == 0) {   /* plot the PV_x samples of each l/R */
+                char stem[32], title[96];
+                snprintf(stem, sizeof stem, "ref_stats_%zu", il);
+                snprintf(title, sizeof title, "PV_x per realisation, l/R = %g", s.l / s.R);
+                sf_plot *p = sf_result_plot(r, stem, title, "solver PV_x [m]", "oracle PV_x [m]");
+                sf_plot_series(p, "realisations", SF_STYLE_POINTS, n, a[0], b[0]);
+                sf_plot_series(p, "equal", SF_STYLE_LINES, n, a[0], a[0]);
+            }
+            double D = NAN, pv = fin ? sf_ks2_test(a[q], n, b[q], n, &D) : 0;   /* KS on NaN would not end */
+            snprintf(name, sizeof name, "l/R = %g: two-sample KS on %s, solver vs oracle (D = %.3g)", s.l / s.R, qn[q], D);
+            sf_check_pvalue(r, name, pv, s0->alpha, n);
+            pmin = fmin(pmin, pv);
+        }
+    }
+    sf_note(r, "Smallest p-value %.3g (alpha %g per test).", pmin, s0->alpha);
+    for (int q = 0; q < 3; q++) {
+        free(a[q]);
+        free(b[q]);
+    }
+    return SF_SUCCESS;
+}
+
+/* Work-energy balance along the solver's emitted history with the
+ * ORACLE's wrench: E(T) - E(0) = W_slip + W_stick + sum of jumps, where
+ * W_slip integrates the oracle wrench's power over the slip rows
+ * (composite trapezoid; its error estimated from the same sum on every
+ * other row, Richardson: (W_h - W_2h)/3), W_stick = k x v_b integrated
+ * exactly over the stick rows (Eq. 6), jumps from the rows either side
+ * of each transition.  The solver's own work state is not used. */
+static void rows_work(const ref3dof *o, const rows_t *h, double m, double J, double k, double *W1, double *W2,
+                      double *jumps)
+{
+    double *P = check_alloc(h->n * sizeof(double));
+    for (size_t i = 0; i < h->n; i++) {
+        const sf_osc_row *a = &h->rows[i];
+        double st[REF_N] = { a->x, a->y, a->phi, a->vx, a->vy, a->w }, F[3];
+        P[i] = 0;
+        if (!a->stick) {
+            ref3dof_wrench(o, a->t, st, F);
+            P[i] = F[0] * a->vx + F[1] * a->vy + F[2] * a->w;
+        }
+    }
+    double w1 = 0, w2 = 0, jp = 0, ws = 0;
+    size_t i = 1;
+    while (i < h->n) {
+        const sf_osc_row *a = &h->rows[i], *b = &h->rows[i - 1];
+        if (a->t == b->t) {   /* a jump (Eq. 12 or 14) */
+            jp += 0.5 * m * (a->vx * a->vx + a->vy * a->vy - b->vx * b->vx - b->vy * b->vy) + 0.5 * J * (a->w * a->w - b->w * b->w);
+            i++;
+        } else if (a->stick && b->stick) {   /* Eq. 6: power k x v_b, x linear in t */
+            ws += 0.5 * k * (a->x * a->x - b->x * b->x);
+            i++;
+        } else {   /* a slip segment [i - 1, e] */
+            size_t s0 = i - 1, e = i;
+            while (e + 1 < h->n && !h->rows[e + 1].stick && h->rows[e + 1].t != h->rows[e].t)
+                e++;
+            for (size_t j = s0; j < e; j++)
+                w1 += 0.5 * (h->rows[j + 1].t - h->rows[j].t) * (P[j] + P[j + 1]);
+            size_t j = s0;
+            while (j < e) {   /* every other row, ends kept */
+                size_t jn = j + 2 <= e ? j + 2 : e;
+                w2 += 0.5 * (h->rows[jn].t - h->rows[j].t) * (P[j] + P[jn]);
+                j = jn;
+            }
+            i = e + 1;
+        }
+    }
+    free(P);
+    *W1 = w1 + ws;
+    *W2 = w2 + ws;
+    *jumps = jp;
+}
+
+static double row_energy(const sf_osc_row *a, double m, double J, double k)
+{
+    return 0.5 * m * (a->vx * a->vx + a->vy * a->vy) + 0.5 * J * a->w * a->w + 0.5 * k * (a->x * a->x + a->y * a->y);
+}
+
+/* The balance along one solver run's history: residual, trapezoid and
+ * oracle-quadrature error estimates, energy turned over. */
+typedef struct {
+    double dE, W, jumps, resid, e_trap, e_quad, turnover, own;
+} balance_t;
+
+static int balance(const sf_scene *s, const sf_cof *cof, const ref3dof *o, const ref3dof *o2, balance_t *b,
+                   rows_t *keep, sf_result *r)
+{
+    rows_t h = { 0 };
+    sf_osc_result res;
+    if (check_osc_run(s, NULL, cof, 0, &res, rows_add, &h, r) || h.n < 2) {
+        free(h.rows);
+        return SF_EFAIL;
+    }
+    double m = s->m, J = 0.5 * s->m * s->R * s->R, k = s->k, j3, W2, Wq, Wq2;
+    rows_work(o2, &h, m, J, k, &b->W, &W2, &b->jumps);   /* W2: every other slip row */
+    rows_work(o, &h, m, J, k, &Wq, &Wq2, &j3);           /* coarser oracle quadrature */
+    b->dE = row_energy(&h.rows[h.n - 1], m, J, k) - row_energy(&h.rows[0], m, J, k);
+    b->resid = b->dE - b->W - b->jumps;
+    b->e_trap = fabs(b->W - W2) / 3;
+    b->e_quad = fabs(b->W - Wq);
+    b->turnover = 0;
+    for (size_t i = 1; i < h.n; i++)
+        b->turnover += fabs(row_energy(&h.rows[i], m, J, k) - row_energy(&h.rows[i - 1], m, J, k));
+    b->own = res.energy_residual;
+    sf_osc_result_free(&res);
+    if (keep)
+        *keep = h;
+    else
+        free(h.rows);
+    return SF_SUCCESS;
+}
+
+/* A field COF: the solver's wrench is its own quadrature, whose error
+ * enters the residual; it is estimated from a second run at half the
+ * cells (|resid(cells) - resid(2 cells)|: it shrinks with the cells, a
+ * defect in the model does not), and the 2-cell run is the one checked.
+ * A constant COF: the solver's wrench is the exact closed form. */
+static int chk_ref_energy(const sf_case *c, sf_result *r)
+{
+    const sf_scene *s = &c->scene;
+    sf_cof *cof = check_case_cof(c, s, r);
+    if (!cof)
+        return SF_EFAIL;
+    int field = sf_cof_get_kind(cof) == SF_COF_FIELD;
+    sf_scene sf = *s;
+    if (field)
+        sf.cells = 2 * s->cells;
+    ref3dof *o = NULL, *o2 = NULL;
+    rows_t h = { 0 };
+    balance_t b, bc = { 0 };
+    if (ref3dof_alloc(s, cof, s->dt, oracle_nr(s), 4 * oracle_nr(s), &o) ||
+        ref3dof_alloc(s, cof, s->dt, 2 * oracle_nr(s), 8 * oracle_nr(s), &o2) || balance(&sf, cof, o, o2, &b, &h, r) ||
+        (field && balance(s, cof, o, o2, &bc, NULL, r))) {
+        ref3dof_free(o);
+        ref3dof_free(o2);
+        free(h.rows);
+        sf_cof_free(cof);
+        return SF_EFAIL;
+    }
+    double e_solver = field ? fabs(b.resid - bc.resid) : 0;
+    double tol = s->tolerance * (b.e_trap + b.e_quad + e_solver) + 1e-12 * b.turnover;
+    int fin = isfinite(b.resid) && isfinite(tol) && (!field || isfinite(bc.resid));
+    sf_check_true(r, "balance terms finite", fin, fin ? "yes" : "NaN/Inf");
+    sf_check_le(r, "|E(T) - E(0) - W_oracle - jumps| [J]", fabs(b.resid), tol);
+    sf_note(r, "%zu history rows over %g s%s. E(T) - E(0) = %.10g J, W (oracle wrench, %zu x %zu nodes) = %.10g J, jumps "
+               "%.6g J, residual %.3g J. Estimated errors: trapezoid (Richardson on every other row) %.3g J, oracle "
+               "quadrature (gap to %zu x %zu nodes) %.3g J, solver quadrature %.3g J (%s); tolerance = %g x their sum + "
+               "1e-12 x energy turned over (%.4g J) = %.3g J. For comparison the solver's own residual (its work "
+               "state) is %.3g J.",
+            h.n, s->T, field ? " (solver at 2 x cells)" : "", b.dE, 2 * oracle_nr(s), 8 * oracle_nr(s), b.W, b.jumps,
+            b.resid, b.e_trap, oracle_nr(s), 4 * oracle_nr(s), b.e_quad, e_solver,
+            field ? "residual change from the run at the scene's cells" : "closed-form wrench", s->tolerance, b.turnover,
+            tol, b.own);
+    double m = s->m, J = 0.5 * s->m * s->R * s->R, k = s->k;
+    size_t np = 0;
+    double *tp = check_alloc(h.n * sizeof(double)), *ep = check_alloc(h.n * sizeof(double));
+    for (size_t i = 0; i < h.n; i += (h.n / 400 + 1)) {
+        tp[np] = h.rows[i].t;
+        ep[np++] = row_energy(&h.rows[i], m, J, k);
+    }
+    sf_plot *p = sf_result_plot(r, "ref_energy", "Mechanical energy along the solver's history", "t [s]", "E [J]");
+    sf_plot_series(p, "E(t)", SF_STYLE_LINES, np, tp, ep);
+    free(tp); free(ep);
+    ref3dof_free(o);
+    ref3dof_free(o2);
+    free(h.rows);
+    sf_cof_free(cof);
+    return SF_SUCCESS;
+}
+
+/* Eq. 15 by both codes: the error of the eps_lambda = sweep[0] run against
+ * the eps_lambda = sweep[1] reference, x sampled every 0.01 s over T,
+ * sf_osc_error_eq15 on the solver's runs vs the oracle's own samples and
+ * its own sum.  Tolerance: `tolerance` x the sum of each code's estimated
+ * error (the change of its Eq. 15 value between two resolutions). */
+static int chk_ref_eq15(const sf_case *c, sf_result *r)
+{
+    const sf_scene *s0 = &c->scene;
+    if (s0->sweep.n != 2)
+        return SF_EINVAL;
+    sf_cof *cof = check_case_cof(c, s0, r);
+    if (!cof)
+        return SF_EFAIL;
+    double sdt = 0.01, Es[2], Eo[2];
+    for (int lev = 0; lev < 2; lev++) {
+        sf_osc_result ra, rb;
+        ref3dof_result oa, ob;
+        sf_scene sa = *s0, sb = *s0;
+        sa.eps_lambda = s0->sweep.v[0];
+        sb.eps_lambda = s0->sweep.v[1];
+        sa.rtol = sb.rtol = s0->rtol / (lev ? 100 : 1);
+        ref3dof *o1 = NULL, *o2 = NULL;
+        double dt = s0->dt / (lev ? 2 : 1);
+        size_t nr = oracle_nr(s0) * (lev ? 2 : 1);
+        if (check_osc_run(&sa, NULL, cof, sdt, &ra, NULL, NULL, r) || check_osc_run(&sb, NULL, cof, sdt, &rb, NULL, NULL, r) ||
+            ref3dof_alloc(&sa, cof, dt, nr, 4 * nr, &o1) || ref3dof_alloc(&sb, cof, dt, nr, 4 * nr, &o2) ||
+            ref3dof_run(o1, sdt, &oa) || ref3dof_run(o2, sdt, &ob)) {
+            sf_cof_free(cof);
+            return SF_EFAIL;
+        }
+        Es[lev] = sf_osc_error_eq15(&ra, &rb);
+        Eo[lev] = ref3dof_eq15(oa.x_samples, ob.x_samples, oa.nsamples < ob.nsamples ? oa.nsamples : ob.nsamples, sdt);
+        if (lev == 1) {
+            double *t = check_alloc(oa.nsamples * sizeof(double)), *d = check_alloc(oa.nsamples * sizeof(double));
+            for (size_t i = 0; i < oa.nsamples && i < ra.nsamples; i++) {
+                t[i] = (double)i * sdt;
+                d[i] = fabs(ra.x_samples[i] - oa.x_samples[i]) + 1e-16;
+            }
+            sf_plot *p = sf_result_plot(r, "ref_eq15", "x samples: solver vs oracle (eps = sweep[0])", "t [s]",
+                                        "|x_solver - x_oracle| [m]");
+            sf_plot_log(p, 0, 1);
+            sf_plot_series(p, "gap", SF_STYLE_LINES, oa.nsamples < ra.nsamples ? oa.nsamples : ra.nsamples, t, d);
+            free(t); free(d);
+        }
+        sf_osc_result_free(&ra); sf_osc_result_free(&rb);
+        ref3dof_result_free(&oa); ref3dof_result_free(&ob);
+        ref3dof_free(o1); ref3dof_free(o2);
+    }
+    double tol = s0->tolerance * (fabs(Es[1] - Es[0]) + fabs(Eo[1] - Eo[0])) + 1e-12 * Eo[1];
+    int fin = isfinite(Es[1]) && isfinite(Eo[1]) && Es[1] > 0;
+    sf_check_true(r, "Eq. 15 values finite and positive", fin, fin ? "yes" : "no");
+    sf_check_abs(r, "Eq. 15 error, solver (sf_osc_error_eq15) vs oracle [m^2 s]", Es[1], Eo[1], tol);
+    sf_note(r, "Eq. 15 of eps = %g against eps = %g over %g s: solver %.10g and %.10g (rtol %g, %g), oracle %.10g "
+               "and %.10g (dt %g, %g s; %zu and %zu radial nodes) m^2 s; tolerance %g x (%.3g + %.3g) = %.3g.",
+            s0->sweep.v[0], s0->sweep.v[1], s0->T, Es[0], Es[1], s0->rtol, s0->rtol / 100, Eo[0], Eo[1], s0->dt,
+            s0->dt / 2, oracle_nr(s0), 2 * oracle_nr(s0), s0->tolerance, fabs(Es[1] - Es[0]), fabs(Eo[1] - Eo[0]), tol);
+    sf_cof_free(cof);
+    return SF_SUCCESS;
+}
+
+const sf_check_def sf_checks_ref3dof[] = {
+    { "ref_trajectory", chk_ref_trajectory, "independent 3-DOF oracle: first transitions, trajectory by trajectory" },
+    { "ref_stats", chk_ref_stats, "independent 3-DOF oracle: two-sample KS on PV_x, PV_F, stick fraction" },
+    { "ref_energy", chk_ref_energy, "work-energy balance with the oracle's wrench along the solver's history" },
+    { "ref_eq15", chk_ref_eq15, "Eq. 15 by the solver and by the oracle" },
+    { NULL, NULL, NULL },
+};
