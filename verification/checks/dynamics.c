@@ -277,6 +277,7 @@ static int chk_eq9_eq12(const sf_case *c, sf_result *r)
     eq912_probe e = { .s = s };
     sf_osc_result res;
     if (check_osc_run(s, NULL, cof, 0, &res, eq912_row, &e, r)) {
+        free(e.t); free(e.lerr); free(e.spin);
         sf_cof_free(cof);
         return SF_EFAIL;
     }
