@@ -381,9 +381,9 @@ double sf_osc_stick_onset(const sf_osc *o, double *y)
 {
     const sf_scene *s = &o->s;
     double dE = 0.5 * s->m * (s->v_b * s->v_b - y[VX] * y[VX] - y[VY] * y[VY]) - 0.5 * o->J * y[W] * y[W];
-    y[VX] = s->v_b;
-    y[VY] = 0;
-    y[W] = 0;
+    y[VX] = s->v_b;   /* Eq. 12: the disc moves with the belt, */
+    y[VY] = 0;        /* no lateral motion */
+    y[W] = 0;         /* and no spin in stick */
     return dE;
 }
 

@@ -7,10 +7,34 @@
 #include <stdlib.h>
 #include <string.h>
 #include <gsl/gsl_math.h>
+#include <gsl/gsl_sf_ellint.h>
 
 double ref_sq_exp(double hx, double hy, double l)
 {
     return exp(-(hx * hx + hy * hy) / (l * l));
+}
+
+void ref_contensou(double eps, double *f, double *t)
+{
+    eps = fabs(eps);
+    if (eps == 0) {   /* pure spin */
+        *f = 0;
+        *t = 2.0 / 3.0;
+    } else if (isinf(eps)) {   /* pure translation */
+        *f = 1;
+        *t = 0;
+    } else if (eps == 1) {   /* (1 - eps^2) K -> 0 as k -> 1; K(1) is infinite */
+        *f = 8 / (3 * M_PI);
+        *t = 8 / (9 * M_PI);
+    } else if (eps < 1) {   /* pole inside the disc, k = eps */
+        double K = gsl_sf_ellint_Kcomp(eps, GSL_PREC_DOUBLE), E = gsl_sf_ellint_Ecomp(eps, GSL_PREC_DOUBLE);
+        *f = 4 / (3 * M_PI * eps) * ((1 + eps * eps) * E - (1 - eps * eps) * K);
+        *t = 4 / (9 * M_PI) * ((4 - 2 * eps * eps) * E - (1 - eps * eps) * K);
+    } else {   /* pole outside, k = 1/eps */
+        double k = 1 / eps, K = gsl_sf_ellint_Kcomp(k, GSL_PREC_DOUBLE), E = gsl_sf_ellint_Ecomp(k, GSL_PREC_DOUBLE);
+        *f = 4 / (3 * M_PI) * ((eps * eps + 1) * E - (eps * eps - 1) * K);
+        *t = 4 * eps * eps * eps / (9 * M_PI) * ((1 - k * k) * (2 - 3 * k * k) * K + 2 * (2 * k * k - 1) * E);
+    }
 }
 
 void *check_alloc(size_t n)

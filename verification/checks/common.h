@@ -2,12 +2,29 @@
 #ifndef SF_CHECKS_COMMON_H
 #define SF_CHECKS_COMMON_H
 
+#include <math.h>
 #include "../case.h"
 #include "../result.h"
 #include "field.h"
 
 /* The oracle's own Eq. 2, written independently of the solver. */
 double ref_sq_exp(double hx, double hy, double l);
+
+/* The oracle's own Contensou closed forms (DESIGN.md sec. 5), written from
+ * the formulas with GSL's complete elliptic integrals of modulus k
+ * (gsl_sf_ellint_Kcomp, Ecomp) and sharing no code with sf_contensou:
+ * a uniformly pressed disc of radius R under uniform COF mu, centre slip U
+ * and spin w, eps = U/(|w| R) >= 0 (INFINITY: no spin): |F| = mu N f(eps),
+ * |T| = mu N R t(eps).  The eps > 1 torque bracket cancels like eps^-4:
+ * about 1e-16 eps^4 relative error, so keep eps below ~100. */
+void ref_contensou(double eps, double *f, double *t);
+
+/* max that keeps a NaN (fmax drops it): a NaN in a check's data must
+ * reach the row and fail it. */
+static inline double check_nanmax(double a, double b)
+{
+    return isnan(a) || isnan(b) ? NAN : (a > b ? a : b);
+}
 
 /* Build the Gaussian field plan a case's scene asks for; note the
  * embedding facts in the findings.  Returns SF_SUCCESS or SF_ECAP (plan

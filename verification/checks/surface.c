@@ -109,6 +109,72 @@ static int chk_uniform_shape(const sf_case *c, sf_result *r)
     return SF_SUCCESS;
 }
 
+/* Eqs. 9-11 at intermediate theta, against the closed form.  For a
+ * uniform COF the twist of Eq. 9 (lengths in units of R), (cos th cos psi,
+ * cos th sin psi, sin th), has centre slip U = |cos th| and spin sin th, so
+ * its Contensou ratio is eps = U/(|w| R) = |cot th|, and the point of Eq. 11
+ * is mu times the closed-form pair: F* = mu f(eps) (cos psi, sin psi) (Eq.
+ * 11 is the wrench the twist works against: along the slip, by symmetry of
+ * the disc about the slip line through the instantaneous pole) and
+ * T* = sign(th) mu t(eps).  Oracle: ref_contensou (GSL elliptic integrals,
+ * no solver code).  theta on cell midpoints of [-pi/2, pi/2]: never 0,
+ * +-pi/4 or +-pi/2, the three places an earlier case already pins. */
+static int chk_contensou_theta(const sf_case *c, sf_result *r)
+{
+    const sf_scene *s = &c->scene;
+    disc d = { 0 };
+    if (s->ntheta < 2 || s->npsi < 1 || disc_make(s, NULL, s->cells, (sf_layout)s->layout, &d)) {
+        disc_free(&d);
+        return SF_EINVAL;
+    }
+    double mu = s->mu_mean, ef = 0, et = 0, emin = INFINITY, emax = 0;
+    size_t nt = s->ntheta, np = s->npsi, n = 0;
+    double *th = check_alloc(nt * sizeof *th), *fm = check_alloc(nt * sizeof *fm), *tm = check_alloc(nt * sizeof *tm);
+    for (size_t i = 0; i < nt; i++) {
+        double theta = -M_PI / 2 + M_PI * ((double)i + 0.5) / (double)nt, eps = fabs(cos(theta) / sin(theta)), f, t;
+        ref_contensou(eps, &f, &t);
+        emin = fmin(emin, eps);
+        emax = fmax(emax, eps);
+        th[i] = theta;
+        for (size_t j = 0; j < np; j++) {
+            /* azimuths shifted with theta so they fall between the polar sectors' symmetry lines */
+            double psi = 2 * M_PI * ((double)j + 0.37 * (double)i / (double)nt) / (double)np, q[3];
+            sf_surface_point(d.sf, theta, psi, q);
+            ef = check_nanmax(ef, hypot(q[0] / mu - f * cos(psi), q[1] / mu - f * sin(psi)));
+            et = check_nanmax(et, fabs(q[2] / mu - copysign(t, theta)));
+            if (j == 0) {
+                fm[i] = hypot(q[0], q[1]) / mu;
+                tm[i] = q[2] / mu;
+            }
+            n++;
+        }
+    }
+    sf_check_le(r, "max over (theta, psi) of |F*/mu - f(|cot theta|) (cos psi, sin psi)| (units of mu N)", ef, s->tolerance);
+    sf_check_le(r, "max over (theta, psi) of |T*/mu - sign(theta) t(|cot theta|)| (units of mu N R)", et, s->tolerance);
+    sf_note(r, "%s layout, %zu cells; %zu theta values strictly inside (-pi/2, pi/2) (Contensou ratio eps = |cot "
+               "theta| from %.3g to %.3g) x %zu azimuths = %zu points; mu_s = %g. The oracle is the closed form "
+               "of DESIGN.md sec. 5 evaluated by the check (GSL complete elliptic integrals), not sf_contensou.",
+            s->layout == SF_LAYOUT_POLAR ? "polar" : "cartesian", sf_contact_ncells(d.ct), nt, emin, emax, np, n, mu);
+    size_t nd = 401;
+    double *td = check_alloc(nd * sizeof *td), *fd = check_alloc(nd * sizeof *fd), *tdd = check_alloc(nd * sizeof *tdd);
+    for (size_t k = 0; k < nd; k++) {
+        double theta = -M_PI / 2 + M_PI * (double)k / (double)(nd - 1), f, t;
+        ref_contensou(fabs(cos(theta)) / fabs(sin(theta)), &f, &t);
+        td[k] = theta;
+        fd[k] = f;
+        tdd[k] = copysign(t, theta);
+    }
+    sf_plot *p = sf_result_plot(r, "contensou_theta", "Uniform-COF limit surface along a meridian vs the closed form",
+                                "theta (Eq. 9) [rad]", "|F*| / mu_s and T* / mu_s [-]");
+    sf_plot_series(p, "|F*| / mu_s, Eq. 11 (quadrature)", SF_STYLE_POINTS, nt, th, fm);
+    sf_plot_series(p, "f(|cot theta|), closed form", SF_STYLE_LINES, nd, td, fd);
+    sf_plot_series(p, "T* / mu_s, Eq. 11 (quadrature)", SF_STYLE_POINTS, nt, th, tm);
+    sf_plot_series(p, "sign(theta) t(|cot theta|), closed form", SF_STYLE_LINES, nd, td, tdd);
+    free(th); free(fm); free(tm); free(td); free(fd); free(tdd);
+    disc_free(&d);
+    return SF_SUCCESS;
+}
+
 /* Maximum-power principle: Q(d) maximises d . W over the admissible set,
  * so d_i . Q(d_i) >= d_i . Q(d_j) for every pair of directions; also the
  * central symmetry Q(-d) = -Q(d). Random fields and uniform alike. */
@@ -388,6 +454,7 @@ static int chk_section_vs_full(const sf_case *c, sf_result *r)
 const sf_check_def sf_checks_surface[] = {
     { "surface_section_vs_full", chk_section_vs_full, "exact T = 0 section vs the contour of the full limit surface" },
     { "surface_uniform_shape", chk_uniform_shape, "uniform COF: equator mu_s, poles (2/3) mu_s, axisymmetry, mirror" },
+    { "surface_contensou_theta", chk_contensou_theta, "uniform COF: Eq. 11 at every theta = mu times the Contensou closed form at eps = |cot theta|" },
     { "surface_convexity", chk_convexity, "maximum-power principle and central symmetry of the limit surface" },
     { "surface_equator_mean_cof", chk_equator_mean_cof, "theta = 0 curve is the circle of radius mu_bar = disc average" },
     { "surface_section_vs_circle", chk_section_vs_circle, "exact T = 0 section inside the equatorial circle; gap vs l/R" },
