@@ -112,6 +112,7 @@ static void run_child(const sf_case *c, const char *root, int fd, unsigned timeo
         o.verdict = SF_VERDICT_ERROR;
         snprintf(o.key, sizeof o.key, "the check produced no row (it cannot fail, so it cannot pass)");
     } else {
+        sf_result_gate_nonfinite(r);
         o.verdict = sf_result_passed(r) ? SF_VERDICT_PASS : SF_VERDICT_FAIL;
         const sf_row *k = sf_result_key_row(r);
         snprintf(o.key, sizeof o.key, "%s = %.4g (%s)", k->quantity, k->measured, k->criterion);

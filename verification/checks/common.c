@@ -1,4 +1,5 @@
 #include "common.h"
+#include "../stats.h"
 #include "lnfield.h"
 #include "sf_error.h"
 
@@ -99,7 +100,7 @@ sf_cof *check_disc_cof(const sf_scene *s, gsl_rng *rng, check_disc_field *st)
     }
     if (!st->lf) {
         st->gs = *s;
-        double h = fmin(s->l / 8, 2.2 * s->R / 3);
+        double h = sf_min(s->l / 8, 2.2 * s->R / 3);
         st->gs.dx = st->gs.dy = h;
         st->gs.nx = st->gs.ny = (size_t)ceil(2.2 * s->R / h) + 1;
         st->gs.pad_cap = 1e4;   /* the embedding-size cap still applies */
@@ -155,8 +156,8 @@ int check_osc_run(const sf_scene *s, gsl_rng *rng, const sf_cof *cof, double sam
 void check_hist_row(void *ctx, const sf_osc_row *row)
 {
     check_hist *h = ctx;
-    h->y_absmax = fmax(h->y_absmax, fabs(row->y));
-    h->phi_absmax = fmax(h->phi_absmax, fabs(row->phi));
+    h->y_absmax = sf_max(h->y_absmax, fabs(row->y));
+    h->phi_absmax = sf_max(h->phi_absmax, fabs(row->phi));
     if (h->every > 1 && (h->seen++ % h->every))
         return;
     if (h->n == h->cap) {

@@ -5,6 +5,7 @@
  * the one-random-variable limit, and reproducibility. */
 #include "checks.h"
 #include "common.h"
+#include "../stats.h"
 #include "contact.h"
 #include "cycle1d.h"
 #include "cof.h"
@@ -102,8 +103,8 @@ static void jump_row(void *ctx, const sf_osc_row *row)
     jump_probe *j = ctx;
     double F = hypot(row->Fx, row->Fy);
     if (j->prev_stick && !row->stick) {   /* first slip row: at the release */
-        j->minF_after_break = fmin(j->minF_after_break, F);
-        j->maxF_after_break = fmax(j->maxF_after_break, F);
+        j->minF_after_break = sf_min(j->minF_after_break, F);
+        j->maxF_after_break = sf_max(j->maxF_after_break, F);
         j->breaks++;
     }
     j->prev_stick = row->stick;
@@ -165,7 +166,7 @@ static int chk_long_run(const sf_case *c, sf_result *r)
     if (rc)
         return SF_EFAIL;
     double bound = 2 * (s->mu_mean + 4 * s->mu_std) * s->m * s->g / s->k;
-    sf_check_le(r, "max |x| [m] (bound 2 mu_hi m g / k)", fmax(fabs(res.x_min), fabs(res.x_max)), bound);
+    sf_check_le(r, "max |x| [m] (bound 2 mu_hi m g / k)", sf_max(fabs(res.x_min), fabs(res.x_max)), bound);
     sf_check_le(r, "max |y| [m] (same bound)", res.y_absmax, bound);
     sf_check_le(r, "energy residual / energy turned over", fabs(res.energy_residual) /
                 (fabs(res.friction_work) + fabs(res.energy_change)), s->tolerance);
@@ -203,10 +204,10 @@ static int chk_baseline(const sf_case *c, sf_result *r)
     double vb_err = 0;
     for (size_t i = 0; i < hs.n; i++)
         if (hs.stick[i])
-            vb_err = fmax(vb_err, fabs(hs.vx[i] - s->v_b));
+            vb_err = sf_max(vb_err, fabs(hs.vx[i] - s->v_b));
     for (size_t i = 0; i < hd.n; i++)
         if (hd.stick[i])
-            vb_err = fmax(vb_err, fabs(hd.vx[i] - s->v_b));
+            vb_err = sf_max(vb_err, fabs(hd.vx[i] - s->v_b));
     double sd_det = gsl_stats_sd(rd.cycle_pv_x, 1, rd.ncycles), sd_sto = gsl_stats_sd(rs.cycle_pv_x, 1, rs.ncycles);
     sf_check_le(r, "stick rows: max |vx - v_b| [m/s]", vb_err, 0);
     sf_check_le(r, "deterministic: std of per-cycle PV_x [m] (a limit cycle)", sd_det, s->tolerance);
@@ -269,7 +270,7 @@ static int chk_exact_section(const sf_case *c, sf_result *r)
             double m;
             sf_contact_stick_margin(ct, h.x[i - 1] - s0->v_b * h.t[i - 1], h.y[i - 1], s0->k * h.x[i - 1],
                                     s0->k * h.y[i - 1], 0, &m);
-            worst = fmin(worst, m);
+            worst = sf_min(worst, m);
             sum += m;
             n++;
         }
@@ -325,9 +326,9 @@ static int chk_variable_limit(const sf_case *c, sf_result *r)
             gsl_rng_free(rng);
             return SF_EFAIL;
         }
-        double d = fmax(fmax(fabs(res.pv_x / cf.pv_x - 1), fabs(res.pv_F / cf.pv_F - 1)),
+        double d = sf_max(sf_max(fabs(res.pv_x / cf.pv_x - 1), fabs(res.pv_F / cf.pv_F - 1)),
                         fabs(res.stick_fraction / cf.stick_fraction - 1));
-        worst = fmax(worst, d);
+        worst = sf_max(worst, d);
         mu[k] = s.mu_mean;
         pv[k] = res.pv_F;
         pvc[k] = cf.pv_F;
