@@ -23,10 +23,9 @@ static double transition_error(const sf_osc_result *res, const sf_cycle1d *cf, s
     *worst = 0;
     for (size_t i = 0; i < res->ntrans; i++) {
         double d = fabs(res->trans_t[i] - sf_cycle1d_transition(cf, (unsigned)i));
-        if (!(d <= e)) {
-            e = d;
-            *worst = i;
-        }
+        if (!(d <= e) && !isnan(e))
+            *worst = i;   /* the first NaN is the worst */
+        e = sf_max(e, d); /* not `if (!(d <= e)) e = d`: a later finite d would replace a NaN */
     }
     return e;
 }
