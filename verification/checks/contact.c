@@ -241,7 +241,7 @@ static int chk_contensou_sweep(const sf_case *c, sf_result *r)
         tq[k] = fabs(q[2]) / (mu * N * s->R);
         sf_contensou(e[k], &fe[k], &te[k]);
         double d = sf_max(fabs(fq[k] - fe[k]), fabs(tq[k] - te[k]));
-        if (!(d <= worst)) worst_e = e[k];   /* a NaN is the worst */
+        if (!(d <= worst) && !isnan(worst)) worst_e = e[k];   /* a NaN is the worst */
         worst = sf_max(worst, d);
         if (U > 0)  /* force antiparallel to u, torque opposing w */
             worst_dir = sf_max(worst_dir, fabs((q[0] * ux + q[1] * uy) / U + hypot(q[0], q[1])) / (mu * N));

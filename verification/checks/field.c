@@ -277,7 +277,7 @@ static int chk_pointwise_moments(const sf_case *c, sf_result *r)
         double z = mean * sqrt((double)N);
         double pm = sf_z_pvalue(z), pv = sf_var_pvalue(var, 1.0, N, 1);
         pmin_mean = sf_min(pmin_mean, pm);
-        if (!(pv >= pmin_var)) vworst = var;   /* a NaN is the most extreme */
+        if (!(pv >= pmin_var) && !isnan(pmin_var)) vworst = var;   /* a NaN is the most extreme */
         pmin_var = sf_min(pmin_var, pv);
         zmax = sf_max(zmax, fabs(z));
         idx[a] = (double)a;
@@ -521,7 +521,7 @@ static int padding_sweep(const sf_case *c, sf_result *r, int mode)
         if (in->truncated) {
             ncap++;
             if (rc != SF_ECAP) silent_trunc++;
-        } else if (!(in->cov_error <= worst_err)) {   /* a NaN is the worst */
+        } else if (!(in->cov_error <= worst_err) && !isnan(worst_err)) {   /* a NaN is the worst */
             worst_err = sf_max(worst_err, in->cov_error);
             worst = k;
         }

@@ -266,7 +266,7 @@ static int correlation_check(const sf_case *c, sf_result *r, int target)
             continue;   /* lag 0 is the variance: tested in lognormal/moments */
         double tstat = (em[d] - ex[d]) / se;
         double pv = 2 * gsl_cdf_tdist_Q(fabs(tstat), (double)N - 1);
-        if (!(pv >= pmin)) worst = x[d];   /* a NaN is the worst */
+        if (!(pv >= pmin) && !isnan(pmin)) worst = x[d];   /* a NaN is the worst */
         pmin = sf_min(pmin, pv);
     }
     char t[200];
@@ -374,7 +374,7 @@ static int chk_distortion_claim(const sf_case *c, sf_result *r)
         for (int i = 0; i <= 200; i++) {
             double rho = i / 200.0;
             double d = rho - sf_lognormal_rho_h(&ln, rho);
-            if (!(d <= best)) at = rho;
+            if (!(d <= best) && !isnan(best)) at = rho;
             best = sf_max(best, d);
             if (i % 20 == 0) {
                 double e = fabs(sf_lognormal_rho_h(&ln, rho) - numeric_rho_h(mean, std, rho, ws));
