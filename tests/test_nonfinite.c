@@ -95,6 +95,15 @@ static void helpers_propagate_nan(void **state)
     sf_result_free(r);
 }
 
+static void ks_tests_are_nan_with_a_nan_sample(void **state)
+{
+    (void)state;
+    double a[5] = { 0.1, -0.3, NAN, 0.7, 1.2 }, b[5] = { 0.2, 0.4, -0.1, 0.0, 0.5 }, D;
+    assert_true(isnan(sf_ks2_test(a, 5, b, 5, &D)) && isnan(D));
+    double c[5] = { 0.1, -0.3, NAN, 0.7, 1.2 };
+    assert_true(isnan(sf_ks_test(c, 5, sf_cdf_normal, NULL, &D)) && isnan(D));
+}
+
 /* ---- one case per family ---- */
 
 typedef struct {
@@ -188,6 +197,7 @@ int main(void)
         cmocka_unit_test(clean_result_gets_passing_row),
         cmocka_unit_test(nan_in_plot_or_data_fails),
         cmocka_unit_test(helpers_propagate_nan),
+        cmocka_unit_test(ks_tests_are_nan_with_a_nan_sample),
         cmocka_unit_test(field_nan_fails),
         cmocka_unit_test(lognormal_nan_fails),
         cmocka_unit_test(contact_nan_fails),

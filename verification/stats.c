@@ -23,8 +23,22 @@ double sf_ks_pvalue(double n_eff, double D)
     return p < 0 ? 0 : (p > 1 ? 1 : p);
 }
 
+/* A NaN in a sample has no place in a sorted order (gsl_sort and the
+ * merge below would silently step over it): the test is then NaN. */
+static int any_nan(const double *x, size_t n)
+{
+    for (size_t i = 0; i < n; i++)
+        if (isnan(x[i]))
+            return 1;
+    return 0;
+}
+
 double sf_ks_test(double *x, size_t n, sf_cdf_fn cdf, void *params, double *D)
 {
+    if (any_nan(x, n)) {
+        if (D) *D = NAN;
+        return NAN;
+    }
     gsl_sort(x, 1, n);
     double d = 0.0;
     for (size_t i = 0; i < n; i++) {
@@ -38,6 +52,10 @@ double sf_ks_test(double *x, size_t n, sf_cdf_fn cdf, void *params, double *D)
 
 double sf_ks2_test(double *a, size_t na, double *b, size_t nb, double *D)
 {
+    if (any_nan(a, na) || any_nan(b, nb)) {
+        if (D) *D = NAN;
+        return NAN;
+    }
     gsl_sort(a, 1, na);
     gsl_sort(b, 1, nb);
     size_t i = 0, j = 0;
