@@ -24,10 +24,52 @@ void *check_alloc(size_t n)
     return p;
 }
 
+/* The alternative of a power run, or NULL in a normal run. */
+static int case_alt(const sf_case *c, sf_alt *a)
+{
+    char err[128];
+    return c->alternative[0] && sf_alt_parse(c->alternative, a, err, sizeof err) == SF_SUCCESS;
+}
+
+sf_scene check_gen_scene(const sf_case *c)
+{
+    sf_scene s = c->scene;
+    sf_alt a;
+    if (case_alt(c, &a))
+        sf_alt_apply(&a, &s);
+    return s;
+}
+
+int check_field_sample(const sf_case *c, sf_field *f, gsl_rng *rng, double *g, size_t n)
+{
+    int rc = sf_field_sample(f, rng, g);
+    sf_alt a;
+    if (!rc && case_alt(c, &a) && sf_alt_field_std(&a) != 1.0) {
+        for (size_t i = 0; i < n; i++)
+            g[i] *= sf_alt_field_std(&a);
+    }
+    return rc;
+}
+
+int check_field_sample_pair(const sf_case *c, sf_field *f, gsl_rng *rng, double *re, double *im, size_t n)
+{
+    int rc = sf_field_sample_pair(f, rng, re, im);
+    sf_alt a;
+    if (!rc && case_alt(c, &a)) {
+        double sd = sf_alt_field_std(&a), rho = sf_alt_re_im_corr(&a), q = sqrt(1 - rho * rho);
+        for (size_t i = 0; i < n; i++) {
+            im[i] = sd * (rho * re[i] + q * im[i]);   /* unit variance, corr(re, im) = rho */
+            re[i] *= sd;
+        }
+    }
+    return rc;
+}
+
 int check_field_plan(const sf_case *c, sf_result *r, sf_field **out)
 {
     sf_field_spec spec;
-    sf_field_spec_from_scene(&c->scene, &spec);
+    sf_scene gs = check_gen_scene(c);
+    sf_field_spec_from_scene(&gs, &spec);
     int rc = sf_field_alloc(&spec, out);
     if (rc && rc != SF_ECAP)
         return rc;

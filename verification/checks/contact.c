@@ -408,12 +408,13 @@ static double var_integrand(double sd, void *p)
 static int chk_wrench_statistics(const sf_case *c, sf_result *r)
 {
     const sf_scene *s = &c->scene;
+    sf_scene gs = check_gen_scene(c);   /* the fields are drawn from the generator's scene */
     gsl_rng *rng = sf_case_rng(c);
     check_disc_field df = { 0 };
     size_t N = s->samples;
     double *F = check_alloc(N * sizeof *F), Nf = s->m * s->g;
     for (size_t k = 0; k < N; k++) {
-        sf_cof *cof = check_disc_cof(s, rng, &df);
+        sf_cof *cof = check_disc_cof(&gs, rng, &df);
         if (!cof) { gsl_rng_free(rng); free(F); return SF_EFAIL; }
         sf_contact_spec spec = { s->R, Nf, (sf_layout)s->layout, s->cells };
         sf_contact *ct;
@@ -516,7 +517,8 @@ static int chk_interpolation(const sf_case *c, sf_result *r)
         return SF_EINVAL;
     sf_field *f;
     sf_field_spec spec;
-    sf_field_spec_default(&spec, m, m, s->dx, s->dx, s->l);
+    sf_scene gs = check_gen_scene(c);   /* the field is drawn from the generator's scene */
+    sf_field_spec_default(&spec, m, m, s->dx, s->dx, gs.l);
     if (sf_field_alloc(&spec, &f) > SF_ECAP)
         return SF_EFAIL;
     gsl_rng *rng = sf_case_rng(c);
@@ -525,7 +527,7 @@ static int chk_interpolation(const sf_case *c, sf_result *r)
     double *mean = check_alloc(K * sizeof *mean), *sd = check_alloc(K * sizeof *sd);
     double *per = check_alloc(N * K * sizeof *per);
     for (size_t q = 0; q < N; q++) {
-        sf_field_sample(f, rng, g);
+        check_field_sample(c, f, rng, g, m * m);
         for (size_t k = 0; k < K; k++) {
             size_t st = (size_t)s->sweep.v[k], mc = (m - 1) / st + 1;
             double *cg = check_alloc(mc * mc * sizeof *cg);

@@ -183,7 +183,7 @@ static int chk_sampled_covariance(const sf_case *c, sf_result *r)
     double *acc = check_alloc(H * sizeof *acc), *acc2 = check_alloc(H * sizeof *acc2);
     double *g = check_alloc(p * sizeof *g);
     for (size_t k = 0; k < N; k++) {
-        sf_field_sample(f, rng, g);
+        check_field_sample(c, f, rng, g, p);
         /* empirical correlation along x, per sample (for the plot) */
         for (size_t h = 0; h < m; h++) {
             double sum = 0;
@@ -264,7 +264,7 @@ static int chk_pointwise_moments(const sf_case *c, sf_result *r)
     gsl_rng *rng = sf_case_rng(c);
     double *g = check_alloc(p * sizeof *g), *s1 = check_alloc(p * sizeof *s1), *s2 = check_alloc(p * sizeof *s2);
     for (size_t k = 0; k < N; k++) {
-        sf_field_sample(f, rng, g);
+        check_field_sample(c, f, rng, g, p);
         for (size_t a = 0; a < p; a++) {
             s1[a] += g[a];
             s2[a] += g[a] * g[a];
@@ -329,7 +329,7 @@ static int chk_re_im_independence(const sf_case *c, sf_result *r)
     size_t T = npts * nl;
     double *sxy = check_alloc(T * sizeof *sxy), *sxx = check_alloc(T * sizeof *sxx), *syy = check_alloc(T * sizeof *syy);
     for (size_t k = 0; k < N; k++) {
-        sf_field_sample_pair(f, rng, re, im);
+        check_field_sample_pair(c, f, rng, re, im, p);
         for (size_t q = 0; q < npts; q++) {
             size_t a = (q * (p / npts)) % p;
             for (size_t h = 0; h < nl; h++) {
@@ -409,7 +409,7 @@ static int chk_cholesky_agreement(const sf_case *c, sf_result *r)
     for (size_t k = 0; k < N; k++) {
         for (int src = 0; src < 2; src++) {
             if (src == 0) {
-                sf_field_sample(f, rng, g);
+                check_field_sample(c, f, rng, g, p);
             } else {
                 for (size_t a = 0; a < p; a++)
                     gsl_vector_set(w, a, gsl_ran_gaussian(rng2, 1.0));

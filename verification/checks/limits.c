@@ -95,7 +95,8 @@ static int chk_large_lr(const sf_case *c, sf_result *r)
         sf_note(r, " Strip field %zu x %zu at spacing %.4g m.", in->nx, in->ny, in->dx);
     sf_cof_plan_free(p);
     sf_sweep_point pt;
-    if (sf_sweep_run(s, s->samples, 0, NULL, 0, NULL, &pt, err, sizeof err)) {
+    sf_scene gs = check_gen_scene(c);   /* the realisations are drawn from the generator's scene */
+    if (sf_sweep_run(&gs, s->samples, 0, NULL, 0, NULL, &pt, err, sizeof err)) {
         sf_note(r, "**Sweep failed:** %s", err);
         return SF_EFAIL;
     }

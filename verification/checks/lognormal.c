@@ -47,7 +47,8 @@ static double oracle_rho_h(double sigma, double rho)
  * unless allow_cap (the pre-corrected kernel is indefinite: see there). */
 static int build(const sf_case *c, sf_result *r, sf_lnfield **lf, int allow_cap)
 {
-    int rc = sf_lnfield_alloc(&c->scene, lf);
+    sf_scene gs = check_gen_scene(c);   /* the generator's scene: a power run's alternative */
+    int rc = sf_lnfield_alloc(&gs, lf);
     if (rc && rc != SF_ECAP)
         return rc;
     const sf_field_info *in = sf_field_get_info(sf_lnfield_gaussian(*lf));
