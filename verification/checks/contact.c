@@ -437,6 +437,7 @@ static int chk_wrench_statistics(const sf_case *c, sf_result *r)
     gsl_integration_qags(&G, 0, 2 * s->R, 1e-14, 1e-10, 1000, ws, &Ig, &err);
     gsl_integration_workspace_free(ws);
     double mean_ex = s->mu_mean * Nf, var_ex = Nf * Nf * s->mu_std * s->mu_std * I;
+    sf_result_data(r, "|F| per realisation", N, F);
     double m = 0, m2 = 0, m4 = 0;
     for (size_t k = 0; k < N; k++) m += F[k];
     m /= (double)N;
@@ -549,6 +550,7 @@ static int chk_interpolation(const sf_case *c, sf_result *r)
             free(cg);
         }
     }
+    sf_result_data(r, "mean-square interpolation error per field and spacing", N * K, per);
     double worstp = 1;
     for (size_t k = 0; k < K; k++) {
         size_t st = (size_t)s->sweep.v[k];

@@ -91,6 +91,7 @@ static int chk_marginal_ks(const sf_case *c, sf_result *r)
     }
     ln_par par = oracle_par(s->mu_mean, s->mu_std);
     double D;
+    sf_result_data(r, "COF samples (KS)", N, v);   /* only a subsample is plotted */
     double pval = sf_ks_test(v, N, oracle_cdf, &par, &D);
     char t[160];
     snprintf(t, sizeof t, "KS of the COF marginal vs lognormal(mean %.3g, std %.3g), CV = %.3g",
