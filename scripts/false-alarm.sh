@@ -18,6 +18,7 @@ N=${1:-20}
 TIER=${2:-quick}
 JOBS=${3:-2}
 top=$(cd "$(dirname "$0")/.." && pwd)
+BIN=${SLIPFIELD:-build/slipfield}   # a copy keeps a long study safe from rebuilds
 cd "$top"
 out=reports/false-alarm
 mkdir -p "$out"
@@ -32,8 +33,8 @@ for f in ${CASES:-cases/*/*.md}; do
     cand="$cand $f"
 done
 # which candidates draw random numbers: two seeds, compare the results
-build/slipfield verify --seed 1 --jobs "$JOBS" --reports "$tmp/s1" $cand > /dev/null 2>&1 || true
-build/slipfield verify --seed 2 --jobs "$JOBS" --reports "$tmp/s2" $cand > /dev/null 2>&1 || true
+"$BIN" verify --seed 1 --jobs "$JOBS" --reports "$tmp/s1" $cand > /dev/null 2>&1 || true
+"$BIN" verify --seed 2 --jobs "$JOBS" --reports "$tmp/s2" $cand > /dev/null 2>&1 || true
 body() { sed -n '/^## Results/,/^## Plots/p' "$1" 2>/dev/null; }
 cases=""
 : > "$out/random-cases.txt"
@@ -48,7 +49,7 @@ for f in $cand; do
 done
 i=0
 while [ $i -lt "$N" ]; do
-    build/slipfield verify --seed random --jobs "$JOBS" --reports "$tmp/r" $cases > "$tmp/run$i.log" 2>&1 || true
+    "$BIN" verify --seed random --jobs "$JOBS" --reports "$tmp/r" $cases > "$tmp/run$i.log" 2>&1 || true
     i=$((i + 1))
     [ -t 2 ] && printf '\rfalse-alarm: %d/%d runs' "$i" "$N" >&2
 done

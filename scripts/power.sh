@@ -13,6 +13,7 @@ R=${1:-50}
 TIER=${2:-quick}
 JOBS=${3:-2}
 top=$(cd "$(dirname "$0")/.." && pwd)
+BIN=${SLIPFIELD:-build/slipfield}   # a copy keeps a long study safe from rebuilds
 cd "$top"
 out=reports/power
 mkdir -p "$out"
@@ -31,7 +32,7 @@ done
 i=0
 t0=$(date +%s)
 while [ $i -lt "$R" ]; do
-    build/slipfield verify --seed random --alternative scene --jobs "$JOBS" --reports "$tmp/r" $cases > "$tmp/run$i.log" 2>&1 || true
+    "$BIN" verify --seed random --alternative scene --jobs "$JOBS" --reports "$tmp/r" $cases > "$tmp/run$i.log" 2>&1 || true
     i=$((i + 1))
     [ -t 2 ] && printf '\rpower: %d/%d runs' "$i" "$R" >&2
 done
