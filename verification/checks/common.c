@@ -142,7 +142,7 @@ sf_cof *check_disc_cof(const sf_scene *s, gsl_rng *rng, check_disc_field *st)
     }
     if (!st->lf) {
         st->gs = *s;
-        double h = sf_min(s->l / 8, 2.2 * s->R / 3);
+        double h = fmin(s->l / 8, 2.2 * s->R / 3);   /* scene arithmetic (validated, finite), not an aggregation of data */
         st->gs.dx = st->gs.dy = h;
         st->gs.nx = st->gs.ny = (size_t)ceil(2.2 * s->R / h) + 1;
         st->gs.pad_cap = 1e4;   /* the embedding-size cap still applies */

@@ -188,6 +188,8 @@ static int chk_equator_mean_cof(const sf_case *c, sf_result *r)
     for (size_t k = 0; k < reals; k++) {
         if (disc_make(s, rng, s->cells, SF_LAYOUT_POLAR, &d)) {
             gsl_rng_free(rng);
+            free(a); free(b);
+            disc_free(&d);
             return SF_EFAIL;
         }
         double mb = sf_surface_mean_cof(d.sf);
@@ -200,6 +202,8 @@ static int chk_equator_mean_cof(const sf_case *c, sf_result *r)
         sf_contact *ct;
         if (sf_contact_alloc(&spec, d.cof, &ct)) {
             gsl_rng_free(rng);
+            free(a); free(b);
+            disc_free(&d);
             return SF_EFAIL;
         }
         double mc = sf_contact_mean_cof(ct, 0, 0);
