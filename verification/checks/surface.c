@@ -283,7 +283,7 @@ static int chk_section_vs_circle(const sf_case *c, sf_result *r)
     sf_check_le(r, "max gap at the largest l/R (near-uniform patch)", max_gap[K - 1], s->tolerance);
     size_t kmax = 0;
     for (size_t k = 1; k < K; k++)
-        if (mean_gap[k] > mean_gap[kmax])
+        if (!(mean_gap[k] <= mean_gap[kmax]) && !isnan(mean_gap[kmax]))   /* NaN-aware argmax */
             kmax = k;
     sf_note(r, "\nThe mean gap peaks at l/R = %g (%.2e of mu_bar): the circle over-states the stick domain most "
                "where the patch is least homogeneous; it vanishes as l/R grows (patch uniform) and shrinks as "
