@@ -34,7 +34,7 @@ static void usage(FILE *f)
           "  --reports DIR       report folder (default: reports)\n"
           "  --jobs N            cases run in parallel (default 1)\n"
           "  --timeout S         per-case time limit in seconds (default 900)\n"
-          "  --seed N|random     override every case's seed (mixed with the case id)\n"
+          "  --seed N|random     override every case's seed (mixed with the case id; not pin_seed cases)\n"
           "  --alternative A     power run: the data generator (never the oracle) draws under\n"
           "                      A = KEY*FACTOR or KEY+DELTA, or 'scene': each case's power_alt\n"
           "  --tags A,B          only cases carrying at least one of these tags\n"
@@ -288,7 +288,9 @@ int sf_verify_main(int argc, char **argv)
             skipped++;
             continue;
         }
-        if (have_seed)
+        /* a pinned case checks one realisation deterministically: a fresh
+           seed would change the problem, not draw a fresh sample of a test */
+        if (have_seed && !cases[kept].scene.pin_seed)
             cases[kept].scene.seed = mix_seed(seed, cases[kept].id);
         if (alternative)
             snprintf(cases[kept].alternative, sizeof cases[kept].alternative, "%s",
