@@ -59,7 +59,7 @@ CLI_OBJ := $(call objs,rel,$(CLI_SRC))
 TESTS := $(patsubst tests/%.c,$(BUILD)/rel/tests/%,$(TEST_SRC))
 TESTS_SAN := $(patsubst tests/%.c,$(BUILD)/san/tests/%,$(TEST_SRC))
 
-.PHONY: all deps verify test bench mutants clean help report-test fuzz valgrind catalogue mpi-test install uninstall
+.PHONY: all deps verify test bench mutants clean help report-test fuzz valgrind catalogue mpi-test install uninstall power
 .SECONDARY:
 .DEFAULT_GOAL := all
 
@@ -68,6 +68,7 @@ help:
 	@echo "make test     install deps if missing, run the CMocka unit tests (plain and under ASan+UBSan)"
 	@echo "make bench    benchmarks -> reports/bench/report.md"
 	@echo "make mutants  seeded defects that the cases must catch"
+	@echo "make power    measured power of the statistical cases under their power_alt (R=50 runs each) -> reports/power.md"
 	@echo "make fuzz     libFuzzer on the scene parser and case reader (FUZZ_TIME=60 s each; needs clang)"
 	@echo "make valgrind a few cases and the CLI under valgrind (errors and leaks fail)"
 	@echo "make MPI=1    an MPI build in build-mpi/ (mpirun -np P build-mpi/slipfield sweep ...)"
@@ -158,6 +159,11 @@ ifneq ($(REPEAT),)
 else
 	@$(BUILD)/slipfield verify --jobs $(JOBS) --tier $(TIER) $(if $(SEED),--seed $(SEED)) $(if $(BASELINE),--baseline $(BASELINE)) $(VERIFY_FLAGS) $(CASES)
 endif
+
+# the power of each statistical case against its named alternative
+R ?= 50
+power: all
+	@sh scripts/power.sh $(R) $(TIER) $(JOBS)
 
 # after `make test` and `make verify`: JUnit schema and the browser test
 report-test:

@@ -99,13 +99,27 @@ static int eig_1d(size_t P, double d, double l, double *lam)
     return SF_SUCCESS;
 }
 
+/* NaN-propagating max (fmax and `if (x > m)` drop a NaN, so one NaN
+ * eigenvalue or covariance lag would vanish from lambda_min/max and
+ * cov_error).  solver/ cannot use verification/stats.h's sf_max, hence
+ * this internal copy of the one-liner. */
+static double nan_max(double a, double b)
+{
+    return isnan(a) || isnan(b) ? NAN : (a > b ? a : b);
+}
+
+static double nan_min(double a, double b)
+{
+    return isnan(a) || isnan(b) ? NAN : (a < b ? a : b);
+}
+
 static void min_max(const double *v, size_t n, double *mn, double *mx)
 {
     *mn = v[0];
     *mx = v[0];
     for (size_t i = 1; i < n; i++) {
-        if (v[i] < *mn) *mn = v[i];
-        if (v[i] > *mx) *mx = v[i];
+        *mn = nan_min(*mn, v[i]);
+        *mx = nan_max(*mx, v[i]);
     }
 }
 
@@ -281,7 +295,7 @@ static int finish_plan(sf_field *f)
             double v = creal(f->work[(i % px) + px * (j % py)]) * invM;
             f->cov[i + s->m * j] = v;
             double e = fabs(v - kernel_at(s, (double)i * s->dx, (double)j * s->dy));
-            if (e > err) err = e;
+            err = nan_max(err, e);
         }
     f->info.cov_error = err;
     return SF_SUCCESS;

@@ -87,6 +87,8 @@ static const key_t_ keys[] = {
     { "tier", K_ENUM, OFF(tier), 0, 0, 0, 0, 0, "quick", "", "quick|full", "verification tier" },
     { "vv", K_ENUM, OFF(vv), 0, 0, 0, 0, 0, "code", "", "code|solution|validation", "code verification, solution verification or validation" },
     { "tags", K_STRING, OFF(tags), sizeof(((sf_scene *)0)->tags), 0, 0, 0, 0, "", "", NULL, "comma-separated tags" },
+    { "pin_seed", K_BOOL, OFF(pin_seed), 0, 0, 0, 0, 0, "false", "", NULL, "a deterministic check of one pinned realisation: verify --seed leaves this case's seed alone" },
+    { "power_alt", K_STRING, OFF(power_alt), sizeof(((sf_scene *)0)->power_alt), 0, 0, 0, 0, "", "", NULL, "alternative a statistical case's power is measured against: KEY*FACTOR or KEY+DELTA (generator only)" },
     { "sweep", K_LIST, OFF(sweep), 0, -INF, INF, 0, 0, "", "", NULL, "list of values a check sweeps over" },
     { "sweep_param", K_STRING, OFF(sweep_param), sizeof(((sf_scene *)0)->sweep_param), 0, 0, 0, 0, "", "", NULL, "parameter a sweep varies: a numeric key, l_over_R or mu_mean (fixed CV)" },
     { "sweep2", K_LIST, OFF(sweep2), 0, -INF, INF, 0, 0, "", "", NULL, "second list of values" },
@@ -224,8 +226,8 @@ static int assign(sf_scene *s, const key_t_ *k, const char *v, size_t len,
                           file, line, k->name, k->size - 1);
         for (size_t i = 0; i < len; i++) {
             unsigned char ch = (unsigned char)v[i];
-            if (!(isalnum(ch) || ch == '_' || ch == '-' || ch == ',' || ch == '.'))
-                return seterr(err, errlen, "%s:%d: key '%s': only letters, digits and _-,. are allowed",
+            if (!(isalnum(ch) || ch == '_' || ch == '-' || ch == ',' || ch == '.' || ch == '*' || ch == '+'))
+                return seterr(err, errlen, "%s:%d: key '%s': only letters, digits and _-,.*+ are allowed",
                               file, line, k->name);
         }
         memcpy(base, v, len);

@@ -57,6 +57,12 @@ typedef struct {
     double tolerance, alpha;
     int tier, vv;
     char tags[128];
+    /* the moderate alternative a statistical case's power is measured
+     * against (`slipfield verify --alternative scene`): KEY*FACTOR or
+     * KEY+DELTA, applied to the data generator's scene only */
+    char power_alt[48];
+    int pin_seed;            /* 1: a deterministic check of one pinned realisation
+                                (`verify --seed` leaves this case's seed alone) */
     sf_list sweep, sweep2;
     char sweep_param[32];    /* the scene key (or l_over_R) a sweep varies */
     /* which keys the file set (index into the key table) */

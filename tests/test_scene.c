@@ -159,6 +159,41 @@ static void case_reader(void **state)
     assert_int_equal(system(cmd), 0);
 }
 
+/* Power alternatives: parsed strictly, applied to a copy of the scene
+ * (the generator's), generator-only quantities default to the null. */
+static void power_alternative(void **state)
+{
+    (void)state;
+    sf_alt a;
+    char err[256];
+    assert_int_equal(sf_alt_parse("mu_std*1.05", &a, err, sizeof err), SF_SUCCESS);
+    sf_scene s;
+    sf_scene_default(&s);
+    sf_alt_apply(&a, &s);
+    assert_close(s.mu_std, 0.105, 1e-15);
+    assert_close(s.l, 0.1, 0);
+    assert_close(sf_alt_field_std(&a), 1, 0);
+    assert_int_equal(sf_alt_parse("re_im_corr+0.1", &a, err, sizeof err), SF_SUCCESS);
+    assert_close(sf_alt_re_im_corr(&a), 0.1, 0);
+    assert_int_equal(sf_alt_parse("field_std*1.05", &a, err, sizeof err), SF_SUCCESS);
+    assert_close(sf_alt_field_std(&a), 1.05, 0);
+    const char *bad[] = { "mu_std", "seed*2", "l*x", "l*-1", "re_im_corr+1.5", "*2", "mu_std*nan" };
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++)
+        assert_int_equal(sf_alt_parse(bad[i], &a, err, sizeof err), SF_EPARSE);
+    /* a case naming a power_alt must be statistical (alpha) and valid */
+    sf_case c;
+    const char *ok = "# t\n```scene\ncheck = field_pointwise_moments\nalpha = 1e-3\npower_alt = field_std*1.05\n```\n";
+    const char *noalpha = "# t\n```scene\ncheck = field_pointwise_moments\ntolerance = 1\npower_alt = l*1.1\n```\n";
+    const char *unknown = "# t\n```scene\ncheck = field_pointwise_moments\nalpha = 1e-3\npower_alt = nx*2\n```\n";
+    assert_int_equal(sf_case_parse(&c, "cases/field/t.md", ok, strlen(ok), err, sizeof err), SF_SUCCESS);
+    assert_string_equal(c.alternative, "");   /* a normal run draws under the null */
+    sf_case_free(&c);
+    assert_int_equal(sf_case_parse(&c, "cases/field/t.md", noalpha, strlen(noalpha), err, sizeof err), SF_EPARSE);
+    sf_case_free(&c);
+    assert_int_equal(sf_case_parse(&c, "cases/field/t.md", unknown, strlen(unknown), err, sizeof err), SF_EPARSE);
+    sf_case_free(&c);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -167,6 +202,7 @@ int main(void)
         cmocka_unit_test(scene_bad_input),
         cmocka_unit_test(scene_huge_line),
         cmocka_unit_test(case_reader),
+        cmocka_unit_test(power_alternative),
     };
     return cmocka_run_group_tests_name("scene", tests, NULL, NULL);
 }

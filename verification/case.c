@@ -181,6 +181,15 @@ static int parse_buf(sf_case *c, const char *path, char *buf, size_t n, char *er
     if (!sf_check_find(c->scene.check))
         return fail(err, errlen, SF_EPARSE, "%s: key 'check': unknown check '%s' (see 'slipfield verify --checks')",
                     path, c->scene.check);
+    if (c->scene.power_alt[0]) {
+        sf_alt a;
+        char e2[128];
+        if (sf_alt_parse(c->scene.power_alt, &a, e2, sizeof e2))
+            return fail(err, errlen, SF_EPARSE, "%s:%d: key 'power_alt': %s", path, c->scene_line, e2);
+        if (!sf_scene_was_set(&c->scene, "alpha"))
+            return fail(err, errlen, SF_EPARSE, "%s:%d: 'power_alt' names the alternative of a statistical "
+                        "check: the scene must set 'alpha'", path, c->scene_line);
+    }
     if (!sf_scene_was_set(&c->scene, "tolerance") && !sf_scene_was_set(&c->scene, "alpha"))
         return fail(err, errlen, SF_EPARSE, "%s:%d: the scene states neither 'tolerance' nor 'alpha'", path, c->scene_line);
     return SF_SUCCESS;
@@ -203,4 +212,72 @@ gsl_rng *sf_case_rng(const sf_case *c)
     }
     gsl_rng_set(r, c->scene.seed);
     return r;
+}
+
+/* ---- power alternatives ---- */
+
+#include <math.h>
+#include <stddef.h>
+
+static const struct { const char *name; size_t off; } alt_keys[] = {
+    { "mu_std", offsetof(sf_scene, mu_std) },
+    { "mu_mean", offsetof(sf_scene, mu_mean) },
+    { "l", offsetof(sf_scene, l) },
+    { "mu_k_ratio", offsetof(sf_scene, mu_k_ratio) },
+    { "v_b", offsetof(sf_scene, v_b) },
+};
+#define NALT (sizeof alt_keys / sizeof alt_keys[0])
+
+int sf_alt_parse(const char *spec, sf_alt *a, char *err, size_t errlen)
+{
+    memset(a, 0, sizeof *a);
+    size_t kl = strcspn(spec, "*+");
+    if (!spec[kl] || kl == 0 || kl >= sizeof a->key)
+        return fail(err, errlen, SF_EPARSE, "'%s': expected KEY*FACTOR or KEY+DELTA", spec);
+    memcpy(a->key, spec, kl);
+    a->key[kl] = '\0';
+    a->additive = spec[kl] == '+';
+    char *end;
+    a->x = strtod(spec + kl + 1, &end);
+    if (*end || end == spec + kl + 1 || !isfinite(a->x))
+        return fail(err, errlen, SF_EPARSE, "'%s': the factor or delta is not a number", spec);
+    int known = !strcmp(a->key, "field_std") || !strcmp(a->key, "re_im_corr");
+    for (size_t i = 0; i < NALT; i++)
+        known |= !strcmp(a->key, alt_keys[i].name);
+    if (!known)
+        return fail(err, errlen, SF_EPARSE, "'%s': unknown key '%s' (mu_std, mu_mean, l, mu_k_ratio, v_b, "
+                    "field_std, re_im_corr)", spec, a->key);
+    /* the alternative must leave a valid generator */
+    double v0 = !strcmp(a->key, "re_im_corr") ? 0 : 1;
+    double v = a->additive ? v0 + a->x : v0 * a->x;
+    if (!(v > 0) && strcmp(a->key, "re_im_corr"))
+        return fail(err, errlen, SF_EPARSE, "'%s': the factor must be > 0", spec);
+    if (!strcmp(a->key, "re_im_corr") && !(fabs(v) < 1))
+        return fail(err, errlen, SF_EPARSE, "'%s': a correlation must lie in (-1, 1)", spec);
+    return SF_SUCCESS;
+}
+
+void sf_alt_apply(const sf_alt *a, sf_scene *s)
+{
+    if (!a)
+        return;
+    for (size_t i = 0; i < NALT; i++)
+        if (!strcmp(a->key, alt_keys[i].name)) {
+            double *p = (double *)((char *)s + alt_keys[i].off);
+            *p = a->additive ? *p + a->x : *p * a->x;
+        }
+}
+
+double sf_alt_field_std(const sf_alt *a)
+{
+    if (!a || strcmp(a->key, "field_std"))
+        return 1.0;
+    return a->additive ? 1.0 + a->x : a->x;
+}
+
+double sf_alt_re_im_corr(const sf_alt *a)
+{
+    if (!a || strcmp(a->key, "re_im_corr"))
+        return 0.0;
+    return a->additive ? a->x : 0.0;
 }

@@ -22,7 +22,31 @@ typedef struct {
     char *scene_text;      /* the block's text, as written */
     int scene_line;        /* line number of the block's first line */
     sf_scene scene;
+    /* Power runs (issue 13): the alternative the DATA GENERATOR draws
+     * under ("" for the null: the normal run).  Set by `slipfield verify
+     * --alternative`; the checks' generator helpers (checks/common.h:
+     * check_gen_scene, check_field_sample...) apply it, oracles never. */
+    char alternative[48];
 } sf_case;
+
+/* An alternative: KEY*FACTOR or KEY+DELTA.  KEY is a scene key of the
+ * generator (mu_std, mu_mean, l, mu_k_ratio, v_b) or a generator-only
+ * quantity with no scene key: field_std (std of the standard Gaussian
+ * field, nominally 1) and re_im_corr (correlation between the real and
+ * imaginary fields of one FFT at the same point, nominally 0). */
+typedef struct {
+    char key[24];
+    int additive;      /* 0: value *= x; 1: value += x */
+    double x;
+} sf_alt;
+/* Parse spec; SF_SUCCESS or SF_EPARSE with the reason in err. */
+int sf_alt_parse(const char *spec, sf_alt *a, char *err, size_t errlen);
+/* Apply the scene-key part to s (field_std and re_im_corr: no change). */
+void sf_alt_apply(const sf_alt *a, sf_scene *s);
+/* The generator-only quantities under a (1 and 0 when a is NULL or
+ * names a scene key). */
+double sf_alt_field_std(const sf_alt *a);
+double sf_alt_re_im_corr(const sf_alt *a);
 
 /* Read and validate a case (scene parsed strictly, check name known).
  * Returns SF_SUCCESS, SF_EIO or SF_EPARSE with "file:line: ..." in err. */

@@ -1,4 +1,5 @@
 #include "result.h"
+#include "stats.h"
 
 #include <errno.h>
 #include <math.h>
@@ -18,6 +19,7 @@ typedef struct {
 } series;
 
 struct sf_plot {
+    sf_result *owner;   /* counts the plotted values (a plot is the check's data) */
     char stem[64], title[160], xlabel[96], ylabel[96];
     int logx, logy;
     series *s;
@@ -31,7 +33,21 @@ struct sf_result {
     size_t notes_len;
     sf_plot **plots;
     size_t nplots;
+    /* non-finite values seen in the check's data: rows' measured values,
+     * plotted series and arrays given to sf_result_data */
+    size_t nonfinite, nvalues;
+    char first_bad[128];   /* where the first one was seen */
 };
+
+static void count_values(sf_result *r, const char *where, size_t n, const double *x)
+{
+    if (!x)
+        return;
+    for (size_t i = 0; i < n; i++)
+        if (!isfinite(x[i]) && r->nonfinite++ == 0)
+            snprintf(r->first_bad, sizeof r->first_bad, "%.60s [%zu] = %g", where, i, x[i]);
+    r->nvalues += n;
+}
 
 static void *xrealloc(void *p, size_t n)
 {
@@ -73,13 +89,15 @@ void sf_result_free(sf_result *r)
     free(r);
 }
 
-static sf_row *add_row(sf_result *r, const char *q)
+static sf_row *add_row(sf_result *r, const char *q, double measured)
 {
+    count_values(r, q, 1, &measured);
     r->rows = xrealloc(r->rows, (r->nrows + 1) * sizeof *r->rows);
     sf_row *row = &r->rows[r->nrows++];
     memset(row, 0, sizeof *row);
     snprintf(row->quantity, sizeof row->quantity, "%s", q);
     row->expected = NAN;
+    row->measured = measured;
     return row;
 }
 
@@ -95,8 +113,7 @@ static void set_limit(sf_row *row, int test, double limit, size_t n)
  * a NaN makes the predicate false. */
 int sf_check_abs(sf_result *r, const char *q, double m, double e, double tol)
 {
-    sf_row *row = add_row(r, q);
-    row->measured = m;
+    sf_row *row = add_row(r, q, m);
     row->expected = e;
     double d = fabs(m - e);
     snprintf(row->criterion, sizeof row->criterion, "|diff| <= %.3g", tol);
@@ -108,8 +125,7 @@ int sf_check_abs(sf_result *r, const char *q, double m, double e, double tol)
 
 int sf_check_rel(sf_result *r, const char *q, double m, double e, double tol)
 {
-    sf_row *row = add_row(r, q);
-    row->measured = m;
+    sf_row *row = add_row(r, q, m);
     row->expected = e;
     double d = fabs(m - e), b = tol * fabs(e);
     snprintf(row->criterion, sizeof row->criterion, "|rel diff| <= %.3g", tol);
@@ -121,8 +137,7 @@ int sf_check_rel(sf_result *r, const char *q, double m, double e, double tol)
 
 int sf_check_le(sf_result *r, const char *q, double m, double bound)
 {
-    sf_row *row = add_row(r, q);
-    row->measured = m;
+    sf_row *row = add_row(r, q, m);
     snprintf(row->criterion, sizeof row->criterion, "<= %.3g", bound);
     row->ratio = bound != 0 ? m / bound : (m <= 0 ? 0 : INFINITY);
     row->pass = m <= bound;
@@ -132,8 +147,7 @@ int sf_check_le(sf_result *r, const char *q, double m, double bound)
 
 int sf_check_ge(sf_result *r, const char *q, double m, double bound)
 {
-    sf_row *row = add_row(r, q);
-    row->measured = m;
+    sf_row *row = add_row(r, q, m);
     snprintf(row->criterion, sizeof row->criterion, ">= %.3g", bound);
     row->ratio = m != 0 ? bound / m : INFINITY;
     if (bound <= 0 && m >= bound)
@@ -147,8 +161,7 @@ int sf_check_pvalue(sf_result *r, const char *test, double p, double alpha, size
 {
     char q[160];
     snprintf(q, sizeof q, "%s (n = %zu): p-value", test, n);
-    sf_row *row = add_row(r, q);
-    row->measured = p;
+    sf_row *row = add_row(r, q, p);
     snprintf(row->criterion, sizeof row->criterion, "p >= alpha = %.3g", alpha);
     row->ratio = p > 0 ? alpha / p : INFINITY;
     row->pass = p >= alpha;
@@ -158,13 +171,35 @@ int sf_check_pvalue(sf_result *r, const char *test, double p, double alpha, size
 
 int sf_check_true(sf_result *r, const char *q, int ok, const char *found)
 {
-    sf_row *row = add_row(r, q);
-    row->measured = ok ? 1 : 0;
+    sf_row *row = add_row(r, q, ok ? 1 : 0);
     row->expected = 1;
     snprintf(row->criterion, sizeof row->criterion, "%s", found ? found : "holds");
     row->ratio = ok ? 0 : INFINITY;
     row->pass = ok != 0;
     set_limit(row, SF_ROW_TRUE, NAN, 0);
+    return row->pass;
+}
+
+void sf_result_data(sf_result *r, const char *what, size_t n, double *x)
+{
+    sf_poison_array(x, n);
+    count_values(r, what, n, x);
+}
+
+size_t sf_result_nonfinite(const sf_result *r) { return r->nonfinite; }
+
+int sf_result_gate_nonfinite(sf_result *r)
+{
+    char found[160];
+    if (r->nonfinite)
+        snprintf(found, sizeof found, "none may be NaN/Inf; first: %s", r->first_bad);
+    else
+        snprintf(found, sizeof found, "all %zu values finite", r->nvalues);
+    sf_row *row = add_row(r, "non-finite values in the check's data (rows, plots, aggregated arrays)", (double)r->nonfinite);
+    row->expected = 0;
+    snprintf(row->criterion, sizeof row->criterion, "= 0 (%.70s)", found);
+    row->ratio = r->nonfinite ? INFINITY : 0;
+    row->pass = r->nonfinite == 0;
     return row->pass;
 }
 
@@ -244,6 +279,7 @@ sf_plot *sf_result_plot(sf_result *r, const char *stem, const char *title,
     p->stem[j] = '\0';
     if (!j)
         snprintf(p->stem, sizeof p->stem, "plot%zu", r->nplots);
+    p->owner = r;
     copy_clean(p->title, sizeof p->title, title);
     copy_clean(p->xlabel, sizeof p->xlabel, xlabel);
     copy_clean(p->ylabel, sizeof p->ylabel, ylabel);
@@ -280,6 +316,8 @@ void sf_plot_series(sf_plot *p, const char *label, int style, size_t n,
     if (n) {
         memcpy(s->x, x, n * sizeof *x);
         memcpy(s->y, y, n * sizeof *y);
+        count_values(p->owner, s->label, n, x);
+        count_values(p->owner, s->label, n, y);
     }
 }
 
@@ -292,6 +330,9 @@ void sf_plot_band(sf_plot *p, const char *label, size_t n, const double *x,
         memcpy(s->x, x, n * sizeof *x);
         memcpy(s->y, lo, n * sizeof *lo);
         memcpy(s->y2, hi, n * sizeof *hi);
+        count_values(p->owner, s->label, n, x);
+        count_values(p->owner, s->label, n, lo);
+        count_values(p->owner, s->label, n, hi);
     }
 }
 
@@ -300,6 +341,7 @@ void sf_plot_hline(sf_plot *p, const char *label, double y)
     series *s = add_series(p, label, -2, 1);
     s->x[0] = 0;
     s->y[0] = y;
+    count_values(p->owner, s->label, 1, &y);
 }
 
 size_t sf_result_nplots(const sf_result *r) { return r->nplots; }

@@ -46,6 +46,19 @@ int sf_check_pvalue(sf_result *r, const char *test, double p, double alpha, size
 /* A boolean property with a short explanation of what was found. */
 int sf_check_true(sf_result *r, const char *quantity, int ok, const char *found);
 
+/* Non-finite values fail (issue 13).  The result counts every NaN/Inf
+ * among its rows' measured values and its plotted series (the plots are
+ * the check's data), and among arrays handed to sf_result_data: those a
+ * check aggregates (max, mean, test statistic) but does not plot.  `what`
+ * names the array in the message.  x is not const: under the test-only
+ * poison of stats.h the k-th element becomes NaN before the check
+ * aggregates it.  The runner calls sf_result_gate_nonfinite after the
+ * check: it appends the gated row "non-finite values = 0" (so no check
+ * has to remember it) and returns its pass flag. */
+void sf_result_data(sf_result *r, const char *what, size_t n, double *x);
+size_t sf_result_nonfinite(const sf_result *r);
+int sf_result_gate_nonfinite(sf_result *r);
+
 /* Findings: Markdown appended to the report (printf-style). */
 void sf_note(sf_result *r, const char *fmt, ...)
     __attribute__((format(printf, 2, 3)));

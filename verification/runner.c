@@ -38,7 +38,9 @@ static void usage(FILE *f)
           "  --reports DIR       report folder (default: reports)\n"
           "  --jobs N            cases run in parallel (default 1)\n"
           "  --timeout S         per-case time limit in seconds (default 900)\n"
-          "  --seed N|random     override every case's seed (mixed with the case id)\n"
+          "  --seed N|random     override every case's seed (mixed with the case id; not pin_seed cases)\n"
+          "  --alternative A     power run: the data generator (never the oracle) draws under\n"
+          "                      A = KEY*FACTOR or KEY+DELTA, or 'scene': each case's power_alt\n"
           "  --tags A,B          only cases carrying at least one of these tags\n"
           "  --only TEXT         only cases whose id contains TEXT (repeatable)\n"
           "  --baseline FILE     compare with an older results.json: DIR/drift.md lists verdict\n"
@@ -109,6 +111,9 @@ static void run_child(const sf_case *c, const char *root, int fd, unsigned timeo
     fill_outcome(&o, c);
     const sf_check_def *d = sf_check_find(c->scene.check);
     sf_result *r = sf_result_alloc();
+    if (c->alternative[0])
+        sf_note(r, "**Power run:** the data generator draws under the alternative `%s` (the oracle does not): "
+                   "this run should FAIL.\n", c->alternative);
     double t0 = now();
     int rc = d->fn(c, r);
     o.seconds = now() - t0;
@@ -121,6 +126,7 @@ static void run_child(const sf_case *c, const char *root, int fd, unsigned timeo
         o.verdict = SF_VERDICT_ERROR;
         snprintf(o.key, sizeof o.key, "the check produced no row (it cannot fail, so it cannot pass)");
     } else {
+        sf_result_gate_nonfinite(r);
         o.verdict = sf_result_passed(r) ? SF_VERDICT_PASS : SF_VERDICT_FAIL;
         const sf_row *k = sf_result_key_row(r);
         snprintf(o.key, sizeof o.key, "%s = %.4g (%s)", k->quantity, k->measured, k->criterion);
@@ -191,7 +197,7 @@ int sf_verify_main(int argc, char **argv)
     unsigned timeout = 900;
     unsigned long seed = 0;
     char seed_note[64] = "fixed (per case)";
-    const char *tags = NULL, *only[16], *baseline_path = NULL;
+    const char *tags = NULL, *only[16], *baseline_path = NULL, *alternative = NULL;
     int nonly = 0;
     int i = 1;
     for (; i < argc && argv[i][0] == '-'; i++) {
@@ -232,6 +238,15 @@ int sf_verify_main(int argc, char **argv)
         } else if (!strcmp(a, "--timeout") && v) {
             timeout = (unsigned)atoi(v);
             if (timeout < 1) { fprintf(stderr, "slipfield verify: --timeout takes seconds >= 1\n"); return 2; }
+            i++;
+        } else if (!strcmp(a, "--alternative") && v) {
+            sf_alt alt;
+            char e2[160];
+            if (strcmp(v, "scene") && sf_alt_parse(v, &alt, e2, sizeof e2)) {
+                fprintf(stderr, "slipfield verify: --alternative: %s\n", e2);
+                return 2;
+            }
+            alternative = v;
             i++;
         } else if (!strcmp(a, "--seed") && v) {
             have_seed = 1;
@@ -285,8 +300,13 @@ int sf_verify_main(int argc, char **argv)
             skipped++;
             continue;
         }
-        if (have_seed)
+        /* a pinned case checks one realisation deterministically: a fresh
+           seed would change the problem, not draw a fresh sample of a test */
+        if (have_seed && !cases[kept].scene.pin_seed)
             cases[kept].scene.seed = mix_seed(seed, cases[kept].id);
+        if (alternative)
+            snprintf(cases[kept].alternative, sizeof cases[kept].alternative, "%s",
+                     strcmp(alternative, "scene") ? alternative : cases[kept].scene.power_alt);
         kept++;
     }
     if (bad) {

@@ -23,15 +23,28 @@ double sf_ks_pvalue(double n_eff, double D)
     return p < 0 ? 0 : (p > 1 ? 1 : p);
 }
 
+/* A NaN in a sample has no place in a sorted order (gsl_sort and the
+ * merge below would silently step over it): the test is then NaN. */
+static int any_nan(const double *x, size_t n)
+{
+    for (size_t i = 0; i < n; i++)
+        if (isnan(x[i]))
+            return 1;
+    return 0;
+}
+
 double sf_ks_test(double *x, size_t n, sf_cdf_fn cdf, void *params, double *D)
 {
+    if (any_nan(x, n)) {
+        if (D) *D = NAN;
+        return NAN;
+    }
     gsl_sort(x, 1, n);
     double d = 0.0;
     for (size_t i = 0; i < n; i++) {
         double F = cdf(x[i], params);
         double lo = F - (double)i / (double)n, hi = (double)(i + 1) / (double)n - F;
-        if (lo > d) d = lo;
-        if (hi > d) d = hi;
+        d = sf_max(d, sf_max(lo, hi));
     }
     if (D) *D = d;
     return sf_ks_pvalue((double)n, d);
@@ -39,6 +52,10 @@ double sf_ks_test(double *x, size_t n, sf_cdf_fn cdf, void *params, double *D)
 
 double sf_ks2_test(double *a, size_t na, double *b, size_t nb, double *D)
 {
+    if (any_nan(a, na) || any_nan(b, nb)) {
+        if (D) *D = NAN;
+        return NAN;
+    }
     gsl_sort(a, 1, na);
     gsl_sort(b, 1, nb);
     size_t i = 0, j = 0;
@@ -48,7 +65,7 @@ double sf_ks2_test(double *a, size_t na, double *b, size_t nb, double *D)
         while (i < na && a[i] <= v) i++;
         while (j < nb && b[j] <= v) j++;
         double diff = fabs((double)i / (double)na - (double)j / (double)nb);
-        if (diff > d) d = diff;
+        d = sf_max(d, diff);
     }
     if (D) *D = d;
     return sf_ks_pvalue((double)na * (double)nb / (double)(na + nb), d);
@@ -77,4 +94,55 @@ double sf_cdf_normal(double x, void *params)
 {
     (void)params;
     return gsl_cdf_ugaussian_P(x);
+}
+
+/* ---- NaN-propagating aggregation and its test-only poison ---- */
+
+static long poison_k = -1, poison_seen = 0;
+static int poison_hit = 0;
+
+void sf_poison_set(long k)
+{
+    poison_k = k;
+    poison_seen = 0;
+    poison_hit = 0;
+}
+
+int sf_poison_hit(void) { return poison_hit; }
+
+/* The value that enters an aggregation: NaN when it is the poisoned one. */
+static double pass_value(double a)
+{
+    if (poison_k < 0)
+        return a;
+    if (poison_seen++ == poison_k) {
+        poison_hit = 1;
+        return NAN;
+    }
+    return a;
+}
+
+void sf_poison_array(double *x, size_t n)
+{
+    if (poison_k < 0 || !x)
+        return;
+    if (poison_k >= poison_seen && poison_k - poison_seen < (long)n) {
+        x[poison_k - poison_seen] = NAN;
+        poison_hit = 1;
+    }
+    poison_seen += (long)n;
+}
+
+double sf_max(double a, double b)
+{
+    if (isnan(a) || isnan(b))
+        return NAN;
+    return pass_value(a > b ? a : b);
+}
+
+double sf_min(double a, double b)
+{
+    if (isnan(a) || isnan(b))
+        return NAN;
+    return pass_value(a < b ? a : b);
 }

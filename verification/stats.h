@@ -31,4 +31,25 @@ double sf_var_pvalue(double s2, double sigma2, size_t n, int mean_known);
 /* Standard normal CDF as an sf_cdf_fn. */
 double sf_cdf_normal(double x, void *params);
 
+/* NaN-propagating aggregation (issue 13).  fmax/fmin and `if (x > m)`
+ * silently drop a NaN, so a NaN at one lag, point or realisation would
+ * vanish from a max and the case pass: every max/min a check aggregates
+ * goes through these instead.  A NaN argument gives NaN; an Inf is kept
+ * by the ordinary comparison. */
+double sf_max(double a, double b);
+double sf_min(double a, double b);
+
+/* Test-only fault injection (tests/test_nonfinite.c): with
+ * sf_poison_set(k), k >= 0, the k-th value (0-based, counted from the
+ * call) that passes through the aggregation -- a value sf_max/sf_min
+ * returns (one each) or an element handed to sf_result_data (n each) --
+ * is replaced by a NaN, as a defect at that lag, point or realisation
+ * would put it there.  sf_poison_set(-1) turns it off
+ * (the default: the helpers then only count).  sf_poison_hit() says
+ * whether the poisoned value was reached. */
+void sf_poison_set(long k);
+int sf_poison_hit(void);
+/* Used by sf_result_data: poison x[0..n) if the k-th value is among them. */
+void sf_poison_array(double *x, size_t n);
+
 #endif

@@ -1,4 +1,5 @@
 #include "common.h"
+#include "../stats.h"
 #include "lnfield.h"
 #include "sf_error.h"
 
@@ -47,10 +48,52 @@ void *check_alloc(size_t n)
     return p;
 }
 
+/* The alternative of a power run, or NULL in a normal run. */
+static int case_alt(const sf_case *c, sf_alt *a)
+{
+    char err[128];
+    return c->alternative[0] && sf_alt_parse(c->alternative, a, err, sizeof err) == SF_SUCCESS;
+}
+
+sf_scene check_gen_scene(const sf_case *c)
+{
+    sf_scene s = c->scene;
+    sf_alt a;
+    if (case_alt(c, &a))
+        sf_alt_apply(&a, &s);
+    return s;
+}
+
+int check_field_sample(const sf_case *c, sf_field *f, gsl_rng *rng, double *g, size_t n)
+{
+    int rc = sf_field_sample(f, rng, g);
+    sf_alt a;
+    if (!rc && case_alt(c, &a) && sf_alt_field_std(&a) != 1.0) {
+        for (size_t i = 0; i < n; i++)
+            g[i] *= sf_alt_field_std(&a);
+    }
+    return rc;
+}
+
+int check_field_sample_pair(const sf_case *c, sf_field *f, gsl_rng *rng, double *re, double *im, size_t n)
+{
+    int rc = sf_field_sample_pair(f, rng, re, im);
+    sf_alt a;
+    if (!rc && case_alt(c, &a)) {
+        double sd = sf_alt_field_std(&a), rho = sf_alt_re_im_corr(&a), q = sqrt(1 - rho * rho);
+        for (size_t i = 0; i < n; i++) {
+            im[i] = sd * (rho * re[i] + q * im[i]);   /* unit variance, corr(re, im) = rho */
+            re[i] *= sd;
+        }
+    }
+    return rc;
+}
+
 int check_field_plan(const sf_case *c, sf_result *r, sf_field **out)
 {
     sf_field_spec spec;
-    sf_field_spec_from_scene(&c->scene, &spec);
+    sf_scene gs = check_gen_scene(c);
+    sf_field_spec_from_scene(&gs, &spec);
     int rc = sf_field_alloc(&spec, out);
     if (rc && rc != SF_ECAP)
         return rc;
@@ -123,7 +166,7 @@ sf_cof *check_disc_cof(const sf_scene *s, gsl_rng *rng, check_disc_field *st)
     }
     if (!st->lf) {
         st->gs = *s;
-        double h = fmin(s->l / 8, 2.2 * s->R / 3);
+        double h = fmin(s->l / 8, 2.2 * s->R / 3);   /* scene arithmetic (validated, finite), not an aggregation of data */
         st->gs.dx = st->gs.dy = h;
         st->gs.nx = st->gs.ny = (size_t)ceil(2.2 * s->R / h) + 1;
         st->gs.pad_cap = 1e4;   /* the embedding-size cap still applies */
@@ -179,8 +222,8 @@ int check_osc_run(const sf_scene *s, gsl_rng *rng, const sf_cof *cof, double sam
 void check_hist_row(void *ctx, const sf_osc_row *row)
 {
     check_hist *h = ctx;
-    h->y_absmax = fmax(h->y_absmax, fabs(row->y));
-    h->phi_absmax = fmax(h->phi_absmax, fabs(row->phi));
+    h->y_absmax = sf_max(h->y_absmax, fabs(row->y));
+    h->phi_absmax = sf_max(h->phi_absmax, fabs(row->phi));
     if (h->every > 1 && (h->seen++ % h->every))
         return;
     if (h->n == h->cap) {

@@ -6,6 +6,7 @@
 #include "../case.h"
 #include "../result.h"
 #include "field.h"
+#include <gsl/gsl_rng.h>
 
 /* The oracle's own Eq. 2, written independently of the solver. */
 double ref_sq_exp(double hx, double hy, double l);
@@ -19,14 +20,18 @@ double ref_sq_exp(double hx, double hy, double l);
  * about 1e-16 eps^4 relative error, so keep eps below ~100. */
 void ref_contensou(double eps, double *f, double *t);
 
-/* max that keeps a NaN (fmax drops it): a NaN in a check's data must
- * reach the row and fail it. */
-static inline double check_nanmax(double a, double b)
-{
-    return isnan(a) || isnan(b) ? NAN : (a > b ? a : b);
-}
+/* Power runs (issue 13): the scene the DATA GENERATOR draws from -- the
+ * case's scene with the alternative of `slipfield verify --alternative`
+ * applied (unchanged in a normal run).  Oracles use c->scene, never this. */
+sf_scene check_gen_scene(const sf_case *c);
+/* Gaussian samples as the generator draws them: sf_field_sample /
+ * sf_field_sample_pair, then the generator-only alternatives (field_std
+ * scales the field; re_im_corr mixes Re into Im at each point).  n is
+ * the number of grid points. */
+int check_field_sample(const sf_case *c, sf_field *f, gsl_rng *rng, double *g, size_t n);
+int check_field_sample_pair(const sf_case *c, sf_field *f, gsl_rng *rng, double *re, double *im, size_t n);
 
-/* Build the Gaussian field plan a case's scene asks for; note the
+/* Build the Gaussian field plan a case's (generator) scene asks for; note the
  * embedding facts in the findings.  Returns SF_SUCCESS or SF_ECAP (plan
  * usable) or an error (plan NULL). */
 int check_field_plan(const sf_case *c, sf_result *r, sf_field **out);

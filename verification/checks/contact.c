@@ -57,10 +57,10 @@ static int chk_pure_translation(const sf_case *c, sf_result *r)
         double u = U * cos(a), v = U * sin(a), q[3];
         if (sf_contact_wrench(ct, 0, 0, u, v, 0, 1.0, q)) { free(ang); free(mag); return SF_EFAIL; }
         double F = hypot(q[0], q[1]);
-        worst_mag = fmax(worst_mag, fabs(F - mu * N) / (mu * N));
-        worst_T = fmax(worst_T, fabs(q[2]) / (mu * N * s->R));
+        worst_mag = sf_max(worst_mag, fabs(F - mu * N) / (mu * N));
+        worst_T = sf_max(worst_T, fabs(q[2]) / (mu * N * s->R));
         /* opposing the slip: F . u_hat = -|F| */
-        worst_dir = fmax(worst_dir, fabs((q[0] * u + q[1] * v) / U + F) / (mu * N));
+        worst_dir = sf_max(worst_dir, fabs((q[0] * u + q[1] * v) / U + F) / (mu * N));
         ang[k] = a;
         mag[k] = F / (mu * N);
     }
@@ -194,8 +194,8 @@ static int chk_closed_form_oracle(const sf_case *c, sf_result *r)
         e[k] = s->sweep.v[k];
         sf_contensou(e[k], &f1[k], &t1[k]);
         cf_oracle(e[k], &f2[k], &t2[k]);
-        double d = fmax(fabs(f1[k] - f2[k]), fabs(t1[k] - t2[k]));
-        if (isnan(d) || d > worst) worst = d;
+        double d = sf_max(fabs(f1[k] - f2[k]), fabs(t1[k] - t2[k]));
+        worst = sf_max(worst, d);
         sf_note(r, "eps = %-8g f: closed %.15f adaptive %.15f | t: closed %.15f adaptive %.15f", e[k],
                 f1[k], f2[k], t1[k], t2[k]);
     }
@@ -240,10 +240,11 @@ static int chk_contensou_sweep(const sf_case *c, sf_result *r)
         fq[k] = hypot(q[0], q[1]) / (mu * N);
         tq[k] = fabs(q[2]) / (mu * N * s->R);
         sf_contensou(e[k], &fe[k], &te[k]);
-        double d = fmax(fabs(fq[k] - fe[k]), fabs(tq[k] - te[k]));
-        if (d > worst) { worst = d; worst_e = e[k]; }
+        double d = sf_max(fabs(fq[k] - fe[k]), fabs(tq[k] - te[k]));
+        if (!(d <= worst) && !isnan(worst)) worst_e = e[k];   /* a NaN is the worst */
+        worst = sf_max(worst, d);
         if (U > 0)  /* force antiparallel to u, torque opposing w */
-            worst_dir = fmax(worst_dir, fabs((q[0] * ux + q[1] * uy) / U + hypot(q[0], q[1])) / (mu * N));
+            worst_dir = sf_max(worst_dir, fabs((q[0] * ux + q[1] * uy) / U + hypot(q[0], q[1])) / (mu * N));
         if (q[2] * w > 0)
             worst_dir = INFINITY;
     }
@@ -286,7 +287,7 @@ static int chk_convergence(const sf_case *c, sf_result *r)
             double fe, te, q[3];
             sf_contensou(eps2[a], &fe, &te);
             sf_contact_wrench(ct, 0, 0, eps2[a] * w * s->R * cos(0.3), eps2[a] * w * s->R * sin(0.3), w, 1.0, q);
-            err[a][k] = fmax(fabs(hypot(q[0], q[1]) / (mu * N) - fe), fabs(fabs(q[2]) / (mu * N * s->R) - te));
+            err[a][k] = sf_max(fabs(hypot(q[0], q[1]) / (mu * N) - fe), fabs(fabs(q[2]) / (mu * N * s->R) - te));
         }
         sf_contact_free(ct);
         sf_cof_free(cof);
@@ -365,7 +366,7 @@ static int chk_central_symmetry(const sf_case *c, sf_result *r)
             sf_contact_wrench(ct, 0.01 * k, -0.005 * k, -u, -v, -w, 1.0, b);
             for (int i = 0; i < 3; i++) {
                 double d = fabs(a[i] + b[i]) / (i < 2 ? scale : scale * s->R);
-                if (isnan(d) || d > worst) worst = d;
+                worst = sf_max(worst, d);
             }
             tested++;
         }
@@ -393,7 +394,7 @@ static double var_integrand(double sd, void *p)
 {
     const var_par *q = p;
     double x = sd / (2 * q->R);
-    double dens = 4 * sd / (M_PI * q->R * q->R) * (acos(x) - x * sqrt(fmax(0, 1 - x * x)));
+    double dens = 4 * sd / (M_PI * q->R * q->R) * (acos(x) - x * sqrt(sf_max(0, 1 - x * x)));
     double rho = exp(-sd * sd / (q->l * q->l));
     if (q->lognormal) {
         double s2 = q->sigma_g * q->sigma_g;
@@ -407,12 +408,13 @@ static double var_integrand(double sd, void *p)
 static int chk_wrench_statistics(const sf_case *c, sf_result *r)
 {
     const sf_scene *s = &c->scene;
+    sf_scene gs = check_gen_scene(c);   /* the fields are drawn from the generator's scene */
     gsl_rng *rng = sf_case_rng(c);
     check_disc_field df = { 0 };
     size_t N = s->samples;
     double *F = check_alloc(N * sizeof *F), Nf = s->m * s->g;
     for (size_t k = 0; k < N; k++) {
-        sf_cof *cof = check_disc_cof(s, rng, &df);
+        sf_cof *cof = check_disc_cof(&gs, rng, &df);
         if (!cof) { gsl_rng_free(rng); free(F); return SF_EFAIL; }
         sf_contact_spec spec = { s->R, Nf, (sf_layout)s->layout, s->cells };
         sf_contact *ct;
@@ -435,6 +437,7 @@ static int chk_wrench_statistics(const sf_case *c, sf_result *r)
     gsl_integration_qags(&G, 0, 2 * s->R, 1e-14, 1e-10, 1000, ws, &Ig, &err);
     gsl_integration_workspace_free(ws);
     double mean_ex = s->mu_mean * Nf, var_ex = Nf * Nf * s->mu_std * s->mu_std * I;
+    sf_result_data(r, "|F| per realisation", N, F);
     double m = 0, m2 = 0, m4 = 0;
     for (size_t k = 0; k < N; k++) m += F[k];
     m /= (double)N;
@@ -446,7 +449,7 @@ static int chk_wrench_statistics(const sf_case *c, sf_result *r)
     double var = m2 / (double)(N - 1);
     m4 /= (double)N;
     double zm = (m - mean_ex) / sqrt(var / (double)N);
-    double zv = (var - var_ex) / sqrt(fmax(m4 - var * var, 1e-300) / (double)N);
+    double zv = (var - var_ex) / sqrt(sf_max(m4 - var * var, 1e-300) / (double)N);
     sf_check_pvalue(r, "mean |F| = mu_mean N (z test)", sf_z_pvalue(zm), s->alpha / 2, N);
     sf_check_pvalue(r, "var |F| = N^2 sigma^2 int rho_H p ds (z test, sample kurtosis)", sf_z_pvalue(zv), s->alpha / 2, N);
     sf_note(r, "Exact: mean %.6g N, std %.6g N (variance factor of the disc average %.5g with the distorted "
@@ -515,7 +518,8 @@ static int chk_interpolation(const sf_case *c, sf_result *r)
         return SF_EINVAL;
     sf_field *f;
     sf_field_spec spec;
-    sf_field_spec_default(&spec, m, m, s->dx, s->dx, s->l);
+    sf_scene gs = check_gen_scene(c);   /* the field is drawn from the generator's scene */
+    sf_field_spec_default(&spec, m, m, s->dx, s->dx, gs.l);
     if (sf_field_alloc(&spec, &f) > SF_ECAP)
         return SF_EFAIL;
     gsl_rng *rng = sf_case_rng(c);
@@ -524,7 +528,7 @@ static int chk_interpolation(const sf_case *c, sf_result *r)
     double *mean = check_alloc(K * sizeof *mean), *sd = check_alloc(K * sizeof *sd);
     double *per = check_alloc(N * K * sizeof *per);
     for (size_t q = 0; q < N; q++) {
-        sf_field_sample(f, rng, g);
+        check_field_sample(c, f, rng, g, m * m);
         for (size_t k = 0; k < K; k++) {
             size_t st = (size_t)s->sweep.v[k], mc = (m - 1) / st + 1;
             double *cg = check_alloc(mc * mc * sizeof *cg);
@@ -546,6 +550,7 @@ static int chk_interpolation(const sf_case *c, sf_result *r)
             free(cg);
         }
     }
+    sf_result_data(r, "mean-square interpolation error per field and spacing", N * K, per);
     double worstp = 1;
     for (size_t k = 0; k < K; k++) {
         size_t st = (size_t)s->sweep.v[k];
@@ -554,7 +559,7 @@ static int chk_interpolation(const sf_case *c, sf_result *r)
         mean[k] = gsl_stats_mean(per + k, K, N);
         sd[k] = gsl_stats_sd(per + k, K, N);
         double z = (mean[k] - ex[k]) / (sd[k] / sqrt((double)N));
-        worstp = fmin(worstp, sf_z_pvalue(z));
+        worstp = sf_min(worstp, sf_z_pvalue(z));
     }
     /* observed order of the exact RMS error over the sweep */
     double *lx = check_alloc(K * sizeof *lx), *ly = check_alloc(K * sizeof *ly), c0, c1, c00, c01, c11, ss;
@@ -564,7 +569,7 @@ static int chk_interpolation(const sf_case *c, sf_result *r)
     }
     gsl_fit_linear(lx, 1, ly, 1, K, &c0, &c1, &c00, &c01, &c11, &ss);
     sf_check_pvalue(r, "sample MSE = exact MSE from the covariance, worst z test over the spacings (Bonferroni)",
-                    fmin(1, worstp * (double)K), s->alpha, N);
+                    sf_min(1, worstp * (double)K), s->alpha, N);
     sf_check_abs(r, "observed order of the RMS interpolation error in H (exact: 2)", c1, 2.0, s->tolerance);
     sf_note(r, "| H [m] | H/l | exact RMS error | sample RMS error | interpolant variance at cell centre |\n|---|---|---|---|---|");
     for (size_t k = 0; k < K; k++)
@@ -588,7 +593,7 @@ static int chk_interpolation(const sf_case *c, sf_result *r)
         re[k] = sqrt(ex[k]);
         rs[k] = sqrt(mean[k]);
         double half = 3.29 * sd[k] / sqrt((double)N);   /* 99.9% band */
-        lo[k] = sqrt(fmax(ex[k] - half, 1e-300));
+        lo[k] = sqrt(sf_max(ex[k] - half, 1e-300));
         hi[k] = sqrt(ex[k] + half);
     }
     sf_plot_band(p, "99.9% band of the sample mean", K, hx, lo, hi);

@@ -4,6 +4,7 @@
  * and exact invariants (energy balance, symmetry). */
 #include "checks.h"
 #include "common.h"
+#include "../stats.h"
 #include "cycle1d.h"
 #include "cof.h"
 #include "oscillator.h"
@@ -22,10 +23,9 @@ static double transition_error(const sf_osc_result *res, const sf_cycle1d *cf, s
     *worst = 0;
     for (size_t i = 0; i < res->ntrans; i++) {
         double d = fabs(res->trans_t[i] - sf_cycle1d_transition(cf, (unsigned)i));
-        if (!(d <= e)) {
-            e = d;
-            *worst = i;
-        }
+        if (!(d <= e) && !isnan(e))
+            *worst = i;   /* the first NaN is the worst */
+        e = sf_max(e, d); /* not `if (!(d <= e)) e = d`: a later finite d would replace a NaN */
     }
     return e;
 }
@@ -88,7 +88,7 @@ static int chk_cycle(const sf_case *c, sf_result *r)
     double *idx = check_alloc((res.ntrans + 1) * sizeof *idx), *err = check_alloc((res.ntrans + 1) * sizeof *err);
     for (size_t i = 0; i < res.ntrans; i++) {
         idx[i] = (double)i;
-        err[i] = fmax(fabs(res.trans_t[i] - sf_cycle1d_transition(&cf, (unsigned)i)), 1e-16);
+        err[i] = sf_max(fabs(res.trans_t[i] - sf_cycle1d_transition(&cf, (unsigned)i)), 1e-16);
     }
     sf_plot *p2 = sf_result_plot(r, "transition_error", "Transition times vs the closed form", "transition index [-]",
                                  "|t - t_exact| [s]");
@@ -131,7 +131,7 @@ static int chk_eps_order(const sf_case *c, sf_result *r)
         dp[k] = fabs(res.pv_x - ideal.pv_x);
         ds[k] = fabs(res.period - stick - ideal.t_slip);
         pp[k] = fabs(cf.pv_x - ideal.pv_x);
-        worst_pred = fmax(worst_pred, fmax(fabs((res.pv_x - ideal.pv_x) - (cf.pv_x - ideal.pv_x)) / pp[k],
+        worst_pred = sf_max(worst_pred, sf_max(fabs((res.pv_x - ideal.pv_x) - (cf.pv_x - ideal.pv_x)) / pp[k],
                                            fabs((res.period - stick - ideal.t_slip) - (cf.t_slip - ideal.t_slip)) /
                                                fabs(cf.t_slip - ideal.t_slip)));
         sf_note(r, "| %g | %.6e | %.6e | %.6e | %.6e |", e[k], res.pv_x - ideal.pv_x, cf.pv_x - ideal.pv_x,
@@ -226,14 +226,14 @@ static int chk_3dof_reduces(const sf_case *c, sf_result *r)
         return SF_EFAIL;
     double dtr = 0, dq = 0, dqx = 0;
     for (size_t i = 0; i < a.ntrans && i < b.ntrans; i++)
-        dtr = fmax(dtr, fabs(a.trans_t[i] - b.trans_t[i]));
+        dtr = sf_max(dtr, fabs(a.trans_t[i] - b.trans_t[i]));
     for (size_t i = 0; i < a.ntrans && i < q.ntrans; i++) {
-        dq = fmax(dq, fabs(a.trans_t[i] - q.trans_t[i]));
-        dqx = fmax(dqx, fabs(a.trans_x[i] - q.trans_x[i]));
+        dq = sf_max(dq, fabs(a.trans_t[i] - q.trans_t[i]));
+        dqx = sf_max(dqx, fabs(a.trans_x[i] - q.trans_x[i]));
     }
     sf_check_abs(r, "closed-form path: transitions (3-DOF vs 1-D count)", (double)b.ntrans, (double)a.ntrans, 0);
     sf_check_le(r, "closed-form path: max |t_3DOF - t_1D| over transitions [s]", dtr, 0);
-    sf_check_le(r, "closed-form path: max |y| [m] and |phi| [rad]", fmax(hb.y_absmax, hb.phi_absmax), 0);
+    sf_check_le(r, "closed-form path: max |y| [m] and |phi| [rad]", sf_max(hb.y_absmax, hb.phi_absmax), 0);
     sf_check_abs(r, "quadrature path: transitions (3-DOF vs 1-D count)", (double)q.ntrans, (double)a.ntrans, 0);
     sf_check_le(r, "quadrature path: max |t_3DOF - t_1D| over transitions [s]", dq, s0->tolerance);
     sf_check_le(r, "quadrature path: max |x_3DOF - x_1D| at the transitions [m]", dqx, s0->tolerance);
@@ -248,8 +248,8 @@ static int chk_3dof_reduces(const sf_case *c, sf_result *r)
     sf_plot_log(p, 0, 1);
     double *ay = check_alloc(hq.n * sizeof *ay), *ap = check_alloc(hq.n * sizeof *ap);
     for (size_t i = 0; i < hq.n; i++) {
-        ay[i] = fmax(fabs(hq.y[i]), 1e-20);
-        ap[i] = fmax(fabs(hq.phi[i]), 1e-20);
+        ay[i] = sf_max(fabs(hq.y[i]), 1e-20);
+        ap[i] = sf_max(fabs(hq.phi[i]), 1e-20);
     }
     sf_plot_series(p, "|y|, quadrature path", SF_STYLE_LINES, hq.n, hq.t, ay);
     sf_plot_series(p, "|phi|, quadrature path", SF_STYLE_LINES, hq.n, hq.t, ap);

@@ -5,6 +5,7 @@
  * the one-random-variable limit, and reproducibility. */
 #include "checks.h"
 #include "common.h"
+#include "../stats.h"
 #include "contact.h"
 #include "cycle1d.h"
 #include "cof.h"
@@ -113,8 +114,8 @@ static void jump_row(void *ctx, const sf_osc_row *row)
     jump_probe *j = ctx;
     double F = hypot(row->Fx, row->Fy);
     if (j->prev_stick && !row->stick) {   /* first slip row: at the release */
-        j->minF_after_break = fmin(j->minF_after_break, F);
-        j->maxF_after_break = fmax(j->maxF_after_break, F);
+        j->minF_after_break = sf_min(j->minF_after_break, F);
+        j->maxF_after_break = sf_max(j->maxF_after_break, F);
         j->breaks++;
         /* Eq. 14: relative velocity eps_lambda omega_n R [m/s] along
          * -(cos psi, sin psi), psi = atan2(F_sy, F_sx) of the stick wrench
@@ -127,10 +128,10 @@ static void jump_row(void *ctx, const sf_osc_row *row)
         double dir = atan2(fabs(u * fy - v * fx), -(u * fx + v * fy));
         if (row->t != j->prev_t || row->x != j->prev_x || row->y != j->prev_y)
             mag = dir = NAN;   /* the release must keep t and the position */
-        j->mag_err = check_nanmax(j->mag_err, mag);
-        j->dir_err = check_nanmax(j->dir_err, dir);
-        j->spin_abs = check_nanmax(j->spin_abs, fabs(row->w));
-        j->sin_psi_max = check_nanmax(j->sin_psi_max, fabs(fy) / hypot(fx, fy));
+        j->mag_err = sf_max(j->mag_err, mag);
+        j->dir_err = sf_max(j->dir_err, dir);
+        j->spin_abs = sf_max(j->spin_abs, fabs(row->w));
+        j->sin_psi_max = sf_max(j->sin_psi_max, fabs(fy) / hypot(fx, fy));
         if (j->njump == j->cap) {
             j->cap = j->cap ? 2 * j->cap : 64;
             double **a[] = { &j->jt, &j->jmag, &j->jdir };
@@ -238,8 +239,8 @@ static void eq912_row(void *ctx, const sf_osc_row *row)
     const sf_scene *s = e->s;
     double wn = sqrt(s->k / s->m), vr = wn * s->R;
     if (row->stick) {   /* Eq. 12: (vx, vy, w) = (v_b, 0, 0), exactly, in Eq. 9's units */
-        double d = check_nanmax(fabs(row->vx - s->v_b) / vr, check_nanmax(fabs(row->vy) / vr, fabs(row->w) / wn));
-        e->reset_dev = check_nanmax(e->reset_dev, d);
+        double d = sf_max(fabs(row->vx - s->v_b) / vr, sf_max(fabs(row->vy) / vr, fabs(row->w) / wn));
+        e->reset_dev = sf_max(e->reset_dev, d);
         e->stick_rows++;
     }
     if (e->have_prev && !e->prev.stick && row->stick && row->t == e->prev.t) {   /* slip -> stick at t_r */
@@ -248,8 +249,8 @@ static void eq912_row(void *ctx, const sf_osc_row *row)
         double lam = sqrt(xs * xs + ys * ys + ps * ps), err = fabs(lam / s->eps_lambda - 1), spin = fabs(ps) / lam;
         if (row->x != p->x || row->y != p->y)
             err = NAN;   /* Eq. 12 resets velocities only */
-        e->lam_err = check_nanmax(e->lam_err, err);
-        e->spin_max = check_nanmax(e->spin_max, spin);
+        e->lam_err = sf_max(e->lam_err, err);
+        e->spin_max = sf_max(e->spin_max, spin);
         e->pre_vy += p->vy != 0;
         e->pre_w += p->w != 0;
         if (e->n == e->cap) {
@@ -324,7 +325,7 @@ static int chk_long_run(const sf_case *c, sf_result *r)
     if (rc)
         return SF_EFAIL;
     double bound = 2 * (s->mu_mean + 4 * s->mu_std) * s->m * s->g / s->k;
-    sf_check_le(r, "max |x| [m] (bound 2 mu_hi m g / k)", fmax(fabs(res.x_min), fabs(res.x_max)), bound);
+    sf_check_le(r, "max |x| [m] (bound 2 mu_hi m g / k)", sf_max(fabs(res.x_min), fabs(res.x_max)), bound);
     sf_check_le(r, "max |y| [m] (same bound)", res.y_absmax, bound);
     sf_check_le(r, "energy residual / energy turned over", fabs(res.energy_residual) /
                 (fabs(res.friction_work) + fabs(res.energy_change)), s->tolerance);
@@ -362,10 +363,10 @@ static int chk_baseline(const sf_case *c, sf_result *r)
     double vb_err = 0;
     for (size_t i = 0; i < hs.n; i++)
         if (hs.stick[i])
-            vb_err = fmax(vb_err, fabs(hs.vx[i] - s->v_b));
+            vb_err = sf_max(vb_err, fabs(hs.vx[i] - s->v_b));
     for (size_t i = 0; i < hd.n; i++)
         if (hd.stick[i])
-            vb_err = fmax(vb_err, fabs(hd.vx[i] - s->v_b));
+            vb_err = sf_max(vb_err, fabs(hd.vx[i] - s->v_b));
     double sd_det = gsl_stats_sd(rd.cycle_pv_x, 1, rd.ncycles), sd_sto = gsl_stats_sd(rs.cycle_pv_x, 1, rs.ncycles);
     sf_check_le(r, "stick rows: max |vx - v_b| [m/s]", vb_err, 0);
     sf_check_le(r, "deterministic: std of per-cycle PV_x [m] (a limit cycle)", sd_det, s->tolerance);
@@ -430,8 +431,8 @@ static int chk_exact_section(const sf_case *c, sf_result *r)
             sf_contact_stick_margin(ct, xb, h.y[i - 1], fx, fy, 0, &m);
             if (sf_contact_stick_margin(ct, xb, h.y[i - 1], fx, fy, 1, &me))
                 me = NAN;
-            worst = isnan(m) ? NAN : fmin(worst, m);
-            on_section = check_nanmax(on_section, fabs(me));
+            worst = sf_min(worst, m);
+            on_section = sf_max(on_section, fabs(me));
             earlier += m > s0->tolerance;
             sum += m;
             n++;
@@ -589,8 +590,8 @@ static int chk_free_disc(const sf_case *c, sf_result *r)
         eps[k] = check_alloc(CAP * sizeof(double));
         double got;
         fin[k] = free_disc_run(o, &s, starts[k], stop, CAP, lam[k], eps[k], &n[k], &tend[k], &got);
-        worst = check_nanmax(worst, fabs(fin[k] - e0));
-        reached = check_nanmax(reached, got);
+        worst = sf_max(worst, fabs(fin[k] - e0));
+        reached = sf_max(reached, got);
     }
     sf_check_abs(r, "oracle eps_0 (own closed form, Brent) vs the published 0.653 (Farkas et al. 2003)", e0, 0.653, 5e-4);
     sf_check_le(r, "max over both starts of |eps at the stop - eps_0| (3-DOF slip RHS, uniform COF)", worst, s.tolerance);
@@ -643,9 +644,9 @@ static int chk_variable_limit(const sf_case *c, sf_result *r)
             gsl_rng_free(rng);
             return SF_EFAIL;
         }
-        double d = fmax(fmax(fabs(res.pv_x / cf.pv_x - 1), fabs(res.pv_F / cf.pv_F - 1)),
+        double d = sf_max(sf_max(fabs(res.pv_x / cf.pv_x - 1), fabs(res.pv_F / cf.pv_F - 1)),
                         fabs(res.stick_fraction / cf.stick_fraction - 1));
-        worst = fmax(worst, d);
+        worst = sf_max(worst, d);
         mu[k] = s.mu_mean;
         pv[k] = res.pv_F;
         pvc[k] = cf.pv_F;

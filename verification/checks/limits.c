@@ -95,7 +95,8 @@ static int chk_large_lr(const sf_case *c, sf_result *r)
         sf_note(r, " Strip field %zu x %zu at spacing %.4g m.", in->nx, in->ny, in->dx);
     sf_cof_plan_free(p);
     sf_sweep_point pt;
-    if (sf_sweep_run(s, s->samples, 0, NULL, 0, NULL, &pt, err, sizeof err)) {
+    sf_scene gs = check_gen_scene(c);   /* the realisations are drawn from the generator's scene */
+    if (sf_sweep_run(&gs, s->samples, 0, NULL, 0, NULL, &pt, err, sizeof err)) {
         sf_note(r, "**Sweep failed:** %s", err);
         return SF_EFAIL;
     }
@@ -117,7 +118,7 @@ static int chk_large_lr(const sf_case *c, sf_result *r)
         double D, pv = sf_ks_test(x, n, ratio_cdf, &m, &D);
         char t[160];
         snprintf(t, sizeof t, "KS: %s vs its exact distribution (D = %.4f), Bonferroni x3", names[q], D);
-        sf_check_pvalue(r, t, fmin(1, 3 * pv), s->alpha, n);
+        sf_check_pvalue(r, t, sf_min(1, 3 * pv), s->alpha, n);
         /* plot: empirical CDF vs exact */
         gsl_sort(x, 1, n);
         double *ecdf = check_alloc(n * sizeof *ecdf), *ex = check_alloc(n * sizeof *ex);
@@ -133,8 +134,8 @@ static int chk_large_lr(const sf_case *c, sf_result *r)
         double band = 1.36 / sqrt((double)n);   /* 95% KS band */
         double *lo = check_alloc(n * sizeof *lo), *hi = check_alloc(n * sizeof *hi);
         for (size_t i = 0; i < n; i++) {
-            lo[i] = fmax(ex[i] - band, 0);
-            hi[i] = fmin(ex[i] + band, 1);
+            lo[i] = sf_max(ex[i] - band, 0);
+            hi[i] = sf_min(ex[i] + band, 1);
         }
         sf_plot_band(pl, "95% KS band around the exact CDF", n, x, lo, hi);
         sf_plot_series(pl, "exact (lognormal mu_s through the closed-form cycle)", SF_STYLE_LINES, n, x, ex);

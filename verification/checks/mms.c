@@ -21,6 +21,7 @@
  * against q*(T) falls at the stepper's order until it meets the floor set
  * by the difference between the solver's wrench and this one. */
 #include "checks.h"
+#include "../stats.h"
 #include "common.h"
 #include "cof.h"
 #include "oscillator.h"
@@ -290,8 +291,8 @@ static int chk_mms_slip(const sf_case *c, sf_result *r)
     double mu_lo = INFINITY, mu_hi = -INFINITY;
     if (field)
         for (size_t i = 0; i < q.gm * q.gn; i++) {
-            mu_lo = fmin(mu_lo, q.grid[i]);
-            mu_hi = fmax(mu_hi, q.grid[i]);
+            mu_lo = sf_min(mu_lo, q.grid[i]);
+            mu_hi = sf_max(mu_hi, q.grid[i]);
         }
 
     /* ---- floors: the reference quadrature against its doubled self, and
@@ -322,13 +323,13 @@ static int chk_mms_slip(const sf_case *c, sf_result *r)
         traj_state(t, y);
         sf_osc_slip_rhs(o0, t, y, f, qs);
         tf[i] = t;
-        dself[i] = fmax(fmax(fabs(Q1[0] - Q2[0]), fabs(Q1[1] - Q2[1])) / fs, fabs(Q1[2] - Q2[2]) / ts);
-        dsol[i] = fmax(fmax(fabs(qs[0] - Q2[0]), fabs(qs[1] - Q2[1])) / fs, fabs(qs[2] - Q2[2]) / ts);
+        dself[i] = sf_max(sf_max(fabs(Q1[0] - Q2[0]), fabs(Q1[1] - Q2[1])) / fs, fabs(Q1[2] - Q2[2]) / ts);
+        dsol[i] = sf_max(sf_max(fabs(qs[0] - Q2[0]), fabs(qs[1] - Q2[1])) / fs, fabs(qs[2] - Q2[2]) / ts);
         selfd = isnan(selfd) || isnan(dself[i]) ? NAN : fmax(selfd, dself[i]);   /* NaN sticks: it fails the row */
         solvd = isnan(solvd) || isnan(dsol[i]) ? NAN : fmax(solvd, dsol[i]);
-        Fmag = fmax(Fmag, hypot(Q2[0], Q2[1]));
-        Tmag = fmax(Tmag, fabs(Q2[2]));
-        Fy_max = fmax(Fy_max, fabs(Q2[1]) / fs);
+        Fmag = sf_max(Fmag, hypot(Q2[0], Q2[1]));
+        Tmag = sf_max(Tmag, fabs(Q2[2]));
+        Fy_max = sf_max(Fy_max, fabs(Q2[1]) / fs);
         double u = hypot(y[SF_OSC_VX] - s->v_b, y[SF_OSC_VY]);
         double e = u / (fabs(y[SF_OSC_W]) * s->R);
         eps_min = isnan(eps_min) || isnan(e) ? NAN : fmin(eps_min, e);

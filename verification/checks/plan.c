@@ -13,6 +13,7 @@
  *    the scene's qoi_tol across l/R. */
 #include "checks.h"
 #include "common.h"
+#include "../stats.h"
 #include "cof.h"
 #include "montecarlo.h"
 #include "oscillator.h"
@@ -43,7 +44,7 @@ static double cof_spread(const sf_cof *cof, const sf_scene *s, const sf_osc_resu
     for (int j = 0; j <= 40; j++)
         for (int i = 0; i <= 400; i++) {
             double mu = sf_cof_eval(cof, x0 + (x1 - x0) * i / 400.0, -y1 + 2 * y1 * j / 40.0);
-            d = fmax(d, fabs(mu - mu0) / mu0);
+            d = sf_max(d, fabs(mu - mu0) / mu0);
         }
     return d;
 }
@@ -136,7 +137,7 @@ static int chk_shortcut_boundary(const sf_case *c, sf_result *r)
                 taken ? (s.mu_std == 0 ? "uniform (closed forms)" : "one variable") : "field", delta, dq[0], dq[1],
                 dq[2]);
         x[k] = s0->sweep.v[k];
-        dmax[k] = fmax(fmax(dq[0], dq[1]), fmax(dq[2], 1e-17));
+        dmax[k] = sf_max(sf_max(dq[0], dq[1]), sf_max(dq[2], 1e-17));
         dl[k] = 2 * delta + floor_;
         for (int q = 0; q < NQ; q++) {
             char t[160];
@@ -345,7 +346,7 @@ static int chk_qoi_tol(const sf_case *c, sf_result *r)
                             e = isnan(d) ? INFINITY : d;
                     }
                     e2 += e * e / (double)n;
-                    ew = fmax(ew, e);
+                    ew = sf_max(ew, e);
                 }
             }
             sf_cof_free(cof);

@@ -4,6 +4,7 @@
  * balance with the oracle's wrench along the solver's history, and Eq. 15
  * computed by both codes. */
 #include "checks.h"
+#include "../stats.h"
 #include "common.h"
 #include "oracle/ref3dof.h"
 #include "stats.h"
@@ -150,9 +151,9 @@ static int chk_ref_trajectory(const sf_case *c, sf_result *r)
         double eS = 0, eO = 0, d = 0;
         for (size_t i = 0; i < K; i++) {
             double a = Sf[NQ * i + q], b = Of[NQ * i + q];
-            eS = fmax(eS, fabs(a - Sc[NQ * i + q]));
-            eO = fmax(eO, fabs(b - Oc[NQ * i + q]));
-            d = fmax(d, isfinite(a) && isfinite(b) ? fabs(a - b) : INFINITY);
+            eS = sf_max(eS, fabs(a - Sc[NQ * i + q]));
+            eO = sf_max(eO, fabs(b - Oc[NQ * i + q]));
+            d = sf_max(d, isfinite(a) && isfinite(b) ? fabs(a - b) : INFINITY);
             if (q == 0) {
                 tt[i] = b;
                 gap[i] = fmax(fabs(a - b), 1e-16);
@@ -227,7 +228,7 @@ static int chk_ref_stats(const sf_case *c, sf_result *r)
             for (int q = 0; q < 3; q++) {
                 a[q][n] = va[q];
                 b[q][n] = vb[q];
-                worst = fmax(worst, fabs(va[q] / vb[q] - 1));
+                worst = sf_max(worst, fabs(va[q] / vb[q] - 1));
             }
             n++;
             sf_osc_result_free(&rs);
@@ -256,7 +257,7 @@ static int chk_ref_stats(const sf_case *c, sf_result *r)
             double D = NAN, pv = fin ? sf_ks2_test(a[q], n, b[q], n, &D) : 0;   /* KS on NaN would not end */
             snprintf(name, sizeof name, "l/R = %g: two-sample KS on %s, solver vs oracle (D = %.3g)", s.l / s.R, qn[q], D);
             sf_check_pvalue(r, name, pv, s0->alpha, n);
-            pmin = fmin(pmin, pv);
+            pmin = sf_min(pmin, pv);
         }
     }
     sf_note(r, "Smallest p-value %.3g (alpha %g per test).", pmin, s0->alpha);

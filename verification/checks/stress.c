@@ -3,6 +3,7 @@
  * decision, or a clear refusal with its reason) and checks exactly that. */
 #include "checks.h"
 #include "common.h"
+#include "../stats.h"
 #include "contact.h"
 #include "cof.h"
 #include "field.h"
@@ -66,7 +67,7 @@ static int chk_cof_plan_range(const sf_case *c, sf_result *r)
                     double v = sf_cof_eval(cof, xb, e * 0.5 * s.R);
                     if (!(v > 0) || !isfinite(v))
                         bad++;
-                    mn = fmin(mn, v);
+                    mn = sf_min(mn, v);
                 }
             }
             bad += sf_cof_outside(cof) != 0;
@@ -122,13 +123,13 @@ static int chk_near_singular(const sf_case *c, sf_result *r)
             for (size_t i = 0; i < n; i++) {
                 if (!isfinite(g[i]))
                     bad++;
-                mx = fmax(mx, fabs(g[i]));
+                mx = sf_max(mx, fabs(g[i]));
             }
         }
         if ((rc == SF_ECAP) != in->truncated || !isfinite(in->cov_error))
             bad++;
         if (!in->truncated)
-            worst_err_untruncated = fmax(worst_err_untruncated, in->cov_error);
+            worst_err_untruncated = sf_max(worst_err_untruncated, in->cov_error);
         sf_note(r, "| %g | %zu x %zu | %s | %zu | %.3e | %.3g |", s0->sweep.v[k], in->px, in->py,
                 in->truncated ? "yes" : "no", in->n_clamped, in->cov_error, mx);
         bad += mx > 8;   /* |N(0,1)| > 8 has probability 1e-15 per value */
@@ -224,11 +225,11 @@ static int chk_run(const sf_case *c, sf_result *r)
         int rc = check_osc_run(&s, rng, NULL, 0, &res, NULL, NULL, r);
         gsl_rng_free(rng);
         double bound = 2 * (s.mu_mean + 4 * s.mu_std) * s.m * s.g / s.k;
-        double e = fabs(res.energy_residual) / fmax(fabs(res.friction_work) + fabs(res.energy_change), 1e-300);
+        double e = fabs(res.energy_residual) / sf_max(fabs(res.friction_work) + fabs(res.energy_change), 1e-300);
         int ok = rc == SF_SUCCESS && isfinite(res.x_min) && isfinite(res.x_max) &&
-                 fmax(fabs(res.x_min), fabs(res.x_max)) <= bound && res.y_absmax <= bound && e <= s0->tolerance;
+                 sf_max(fabs(res.x_min), fabs(res.x_max)) <= bound && res.y_absmax <= bound && e <= s0->tolerance;
         bad += !ok;
-        worst_e = fmax(worst_e, rc ? INFINITY : e);
+        worst_e = sf_max(worst_e, rc ? INFINITY : e);
         sf_note(r, "| %g | %s | %zu | %zu | %.4g | [%.4g, %.4g] | %.3g | %.2e | %lu |",
                 *s0->sweep_param ? s0->sweep.v[k] : 0.0, rc ? sf_strerror(rc) : (ok ? "ok" : "**out of bounds**"),
                 res.ntrans, res.ncycles, res.stick_fraction, res.x_min, res.x_max, res.y_absmax, e, res.steps);
