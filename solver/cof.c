@@ -83,6 +83,21 @@ int sf_cof_covers(const sf_cof *c, double xb, double yb, double r)
            yb + r <= c->y0 + c->dy * (double)(c->n - 1);
 }
 
+int sf_cof_grid_view(const sf_cof *c, size_t *m, size_t *n, double *x0, double *y0, double *dx, double *dy,
+                     const double **mu)
+{
+    if (!c || c->kind != SF_COF_FIELD)
+        return SF_EINVAL;
+    if (m) *m = c->m;
+    if (n) *n = c->n;
+    if (x0) *x0 = c->x0;
+    if (y0) *y0 = c->y0;
+    if (dx) *dx = c->dx;
+    if (dy) *dy = c->dy;
+    if (mu) *mu = c->grid;
+    return SF_SUCCESS;
+}
+
 /* Cell index and local coordinate along one axis, clamped to the grid. */
 static size_t locate(double x, double x0, double h, size_t n, double *t, int *clamped)
 {

@@ -41,6 +41,13 @@ unsigned long sf_cof_outside(const sf_cof *c);
  * grid (always, for a uniform COF). */
 int sf_cof_covers(const sf_cof *c, double xb, double yb, double r);
 
+/* Read-only view of a gridded COF (verification reads the drawn strip
+ * through it): m x n nodes at (x0 + i dx, y0 + j dy), values
+ * (*mu)[i + m*j], owned by c and valid while c lives.  SF_EINVAL (outputs
+ * untouched) for a uniform or one-variable COF.  Any output may be NULL. */
+int sf_cof_grid_view(const sf_cof *c, size_t *m, size_t *n, double *x0, double *y0, double *dx, double *dy,
+                     const double **mu);
+
 /* ---- The COF of a run, planned once per scene, drawn per realisation.
  *
  * The plan decides what a scene needs (one place): cof = uniform draws
