@@ -15,5 +15,6 @@ extern const sf_check_def sf_checks_limits[];
 extern const sf_check_def sf_checks_validation[];
 extern const sf_check_def sf_checks_plan[];
 extern const sf_check_def sf_checks_selftest[];
+extern const sf_check_def sf_checks_cofstrip[];
 
 #endif
