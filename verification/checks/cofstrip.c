@@ -124,11 +124,14 @@ static int chk_cof_strip(const sf_case *c, sf_result *r)
         return SF_EFAIL;
     }
 
-    /* Interpolation clusters: npair anchor points uniform in a disc of
-     * radius rc = min(R, 3l/4) at the patch centre (under the disc: at
-     * l/R = 10 the whole disc), each with a partner at distance U(0.05, 1) h
-     * in a random direction: the close pairs are where bilinear weights
-     * show (their contrast is a weighted node difference). */
+    /* Interpolation clusters: 4 pairs of points in a disc of radius
+     * rc = min(R, 3l/4) at the patch centre (under the disc: at l/R = 10
+     * the whole disc).  Close pairs are where the bilinear weights show:
+     * two pairs at distance U(0.05, 1) h in a random direction (their
+     * contrast is the interpolant's slope), two astride a cell edge (along
+     * y and along x) at distance U(0.01, 0.1) h, where the exact contrast
+     * variance is tiny because the interpolant is continuous: a wrong
+     * weight breaks continuity and the whitened statistic sees it. */
     const size_t npair = 4, q = 2 * npair;
     const double rc = fmin(s->R, 0.75 * l);
 
@@ -201,12 +204,26 @@ static int chk_cof_strip(const sf_case *c, sf_result *r)
                     }
                     for (size_t t = 0; t < npair; t++) {
                         double rad = rc * sqrt(gsl_rng_uniform(geo)), th = 2 * M_PI * gsl_rng_uniform(geo);
-                        double dl = h * (0.05 + 0.95 * gsl_rng_uniform(geo)), ph = 2 * M_PI * gsl_rng_uniform(geo);
-                        px[2 * t] = xc + rad * cos(th);
-                        py[2 * t] = yc + rad * sin(th);
-                        px[2 * t + 1] = px[2 * t] + dl * cos(ph);
-                        py[2 * t + 1] = py[2 * t] + dl * sin(ph);
-                        delta[t] = dl / h;
+                        double ax = xc + rad * cos(th), ay = yc + rad * sin(th);
+                        if (t < 2) {   /* inside a cell or two: the slope */
+                            double dl = h * (0.05 + 0.95 * gsl_rng_uniform(geo)), ph = 2 * M_PI * gsl_rng_uniform(geo);
+                            px[2 * t] = ax;
+                            py[2 * t] = ay;
+                            px[2 * t + 1] = ax + dl * cos(ph);
+                            py[2 * t + 1] = ay + dl * sin(ph);
+                            delta[t] = dl / h;
+                        } else {       /* astride a cell edge (t = 2: y = const, 3: x = const): continuity */
+                            double eps = h * (0.005 + 0.045 * gsl_rng_uniform(geo));
+                            if (t == 2)
+                                ay = doc.y0 + round((ay - doc.y0) / h) * h;
+                            else
+                                ax = doc.x0 + round((ax - doc.x0) / h) * h;
+                            px[2 * t] = ax - (t == 3 ? eps : 0);
+                            py[2 * t] = ay - (t == 2 ? eps : 0);
+                            px[2 * t + 1] = ax + (t == 3 ? eps : 0);
+                            py[2 * t + 1] = ay + (t == 2 ? eps : 0);
+                            delta[t] = 2 * eps / h;
+                        }
                     }
                     /* exact covariance of the interpolants: a finite sum of
                      * node covariances (Eq. 2 through the Nataf map) with the
