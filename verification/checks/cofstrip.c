@@ -143,7 +143,7 @@ static int chk_cof_strip(const sf_case *c, sf_result *r)
     gsl_vector *z = gsl_vector_alloc(p), *zq = gsl_vector_alloc(q);
     double *ks = check_alloc(N * sizeof *ks), *gv = check_alloc(p * sizeof *gv);
     double acc[4] = { 0 }, acc2[4] = { 0 };
-    double sm = 0, sm2 = 0, sv = 0, sv2 = 0, sQ = 0, sQ2 = 0, id_err = 0;
+    double sm = 0, sm2 = 0, sv = 0, sv2 = 0, sQ = 0, sQ2 = 0, sR = 0, sR2 = 0, id_err = 0;
     double bin_s[NBIN] = { 0 }, bin_s2[NBIN] = { 0 };
     size_t bin_n[NBIN] = { 0 }, bad = 0, geom_bad = 0, rejected = 0, k = 0;
     double px[16], py[16], delta[8];
@@ -289,14 +289,18 @@ static int chk_cof_strip(const sf_case *c, sf_result *r)
                     gsl_blas_ddot(zq, zq, &Q);
                     sQ += Q;
                     sQ2 += Q * Q;
+                    double rp = 0;
                     for (size_t t = 0; t < npair; t++) {
                         double D = yv[2 * t + 1] - yv[2 * t], ratio = D * D / vpair[t];
+                        rp += ratio / (double)npair;
                         size_t bi = (size_t)(delta[t] * NBIN);
                         if (bi >= NBIN) bi = NBIN - 1;
                         bin_s[bi] += ratio;
                         bin_s2[bi] += ratio * ratio;
                         bin_n[bi]++;
                     }
+                    sR += rp;
+                    sR2 += rp * rp;
                     break;
                 }
             }
@@ -317,8 +321,8 @@ static int chk_cof_strip(const sf_case *c, sf_result *r)
     sf_check_le(r, t, (double)bad, 0);
     sf_check_le(r, "max |sf_cof_eval - bilinear formula on the view's nodes| [COF units]", id_err, s->tolerance);
 
-    /* statistics: five tests share alpha (Bonferroni) */
-    double al = s->alpha / 5, stat, trp, zm, zv, zq_, D;
+    /* statistics: six tests share alpha (Bonferroni) */
+    double al = s->alpha / 6, stat, trp, zm, zv, zq_, zr, D;
     gsl_matrix_scale(S, 1.0 / (double)N);
     double p_lrt = check_lrt_identity(S, N, &stat, &trp);
     snprintf(t, sizeof t, "LRT: Gaussianised %zu x %zu node patch (stride l/2) has Eq. 2 covariance, chi2(%zu)", a, b,
@@ -335,6 +339,13 @@ static int chk_cof_strip(const sf_case *c, sf_result *r)
     double p_q = clt_pvalue(sQ, sQ2, N, (double)q, &zq_);
     snprintf(t, sizeof t, "interpolated COF at %zu off-node points: E[y^T Sigma_interp^-1 y] = %zu (z test)", q, q);
     sf_check_pvalue(r, t, p_q, al, N);
+    /* the same covariance seen pair by pair: E[D^2] = Var_exact(D) exactly
+     * (E[D] = 0: the weights sum to 1), and a contrast's ratio is not
+     * amplified by the other points as the whitened form's can be, so its
+     * mean stays light-tailed under a wrong weight */
+    double p_r = clt_pvalue(sR, sR2, N, 1.0, &zr);
+    snprintf(t, sizeof t, "interpolated COF: %zu close pairs per patch, mean D^2 / Var_exact(D) = 1 (z test)", npair);
+    sf_check_pvalue(r, t, p_r, al, N);
 
     sf_note(r, "Plan: strip %zu x %zu nodes, spacing %.6g m (l/%.4g), origin (%.6g, %.6g) m. %zu draws from the "
                "case's seed; %zu patches per draw (%zu x %zu nodes at stride %zu, %zu nodes = %.3g l apart), "
@@ -342,9 +353,10 @@ static int chk_cof_strip(const sf_case *c, sf_result *r)
             vm, vn, in->dx, l / in->dx, in->x0, in->y0, draws, per, a, b, st, gap, (double)gap * h / l, N);
     sf_note(r, "LRT statistic %.1f on %zu dof (tr S / p = %.4f). Mean COF z = %.2f; mean square deviation "
                "z = %.2f (observed %.5g, target %.5g). KS D = %.4f. Interpolation: mean quadratic form %.4f "
-               "(expected %zu), z = %.2f; %zu point sets rejected on geometry alone. Largest |eval - bilinear| "
-               "%.3g.\n",
-            stat, p * (p + 1) / 2, trp, zm, zv, sv / (double)N, var_h, D, sQ / (double)N, q, zq_, rejected, id_err);
+               "(expected %zu), z = %.2f; close-pair contrast variance ratio %.4f (expected 1), z = %.2f; %zu point "
+               "sets rejected on geometry alone. Largest |eval - bilinear| %.3g.\n",
+            stat, p * (p + 1) / 2, trp, zm, zv, sv / (double)N, var_h, D, sQ / (double)N, q, zq_, sR / (double)N, zr,
+            rejected, id_err);
 
     /* plot 1: Gaussianised correlation along x vs Eq. 2 and two moderate alternatives */
     double x[4], em[4], lo[4], hi[4], xf[65], e0[65], e1[65], e2[65];
