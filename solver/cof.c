@@ -173,13 +173,13 @@ int sf_cof_grid_view(const sf_cof *c, size_t *m, size_t *n, double *x0, double *
 {
     if (!c || c->kind != SF_COF_FIELD)
         return SF_EINVAL;
-    *m = c->m;
-    *n = c->n;
-    *x0 = c->x0;
-    *y0 = c->y0;
-    *dx = c->dx;
-    *dy = c->dy;
-    *mu = c->grid;
+    if (m) *m = c->m;
+    if (n) *n = c->n;
+    if (x0) *x0 = c->x0;
+    if (y0) *y0 = c->y0;
+    if (dx) *dx = c->dx;
+    if (dy) *dy = c->dy;
+    if (mu) *mu = c->grid;
     return SF_SUCCESS;
 }
 

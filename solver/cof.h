@@ -40,7 +40,7 @@ unsigned long sf_cof_outside(const sf_cof *c);
 /* Read-only view of a gridded COF's values (the check of cases/mms does
  * its own bilinear look-up from them): mu_s[i + m*j] at (x0 + i dx,
  * y0 + j dy), valid while c lives.  SF_EINVAL (outputs untouched) for a
- * COF that is not a grid. */
+ * COF that is not a grid.  Any output may be NULL. */
 int sf_cof_grid_view(const sf_cof *c, size_t *m, size_t *n, double *x0, double *y0, double *dx, double *dy,
                      const double **mu);
 

@@ -35,6 +35,28 @@ static void cof_bilinear(void **state)
     assert_close(sf_cof_eval(c, 1.37, -100), sf_cof_eval(c, 1.37, -2.0), 1e-15);
     (void)sf_cof_eval(c, NAN, 0);
     assert_int_equal(sf_cof_outside(c), 3);
+    /* the read-only view gives back the grid as allocated (values copied) */
+    size_t vm = 0, vn = 0;
+    double vx0 = 0, vy0 = 0, vdx = 0, vdy = 0;
+    const double *mu = NULL;
+    assert_int_equal(sf_cof_grid_view(c, &vm, &vn, &vx0, &vy0, &vdx, &vdy, &mu), SF_SUCCESS);
+    assert_int_equal(vm, m);
+    assert_int_equal(vn, n);
+    assert_close(vx0, 1.0, 0);
+    assert_close(vy0, -2.0, 0);
+    assert_close(vdx, 0.5, 0);
+    assert_close(vdy, 0.25, 0);
+    assert_non_null(mu);
+    assert_true(mu != g);
+    for (size_t k = 0; k < m * n; k++)
+        assert_close(mu[k], g[k], 0);
+    assert_int_equal(sf_cof_grid_view(c, NULL, NULL, NULL, NULL, NULL, NULL, NULL), SF_SUCCESS);
+    sf_cof_free(c);
+    /* no grid behind a uniform COF */
+    assert_int_equal(sf_cof_alloc_uniform(0.5, &c), SF_SUCCESS);
+    vm = 7;
+    assert_int_equal(sf_cof_grid_view(c, &vm, &vn, &vx0, &vy0, &vdx, &vdy, &mu), SF_EINVAL);
+    assert_int_equal(vm, 7);
     sf_cof_free(c);
 }
 

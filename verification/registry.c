@@ -16,6 +16,7 @@ static const sf_check_def *const families[] = {
     sf_checks_validation,
     sf_checks_plan,
     sf_checks_mms,
+    sf_checks_cofstrip,
     sf_checks_selftest,
     sf_checks_ref3dof,
 };

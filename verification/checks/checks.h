@@ -18,5 +18,6 @@ extern const sf_check_def sf_checks_plan[];
 extern const sf_check_def sf_checks_mms[];
 extern const sf_check_def sf_checks_selftest[];
 extern const sf_check_def sf_checks_ref3dof[];
+extern const sf_check_def sf_checks_cofstrip[];
 
 #endif

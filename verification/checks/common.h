@@ -31,6 +31,24 @@ sf_scene check_gen_scene(const sf_case *c);
 int check_field_sample(const sf_case *c, sf_field *f, gsl_rng *rng, double *g, size_t n);
 int check_field_sample_pair(const sf_case *c, sf_field *f, gsl_rng *rng, double *re, double *im, size_t n);
 
+/* The oracle's Nataf map (DESIGN.md sec. 3), written from the target
+ * moments independently of solver/lognormal.c: ln H ~ N(mu, sigma^2) with
+ * E[H] = mean, sd[H] = std. */
+typedef struct { double mu, sigma; } ref_ln_par;
+ref_ln_par ref_lognormal_par(double mean, double std);
+/* Oracle distortion: corr of exp(s G1), exp(s G2) with corr(G1, G2) = rho
+ * is (e^{s^2 rho} - 1)/(e^{s^2} - 1), from the bivariate normal moment
+ * generating function. */
+double ref_rho_h(double sigma, double rho);
+
+/* Likelihood-ratio (Wishart) test that N whitened vectors z of length p
+ * have covariance I (known mean 0): S = (1/N) sum z z^T (lower triangle
+ * read), statistic Bartlett * N (tr S - ln det S - p) ~ chi2(p(p+1)/2).
+ * Returns the p-value (0 when S is not positive definite); *stat and
+ * *trace (tr S / p) when non-NULL. */
+#include <gsl/gsl_matrix.h>
+double check_lrt_identity(const gsl_matrix *S, size_t N, double *stat, double *trace);
+
 /* Build the Gaussian field plan a case's (generator) scene asks for; note the
  * embedding facts in the findings.  Returns SF_SUCCESS or SF_ECAP (plan
  * usable) or an error (plan NULL). */

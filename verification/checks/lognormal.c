@@ -16,31 +16,10 @@
 #include <gsl/gsl_math.h>
 #include <gsl/gsl_randist.h>
 
-typedef struct { double mu, sigma; } ln_par;
-
-/* Oracle: ln H ~ N(mu, sigma^2) with E[H] = mean, sd[H] = std. */
-static ln_par oracle_par(double mean, double std)
-{
-    double cv = std / mean;
-    ln_par p;
-    p.sigma = sqrt(log(1.0 + cv * cv));
-    p.mu = log(mean) - 0.5 * p.sigma * p.sigma;
-    return p;
-}
-
 static double oracle_cdf(double h, void *params)
 {
-    const ln_par *p = params;
+    const ref_ln_par *p = params;
     return h <= 0 ? 0.0 : gsl_cdf_gaussian_P(log(h) - p->mu, p->sigma);
-}
-
-/* Oracle distortion: corr of exp(s G1), exp(s G2) with corr(G1, G2) = rho
- * is (e^{s^2 rho} - 1)/(e^{s^2} - 1); written from the bivariate normal
- * moment generating function. */
-static double oracle_rho_h(double sigma, double rho)
-{
-    double s2 = sigma * sigma;
-    return (exp(s2 * rho) - 1.0) / (exp(s2) - 1.0);
 }
 
 /* Build the case's lognormal field.  A truncated embedding is an error
@@ -89,7 +68,7 @@ static int chk_marginal_ks(const sf_case *c, sf_result *r)
         for (size_t q = 0; q < np; q++)
             v[k * np + q] = h[idx[q]];
     }
-    ln_par par = oracle_par(s->mu_mean, s->mu_std);
+    ref_ln_par par = ref_lognormal_par(s->mu_mean, s->mu_std);
     double D;
     sf_result_data(r, "COF samples (KS)", N, v);   /* only a subsample is plotted */
     double pval = sf_ks_test(v, N, oracle_cdf, &par, &D);
@@ -247,7 +226,7 @@ static int correlation_check(const sf_case *c, sf_result *r, int target)
             a2[d] += v * v;
         }
     }
-    ln_par par = oracle_par(s->mu_mean, s->mu_std);
+    ref_ln_par par = ref_lognormal_par(s->mu_mean, s->mu_std);
     double pmin = 1, worst = 0, maxdist = 0, gap_target = 0;
     double *x = check_alloc((H + 1) * sizeof *x), *em = check_alloc((H + 1) * sizeof *em);
     double *ex = check_alloc((H + 1) * sizeof *ex), *rg = check_alloc((H + 1) * sizeof *rg);
@@ -257,7 +236,7 @@ static int correlation_check(const sf_case *c, sf_result *r, int target)
         x[d] = (double)d * s->dx;
         double rg_ = ref_sq_exp(x[d], 0, s->l);
         rg[d] = rg_;
-        ex[d] = oracle_rho_h(par.sigma, cprod[d]);
+        ex[d] = ref_rho_h(par.sigma, cprod[d]);
         if (target) gap_target = sf_max(gap_target, fabs(ex[d] - rg_));
         em[d] = a1[d] / (double)N;
         double se = sqrt((a2[d] / (double)N - em[d] * em[d]) / ((double)N - 1));
@@ -285,7 +264,7 @@ static int correlation_check(const sf_case *c, sf_result *r, int target)
         double s2 = par.sigma * par.sigma, raw = 0;
         double lip = s2 * exp(s2 * (1 + gi->cov_error)) / expm1(s2);
         for (int i = 0; i <= 200; i++)
-            raw = sf_max(raw, i / 200.0 - oracle_rho_h(par.sigma, i / 200.0));
+            raw = sf_max(raw, i / 200.0 - ref_rho_h(par.sigma, i / 200.0));
         sf_check_le(r, "residual |rho_H - Eq. 2| / uncorrected Nataf distortion", gap_target / raw, s->tolerance);
         sf_check_le(r, "residual |rho_H - Eq. 2| vs Lipschitz bound from the reported clamping error",
                     gap_target, lip * gi->cov_error * (1 + 1e-9) + 1e-14);
@@ -348,7 +327,7 @@ static double cquad(gsl_function *F, gsl_integration_cquad_workspace *ws)
 
 static double numeric_rho_h(double mean, double std, double rho, gsl_integration_cquad_workspace *ws)
 {
-    ln_par par = oracle_par(mean, std);
+    ref_ln_par par = ref_lognormal_par(mean, std);
     pair_par q = { par.mu, par.sigma, rho };
     gsl_function F = { pair_integrand, &q };
     return (cquad(&F, ws) - mean * mean) / (std * std);
