@@ -161,7 +161,7 @@ int sf_cof_follow(const sf_cof *cc, double xlo, double xhi)
         return SF_EINVAL;
     long hi = (long)ceil(xhi / h) + (long)c->slack_r, lo = hi - (long)(c->m - 1);
     if ((double)lo * h > xlo)
-        return SF_ECAP;   /* wider than the window */
+        return SF_ETOOBIG;   /* wider than the window */
     return window_slide(c, lo);
 }
 
@@ -284,7 +284,7 @@ int sf_cof_plan_alloc(const sf_scene *s, sf_cof_plan **out, char *err, size_t er
             double mx = ceil((3 * s->R + 3 * M) / h) + 1;
             if (!(mx * ny <= (double)SF_COF_MAX_POINTS)) {
                 free(p);
-                return plan_err(err, errlen, SF_ECAP,
+                return plan_err(err, errlen, SF_ETOOBIG,
                                 "the tiled window needs %.3g grid points (spacing l/8 = %.3g m): above the cap of "
                                 "2^24; raise l or set strip_halfwidth", mx * ny, h);
             }
@@ -302,7 +302,7 @@ int sf_cof_plan_alloc(const sf_scene *s, sf_cof_plan **out, char *err, size_t er
         }
         if (!(nx * ny <= (double)SF_COF_MAX_POINTS)) {
             free(p);
-            return plan_err(err, errlen, SF_ECAP,
+            return plan_err(err, errlen, SF_ETOOBIG,
                             "the belt strip needs %.3g grid points (spacing l/8 = %.3g m): above the cap of 2^24; "
                             "raise l, lower v_b T or set strip_halfwidth", nx * ny, h);
         }
@@ -317,13 +317,13 @@ int sf_cof_plan_alloc(const sf_scene *s, sf_cof_plan **out, char *err, size_t er
         gs.ny = p->info.ny;
         gs.dx = gs.dy = h;
         rc = sf_lnfield_alloc(&gs, &p->field);
-        if (rc == SF_ENOMEM) {   /* the embedding is over its own cap */
+        if (rc == SF_ETOOBIG) {   /* the embedding is over its own cap */
             free(p);
-            return plan_err(err, errlen, SF_ECAP,
+            return plan_err(err, errlen, SF_ETOOBIG,
                             "the %.0f x %.0f grid points of the belt strip need a circulant embedding above its cap "
                             "of 2^25 points; raise l, lower v_b T or set strip_halfwidth", nx, ny);
         }
-        if (rc && rc != SF_ECAP) {
+        if (!sf_usable(rc)) {
             free(p);
             return plan_err(err, errlen, rc, "cannot plan the %g x %g strip field", nx, ny);
         }

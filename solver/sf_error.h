@@ -1,19 +1,33 @@
 /* slipfield: named error codes, GSL style. Every fallible solver call
- * returns one of these; sf_strerror() gives the message. */
+ * returns one of these; sf_strerror() gives the message. One code, one
+ * meaning: a plan that is usable but truncated (SF_ETRUNC) is not a plan
+ * that was refused for its size (SF_ETOOBIG), and neither is an allocation
+ * that failed (SF_ENOMEM). */
 #ifndef SF_ERROR_H
 #define SF_ERROR_H
+
+#include <stddef.h>
 
 enum {
     SF_SUCCESS = 0,
     SF_EINVAL  = 1,   /* invalid argument (NaN, out of range, inconsistent) */
-    SF_ENOMEM  = 2,   /* allocation failed or a size would overflow */
-    SF_ECAP    = 3,   /* embedding padding hit its cap: truncated (see info) */
+    SF_ENOMEM  = 2,   /* allocation failed */
+    SF_ETRUNC  = 3,   /* a warning, not a failure: the embedding hit its padding
+                         cap and the covariance is truncated; the object IS
+                         returned and usable (error in its info) */
     SF_EIO     = 4,   /* file could not be read or written */
     SF_EPARSE  = 5,   /* syntax error in a scene or case file */
     SF_EFAIL   = 6,   /* numerical failure (no convergence, NaN produced) */
-    SF_EMAXITER = 7   /* iteration or event limit reached */
+    SF_EMAXITER = 7,  /* iteration or event limit reached */
+    SF_ETOOBIG = 8    /* refused: the request is over a documented size cap
+                         (grid points, embedding size, window width) or a
+                         size would overflow; nothing is returned */
 };
 
 const char *sf_strerror(int code);
+
+/* The one test for "may I use what this call returned?": success or the
+ * SF_ETRUNC warning.  Use `if (!sf_usable(rc)) return rc;`. */
+static inline int sf_usable(int rc) { return rc == SF_SUCCESS || rc == SF_ETRUNC; }
 
 #endif

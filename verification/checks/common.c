@@ -52,7 +52,7 @@ int check_field_plan(const sf_case *c, sf_result *r, sf_field **out)
     sf_field_spec spec;
     sf_field_spec_from_scene(&c->scene, &spec);
     int rc = sf_field_alloc(&spec, out);
-    if (rc && rc != SF_ECAP)
+    if (!sf_usable(rc))
         return rc;
     const sf_field_info *in = sf_field_get_info(*out);
     sf_note(r, "Embedding: %zu x %zu (minimal %zu x %zu, padding factor %.3g x %.3g), "

@@ -27,7 +27,7 @@ static inline double check_nanmax(double a, double b)
 }
 
 /* Build the Gaussian field plan a case's scene asks for; note the
- * embedding facts in the findings.  Returns SF_SUCCESS or SF_ECAP (plan
+ * embedding facts in the findings.  Returns SF_SUCCESS or SF_ETRUNC (plan
  * usable) or an error (plan NULL). */
 int check_field_plan(const sf_case *c, sf_result *r, sf_field **out);
 

@@ -516,7 +516,7 @@ static int chk_interpolation(const sf_case *c, sf_result *r)
     sf_field *f;
     sf_field_spec spec;
     sf_field_spec_default(&spec, m, m, s->dx, s->dx, s->l);
-    if (sf_field_alloc(&spec, &f) > SF_ECAP)
+    if (!sf_usable(sf_field_alloc(&spec, &f)))
         return SF_EFAIL;
     gsl_rng *rng = sf_case_rng(c);
     double *g = check_alloc(m * m * sizeof *g), *h = check_alloc(K * sizeof *h);
