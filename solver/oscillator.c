@@ -35,6 +35,8 @@ struct sf_osc {
     gsl_odeiv2_control *con;
     gsl_odeiv2_evolve *ev;
     gsl_root_fsolver *root;  /* Brent, for event location */
+    sf_surface *stick_sf;    /* exact-section stick test: one limit surface,
+                                re-centred per stick (made on first use) */
     unsigned long wrench_evals;
     sf_osc_source_fn src;    /* manufactured source (sf_osc_set_source), or NULL */
     void *src_ctx;
@@ -203,6 +205,7 @@ void sf_osc_free(sf_osc *o)
     if (o->con) gsl_odeiv2_control_free(o->con);
     if (o->ev) gsl_odeiv2_evolve_free(o->ev);
     if (o->root) gsl_root_fsolver_free(o->root);
+    sf_surface_free(o->stick_sf);
     free(o);
 }
 
@@ -218,7 +221,7 @@ void sf_osc_explain(const sf_osc *o, FILE *f)
         fprintf(f, "slip wrench: closed form (constant COF %.6g: %s), no quadrature\n", o->mu,
                 o->dof3 ? "Contensou elliptic integrals" : "Eq. 4");
     fprintf(f, "stick: exact motion with the belt, no quadrature; break test on the %s\n",
-            s->exact_section ? "exact T = 0 section (Brent, bracketed by the circle's exit time)"
+            s->exact_section ? "exact T = 0 section (bisection, bracketed by the circle's exit time)"
                              : "equatorial circle (closed-form exit time)");
     if (s->integrator == SF_INTEG_RK4)
         fprintf(f, "stepper: GSL rk4, fixed dt = %g s\n", s->dt);
@@ -338,7 +341,7 @@ static double locate_event(sf_osc *o, int kind, double t0, const double *y0, dou
 }
 
 /* Time to the stick break from (t0, y) with the belt patch fixed. */
-double sf_osc_stick_duration(const sf_osc *o, double t0, const double *y)
+double sf_osc_stick_duration(sf_osc *o, double t0, const double *y)
 {
     const sf_scene *s = &o->s;
     double xb = y[X] - s->v_b * t0, yb = y[Y];
@@ -353,9 +356,10 @@ double sf_osc_stick_duration(const sf_osc *o, double t0, const double *y)
     if (!s->exact_section || !o->ct)
         return tau;
     /* exact section: rho(alpha) <= mu_bar, so the exit lies in [0, tau] */
-    sf_surface *sf;
-    if (sf_surface_alloc(o->ct, xb, yb, &sf))
+    if (!o->stick_sf && sf_surface_alloc(o->ct, xb, yb, &o->stick_sf))
         return tau;
+    sf_surface *sf = o->stick_sf;
+    sf_surface_recentre(sf, o->ct, xb, yb);
     double lo = 0, hi = tau;
     for (int it = 0; it < 200 && hi - lo > fmax(SF_OSC_TIME_TOL, 8 * DBL_EPSILON * (t0 + tau)); it++) {
         double mid = 0.5 * (lo + hi), x = y[X] + s->v_b * mid, rho;
@@ -365,7 +369,6 @@ double sf_osc_stick_duration(const sf_osc *o, double t0, const double *y)
         else
             hi = mid;
     }
-    sf_surface_free(sf);
     return hi;
 }
 
@@ -675,13 +678,13 @@ int sf_osc_run(sf_osc *o, sf_osc_row_fn row, void *ctx, double sample_dt, sf_osc
         int to_stick = armed && g1 < 0;
         double ye[NSTATE], te = t;
         if (to_stick) {
-            te = locate_event(o, EV_STICK, t0, y0, t, ye, &res->bisections);
+            te = locate_event(o, EV_STICK, t0, y0, t, ye, &res->event_trials);
             t = te;
             memcpy(y, ye, sizeof ye);
         }
         if (y0[VX] * y[VX] < 0) {   /* an extremum of x inside the step */
             double yx[NSTATE];
-            double tx = locate_event(o, EV_VX0, t0, y0, t, yx, &res->bisections), qx[3];
+            double tx = locate_event(o, EV_VX0, t0, y0, t, yx, &res->event_trials), qx[3];
             wrench(o, tx, yx, qx);   /* at the extremum's own time: the belt has moved on by t */
             note(&a, yx[X], qx[0]);
             track(o, tx, res, yx);

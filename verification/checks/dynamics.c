@@ -6,6 +6,7 @@
 #include "checks.h"
 #include "common.h"
 #include "contact.h"
+#include "surface.h"
 #include "cycle1d.h"
 #include "cof.h"
 #include "oscillator.h"
