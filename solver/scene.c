@@ -20,11 +20,14 @@ typedef struct {
     int lo_open, hi_open;
     const char *def;    /* default as text, parsed by the same code */
     const char *unit;
-    const char *choices;/* enum: "a|b|c" in value order */
+    const char *const *choices; /* enum: names in value order, NULL-terminated (CHOICES) */
     const char *help;
 } key_t_;
 
 #define OFF(f) offsetof(sf_scene, f)
+/* An enum key's names, in value order: a static array (C11 6.5.2.5), so
+ * sf_scene_enum_name() can return them as they are. */
+#define CHOICES(...) ((const char *const[]){ __VA_ARGS__, NULL })
 #define INF HUGE_VAL
 
 static const key_t_ keys[] = {
@@ -42,7 +45,7 @@ static const key_t_ keys[] = {
     { "eps_lambda", K_DOUBLE, OFF(eps_lambda), 0, 0, 1, 1, 0, "1e-3", "1", NULL, "slip-to-stick threshold on lambda (Eq. 12-14)" },
     { "dt", K_DOUBLE, OFF(dt), 0, 0, INF, 1, 0, "1e-3", "s", NULL, "fixed step (rk4) or initial step" },
     { "seed", K_ULONG, OFF(seed), 0, 0, 0, 0, 0, "20230101", "1", NULL, "random seed" },
-    { "cof", K_ENUM, OFF(cof), 0, 0, 0, 0, 0, "field", "", "uniform|variable|field", "COF model" },
+    { "cof", K_ENUM, OFF(cof), 0, 0, 0, 0, 0, "field", "", CHOICES("uniform", "variable", "field"), "COF model" },
     /* random-field grid */
     { "nx", K_SIZE, OFF(nx), 0, 1, 1e6, 0, 0, "64", "1", NULL, "grid points along x" },
     { "ny", K_SIZE, OFF(ny), 0, 1, 1e6, 0, 0, "64", "1", NULL, "grid points along y" },
@@ -51,13 +54,13 @@ static const key_t_ keys[] = {
     { "pad_cap", K_DOUBLE, OFF(pad_cap), 0, 1, 1e6, 0, 0, "16", "1", NULL, "max embedding period / minimal period" },
     { "eig_tol", K_DOUBLE, OFF(eig_tol), 0, 0, 1, 0, 0, "1e-12", "1", NULL, "accept lambda_min >= -eig_tol lambda_max" },
     { "no_padding", K_BOOL, OFF(no_padding), 0, 0, 0, 0, 0, "false", "", NULL, "minimal embedding only" },
-    { "fftw_planner", K_ENUM, OFF(fftw_planner), 0, 0, 0, 0, 0, "estimate", "", "estimate|measure", "sampling FFT plan: estimate (same bits in every process) or measure (timed, faster on large grids; see SLIPFIELD_FFTW_WISDOM)" },
+    { "fftw_planner", K_ENUM, OFF(fftw_planner), 0, 0, 0, 0, 0, "estimate", "", CHOICES("estimate", "measure"), "sampling FFT plan: estimate (same bits in every process) or measure (timed, faster on large grids; see SLIPFIELD_FFTW_WISDOM)" },
     { "precorrect", K_BOOL, OFF(precorrect), 0, 0, 0, 0, 0, "false", "", NULL, "pre-correct the Gaussian correlation so the lognormal field has Eq. 2" },
     { "strip_halfwidth", K_DOUBLE, OFF(strip_halfwidth), 0, 0, INF, 0, 0, "0.5", "m", NULL, "lateral excursion |y| the COF strip covers beyond R (0: the spring-excursion bound); a run that leaves it fails" },
-    { "cof_generator", K_ENUM, OFF(cof_generator), 0, 0, 0, 0, 0, "auto", "", "auto|circulant|tiles", "belt COF field generator: circulant strip over [0, T], tiles generated on demand in a window that follows the disc, or auto (circulant unless its strip exceeds 2^21 points; slipfield run --explain says which)" },
+    { "cof_generator", K_ENUM, OFF(cof_generator), 0, 0, 0, 0, 0, "auto", "", CHOICES("auto", "circulant", "tiles"), "belt COF field generator: circulant strip over [0, T], tiles generated on demand in a window that follows the disc, or auto (circulant unless its strip exceeds 2^21 points; slipfield run --explain says which)" },
     { "samples", K_SIZE, OFF(samples), 0, 1, 1e9, 0, 0, "1000", "1", NULL, "number of samples or realisations" },
     /* contact */
-    { "layout", K_ENUM, OFF(layout), 0, 0, 0, 0, 0, "polar", "", "polar|cartesian", "disc quadrature layout" },
+    { "layout", K_ENUM, OFF(layout), 0, 0, 0, 0, 0, "polar", "", CHOICES("polar", "cartesian"), "disc quadrature layout" },
     { "cells", K_SIZE, OFF(cells), 0, 0, 1e5, 0, 0, "0", "1", NULL, "quadrature resolution (rings or cells per diameter); 0: the plan chooses from qoi_tol and l/R (numplan.h)" },
     { "u", K_DOUBLE, OFF(u), 0, -INF, INF, 0, 0, "-0.2", "m/s", NULL, "relative velocity of the centre, x" },
     { "v", K_DOUBLE, OFF(v), 0, -INF, INF, 0, 0, "0", "m/s", NULL, "relative velocity of the centre, y" },
@@ -65,8 +68,8 @@ static const key_t_ keys[] = {
     { "ntheta", K_SIZE, OFF(ntheta), 0, 1, 1e5, 0, 0, "37", "1", NULL, "limit-surface theta samples" },
     { "npsi", K_SIZE, OFF(npsi), 0, 1, 1e5, 0, 0, "72", "1", NULL, "limit-surface psi samples" },
     /* dynamics */
-    { "integrator", K_ENUM, OFF(integrator), 0, 0, 0, 0, 0, "adaptive", "", "adaptive|rk4|rk8pd|rkck", "time stepper: adaptive = rk8pd for a closed-form wrench, rkck for a quadrature one; rk4 at fixed dt" },
-    { "dof", K_ENUM, OFF(dof), 0, 0, 0, 0, 0, "3", "", "1|3", "degrees of freedom: 1 (Eqs. 3-4, uniform COF) or 3 (x, y, phi; Eq. 5)" },
+    { "integrator", K_ENUM, OFF(integrator), 0, 0, 0, 0, 0, "adaptive", "", CHOICES("adaptive", "rk4", "rk8pd", "rkck"), "time stepper: adaptive = rk8pd for a closed-form wrench, rkck for a quadrature one; rk4 at fixed dt" },
+    { "dof", K_ENUM, OFF(dof), 0, 0, 0, 0, 0, "3", "", CHOICES("1", "3"), "degrees of freedom: 1 (Eqs. 3-4, uniform COF) or 3 (x, y, phi; Eq. 5)" },
     { "rtol", K_DOUBLE, OFF(rtol), 0, 0, 1, 0, 1, "0", "1", NULL, "adaptive stepper relative tolerance; 0: the plan chooses from qoi_tol (numplan.h)" },
     { "qoi_tol", K_DOUBLE, OFF(qoi_tol), 0, 0, 1, 1, 1, "1e-3", "1", NULL, "relative error wanted in a realisation's PV_x, PV_F and stick fraction: the plan sets cells, rtol and the stepper from it (numplan.h)" },
     { "t_skip", K_DOUBLE, OFF(t_skip), 0, 0, INF, 0, 0, "10", "s", NULL, "transient discarded before QoIs" },
@@ -84,8 +87,8 @@ static const key_t_ keys[] = {
     { "check", K_STRING, OFF(check), sizeof(((sf_scene *)0)->check), 0, 0, 0, 0, "", "", NULL, "check to run (cases)" },
     { "tolerance", K_DOUBLE, OFF(tolerance), 0, 0, INF, 0, 0, "0", "", NULL, "tolerance of the check (its units are the check's)" },
     { "alpha", K_DOUBLE, OFF(alpha), 0, 0, 1, 1, 1, "1e-3", "1", NULL, "significance level of a statistical check" },
-    { "tier", K_ENUM, OFF(tier), 0, 0, 0, 0, 0, "quick", "", "quick|full", "verification tier" },
-    { "vv", K_ENUM, OFF(vv), 0, 0, 0, 0, 0, "code", "", "code|solution|validation", "code verification, solution verification or validation" },
+    { "tier", K_ENUM, OFF(tier), 0, 0, 0, 0, 0, "quick", "", CHOICES("quick", "full"), "verification tier" },
+    { "vv", K_ENUM, OFF(vv), 0, 0, 0, 0, 0, "code", "", CHOICES("code", "solution", "validation"), "code verification, solution verification or validation" },
     { "tags", K_STRING, OFF(tags), sizeof(((sf_scene *)0)->tags), 0, 0, 0, 0, "", "", NULL, "comma-separated tags" },
     { "sweep", K_LIST, OFF(sweep), 0, -INF, INF, 0, 0, "", "", NULL, "list of values a check sweeps over" },
     { "sweep_param", K_STRING, OFF(sweep_param), sizeof(((sf_scene *)0)->sweep_param), 0, 0, 0, 0, "", "", NULL, "parameter a sweep varies: a numeric key, l_over_R or mu_mean (fixed CV)" },
@@ -94,6 +97,16 @@ static const key_t_ keys[] = {
 
 #define NKEYS (sizeof keys / sizeof keys[0])
 _Static_assert(sizeof keys / sizeof keys[0] <= SF_SCENE_MAX_KEYS, "key table too large");
+
+/* An enum key's names as "a|b|c" (help text, error messages). */
+static const char *choices_text(const key_t_ *k, char *buf, size_t n)
+{
+    size_t used = 0;
+    buf[0] = '\0';
+    for (int i = 0; k->choices[i] && used < n; i++)
+        used += (size_t)snprintf(buf + used, n - used, "%s%s", i ? "|" : "", k->choices[i]);
+    return buf;
+}
 
 static int seterr(char *err, size_t n, const char *fmt, ...)
 {
@@ -203,20 +216,14 @@ static int assign(sf_scene *s, const key_t_ *k, const char *v, size_t len,
                       file, line, k->name, (int)(len > 40 ? 40 : len), v);
     }
     case K_ENUM: {
-        const char *c = k->choices;
-        int idx = 0;
-        while (*c) {
-            const char *bar = strchr(c, '|');
-            size_t cl = bar ? (size_t)(bar - c) : strlen(c);
-            if (cl == len && strncmp(c, v, len) == 0) {
+        for (int idx = 0; k->choices[idx]; idx++)
+            if (strlen(k->choices[idx]) == len && strncmp(k->choices[idx], v, len) == 0) {
                 *(int *)base = idx;
                 return SF_SUCCESS;
             }
-            idx++;
-            c += cl + (bar ? 1 : 0);
-        }
+        char names[80];
         return seterr(err, errlen, "%s:%d: key '%s': expected one of %s, got '%.*s'",
-                      file, line, k->name, k->choices, (int)(len > 40 ? 40 : len), v);
+                      file, line, k->name, choices_text(k, names, sizeof names), (int)(len > 40 ? 40 : len), v);
     }
     case K_STRING: {
         if (len >= k->size)
@@ -367,20 +374,12 @@ int sf_scene_was_set(const sf_scene *s, const char *key)
 
 const char *sf_scene_enum_name(const char *key, int value)
 {
-    static char buf[64];
     const key_t_ *k = find_key(key, strlen(key));
-    if (!k || k->type != K_ENUM)
+    if (!k || k->type != K_ENUM || value < 0)
         return "?";
-    const char *c = k->choices;
-    for (int i = 0; *c; i++) {
-        const char *bar = strchr(c, '|');
-        size_t cl = bar ? (size_t)(bar - c) : strlen(c);
-        if (i == value) {
-            snprintf(buf, sizeof buf, "%.*s", (int)cl, c);
-            return buf;
-        }
-        c += cl + (bar ? 1 : 0);
-    }
+    for (int i = 0; k->choices[i]; i++)
+        if (i == value)
+            return k->choices[i];
     return "?";
 }
 
@@ -418,7 +417,7 @@ void sf_scene_print_keys(FILE *out)
     for (size_t i = 0; i < NKEYS; i++) {
         char rng[80];
         if (keys[i].type == K_ENUM)
-            snprintf(rng, sizeof rng, "%s", keys[i].choices);
+            choices_text(&keys[i], rng, sizeof rng);
         else if (keys[i].type == K_DOUBLE || keys[i].type == K_SIZE)
             range_text(&keys[i], rng, sizeof rng);
         else

@@ -1,5 +1,12 @@
 #include "sf_error.h"
 
+#include <gsl/gsl_errno.h>
+
+void sf_init(void)
+{
+    gsl_set_error_handler_off();
+}
+
 const char *sf_strerror(int code)
 {
     switch (code) {

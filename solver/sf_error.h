@@ -26,6 +26,20 @@ enum {
 
 const char *sf_strerror(int code);
 
+/* Exit statuses of every slipfield program: the CLI, the verification
+ * harness and its case processes (DESIGN.md sec. 2). */
+enum { SF_EXIT_OK = 0, SF_EXIT_CHECK = 1, SF_EXIT_USAGE = 2, SF_EXIT_INTERNAL = 3 };
+
+/* Call once at the start of every program that uses the library (the CLI,
+ * each unit test, the bench; an application embedding slipfield too),
+ * before any other slipfield call.  It switches GSL's default error
+ * handler off: that handler abort()s, while the solver checks the status
+ * of every GSL call that can fail (root brackets, elliptic integrals on a
+ * NaN state, odeiv2 steps) and turns it into an SF_E* code.  GSL's handler
+ * is process-wide: sf_init() sets it for the whole process and is not
+ * thread-safe (call it before starting threads). */
+void sf_init(void);
+
 /* The one test for "may I use what this call returned?": success or the
  * SF_ETRUNC warning.  Use `if (!sf_usable(rc)) return rc;`. */
 static inline int sf_usable(int rc) { return rc == SF_SUCCESS || rc == SF_ETRUNC; }

@@ -314,6 +314,7 @@ static void section_inside_circle(void **state)
 
 int main(void)
 {
+    sf_init();
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(cof_bilinear),
         cmocka_unit_test(cof_invalid),

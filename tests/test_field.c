@@ -205,6 +205,7 @@ static void wisdom_round_trip(void **state)
 
 int main(void)
 {
+    sf_init();
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(first_row_is_the_embedded_toeplitz),
         cmocka_unit_test(fft_eigenvalues_match_direct_dft),

@@ -161,6 +161,7 @@ static void case_reader(void **state)
 
 int main(void)
 {
+    sf_init();
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(scene_defaults_are_table1),
         cmocka_unit_test(scene_good_input),

@@ -148,6 +148,7 @@ static void window_follow(void **state)
 
 int main(void)
 {
+    sf_init();
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(splitmix_reference),
         cmocka_unit_test(produced_covariance),

@@ -23,7 +23,7 @@ static char *dup_range(const char *a, const char *b)
     char *s = malloc(n + 1);
     if (!s) {
         fputs("slipfield: out of memory\n", stderr);
-        exit(3);
+        exit(SF_EXIT_INTERNAL);
     }
     memcpy(s, a, n);
     s[n] = '\0';
@@ -199,7 +199,7 @@ gsl_rng *sf_case_rng(const sf_case *c)
     gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
     if (!r) {
         fputs("slipfield: out of memory\n", stderr);
-        exit(3);
+        exit(SF_EXIT_INTERNAL);
     }
     gsl_rng_set(r, c->scene.seed);
     return r;

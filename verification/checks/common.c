@@ -42,7 +42,7 @@ void *check_alloc(size_t n)
     void *p = calloc(n ? n : 1, 1);
     if (!p) {
         fputs("slipfield: out of memory in a check\n", stderr);
-        exit(3);
+        exit(SF_EXIT_INTERNAL);
     }
     return p;
 }
@@ -189,11 +189,11 @@ void check_hist_row(void *ctx, const sf_osc_row *row)
         for (int i = 0; i < 6; i++) {
             *a[i] = realloc(*a[i], h->cap * sizeof(double));
             if (!*a[i])
-                exit(3);
+                exit(SF_EXIT_INTERNAL);
         }
         h->stick = realloc(h->stick, h->cap * sizeof(int));
         if (!h->stick)
-            exit(3);
+            exit(SF_EXIT_INTERNAL);
     }
     h->t[h->n] = row->t;
     h->x[h->n] = row->x;
