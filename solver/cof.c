@@ -227,13 +227,6 @@ struct sf_cof_plan {
     double l, R;               /* tiles: correlation length, disc radius [m] */
 };
 
-static int plan_err(char *err, size_t n, int rc, const char *fmt, double a, double b)
-{
-    if (err && n)
-        snprintf(err, n, fmt, a, b);
-    return rc;
-}
-
 int sf_cof_plan_alloc(const sf_scene *s, sf_cof_plan **out, char *err, size_t errlen)
 {
     *out = NULL;
@@ -245,7 +238,7 @@ int sf_cof_plan_alloc(const sf_scene *s, sf_cof_plan **out, char *err, size_t er
     int rc = sf_lognormal_init(&p->ln, s->mu_mean, s->mu_std);
     if (rc) {
         free(p);
-        return plan_err(err, errlen, rc, "invalid COF marginal (mean %g, std %g)", s->mu_mean, s->mu_std);
+        return sf_seterr(err, errlen, rc, "invalid COF marginal (mean %g, std %g)", s->mu_mean, s->mu_std);
     }
     if (p->info.kind == SF_COF_FIELD) {
         double h = s->l / 8;
@@ -271,9 +264,8 @@ int sf_cof_plan_alloc(const sf_scene *s, sf_cof_plan **out, char *err, size_t er
         if (gen == SF_COFGEN_TILES) {
             if (s->precorrect && s->mu_std > 0) {
                 free(p);
-                if (err && errlen)
-                    snprintf(err, errlen, "precorrect needs cof_generator = circulant (the tiles make Eq. 2 only)");
-                return SF_EINVAL;
+                return sf_seterr(err, errlen, SF_EINVAL,
+                                 "precorrect needs cof_generator = circulant (the tiles make Eq. 2 only)");
             }
             /* the window: the disc's footprint 2R, a margin M = R/4 each
              * side (a step never moves the disc by more than M/2: sf_osc;
@@ -284,7 +276,7 @@ int sf_cof_plan_alloc(const sf_scene *s, sf_cof_plan **out, char *err, size_t er
             double mx = ceil((3 * s->R + 3 * M) / h) + 1;
             if (!(mx * ny <= (double)SF_COF_MAX_POINTS)) {
                 free(p);
-                return plan_err(err, errlen, SF_ETOOBIG,
+                return sf_seterr(err, errlen, SF_ETOOBIG,
                                 "the tiled window needs %.3g grid points (spacing l/8 = %.3g m): above the cap of "
                                 "2^24; raise l or set strip_halfwidth", mx * ny, h);
             }
@@ -302,7 +294,7 @@ int sf_cof_plan_alloc(const sf_scene *s, sf_cof_plan **out, char *err, size_t er
         }
         if (!(nx * ny <= (double)SF_COF_MAX_POINTS)) {
             free(p);
-            return plan_err(err, errlen, SF_ETOOBIG,
+            return sf_seterr(err, errlen, SF_ETOOBIG,
                             "the belt strip needs %.3g grid points (spacing l/8 = %.3g m): above the cap of 2^24; "
                             "raise l, lower v_b T or set strip_halfwidth", nx * ny, h);
         }
@@ -319,13 +311,13 @@ int sf_cof_plan_alloc(const sf_scene *s, sf_cof_plan **out, char *err, size_t er
         rc = sf_lnfield_alloc(&gs, &p->field);
         if (rc == SF_ETOOBIG) {   /* the embedding is over its own cap */
             free(p);
-            return plan_err(err, errlen, SF_ETOOBIG,
+            return sf_seterr(err, errlen, SF_ETOOBIG,
                             "the %.0f x %.0f grid points of the belt strip need a circulant embedding above its cap "
                             "of 2^25 points; raise l, lower v_b T or set strip_halfwidth", nx, ny);
         }
         if (!sf_usable(rc)) {
             free(p);
-            return plan_err(err, errlen, rc, "cannot plan the %g x %g strip field", nx, ny);
+            return sf_seterr(err, errlen, rc, "cannot plan the %g x %g strip field", nx, ny);
         }
         p->buf = malloc(p->info.nx * p->info.ny * sizeof *p->buf);
         if (!p->buf) {

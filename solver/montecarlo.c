@@ -37,12 +37,6 @@ unsigned long sf_mc_hash(const void *p, size_t n, unsigned long h)
     return (unsigned long)x;
 }
 
-static void seterr(char *err, size_t n, const char *msg, const char *path)
-{
-    if (err && n)
-        snprintf(err, n, "%s: %s", path, msg);
-}
-
 /* Read the complete lines of a checkpoint into out/done. */
 static int ck_read(const sf_mc_spec *s, double *out, unsigned char *done, size_t *count, char *err, size_t errlen)
 {
@@ -57,15 +51,14 @@ static int ck_read(const sf_mc_spec *s, double *out, unsigned char *done, size_t
     if (len <= 0 || sscanf(line, "# slipfield checkpoint v1 n=%lu nout=%lu key=%lx", &n, &nout, &key) != 3) {
         free(line);
         fclose(f);
-        seterr(err, errlen, "not a slipfield checkpoint", s->checkpoint);
-        return SF_EINVAL;
+        return sf_seterr(err, errlen, SF_EINVAL, "%s: not a slipfield checkpoint", s->checkpoint);
     }
     if (n != s->n || nout != s->nout || key != s->key) {
         free(line);
         fclose(f);
-        seterr(err, errlen, "checkpoint of other work (scene, size or seed differ): remove it or drop --resume",
-               s->checkpoint);
-        return SF_EINVAL;
+        return sf_seterr(err, errlen, SF_EINVAL,
+                         "%s: checkpoint of other work (scene, size or seed differ): remove it or drop --resume",
+                         s->checkpoint);
     }
     double *v = malloc((s->nout ? s->nout : 1) * sizeof *v);
     while (v && (len = getline(&line, &cap, f)) > 0) {
@@ -195,8 +188,7 @@ int sf_mc_run(const sf_mc_spec *s0, const sf_mc_ops *ops, void *ctx, double *out
         if (!ck) {
             free(done);
             free(theirs);
-            seterr(err, errlen, "cannot write the checkpoint", s->checkpoint);
-            return SF_EIO;
+            return sf_seterr(err, errlen, SF_EIO, "%s: cannot write the checkpoint", s->checkpoint);
         }
         fprintf(ck, "# slipfield checkpoint v1 n=%zu nout=%zu key=%lx\n", s->n, s->nout, s->key);
         for (size_t i = 0; i < s->n; i++) {
@@ -211,8 +203,7 @@ int sf_mc_run(const sf_mc_spec *s0, const sf_mc_ops *ops, void *ctx, double *out
             fclose(ck);
             free(done);
             free(theirs);
-            seterr(err, errlen, "cannot write the checkpoint", s->checkpoint);
-            return SF_EIO;
+            return sf_seterr(err, errlen, SF_EIO, "%s: cannot write the checkpoint", s->checkpoint);
         }
     }
     int tty = s->label && isatty(2);
@@ -269,8 +260,7 @@ int sf_mc_run(const sf_mc_spec *s0, const sf_mc_ops *ops, void *ctx, double *out
     if (tty)
         fputc('\n', stderr);
     if (ck && fclose(ck) && !rc) {
-        seterr(err, errlen, "cannot write the checkpoint", s->checkpoint);
-        rc = SF_EIO;
+        rc = sf_seterr(err, errlen, SF_EIO, "%s: cannot write the checkpoint", s->checkpoint);
     }
     if (done_before)
         *done_before = before;

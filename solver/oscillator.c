@@ -42,13 +42,6 @@ struct sf_osc {
     void *src_ctx;
 };
 
-static int seterr(char *err, size_t n, int rc, const char *msg)
-{
-    if (err && n)
-        snprintf(err, n, "%s", msg);
-    return rc;
-}
-
 /* Kinetic friction wrench on the disc at time t, state y. */
 static void wrench(sf_osc *o, double t, const double *y, double q[3])
 {
@@ -137,9 +130,9 @@ int sf_osc_alloc(const sf_scene *s, const sf_cof *cof, sf_osc **out, char *err, 
     *out = NULL;
     int constant = sf_cof_get_kind(cof) != SF_COF_FIELD;
     if (s->dof == SF_DOF_1 && !constant)
-        return seterr(err, errlen, SF_EINVAL, "dof = 1 needs a spatially constant COF (cof = uniform or variable)");
+        return sf_seterr(err, errlen, SF_EINVAL, "dof = 1 needs a spatially constant COF (cof = uniform or variable)");
     if (s->dof == SF_DOF_1 && (s->y0 != 0 || s->phi0 != 0 || s->vy0 != 0 || s->w0 != 0))
-        return seterr(err, errlen, SF_EINVAL, "dof = 1 moves along x only: y0, phi0, vy0 and w0 must be 0");
+        return sf_seterr(err, errlen, SF_EINVAL, "dof = 1 moves along x only: y0, phi0, vy0 and w0 must be 0");
     sf_osc *o = calloc(1, sizeof *o);
     if (!o)
         return SF_ENOMEM;
@@ -166,7 +159,7 @@ int sf_osc_alloc(const sf_scene *s, const sf_cof *cof, sf_osc **out, char *err, 
         int rc = sf_contact_alloc(&spec, cof, &o->ct);
         if (rc) {
             free(o);
-            return seterr(err, errlen, rc, "cannot set up the contact quadrature");
+            return sf_seterr(err, errlen, rc, "cannot set up the contact quadrature");
         }
     }
     /* the stepper: the plan's (numplan.c says why) */
@@ -599,14 +592,14 @@ int sf_osc_run(sf_osc *o, sf_osc_row_fn row, void *ctx, double sample_dt, sf_osc
     }
     double hcap;
     if ((rc = follow(o, 0, y, &hcap)))
-        return seterr(err, errlen, rc, "the COF window cannot follow the disc");
+        return sf_seterr(err, errlen, rc, "the COF window cannot follow the disc");
     wrench(o, 0, y, q);
     double pa[3] = { y[X], y[VX], stick ? 0 : (-s->k * y[X] + q[0]) / s->m };   /* x, vx, ax at the last step end */
     sample(res, &next, 0, pa, 0, pa);
     emit(o, row, ctx, 0, y, stick ? (double[3]){ s->k * y[X], s->k * y[Y], 0 } : q, stick);
     while (t < s->T && rc == SF_SUCCESS) {
         if ((rc = follow(o, t, y, &hcap))) {
-            rc = seterr(err, errlen, rc, "the COF window cannot follow the disc");
+            rc = sf_seterr(err, errlen, rc, "the COF window cannot follow the disc");
             break;
         }
         if (stick) {
@@ -657,21 +650,19 @@ int sf_osc_run(sf_osc *o, sf_osc_row_fn row, void *ctx, double sample_dt, sf_osc
         } else {
             int st = gsl_odeiv2_evolve_apply(o->ev, o->con, o->step, &o->sys, &t, fmin(s->T, t + hcap), &h, y);
             if (st != GSL_SUCCESS) {
-                rc = seterr(err, errlen, SF_EFAIL, "the adaptive stepper failed (step size underflow)");
+                rc = sf_seterr(err, errlen, SF_EFAIL, "the adaptive stepper failed (step size underflow)");
                 break;
             }
         }
         res->steps++;
         for (int i = 0; i < NSTATE; i++)
             if (!isfinite(y[i])) {
-                char m[160];
-                snprintf(m, sizeof m, "non-finite state at t = %.9g s (slip)", t);
-                rc = seterr(err, errlen, SF_EFAIL, m);
+                rc = sf_seterr(err, errlen, SF_EFAIL, "non-finite state at t = %.9g s (slip)", t);
             }
         if (rc)
             break;
         if (res->steps > budget) {
-            rc = seterr(err, errlen, SF_EMAXITER, "step budget (2e8 steps) exhausted");
+            rc = sf_seterr(err, errlen, SF_EMAXITER, "step budget (2e8 steps) exhausted");
             break;
         }
         double g1 = sf_osc_g_stick(o, t, y);
@@ -715,7 +706,7 @@ int sf_osc_run(sf_osc *o, sf_osc_row_fn row, void *ctx, double sample_dt, sf_osc
     res->rejected = o->ev->failed_steps;
     res->wrench_evals = o->wrench_evals;
     if (!rc && res->off_strip)
-        rc = seterr(err, errlen, SF_EFAIL, "the disc left the belt strip of the COF field: raise strip_halfwidth");
+        rc = sf_seterr(err, errlen, SF_EFAIL, "the disc left the belt strip of the COF field: raise strip_halfwidth");
     if (res->ncycles) {
         double sx = 0, sF = 0;
         for (size_t i = 0; i < res->ncycles; i++) {

@@ -108,17 +108,6 @@ static const char *choices_text(const key_t_ *k, char *buf, size_t n)
     return buf;
 }
 
-static int seterr(char *err, size_t n, const char *fmt, ...)
-{
-    if (err && n) {
-        va_list ap;
-        va_start(ap, fmt);
-        vsnprintf(err, n, fmt, ap);
-        va_end(ap);
-    }
-    return SF_EPARSE;
-}
-
 static const key_t_ *find_key(const char *name, size_t len)
 {
     for (size_t i = 0; i < NKEYS; i++)
@@ -170,10 +159,10 @@ static int assign(sf_scene *s, const key_t_ *k, const char *v, size_t len,
     case K_DOUBLE: {
         double x;
         if (!parse_double(v, len, &x))
-            return seterr(err, errlen, "%s:%d: key '%s': expected a finite number, got '%.*s'",
+            return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key '%s': expected a finite number, got '%.*s'",
                           file, line, k->name, (int)(len > 40 ? 40 : len), v);
         if (!in_range(k, x))
-            return seterr(err, errlen, "%s:%d: key '%s': must be %s (got %g)",
+            return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key '%s': must be %s (got %g)",
                           file, line, k->name, rng, x);
         *(double *)base = x;
         return SF_SUCCESS;
@@ -182,10 +171,10 @@ static int assign(sf_scene *s, const key_t_ *k, const char *v, size_t len,
         double x;
         int ok = parse_double(v, len, &x) && x == floor(x);
         if (!ok || x < 0)
-            return seterr(err, errlen, "%s:%d: key '%s': expected a non-negative whole number, got '%.*s'",
+            return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key '%s': expected a non-negative whole number, got '%.*s'",
                           file, line, k->name, (int)(len > 40 ? 40 : len), v);
         if (!in_range(k, x))
-            return seterr(err, errlen, "%s:%d: key '%s': must be %s (got %g)",
+            return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key '%s': must be %s (got %g)",
                           file, line, k->name, rng, x);
         *(size_t *)base = (size_t)x;
         return SF_SUCCESS;
@@ -194,14 +183,14 @@ static int assign(sf_scene *s, const key_t_ *k, const char *v, size_t len,
         /* seeds: parsed exactly as an integer, never through a double */
         char buf[32];
         if (len >= sizeof buf)
-            return seterr(err, errlen, "%s:%d: key '%s': value too long", file, line, k->name);
+            return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key '%s': value too long", file, line, k->name);
         memcpy(buf, v, len);
         buf[len] = '\0';
         errno = 0;
         char *end;
         unsigned long u = strtoul(buf, &end, 10);
         if (*end || end == buf || errno == ERANGE || !isdigit((unsigned char)buf[0]))
-            return seterr(err, errlen, "%s:%d: key '%s': expected a non-negative whole number, got '%s'",
+            return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key '%s': expected a non-negative whole number, got '%s'",
                           file, line, k->name, buf);
         *(unsigned long *)base = u;
         return SF_SUCCESS;
@@ -212,7 +201,7 @@ static int assign(sf_scene *s, const key_t_ *k, const char *v, size_t len,
             if (strlen(t[i]) == len && strncmp(v, t[i], len) == 0) { *(int *)base = 1; return SF_SUCCESS; }
             if (strlen(f[i]) == len && strncmp(v, f[i], len) == 0) { *(int *)base = 0; return SF_SUCCESS; }
         }
-        return seterr(err, errlen, "%s:%d: key '%s': expected true or false, got '%.*s'",
+        return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key '%s': expected true or false, got '%.*s'",
                       file, line, k->name, (int)(len > 40 ? 40 : len), v);
     }
     case K_ENUM: {
@@ -222,17 +211,17 @@ static int assign(sf_scene *s, const key_t_ *k, const char *v, size_t len,
                 return SF_SUCCESS;
             }
         char names[80];
-        return seterr(err, errlen, "%s:%d: key '%s': expected one of %s, got '%.*s'",
+        return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key '%s': expected one of %s, got '%.*s'",
                       file, line, k->name, choices_text(k, names, sizeof names), (int)(len > 40 ? 40 : len), v);
     }
     case K_STRING: {
         if (len >= k->size)
-            return seterr(err, errlen, "%s:%d: key '%s': value longer than %zu characters",
+            return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key '%s': value longer than %zu characters",
                           file, line, k->name, k->size - 1);
         for (size_t i = 0; i < len; i++) {
             unsigned char ch = (unsigned char)v[i];
             if (!(isalnum(ch) || ch == '_' || ch == '-' || ch == ',' || ch == '.'))
-                return seterr(err, errlen, "%s:%d: key '%s': only letters, digits and _-,. are allowed",
+                return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key '%s': only letters, digits and _-,. are allowed",
                               file, line, k->name);
         }
         memcpy(base, v, len);
@@ -251,15 +240,15 @@ static int assign(sf_scene *s, const key_t_ *k, const char *v, size_t len,
             while (b > a && isspace((unsigned char)v[b - 1])) b--;
             double x;
             if (!parse_double(v + a, b - a, &x))
-                return seterr(err, errlen, "%s:%d: key '%s': item %zu is not a finite number",
+                return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key '%s': item %zu is not a finite number",
                               file, line, k->name, l->n + 1);
             if (l->n == SF_LIST_MAX)
-                return seterr(err, errlen, "%s:%d: key '%s': more than %d values",
+                return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key '%s': more than %d values",
                               file, line, k->name, SF_LIST_MAX);
             l->v[l->n++] = x;
             i = j + 1;
             if (j < len && j + 1 == len)
-                return seterr(err, errlen, "%s:%d: key '%s': trailing comma", file, line, k->name);
+                return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key '%s': trailing comma", file, line, k->name);
         }
         return SF_SUCCESS;
     }
@@ -297,27 +286,27 @@ int sf_scene_parse(sf_scene *s, const char *text, const char *file,
             size_t ql = b - a;
             for (size_t i = 0; i < ql; i++)
                 if (q[i] == '\0' || (!isprint((unsigned char)q[i]) && q[i] != '\t'))
-                    return seterr(err, errlen, "%s:%d: non-printable character in scene line", file, line);
+                    return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: non-printable character in scene line", file, line);
             const char *eq = memchr(q, '=', ql);
             if (!eq)
-                return seterr(err, errlen, "%s:%d: expected 'key = value', got '%.*s'",
+                return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: expected 'key = value', got '%.*s'",
                               file, line, (int)(ql > 40 ? 40 : ql), q);
             size_t kl = (size_t)(eq - q);
             while (kl > 0 && isspace((unsigned char)q[kl - 1])) kl--;
             if (kl == 0)
-                return seterr(err, errlen, "%s:%d: missing key before '='", file, line);
+                return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: missing key before '='", file, line);
             const key_t_ *k = find_key(q, kl);
             if (!k)
-                return seterr(err, errlen, "%s:%d: unknown key '%.*s' (see 'slipfield help scene')",
+                return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: unknown key '%.*s' (see 'slipfield help scene')",
                               file, line, (int)(kl > 40 ? 40 : kl), q);
             size_t idx = (size_t)(k - keys);
             if (s->set[idx])
-                return seterr(err, errlen, "%s:%d: key '%s': set twice", file, line, k->name);
+                return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key '%s': set twice", file, line, k->name);
             const char *v = eq + 1;
             size_t vl = (size_t)(q + ql - v);
             while (vl > 0 && isspace((unsigned char)*v)) { v++; vl--; }
             if (vl == 0)
-                return seterr(err, errlen, "%s:%d: key '%s': missing value", file, line, k->name);
+                return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key '%s': missing value", file, line, k->name);
             int rc = assign(s, k, v, vl, file, line, err, errlen);
             if (rc)
                 return rc;
@@ -335,7 +324,7 @@ int sf_scene_read_file(sf_scene *s, const char *path, char *err, size_t errlen)
 {
     FILE *f = fopen(path, "rb");
     if (!f) {
-        seterr(err, errlen, "%s: cannot open: %s", path, strerror(errno));
+        sf_seterr(err, errlen, SF_EPARSE, "%s: cannot open: %s", path, strerror(errno));
         return SF_EIO;
     }
     size_t cap = 1u << 20, n;
@@ -349,17 +338,17 @@ int sf_scene_read_file(sf_scene *s, const char *path, char *err, size_t errlen)
     fclose(f);
     if (rd) {   /* e.g. a directory: fopen succeeds, reading fails */
         free(buf);
-        seterr(err, errlen, "%s: cannot read: %s", path, strerror(rd));
+        sf_seterr(err, errlen, SF_EPARSE, "%s: cannot read: %s", path, strerror(rd));
         return SF_EIO;
     }
     if (n > cap) {
         free(buf);
-        return seterr(err, errlen, "%s: scene file larger than 1 MiB", path);
+        return sf_seterr(err, errlen, SF_EPARSE, "%s: scene file larger than 1 MiB", path);
     }
     buf[n] = '\0';
     if (strlen(buf) != n) {
         free(buf);
-        return seterr(err, errlen, "%s: scene file contains a NUL byte", path);
+        return sf_seterr(err, errlen, SF_EPARSE, "%s: scene file contains a NUL byte", path);
     }
     int rc = sf_scene_parse(s, buf, path, 1, err, errlen);
     free(buf);

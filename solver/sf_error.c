@@ -1,6 +1,19 @@
 #include "sf_error.h"
 
+#include <stdarg.h>
+#include <stdio.h>
 #include <gsl/gsl_errno.h>
+
+int sf_seterr(char *err, size_t n, int rc, const char *fmt, ...)
+{
+    if (err && n) {
+        va_list ap;
+        va_start(ap, fmt);
+        vsnprintf(err, n, fmt, ap);
+        va_end(ap);
+    }
+    return rc;
+}
 
 void sf_init(void)
 {

@@ -26,6 +26,18 @@ enum {
 
 const char *sf_strerror(int code);
 
+#if defined(__GNUC__)
+#define SF_PRINTF_LIKE(f, a) __attribute__((format(printf, f, a)))
+#else
+#define SF_PRINTF_LIKE(f, a)
+#endif
+
+/* The one error-message idiom: write the printf-style message into
+ * err[0..n) (nothing when err is NULL or n is 0) and return rc, so that
+ * `return sf_seterr(err, errlen, SF_EINVAL, "bad %s", what);` reports and
+ * fails in one statement. */
+int sf_seterr(char *err, size_t n, int rc, const char *fmt, ...) SF_PRINTF_LIKE(4, 5);
+
 /* Exit statuses of every slipfield program: the CLI, the verification
  * harness and its case processes (DESIGN.md sec. 2). */
 enum { SF_EXIT_OK = 0, SF_EXIT_CHECK = 1, SF_EXIT_USAGE = 2, SF_EXIT_INTERNAL = 3 };

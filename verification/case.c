@@ -8,15 +8,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-static int fail(char *err, size_t n, int code, const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(err, n, fmt, ap);
-    va_end(ap);
-    return code;
-}
-
 static char *dup_range(const char *a, const char *b)
 {
     size_t n = (size_t)(b - a);
@@ -47,17 +38,17 @@ static int make_id(sf_case *c, const char *path, char *err, size_t errlen)
 {
     size_t len = strlen(path);
     if (len < 4 || strcmp(path + len - 3, ".md") != 0)
-        return fail(err, errlen, SF_EPARSE, "%s: a case file must end in .md", path);
+        return sf_seterr(err, errlen, SF_EPARSE, "%s: a case file must end in .md", path);
     const char *end = path + len - 3;
     const char *slash = end;
     while (slash > path && slash[-1] != '/') slash--;
     if (slash == path)
-        return fail(err, errlen, SF_EPARSE, "%s: a case must live in a family folder (cases/<family>/<name>.md)", path);
+        return sf_seterr(err, errlen, SF_EPARSE, "%s: a case must live in a family folder (cases/<family>/<name>.md)", path);
     const char *fam_end = slash - 1, *fam = fam_end;
     while (fam > path && fam[-1] != '/') fam--;
     size_t fl = (size_t)(fam_end - fam), nl = (size_t)(end - slash);
     if (!valid_name(fam, fl) || !valid_name(slash, nl) || fl + nl + 2 > sizeof c->id || fl + 1 > sizeof c->family)
-        return fail(err, errlen, SF_EPARSE,
+        return sf_seterr(err, errlen, SF_EPARSE,
                     "%s: family and case names must be lower-case letters, digits, '_' or '-'", path);
     snprintf(c->family, sizeof c->family, "%.*s", (int)fl, fam);
     snprintf(c->id, sizeof c->id, "%.*s/%.*s", (int)fl, fam, (int)nl, slash);
@@ -71,15 +62,15 @@ int sf_case_parse(sf_case *c, const char *path, const char *text, size_t n, char
 {
     memset(c, 0, sizeof *c);
     if (strlen(path) >= sizeof c->path)
-        return fail(err, errlen, SF_EPARSE, "%s: path too long", path);
+        return sf_seterr(err, errlen, SF_EPARSE, "%s: path too long", path);
     snprintf(c->path, sizeof c->path, "%s", path);
     int rc = make_id(c, path, err, errlen);
     if (rc)
         return rc;
     if (n > (1u << 20))
-        return fail(err, errlen, SF_EPARSE, "%s: case file larger than 1 MiB", path);
+        return sf_seterr(err, errlen, SF_EPARSE, "%s: case file larger than 1 MiB", path);
     if (memchr(text, '\0', n))
-        return fail(err, errlen, SF_EPARSE, "%s: case file contains a NUL byte", path);
+        return sf_seterr(err, errlen, SF_EPARSE, "%s: case file contains a NUL byte", path);
     char *buf = malloc(n + 1);
     if (!buf)
         return SF_ENOMEM;
@@ -93,7 +84,7 @@ int sf_case_read(sf_case *c, const char *path, char *err, size_t errlen)
     memset(c, 0, sizeof *c);
     FILE *f = fopen(path, "rb");
     if (!f)
-        return fail(err, errlen, SF_EIO, "%s: cannot open: %s", path, strerror(errno));
+        return sf_seterr(err, errlen, SF_EIO, "%s: cannot open: %s", path, strerror(errno));
     size_t cap = 1u << 20;
     char *buf = malloc(cap + 1);
     if (!buf) {
@@ -105,7 +96,7 @@ int sf_case_read(sf_case *c, const char *path, char *err, size_t errlen)
     fclose(f);
     if (rd_err) {
         free(buf);
-        return fail(err, errlen, SF_EIO, "%s: cannot read (a directory?)", path);
+        return sf_seterr(err, errlen, SF_EIO, "%s: cannot read (a directory?)", path);
     }
     int rc = sf_case_parse(c, path, buf, n, err, errlen);
     free(buf);
@@ -139,13 +130,13 @@ static int parse_buf(sf_case *c, const char *path, char *buf, size_t n, char *er
             } else if (open && !close_) {
                 if (il != 0) {
                     free(buf);
-                    return fail(err, errlen, SF_EPARSE, "%s:%d: a fence inside the scene block", path, line);
+                    return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: a fence inside the scene block", path, line);
                 }
                 close_ = p;
                 after = next;
             } else if (is_scene) {
                 free(buf);
-                return fail(err, errlen, SF_EPARSE, "%s:%d: a second ```scene block (one per case)", path, line);
+                return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: a second ```scene block (one per case)", path, line);
             }
         }
         p = next;
@@ -153,15 +144,15 @@ static int parse_buf(sf_case *c, const char *path, char *buf, size_t n, char *er
     }
     if (!title) {
         free(buf);
-        return fail(err, errlen, SF_EPARSE, "%s:1: a case starts with a '# Title' line", path);
+        return sf_seterr(err, errlen, SF_EPARSE, "%s:1: a case starts with a '# Title' line", path);
     }
     if (!open) {
         free(buf);
-        return fail(err, errlen, SF_EPARSE, "%s: no ```scene block", path);
+        return sf_seterr(err, errlen, SF_EPARSE, "%s: no ```scene block", path);
     }
     if (!close_) {
         free(buf);
-        return fail(err, errlen, SF_EPARSE, "%s:%d: unterminated ```scene block", path, open_line);
+        return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: unterminated ```scene block", path, open_line);
     }
     size_t tl = (size_t)(title_end - title);
     while (tl && (title[tl - 1] == '\r' || title[tl - 1] == ' ')) tl--;
@@ -177,12 +168,12 @@ static int parse_buf(sf_case *c, const char *path, char *buf, size_t n, char *er
     if (rc)
         return rc;
     if (!sf_scene_was_set(&c->scene, "check"))
-        return fail(err, errlen, SF_EPARSE, "%s:%d: the scene block has no 'check = NAME'", path, c->scene_line);
+        return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: the scene block has no 'check = NAME'", path, c->scene_line);
     if (!sf_check_find(c->scene.check))
-        return fail(err, errlen, SF_EPARSE, "%s: key 'check': unknown check '%s' (see 'slipfield verify --checks')",
+        return sf_seterr(err, errlen, SF_EPARSE, "%s: key 'check': unknown check '%s' (see 'slipfield verify --checks')",
                     path, c->scene.check);
     if (!sf_scene_was_set(&c->scene, "tolerance") && !sf_scene_was_set(&c->scene, "alpha"))
-        return fail(err, errlen, SF_EPARSE, "%s:%d: the scene states neither 'tolerance' nor 'alpha'", path, c->scene_line);
+        return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: the scene states neither 'tolerance' nor 'alpha'", path, c->scene_line);
     return SF_SUCCESS;
 }
 
