@@ -320,13 +320,13 @@ int sf_scene_parse(sf_scene *s, const char *text, const char *file,
     return SF_SUCCESS;
 }
 
-int sf_scene_read_file(sf_scene *s, const char *path, char *err, size_t errlen)
+int sf_read_text(const char *path, const char *what, char **text, size_t *len, char *err, size_t errlen)
 {
+    *text = NULL;
+    *len = 0;
     FILE *f = fopen(path, "rb");
-    if (!f) {
-        sf_seterr(err, errlen, SF_EPARSE, "%s: cannot open: %s", path, strerror(errno));
-        return SF_EIO;
-    }
+    if (!f)
+        return sf_seterr(err, errlen, SF_EIO, "%s: cannot open: %s", path, strerror(errno));
     size_t cap = 1u << 20, n;
     char *buf = malloc(cap + 1);
     if (!buf) {
@@ -338,19 +338,30 @@ int sf_scene_read_file(sf_scene *s, const char *path, char *err, size_t errlen)
     fclose(f);
     if (rd) {   /* e.g. a directory: fopen succeeds, reading fails */
         free(buf);
-        sf_seterr(err, errlen, SF_EPARSE, "%s: cannot read: %s", path, strerror(rd));
-        return SF_EIO;
+        return sf_seterr(err, errlen, SF_EIO, "%s: cannot read: %s", path, strerror(rd));
     }
     if (n > cap) {
         free(buf);
-        return sf_seterr(err, errlen, SF_EPARSE, "%s: scene file larger than 1 MiB", path);
+        return sf_seterr(err, errlen, SF_EPARSE, "%s: %s file larger than 1 MiB", path, what);
     }
     buf[n] = '\0';
     if (strlen(buf) != n) {
         free(buf);
-        return sf_seterr(err, errlen, SF_EPARSE, "%s: scene file contains a NUL byte", path);
+        return sf_seterr(err, errlen, SF_EPARSE, "%s: %s file contains a NUL byte", path, what);
     }
-    int rc = sf_scene_parse(s, buf, path, 1, err, errlen);
+    *text = buf;
+    *len = n;
+    return SF_SUCCESS;
+}
+
+int sf_scene_read_file(sf_scene *s, const char *path, char *err, size_t errlen)
+{
+    char *buf;
+    size_t n;
+    int rc = sf_read_text(path, "scene", &buf, &n, err, errlen);
+    if (rc)
+        return rc;
+    rc = sf_scene_parse(s, buf, path, 1, err, errlen);
     free(buf);
     return rc;
 }

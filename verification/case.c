@@ -82,23 +82,12 @@ int sf_case_parse(sf_case *c, const char *path, const char *text, size_t n, char
 int sf_case_read(sf_case *c, const char *path, char *err, size_t errlen)
 {
     memset(c, 0, sizeof *c);
-    FILE *f = fopen(path, "rb");
-    if (!f)
-        return sf_seterr(err, errlen, SF_EIO, "%s: cannot open: %s", path, strerror(errno));
-    size_t cap = 1u << 20;
-    char *buf = malloc(cap + 1);
-    if (!buf) {
-        fclose(f);
-        return SF_ENOMEM;
-    }
-    size_t n = fread(buf, 1, cap + 1, f);
-    int rd_err = ferror(f);
-    fclose(f);
-    if (rd_err) {
-        free(buf);
-        return sf_seterr(err, errlen, SF_EIO, "%s: cannot read (a directory?)", path);
-    }
-    int rc = sf_case_parse(c, path, buf, n, err, errlen);
+    char *buf;
+    size_t n;
+    int rc = sf_read_text(path, "case", &buf, &n, err, errlen);
+    if (rc)
+        return rc;
+    rc = sf_case_parse(c, path, buf, n, err, errlen);
     free(buf);
     return rc;
 }
