@@ -227,6 +227,18 @@ struct sf_cof_plan {
     double l, R;               /* tiles: correlation length, disc radius [m] */
 };
 
+/* The plan's grid: nx x ny points (whole numbers), spacing h [m], x from
+ * x0, |y| <= W, bound B (cof.h) [m]. */
+static void set_grid(sf_cof_plan_info *in, double nx, double ny, double h, double x0, double W, double B)
+{
+    in->nx = (size_t)nx;
+    in->ny = (size_t)ny;
+    in->dx = in->dy = h;
+    in->x0 = x0;
+    in->y0 = -W;
+    in->bound = B;
+}
+
 int sf_cof_plan_alloc(const sf_scene *s, sf_cof_plan **out, char *err, size_t errlen)
 {
     *out = NULL;
@@ -277,15 +289,10 @@ int sf_cof_plan_alloc(const sf_scene *s, sf_cof_plan **out, char *err, size_t er
             if (!(mx * ny <= (double)SF_COF_MAX_POINTS)) {
                 free(p);
                 return sf_seterr(err, errlen, SF_ETOOBIG,
-                                "the tiled window needs %.3g grid points (spacing l/8 = %.3g m): above the cap of "
-                                "2^24; raise l or set strip_halfwidth", mx * ny, h);
+                                 "the tiled window needs %.3g grid points (spacing l/8 = %.3g m): above the cap of "
+                                 "2^24; raise l or set strip_halfwidth", mx * ny, h);
             }
-            p->info.nx = (size_t)mx;
-            p->info.ny = (size_t)ny;
-            p->info.dx = p->info.dy = h;
-            p->info.x0 = -s->v_b * s->T - B;
-            p->info.y0 = -W;
-            p->info.bound = B;
+            set_grid(&p->info, mx, ny, h, -s->v_b * s->T - B, W, B);
             p->info.margin = M;
             p->l = s->l;
             p->R = s->R;
@@ -295,15 +302,10 @@ int sf_cof_plan_alloc(const sf_scene *s, sf_cof_plan **out, char *err, size_t er
         if (!(nx * ny <= (double)SF_COF_MAX_POINTS)) {
             free(p);
             return sf_seterr(err, errlen, SF_ETOOBIG,
-                            "the belt strip needs %.3g grid points (spacing l/8 = %.3g m): above the cap of 2^24; "
-                            "raise l, lower v_b T or set strip_halfwidth", nx * ny, h);
+                             "the belt strip needs %.3g grid points (spacing l/8 = %.3g m): above the cap of 2^24; "
+                             "raise l, lower v_b T or set strip_halfwidth", nx * ny, h);
         }
-        p->info.nx = (size_t)nx;
-        p->info.ny = (size_t)ny;
-        p->info.dx = p->info.dy = h;
-        p->info.x0 = -s->v_b * s->T - B;
-        p->info.y0 = -W;
-        p->info.bound = B;
+        set_grid(&p->info, nx, ny, h, -s->v_b * s->T - B, W, B);
         sf_scene gs = *s;
         gs.nx = p->info.nx;
         gs.ny = p->info.ny;
@@ -312,8 +314,8 @@ int sf_cof_plan_alloc(const sf_scene *s, sf_cof_plan **out, char *err, size_t er
         if (rc == SF_ETOOBIG) {   /* the embedding is over its own cap */
             free(p);
             return sf_seterr(err, errlen, SF_ETOOBIG,
-                            "the %.0f x %.0f grid points of the belt strip need a circulant embedding above its cap "
-                            "of 2^25 points; raise l, lower v_b T or set strip_halfwidth", nx, ny);
+                             "the %.0f x %.0f grid points of the belt strip need a circulant embedding above its cap "
+                             "of 2^25 points; raise l, lower v_b T or set strip_halfwidth", nx, ny);
         }
         if (!sf_usable(rc)) {
             free(p);

@@ -555,6 +555,47 @@ static int follow(sf_osc *o, double t, const double *y, double *hcap)
     return SF_SUCCESS;
 }
 
+/* One slip step of the stepper from (*t, y), capped at hcap [s] (the COF
+ * window's reach) and at T: fixed dt for RK4, else the error-controlled
+ * step (*h: the next trial step). */
+static int slip_step(sf_osc *o, double *t, double *y, double hcap, double *h, char *err, size_t errlen)
+{
+    const sf_scene *s = &o->s;
+    if (s->integrator == SF_INTEG_RK4) {
+        double hh = fmin(s->dt, s->T - *t), yerr[NSTATE];
+        int last = s->T - *t <= s->dt;
+        if (hcap < hh) {
+            hh = hcap;
+            last = 0;
+        }
+        gsl_odeiv2_step_apply(o->step, *t, hh, y, yerr, NULL, NULL, &o->sys);
+        *t = last ? s->T : *t + hh;
+        return SF_SUCCESS;
+    }
+    int st = gsl_odeiv2_evolve_apply(o->ev, o->con, o->step, &o->sys, t, fmin(s->T, *t + hcap), h, y);
+    if (st != GSL_SUCCESS)
+        return sf_seterr(err, errlen, SF_EFAIL, "the adaptive stepper failed (step size underflow)");
+    return SF_SUCCESS;
+}
+
+/* The QoIs: means over the complete cycles (NAN when there is none). */
+static void cycle_means(sf_osc_result *res, const acc *a)
+{
+    if (!res->ncycles) {
+        res->pv_x = res->pv_F = res->stick_fraction = res->period = NAN;
+        return;
+    }
+    double sx = 0, sF = 0;
+    for (size_t i = 0; i < res->ncycles; i++) {
+        sx += res->cycle_pv_x[i];
+        sF += res->cycle_pv_F[i];
+    }
+    res->pv_x = sx / (double)res->ncycles;
+    res->pv_F = sF / (double)res->ncycles;
+    res->stick_fraction = a->stick_total / a->cycle_total;
+    res->period = a->cycle_total / (double)res->ncycles;
+}
+
 int sf_osc_run(sf_osc *o, sf_osc_row_fn row, void *ctx, double sample_dt, sf_osc_result *res,
                char *err, size_t errlen)
 {
@@ -638,22 +679,8 @@ int sf_osc_run(sf_osc *o, sf_osc_row_fn row, void *ctx, double sample_dt, sf_osc
         /* slip: one step */
         double t0 = t, y0[NSTATE];
         memcpy(y0, y, sizeof y0);
-        if (s->integrator == SF_INTEG_RK4) {
-            double hh = fmin(s->dt, s->T - t), yerr[NSTATE];
-            int last = s->T - t <= s->dt;
-            if (hcap < hh) {
-                hh = hcap;
-                last = 0;
-            }
-            gsl_odeiv2_step_apply(o->step, t, hh, y, yerr, NULL, NULL, &o->sys);
-            t = last ? s->T : t + hh;
-        } else {
-            int st = gsl_odeiv2_evolve_apply(o->ev, o->con, o->step, &o->sys, &t, fmin(s->T, t + hcap), &h, y);
-            if (st != GSL_SUCCESS) {
-                rc = sf_seterr(err, errlen, SF_EFAIL, "the adaptive stepper failed (step size underflow)");
-                break;
-            }
-        }
+        if ((rc = slip_step(o, &t, y, hcap, &h, err, errlen)))
+            break;
         res->steps++;
         for (int i = 0; i < NSTATE; i++)
             if (!isfinite(y[i])) {
@@ -707,19 +734,7 @@ int sf_osc_run(sf_osc *o, sf_osc_row_fn row, void *ctx, double sample_dt, sf_osc
     res->wrench_evals = o->wrench_evals;
     if (!rc && res->off_strip)
         rc = sf_seterr(err, errlen, SF_EFAIL, "the disc left the belt strip of the COF field: raise strip_halfwidth");
-    if (res->ncycles) {
-        double sx = 0, sF = 0;
-        for (size_t i = 0; i < res->ncycles; i++) {
-            sx += res->cycle_pv_x[i];
-            sF += res->cycle_pv_F[i];
-        }
-        res->pv_x = sx / (double)res->ncycles;
-        res->pv_F = sF / (double)res->ncycles;
-        res->stick_fraction = a.stick_total / a.cycle_total;
-        res->period = a.cycle_total / (double)res->ncycles;
-    } else {
-        res->pv_x = res->pv_F = res->stick_fraction = res->period = NAN;
-    }
+    cycle_means(res, &a);
     return rc;
 }
 
