@@ -6,6 +6,7 @@
 #if SF_HAVE_CVODE
 
 #include "oscillator.h"
+#include "sf_error.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -43,9 +44,7 @@ struct sf_cvpeer {
 
 static int seterr(char *err, size_t n, const char *what, const char *detail)
 {
-    if (err && n)
-        snprintf(err, n, "CVODE peer: %s%s%s", what, detail && *detail ? ": " : "", detail ? detail : "");
-    return 1;
+    return sf_seterr(err, n, 1, "CVODE peer: %s%s%s", what, detail && *detail ? ": " : "", detail ? detail : "");
 }
 
 /* CVODE's vector y into the solver's state vector full and back */

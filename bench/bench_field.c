@@ -45,13 +45,13 @@ int fb_render(sf_result *r, const char *dir)
     return rc;
 }
 
-/* Plan a field; SF_ECAP (padding cap reached, plan usable) is not an error
+/* Plan a field; SF_ETRUNC (padding cap reached, plan usable) is not an error
  * here: the caller reports cov_error. */
 static sf_field *plan(const sf_field_spec *spec, const char *what)
 {
     sf_field *f;
     int rc = sf_field_alloc(spec, &f);
-    if (rc && rc != SF_ECAP) {
+    if (!sf_usable(rc)) {
         fprintf(stderr, "bench: cannot plan %s: %s\n", what, sf_strerror(rc));
         return NULL;
     }

@@ -141,8 +141,7 @@ int bench_field_cholesky(FILE *f, const char *dir, fb_cost *circ, fb_cost *chol,
     double N[FB_NCHOL];
     size_t k = 0;
     const char *stopped = "";
-    gsl_set_error_handler_off();
-    for (; k < FB_NCHOL; k++) {
+    for (; k < FB_NCHOL; k++) {   /* GSL's handler is off: bench main calls sf_init() */
         N[k] = (double)(ns[k] * ns[k]);
         if (k > 0 && chol[k - 1].setup * pow(N[k] / N[k - 1], 3.0) > max_chol) {
             stopped = " (stopped: the next Cholesky was predicted above 10 s)";

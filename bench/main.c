@@ -5,6 +5,7 @@
  * name, renamed when complete) with the plots beside it. */
 #include "bench.h"
 #include "version.h"
+#include "sf_error.h"
 
 #include <errno.h>
 #include <stdlib.h>
@@ -16,6 +17,7 @@
 
 int main(int argc, char **argv)
 {
+    sf_init();   /* GSL statuses are returned, not abort()ed on (sf_error.h) */
     const char *dir = argc > 1 ? argv[1] : "reports/bench";
     char buf[600];
     snprintf(buf, sizeof buf, "%s", dir);

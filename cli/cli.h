@@ -4,9 +4,7 @@
 
 #include <stdio.h>
 #include "scene.h"
-
-/* Exit codes (DESIGN.md sec. 2). */
-enum { SF_EXIT_OK = 0, SF_EXIT_CHECK = 1, SF_EXIT_USAGE = 2, SF_EXIT_INTERNAL = 3 };
+#include "sf_error.h"   /* SF_EXIT_* */
 
 /* Read a scene file with Table 1 defaults; on error print it and return
  * SF_EXIT_USAGE. */

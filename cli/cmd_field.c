@@ -35,7 +35,7 @@ int sf_cmd_field(int argc, char **argv)
         return SF_EXIT_USAGE;
     sf_lnfield *lf;
     rc = sf_lnfield_alloc(&s, &lf);
-    if (rc == SF_ECAP) {
+    if (rc == SF_ETRUNC) {
         fprintf(stderr, "slipfield field: warning: embedding padding cap reached; covariance error %.3g\n",
                 sf_field_get_info(sf_lnfield_gaussian(lf))->cov_error);
     } else if (rc) {

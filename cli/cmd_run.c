@@ -41,7 +41,7 @@ static void summary(FILE *f, const sf_scene *s, const sf_osc_result *r)
     fprintf(f, "energy_change = %.17g\nfriction_work = %.17g\njump_energy = %.17g\nenergy_residual = %.17g\n",
             r->energy_change, r->friction_work, r->jump_energy, r->energy_residual);
     fprintf(f, "steps = %lu\nrejected_steps = %lu\nbisection_steps = %lu\nwrench_evaluations = %lu\n", r->steps,
-            r->rejected, r->bisections, r->wrench_evals);
+            r->rejected, r->event_trials, r->wrench_evals);
     fprintf(f, "t_skip = %.17g\nT = %.17g\nseed = %lu\n", s->t_skip, s->T, s->seed);
 }
 

@@ -76,8 +76,7 @@ static int with_wisdom(const command *c, int argc, char **argv)
 
 static int dispatch(int argc, char **argv)
 {
-    /* Every GSL status is checked where it is returned: no abort(). */
-    gsl_set_error_handler_off();
+    sf_init();   /* GSL statuses are returned, not abort()ed on (sf_error.h) */
     if (argc < 2) {
         usage(stderr);
         return SF_EXIT_USAGE;

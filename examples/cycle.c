@@ -4,6 +4,7 @@
 #include <slipfield/cof.h>
 #include <slipfield/cycle1d.h>
 #include <slipfield/oscillator.h>
+#include <slipfield/sf_error.h>
 #include <math.h>
 #include <stdio.h>
 
@@ -15,6 +16,7 @@ int main(void)
     sf_osc_result res = { 0 };
     sf_cycle1d cf;
     char err[256] = "";
+    sf_init();               /* once, first: GSL errors are returned, not abort()ed on */
     sf_scene_default(&s);    /* Table 1: m = 10 kg, k = 30 N/m, v_b = 0.2 m/s, ... */
     if (sf_scene_parse(&s, "cof = uniform\ndof = 1\nrtol = 1e-10\nT = 60\nt_skip = 10\n", "example", 1, err, sizeof err) ||
         sf_cof_alloc_uniform(s.mu_mean, &cof) || sf_osc_alloc(&s, cof, &osc, err, sizeof err) ||

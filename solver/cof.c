@@ -161,7 +161,7 @@ int sf_cof_follow(const sf_cof *cc, double xlo, double xhi)
         return SF_EINVAL;
     long hi = (long)ceil(xhi / h) + (long)c->slack_r, lo = hi - (long)(c->m - 1);
     if ((double)lo * h > xlo)
-        return SF_ECAP;   /* wider than the window */
+        return SF_ETOOBIG;   /* wider than the window */
     return window_slide(c, lo);
 }
 
@@ -227,11 +227,16 @@ struct sf_cof_plan {
     double l, R;               /* tiles: correlation length, disc radius [m] */
 };
 
-static int plan_err(char *err, size_t n, int rc, const char *fmt, double a, double b)
+/* The plan's grid: nx x ny points (whole numbers), spacing h [m], x from
+ * x0, |y| <= W, bound B (cof.h) [m]. */
+static void set_grid(sf_cof_plan_info *in, double nx, double ny, double h, double x0, double W, double B)
 {
-    if (err && n)
-        snprintf(err, n, fmt, a, b);
-    return rc;
+    in->nx = (size_t)nx;
+    in->ny = (size_t)ny;
+    in->dx = in->dy = h;
+    in->x0 = x0;
+    in->y0 = -W;
+    in->bound = B;
 }
 
 int sf_cof_plan_alloc(const sf_scene *s, sf_cof_plan **out, char *err, size_t errlen)
@@ -245,7 +250,7 @@ int sf_cof_plan_alloc(const sf_scene *s, sf_cof_plan **out, char *err, size_t er
     int rc = sf_lognormal_init(&p->ln, s->mu_mean, s->mu_std);
     if (rc) {
         free(p);
-        return plan_err(err, errlen, rc, "invalid COF marginal (mean %g, std %g)", s->mu_mean, s->mu_std);
+        return sf_seterr(err, errlen, rc, "invalid COF marginal (mean %g, std %g)", s->mu_mean, s->mu_std);
     }
     if (p->info.kind == SF_COF_FIELD) {
         double h = s->l / 8;
@@ -271,9 +276,8 @@ int sf_cof_plan_alloc(const sf_scene *s, sf_cof_plan **out, char *err, size_t er
         if (gen == SF_COFGEN_TILES) {
             if (s->precorrect && s->mu_std > 0) {
                 free(p);
-                if (err && errlen)
-                    snprintf(err, errlen, "precorrect needs cof_generator = circulant (the tiles make Eq. 2 only)");
-                return SF_EINVAL;
+                return sf_seterr(err, errlen, SF_EINVAL,
+                                 "precorrect needs cof_generator = circulant (the tiles make Eq. 2 only)");
             }
             /* the window: the disc's footprint 2R, a margin M = R/4 each
              * side (a step never moves the disc by more than M/2: sf_osc;
@@ -284,16 +288,11 @@ int sf_cof_plan_alloc(const sf_scene *s, sf_cof_plan **out, char *err, size_t er
             double mx = ceil((3 * s->R + 3 * M) / h) + 1;
             if (!(mx * ny <= (double)SF_COF_MAX_POINTS)) {
                 free(p);
-                return plan_err(err, errlen, SF_ECAP,
-                                "the tiled window needs %.3g grid points (spacing l/8 = %.3g m): above the cap of "
-                                "2^24; raise l or set strip_halfwidth", mx * ny, h);
+                return sf_seterr(err, errlen, SF_ETOOBIG,
+                                 "the tiled window needs %.3g grid points (spacing l/8 = %.3g m): above the cap of "
+                                 "2^24; raise l or set strip_halfwidth", mx * ny, h);
             }
-            p->info.nx = (size_t)mx;
-            p->info.ny = (size_t)ny;
-            p->info.dx = p->info.dy = h;
-            p->info.x0 = -s->v_b * s->T - B;
-            p->info.y0 = -W;
-            p->info.bound = B;
+            set_grid(&p->info, mx, ny, h, -s->v_b * s->T - B, W, B);
             p->info.margin = M;
             p->l = s->l;
             p->R = s->R;
@@ -302,30 +301,25 @@ int sf_cof_plan_alloc(const sf_scene *s, sf_cof_plan **out, char *err, size_t er
         }
         if (!(nx * ny <= (double)SF_COF_MAX_POINTS)) {
             free(p);
-            return plan_err(err, errlen, SF_ECAP,
-                            "the belt strip needs %.3g grid points (spacing l/8 = %.3g m): above the cap of 2^24; "
-                            "raise l, lower v_b T or set strip_halfwidth", nx * ny, h);
+            return sf_seterr(err, errlen, SF_ETOOBIG,
+                             "the belt strip needs %.3g grid points (spacing l/8 = %.3g m): above the cap of 2^24; "
+                             "raise l, lower v_b T or set strip_halfwidth", nx * ny, h);
         }
-        p->info.nx = (size_t)nx;
-        p->info.ny = (size_t)ny;
-        p->info.dx = p->info.dy = h;
-        p->info.x0 = -s->v_b * s->T - B;
-        p->info.y0 = -W;
-        p->info.bound = B;
+        set_grid(&p->info, nx, ny, h, -s->v_b * s->T - B, W, B);
         sf_scene gs = *s;
         gs.nx = p->info.nx;
         gs.ny = p->info.ny;
         gs.dx = gs.dy = h;
         rc = sf_lnfield_alloc(&gs, &p->field);
-        if (rc == SF_ENOMEM) {   /* the embedding is over its own cap */
+        if (rc == SF_ETOOBIG) {   /* the embedding is over its own cap */
             free(p);
-            return plan_err(err, errlen, SF_ECAP,
-                            "the %.0f x %.0f grid points of the belt strip need a circulant embedding above its cap "
-                            "of 2^25 points; raise l, lower v_b T or set strip_halfwidth", nx, ny);
+            return sf_seterr(err, errlen, SF_ETOOBIG,
+                             "the %.0f x %.0f grid points of the belt strip need a circulant embedding above its cap "
+                             "of 2^25 points; raise l, lower v_b T or set strip_halfwidth", nx, ny);
         }
-        if (rc && rc != SF_ECAP) {
+        if (!sf_usable(rc)) {
             free(p);
-            return plan_err(err, errlen, rc, "cannot plan the %g x %g strip field", nx, ny);
+            return sf_seterr(err, errlen, rc, "cannot plan the %g x %g strip field", nx, ny);
         }
         p->buf = malloc(p->info.nx * p->info.ny * sizeof *p->buf);
         if (!p->buf) {

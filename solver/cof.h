@@ -132,7 +132,7 @@ int sf_cof_covers(const sf_cof *c, double xb, double yb, double r);
  * interface (grid, x0, y0, dx, dy, nx, ny) stays that of a grid.
  * sf_cof_follow() makes the window hold belt x in [xlo, xhi] (all rows),
  * sliding it if needed: SF_SUCCESS (also for non-window COFs, which
- * hold what they hold), SF_ECAP when [xlo, xhi] is wider than the window.
+ * hold what they hold), SF_ETOOBIG when [xlo, xhi] is wider than the window.
  * The oscillator calls it before every step with the disc's footprint
  * plus a margin M = sf_cof_window_margin() (0: not a window) and caps the
  * step so that the disc moves by less than M/2 (oscillator.c). */
@@ -163,7 +163,7 @@ size_t sf_cof_columns_made(const sf_cof *c);
  * friction force it balances).  Grid spacing h = l/8: bilinear
  * interpolation then costs 0.7% of the field's std, RMS
  * (cases/contact/interpolation).  A grid above SF_COF_MAX_POINTS is
- * refused with SF_ECAP and the reason in err.
+ * refused with SF_ETOOBIG and the reason in err.
  * Shortcut: when the strip's diagonal E is so short against l that any
  * two of its points have correlation >= 1 - 1e-6 ((E/l)^2 <= 1e-6), the
  * field is one random variable over the run and the plan draws one

@@ -52,15 +52,6 @@ int sf_contact_wrench(const sf_contact *c, double xb, double yb,
  * limit surface, dimensionless). */
 double sf_contact_mean_cof(const sf_contact *c, double xb, double yb);
 
-/* Stick admissibility of a planar stick force (Fx, Fy) [N] with T = 0 at
- * centre (xb, yb): exact = 0 uses the paper's equatorial circle (radius
- * mean COF * N), exact = 1 the true T = 0 section of the limit surface.
- * *margin > 0 inside (stick holds), < 0 outside; in newtons: the section's
- * radius along the direction of F minus |F|.  Implemented in surface.c
- * (the limit surface module). */
-int sf_contact_stick_margin(const sf_contact *c, double xb, double yb,
-                            double Fx, double Fy, int exact, double *margin);
-
 /* Uniform COF, uniform pressure closed forms (DESIGN.md sec. 5, Contensou
  * coupling): eps = U/(|w| R); |F| = mu N f(eps), |T| = mu N R t(eps). */
 void sf_contensou(double eps, double *f, double *t);

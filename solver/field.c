@@ -174,7 +174,7 @@ static int build_separable(sf_field *f)
     if (rc)
         return rc;
     if (px > s->max_points / py)
-        return SF_ENOMEM;
+        return SF_ETOOBIG;
     f->info.px = px;
     f->info.py = py;
     f->info.separable = 1;
@@ -226,7 +226,7 @@ static int build_general(sf_field *f)
     int tries = 0;
     for (;;) {
         if (px > s->max_points / py)
-            return SF_ENOMEM;
+            return SF_ETOOBIG;
         free(f->lam);
         f->lam = malloc(px * py * sizeof *f->lam);
         if (!f->lam)
@@ -344,7 +344,7 @@ int sf_field_alloc(const sf_field_spec *spec, sf_field **out)
         return rc;
     }
     *out = f;
-    return f->info.truncated ? SF_ECAP : SF_SUCCESS;
+    return f->info.truncated ? SF_ETRUNC : SF_SUCCESS;
 }
 
 void sf_field_free(sf_field *f)

@@ -64,9 +64,10 @@ typedef struct sf_field sf_field;
 void sf_field_spec_default(sf_field_spec *spec, size_t m, size_t n,
                            double dx, double dy, double l);
 
-/* Returns SF_SUCCESS, or SF_ECAP when the padding cap was reached: the plan
- * is still usable (negative eigenvalues clamped, error in info->cov_error).
- * SF_EINVAL / SF_ENOMEM leave *out = NULL. */
+/* Returns SF_SUCCESS, or SF_ETRUNC when the padding cap was reached: the plan
+ * is still usable (negative eigenvalues clamped, error in info->cov_error;
+ * test with sf_usable()).  SF_EINVAL / SF_ENOMEM / SF_ETOOBIG (embedding
+ * over spec->max_points) leave *out = NULL. */
 int sf_field_alloc(const sf_field_spec *spec, sf_field **out);
 void sf_field_free(sf_field *f);
 

@@ -49,7 +49,7 @@ int sf_lnfield_alloc(const sf_scene *s, sf_lnfield **out)
         spec.kernel_params = f;
     }
     rc = sf_field_alloc(&spec, &f->g);
-    if (rc && rc != SF_ECAP) {
+    if (!sf_usable(rc)) {
         free(f);
         return rc;
     }

@@ -17,7 +17,8 @@ typedef struct sf_lnfield sf_lnfield;
 void sf_field_spec_from_scene(const sf_scene *s, sf_field_spec *spec);
 
 /* Grid nx x ny, spacing dx, dy; marginal (mu_mean, mu_std).  Returns
- * SF_SUCCESS or SF_ECAP (usable, truncated), else an error and *out = NULL. */
+ * SF_SUCCESS or SF_ETRUNC (usable, truncated: sf_usable()), else an error
+ * (SF_ETOOBIG: embedding over its cap) and *out = NULL. */
 int sf_lnfield_alloc(const sf_scene *s, sf_lnfield **out);
 void sf_lnfield_free(sf_lnfield *f);
 

@@ -37,12 +37,6 @@ unsigned long sf_mc_hash(const void *p, size_t n, unsigned long h)
     return (unsigned long)x;
 }
 
-static void seterr(char *err, size_t n, const char *msg, const char *path)
-{
-    if (err && n)
-        snprintf(err, n, "%s: %s", path, msg);
-}
-
 /* Read the complete lines of a checkpoint into out/done. */
 static int ck_read(const sf_mc_spec *s, double *out, unsigned char *done, size_t *count, char *err, size_t errlen)
 {
@@ -57,15 +51,14 @@ static int ck_read(const sf_mc_spec *s, double *out, unsigned char *done, size_t
     if (len <= 0 || sscanf(line, "# slipfield checkpoint v1 n=%lu nout=%lu key=%lx", &n, &nout, &key) != 3) {
         free(line);
         fclose(f);
-        seterr(err, errlen, "not a slipfield checkpoint", s->checkpoint);
-        return SF_EINVAL;
+        return sf_seterr(err, errlen, SF_EINVAL, "%s: not a slipfield checkpoint", s->checkpoint);
     }
     if (n != s->n || nout != s->nout || key != s->key) {
         free(line);
         fclose(f);
-        seterr(err, errlen, "checkpoint of other work (scene, size or seed differ): remove it or drop --resume",
-               s->checkpoint);
-        return SF_EINVAL;
+        return sf_seterr(err, errlen, SF_EINVAL,
+                         "%s: checkpoint of other work (scene, size or seed differ): remove it or drop --resume",
+                         s->checkpoint);
     }
     double *v = malloc((s->nout ? s->nout : 1) * sizeof *v);
     while (v && (len = getline(&line, &cap, f)) > 0) {
@@ -157,6 +150,42 @@ static int gather(const sf_mc_spec *s, double *out, int rc)
 #endif
 }
 
+/* One checkpoint line: the realisation index and its outputs, exact (%a). */
+static void ck_line(FILE *ck, size_t i, const double *v, size_t nout)
+{
+    fprintf(ck, "%zu", i);
+    for (size_t k = 0; k < nout; k++)
+        fprintf(ck, " %a", v[k]);
+    fputc('\n', ck);
+}
+
+/* Start the checkpoint: read what a resumed run already has (done, *before)
+ * and rewrite exactly those lines through a temporary file, so the file
+ * only ever holds complete lines of this work; *ck is left open to append. */
+static int ck_start(const sf_mc_spec *s, double *out, unsigned char *done, size_t *before, FILE **ck,
+                    char *err, size_t errlen)
+{
+    int rc;
+    *ck = NULL;
+    if (s->resume && (rc = ck_read(s, out, done, before, err, errlen)))
+        return rc;
+    char tmp[4096];
+    snprintf(tmp, sizeof tmp, "%s.tmp", s->checkpoint);
+    FILE *f = fopen(tmp, "w");
+    if (!f)
+        return sf_seterr(err, errlen, SF_EIO, "%s: cannot write the checkpoint", s->checkpoint);
+    fprintf(f, "# slipfield checkpoint v1 n=%zu nout=%zu key=%lx\n", s->n, s->nout, s->key);
+    for (size_t i = 0; i < s->n; i++)
+        if (done[i])
+            ck_line(f, i, out + i * s->nout, s->nout);
+    if (fflush(f) || rename(tmp, s->checkpoint)) {
+        fclose(f);
+        return sf_seterr(err, errlen, SF_EIO, "%s: cannot write the checkpoint", s->checkpoint);
+    }
+    *ck = f;
+    return SF_SUCCESS;
+}
+
 int sf_mc_run(const sf_mc_spec *s0, const sf_mc_ops *ops, void *ctx, double *out,
               size_t *done_before, char *err, size_t errlen)
 {
@@ -181,39 +210,10 @@ int sf_mc_run(const sf_mc_spec *s0, const sf_mc_ops *ops, void *ctx, double *out
     size_t before = 0;
     FILE *ck = NULL;
     int rc = SF_SUCCESS;
-    if (s->checkpoint) {
-        if (s->resume && (rc = ck_read(s, out, done, &before, err, errlen))) {
-            free(done);
-            free(theirs);
-            return rc;
-        }
-        /* rewrite the kept lines, then append: the file only ever holds
-         * complete lines of this work */
-        char tmp[4096];
-        snprintf(tmp, sizeof tmp, "%s.tmp", s->checkpoint);
-        ck = fopen(tmp, "w");
-        if (!ck) {
-            free(done);
-            free(theirs);
-            seterr(err, errlen, "cannot write the checkpoint", s->checkpoint);
-            return SF_EIO;
-        }
-        fprintf(ck, "# slipfield checkpoint v1 n=%zu nout=%zu key=%lx\n", s->n, s->nout, s->key);
-        for (size_t i = 0; i < s->n; i++) {
-            if (!done[i])
-                continue;
-            fprintf(ck, "%zu", i);
-            for (size_t k = 0; k < s->nout; k++)
-                fprintf(ck, " %a", out[i * s->nout + k]);
-            fputc('\n', ck);
-        }
-        if (fflush(ck) || rename(tmp, s->checkpoint)) {
-            fclose(ck);
-            free(done);
-            free(theirs);
-            seterr(err, errlen, "cannot write the checkpoint", s->checkpoint);
-            return SF_EIO;
-        }
+    if (s->checkpoint && (rc = ck_start(s, out, done, &before, &ck, err, errlen))) {
+        free(done);
+        free(theirs);
+        return rc;
     }
     int tty = s->label && isatty(2);
     size_t finished = before;
@@ -250,10 +250,7 @@ int sf_mc_run(const sf_mc_spec *s0, const sf_mc_ops *ops, void *ctx, double *out
                     failed = 1;
                 } else {
                     if (ck) {
-                        fprintf(ck, "%zu", i);
-                        for (size_t k = 0; k < s->nout; k++)
-                            fprintf(ck, " %a", out[i * s->nout + k]);
-                        fputc('\n', ck);
+                        ck_line(ck, i, out + i * s->nout, s->nout);
                         fflush(ck);
                     }
                     finished++;
@@ -269,8 +266,7 @@ int sf_mc_run(const sf_mc_spec *s0, const sf_mc_ops *ops, void *ctx, double *out
     if (tty)
         fputc('\n', stderr);
     if (ck && fclose(ck) && !rc) {
-        seterr(err, errlen, "cannot write the checkpoint", s->checkpoint);
-        rc = SF_EIO;
+        rc = sf_seterr(err, errlen, SF_EIO, "%s: cannot write the checkpoint", s->checkpoint);
     }
     if (done_before)
         *done_before = before;

@@ -94,9 +94,7 @@ int sf_numplan_make(const sf_scene *s, int quadrature, sf_numplan *p, char *err,
 {
     memset(p, 0, sizeof *p);
     if (!(s->qoi_tol > 0 && s->qoi_tol < 1)) {
-        if (err && errlen)
-            snprintf(err, errlen, "qoi_tol must lie in (0, 1) (got %g)", s->qoi_tol);
-        return SF_EINVAL;
+        return sf_seterr(err, errlen, SF_EINVAL, "qoi_tol must lie in (0, 1) (got %g)", s->qoi_tol);
     }
     p->qoi_tol = s->qoi_tol;
     p->quadrature = quadrature;

@@ -35,17 +35,12 @@ struct sf_osc {
     gsl_odeiv2_control *con;
     gsl_odeiv2_evolve *ev;
     gsl_root_fsolver *root;  /* Brent, for event location */
+    sf_surface *stick_sf;    /* exact-section stick test: one limit surface,
+                                re-centred per stick (made on first use) */
     unsigned long wrench_evals;
     sf_osc_source_fn src;    /* manufactured source (sf_osc_set_source), or NULL */
     void *src_ctx;
 };
-
-static int seterr(char *err, size_t n, int rc, const char *msg)
-{
-    if (err && n)
-        snprintf(err, n, "%s", msg);
-    return rc;
-}
 
 /* Kinetic friction wrench on the disc at time t, state y. */
 static void wrench(sf_osc *o, double t, const double *y, double q[3])
@@ -135,9 +130,9 @@ int sf_osc_alloc(const sf_scene *s, const sf_cof *cof, sf_osc **out, char *err, 
     *out = NULL;
     int constant = sf_cof_get_kind(cof) != SF_COF_FIELD;
     if (s->dof == SF_DOF_1 && !constant)
-        return seterr(err, errlen, SF_EINVAL, "dof = 1 needs a spatially constant COF (cof = uniform or variable)");
+        return sf_seterr(err, errlen, SF_EINVAL, "dof = 1 needs a spatially constant COF (cof = uniform or variable)");
     if (s->dof == SF_DOF_1 && (s->y0 != 0 || s->phi0 != 0 || s->vy0 != 0 || s->w0 != 0))
-        return seterr(err, errlen, SF_EINVAL, "dof = 1 moves along x only: y0, phi0, vy0 and w0 must be 0");
+        return sf_seterr(err, errlen, SF_EINVAL, "dof = 1 moves along x only: y0, phi0, vy0 and w0 must be 0");
     sf_osc *o = calloc(1, sizeof *o);
     if (!o)
         return SF_ENOMEM;
@@ -164,7 +159,7 @@ int sf_osc_alloc(const sf_scene *s, const sf_cof *cof, sf_osc **out, char *err, 
         int rc = sf_contact_alloc(&spec, cof, &o->ct);
         if (rc) {
             free(o);
-            return seterr(err, errlen, rc, "cannot set up the contact quadrature");
+            return sf_seterr(err, errlen, rc, "cannot set up the contact quadrature");
         }
     }
     /* the stepper: the plan's (numplan.c says why) */
@@ -203,6 +198,7 @@ void sf_osc_free(sf_osc *o)
     if (o->con) gsl_odeiv2_control_free(o->con);
     if (o->ev) gsl_odeiv2_evolve_free(o->ev);
     if (o->root) gsl_root_fsolver_free(o->root);
+    sf_surface_free(o->stick_sf);
     free(o);
 }
 
@@ -218,7 +214,7 @@ void sf_osc_explain(const sf_osc *o, FILE *f)
         fprintf(f, "slip wrench: closed form (constant COF %.6g: %s), no quadrature\n", o->mu,
                 o->dof3 ? "Contensou elliptic integrals" : "Eq. 4");
     fprintf(f, "stick: exact motion with the belt, no quadrature; break test on the %s\n",
-            s->exact_section ? "exact T = 0 section (Brent, bracketed by the circle's exit time)"
+            s->exact_section ? "exact T = 0 section (bisection, bracketed by the circle's exit time)"
                              : "equatorial circle (closed-form exit time)");
     if (s->integrator == SF_INTEG_RK4)
         fprintf(f, "stepper: GSL rk4, fixed dt = %g s\n", s->dt);
@@ -338,7 +334,7 @@ static double locate_event(sf_osc *o, int kind, double t0, const double *y0, dou
 }
 
 /* Time to the stick break from (t0, y) with the belt patch fixed. */
-double sf_osc_stick_duration(const sf_osc *o, double t0, const double *y)
+double sf_osc_stick_duration(sf_osc *o, double t0, const double *y)
 {
     const sf_scene *s = &o->s;
     double xb = y[X] - s->v_b * t0, yb = y[Y];
@@ -353,9 +349,10 @@ double sf_osc_stick_duration(const sf_osc *o, double t0, const double *y)
     if (!s->exact_section || !o->ct)
         return tau;
     /* exact section: rho(alpha) <= mu_bar, so the exit lies in [0, tau] */
-    sf_surface *sf;
-    if (sf_surface_alloc(o->ct, xb, yb, &sf))
+    if (!o->stick_sf && sf_surface_alloc(o->ct, xb, yb, &o->stick_sf))
         return tau;
+    sf_surface *sf = o->stick_sf;
+    sf_surface_recentre(sf, o->ct, xb, yb);
     double lo = 0, hi = tau;
     for (int it = 0; it < 200 && hi - lo > fmax(SF_OSC_TIME_TOL, 8 * DBL_EPSILON * (t0 + tau)); it++) {
         double mid = 0.5 * (lo + hi), x = y[X] + s->v_b * mid, rho;
@@ -365,7 +362,6 @@ double sf_osc_stick_duration(const sf_osc *o, double t0, const double *y)
         else
             hi = mid;
     }
-    sf_surface_free(sf);
     return hi;
 }
 
@@ -559,6 +555,47 @@ static int follow(sf_osc *o, double t, const double *y, double *hcap)
     return SF_SUCCESS;
 }
 
+/* One slip step of the stepper from (*t, y), capped at hcap [s] (the COF
+ * window's reach) and at T: fixed dt for RK4, else the error-controlled
+ * step (*h: the next trial step). */
+static int slip_step(sf_osc *o, double *t, double *y, double hcap, double *h, char *err, size_t errlen)
+{
+    const sf_scene *s = &o->s;
+    if (s->integrator == SF_INTEG_RK4) {
+        double hh = fmin(s->dt, s->T - *t), yerr[NSTATE];
+        int last = s->T - *t <= s->dt;
+        if (hcap < hh) {
+            hh = hcap;
+            last = 0;
+        }
+        gsl_odeiv2_step_apply(o->step, *t, hh, y, yerr, NULL, NULL, &o->sys);
+        *t = last ? s->T : *t + hh;
+        return SF_SUCCESS;
+    }
+    int st = gsl_odeiv2_evolve_apply(o->ev, o->con, o->step, &o->sys, t, fmin(s->T, *t + hcap), h, y);
+    if (st != GSL_SUCCESS)
+        return sf_seterr(err, errlen, SF_EFAIL, "the adaptive stepper failed (step size underflow)");
+    return SF_SUCCESS;
+}
+
+/* The QoIs: means over the complete cycles (NAN when there is none). */
+static void cycle_means(sf_osc_result *res, const acc *a)
+{
+    if (!res->ncycles) {
+        res->pv_x = res->pv_F = res->stick_fraction = res->period = NAN;
+        return;
+    }
+    double sx = 0, sF = 0;
+    for (size_t i = 0; i < res->ncycles; i++) {
+        sx += res->cycle_pv_x[i];
+        sF += res->cycle_pv_F[i];
+    }
+    res->pv_x = sx / (double)res->ncycles;
+    res->pv_F = sF / (double)res->ncycles;
+    res->stick_fraction = a->stick_total / a->cycle_total;
+    res->period = a->cycle_total / (double)res->ncycles;
+}
+
 int sf_osc_run(sf_osc *o, sf_osc_row_fn row, void *ctx, double sample_dt, sf_osc_result *res,
                char *err, size_t errlen)
 {
@@ -596,14 +633,14 @@ int sf_osc_run(sf_osc *o, sf_osc_row_fn row, void *ctx, double sample_dt, sf_osc
     }
     double hcap;
     if ((rc = follow(o, 0, y, &hcap)))
-        return seterr(err, errlen, rc, "the COF window cannot follow the disc");
+        return sf_seterr(err, errlen, rc, "the COF window cannot follow the disc");
     wrench(o, 0, y, q);
     double pa[3] = { y[X], y[VX], stick ? 0 : (-s->k * y[X] + q[0]) / s->m };   /* x, vx, ax at the last step end */
     sample(res, &next, 0, pa, 0, pa);
     emit(o, row, ctx, 0, y, stick ? (double[3]){ s->k * y[X], s->k * y[Y], 0 } : q, stick);
     while (t < s->T && rc == SF_SUCCESS) {
         if ((rc = follow(o, t, y, &hcap))) {
-            rc = seterr(err, errlen, rc, "the COF window cannot follow the disc");
+            rc = sf_seterr(err, errlen, rc, "the COF window cannot follow the disc");
             break;
         }
         if (stick) {
@@ -642,46 +679,30 @@ int sf_osc_run(sf_osc *o, sf_osc_row_fn row, void *ctx, double sample_dt, sf_osc
         /* slip: one step */
         double t0 = t, y0[NSTATE];
         memcpy(y0, y, sizeof y0);
-        if (s->integrator == SF_INTEG_RK4) {
-            double hh = fmin(s->dt, s->T - t), yerr[NSTATE];
-            int last = s->T - t <= s->dt;
-            if (hcap < hh) {
-                hh = hcap;
-                last = 0;
-            }
-            gsl_odeiv2_step_apply(o->step, t, hh, y, yerr, NULL, NULL, &o->sys);
-            t = last ? s->T : t + hh;
-        } else {
-            int st = gsl_odeiv2_evolve_apply(o->ev, o->con, o->step, &o->sys, &t, fmin(s->T, t + hcap), &h, y);
-            if (st != GSL_SUCCESS) {
-                rc = seterr(err, errlen, SF_EFAIL, "the adaptive stepper failed (step size underflow)");
-                break;
-            }
-        }
+        if ((rc = slip_step(o, &t, y, hcap, &h, err, errlen)))
+            break;
         res->steps++;
         for (int i = 0; i < NSTATE; i++)
             if (!isfinite(y[i])) {
-                char m[160];
-                snprintf(m, sizeof m, "non-finite state at t = %.9g s (slip)", t);
-                rc = seterr(err, errlen, SF_EFAIL, m);
+                rc = sf_seterr(err, errlen, SF_EFAIL, "non-finite state at t = %.9g s (slip)", t);
             }
         if (rc)
             break;
         if (res->steps > budget) {
-            rc = seterr(err, errlen, SF_EMAXITER, "step budget (2e8 steps) exhausted");
+            rc = sf_seterr(err, errlen, SF_EMAXITER, "step budget (2e8 steps) exhausted");
             break;
         }
         double g1 = sf_osc_g_stick(o, t, y);
         int to_stick = armed && g1 < 0;
         double ye[NSTATE], te = t;
         if (to_stick) {
-            te = locate_event(o, EV_STICK, t0, y0, t, ye, &res->bisections);
+            te = locate_event(o, EV_STICK, t0, y0, t, ye, &res->event_trials);
             t = te;
             memcpy(y, ye, sizeof ye);
         }
         if (y0[VX] * y[VX] < 0) {   /* an extremum of x inside the step */
             double yx[NSTATE];
-            double tx = locate_event(o, EV_VX0, t0, y0, t, yx, &res->bisections), qx[3];
+            double tx = locate_event(o, EV_VX0, t0, y0, t, yx, &res->event_trials), qx[3];
             wrench(o, tx, yx, qx);   /* at the extremum's own time: the belt has moved on by t */
             note(&a, yx[X], qx[0]);
             track(o, tx, res, yx);
@@ -712,20 +733,8 @@ int sf_osc_run(sf_osc *o, sf_osc_row_fn row, void *ctx, double sample_dt, sf_osc
     res->rejected = o->ev->failed_steps;
     res->wrench_evals = o->wrench_evals;
     if (!rc && res->off_strip)
-        rc = seterr(err, errlen, SF_EFAIL, "the disc left the belt strip of the COF field: raise strip_halfwidth");
-    if (res->ncycles) {
-        double sx = 0, sF = 0;
-        for (size_t i = 0; i < res->ncycles; i++) {
-            sx += res->cycle_pv_x[i];
-            sF += res->cycle_pv_F[i];
-        }
-        res->pv_x = sx / (double)res->ncycles;
-        res->pv_F = sF / (double)res->ncycles;
-        res->stick_fraction = a.stick_total / a.cycle_total;
-        res->period = a.cycle_total / (double)res->ncycles;
-    } else {
-        res->pv_x = res->pv_F = res->stick_fraction = res->period = NAN;
-    }
+        rc = sf_seterr(err, errlen, SF_EFAIL, "the disc left the belt strip of the COF field: raise strip_halfwidth");
+    cycle_means(res, &a);
     return rc;
 }
 

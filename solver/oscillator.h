@@ -22,7 +22,9 @@
  * the T = 0 section of the limit surface at the (fixed) belt point: the
  * equatorial circle of radius mu_bar m g by default, whose exit time is a
  * closed form, or the exact section (`exact_section`), bracketed by that
- * time and located with GSL's Brent solver.
+ * time and located by bisection (sf_osc_stick_duration: the margin is a
+ * pass over the cells per trial, and bisection halves [0, tau] to
+ * SF_OSC_TIME_TOL in a bounded number of them).
  * Slip -> stick: lambda = |(vx - v_b, vy)/(omega_n R), w/omega_n| (Sec.
  * 2.4) falls below eps_lambda AND the stick wrench is admissible; located
  * by GSL's Brent solver on single steps of the same stepper from the step's
@@ -83,7 +85,7 @@ typedef struct {
     /* energy: E(T) - E(0) - W - J, and its parts [J] */
     double energy_change, friction_work, jump_energy, energy_residual;
     /* cost */
-    unsigned long steps, rejected, bisections, wrench_evals;   /* bisections: trial steps of the event search */
+    unsigned long steps, rejected, event_trials, wrench_evals;   /* event_trials: trial steps of the (Brent) event search */
     unsigned long off_strip;     /* accepted states whose contact patch left the COF strip */
     double x_min, x_max, y_absmax;
 } sf_osc_result;
@@ -172,8 +174,9 @@ double sf_osc_g_stick(const sf_osc *o, double t, const double *y);
 /* Duration of the stick phase starting at (t, y) (>= 0): the belt patch
  * stays fixed, the disc moves with the belt, the break is the exit of the
  * stick wrench from the equatorial circle (closed form) or from the exact
- * T = 0 section (scene exact_section). */
-double sf_osc_stick_duration(const sf_osc *o, double t, const double *y);
+ * T = 0 section (scene exact_section; o keeps one limit surface for it,
+ * re-centred on each call: hence o is not const). */
+double sf_osc_stick_duration(sf_osc *o, double t, const double *y);
 
 /* Stick motion over dt (exact, no quadrature): x += v_b dt, and the stick
  * wrench's work into y[SF_OSC_WORK]. */

@@ -20,11 +20,14 @@ typedef struct {
     int lo_open, hi_open;
     const char *def;    /* default as text, parsed by the same code */
     const char *unit;
-    const char *choices;/* enum: "a|b|c" in value order */
+    const char *const *choices; /* enum: names in value order, NULL-terminated (CHOICES) */
     const char *help;
 } key_t_;
 
 #define OFF(f) offsetof(sf_scene, f)
+/* An enum key's names, in value order: a static array (C11 6.5.2.5), so
+ * sf_scene_enum_name() can return them as they are. */
+#define CHOICES(...) ((const char *const[]){ __VA_ARGS__, NULL })
 #define INF HUGE_VAL
 
 static const key_t_ keys[] = {
@@ -42,7 +45,7 @@ static const key_t_ keys[] = {
     { "eps_lambda", K_DOUBLE, OFF(eps_lambda), 0, 0, 1, 1, 0, "1e-3", "1", NULL, "slip-to-stick threshold on lambda (Eq. 12-14)" },
     { "dt", K_DOUBLE, OFF(dt), 0, 0, INF, 1, 0, "1e-3", "s", NULL, "fixed step (rk4) or initial step" },
     { "seed", K_ULONG, OFF(seed), 0, 0, 0, 0, 0, "20230101", "1", NULL, "random seed" },
-    { "cof", K_ENUM, OFF(cof), 0, 0, 0, 0, 0, "field", "", "uniform|variable|field", "COF model" },
+    { "cof", K_ENUM, OFF(cof), 0, 0, 0, 0, 0, "field", "", CHOICES("uniform", "variable", "field"), "COF model" },
     /* random-field grid */
     { "nx", K_SIZE, OFF(nx), 0, 1, 1e6, 0, 0, "64", "1", NULL, "grid points along x" },
     { "ny", K_SIZE, OFF(ny), 0, 1, 1e6, 0, 0, "64", "1", NULL, "grid points along y" },
@@ -51,13 +54,13 @@ static const key_t_ keys[] = {
     { "pad_cap", K_DOUBLE, OFF(pad_cap), 0, 1, 1e6, 0, 0, "16", "1", NULL, "max embedding period / minimal period" },
     { "eig_tol", K_DOUBLE, OFF(eig_tol), 0, 0, 1, 0, 0, "1e-12", "1", NULL, "accept lambda_min >= -eig_tol lambda_max" },
     { "no_padding", K_BOOL, OFF(no_padding), 0, 0, 0, 0, 0, "false", "", NULL, "minimal embedding only" },
-    { "fftw_planner", K_ENUM, OFF(fftw_planner), 0, 0, 0, 0, 0, "estimate", "", "estimate|measure", "sampling FFT plan: estimate (same bits in every process) or measure (timed, faster on large grids; see SLIPFIELD_FFTW_WISDOM)" },
+    { "fftw_planner", K_ENUM, OFF(fftw_planner), 0, 0, 0, 0, 0, "estimate", "", CHOICES("estimate", "measure"), "sampling FFT plan: estimate (same bits in every process) or measure (timed, faster on large grids; see SLIPFIELD_FFTW_WISDOM)" },
     { "precorrect", K_BOOL, OFF(precorrect), 0, 0, 0, 0, 0, "false", "", NULL, "pre-correct the Gaussian correlation so the lognormal field has Eq. 2" },
     { "strip_halfwidth", K_DOUBLE, OFF(strip_halfwidth), 0, 0, INF, 0, 0, "0.5", "m", NULL, "lateral excursion |y| the COF strip covers beyond R (0: the spring-excursion bound); a run that leaves it fails" },
-    { "cof_generator", K_ENUM, OFF(cof_generator), 0, 0, 0, 0, 0, "auto", "", "auto|circulant|tiles", "belt COF field generator: circulant strip over [0, T], tiles generated on demand in a window that follows the disc, or auto (circulant unless its strip exceeds 2^21 points; slipfield run --explain says which)" },
+    { "cof_generator", K_ENUM, OFF(cof_generator), 0, 0, 0, 0, 0, "auto", "", CHOICES("auto", "circulant", "tiles"), "belt COF field generator: circulant strip over [0, T], tiles generated on demand in a window that follows the disc, or auto (circulant unless its strip exceeds 2^21 points; slipfield run --explain says which)" },
     { "samples", K_SIZE, OFF(samples), 0, 1, 1e9, 0, 0, "1000", "1", NULL, "number of samples or realisations" },
     /* contact */
-    { "layout", K_ENUM, OFF(layout), 0, 0, 0, 0, 0, "polar", "", "polar|cartesian", "disc quadrature layout" },
+    { "layout", K_ENUM, OFF(layout), 0, 0, 0, 0, 0, "polar", "", CHOICES("polar", "cartesian"), "disc quadrature layout" },
     { "cells", K_SIZE, OFF(cells), 0, 0, 1e5, 0, 0, "0", "1", NULL, "quadrature resolution (rings or cells per diameter); 0: the plan chooses from qoi_tol and l/R (numplan.h)" },
     { "u", K_DOUBLE, OFF(u), 0, -INF, INF, 0, 0, "-0.2", "m/s", NULL, "relative velocity of the centre, x" },
     { "v", K_DOUBLE, OFF(v), 0, -INF, INF, 0, 0, "0", "m/s", NULL, "relative velocity of the centre, y" },
@@ -65,8 +68,8 @@ static const key_t_ keys[] = {
     { "ntheta", K_SIZE, OFF(ntheta), 0, 1, 1e5, 0, 0, "37", "1", NULL, "limit-surface theta samples" },
     { "npsi", K_SIZE, OFF(npsi), 0, 1, 1e5, 0, 0, "72", "1", NULL, "limit-surface psi samples" },
     /* dynamics */
-    { "integrator", K_ENUM, OFF(integrator), 0, 0, 0, 0, 0, "adaptive", "", "adaptive|rk4|rk8pd|rkck", "time stepper: adaptive = rk8pd for a closed-form wrench, rkck for a quadrature one; rk4 at fixed dt" },
-    { "dof", K_ENUM, OFF(dof), 0, 0, 0, 0, 0, "3", "", "1|3", "degrees of freedom: 1 (Eqs. 3-4, uniform COF) or 3 (x, y, phi; Eq. 5)" },
+    { "integrator", K_ENUM, OFF(integrator), 0, 0, 0, 0, 0, "adaptive", "", CHOICES("adaptive", "rk4", "rk8pd", "rkck"), "time stepper: adaptive = rk8pd for a closed-form wrench, rkck for a quadrature one; rk4 at fixed dt" },
+    { "dof", K_ENUM, OFF(dof), 0, 0, 0, 0, 0, "3", "", CHOICES("1", "3"), "degrees of freedom: 1 (Eqs. 3-4, uniform COF) or 3 (x, y, phi; Eq. 5)" },
     { "rtol", K_DOUBLE, OFF(rtol), 0, 0, 1, 0, 1, "0", "1", NULL, "adaptive stepper relative tolerance; 0: the plan chooses from qoi_tol (numplan.h)" },
     { "qoi_tol", K_DOUBLE, OFF(qoi_tol), 0, 0, 1, 1, 1, "1e-3", "1", NULL, "relative error wanted in a realisation's PV_x, PV_F and stick fraction: the plan sets cells, rtol and the stepper from it (numplan.h)" },
     { "t_skip", K_DOUBLE, OFF(t_skip), 0, 0, INF, 0, 0, "10", "s", NULL, "transient discarded before QoIs" },
@@ -84,8 +87,8 @@ static const key_t_ keys[] = {
     { "check", K_STRING, OFF(check), sizeof(((sf_scene *)0)->check), 0, 0, 0, 0, "", "", NULL, "check to run (cases)" },
     { "tolerance", K_DOUBLE, OFF(tolerance), 0, 0, INF, 0, 0, "0", "", NULL, "tolerance of the check (its units are the check's)" },
     { "alpha", K_DOUBLE, OFF(alpha), 0, 0, 1, 1, 1, "1e-3", "1", NULL, "significance level of a statistical check" },
-    { "tier", K_ENUM, OFF(tier), 0, 0, 0, 0, 0, "quick", "", "quick|full", "verification tier" },
-    { "vv", K_ENUM, OFF(vv), 0, 0, 0, 0, 0, "code", "", "code|solution|validation", "code verification, solution verification or validation" },
+    { "tier", K_ENUM, OFF(tier), 0, 0, 0, 0, 0, "quick", "", CHOICES("quick", "full"), "verification tier" },
+    { "vv", K_ENUM, OFF(vv), 0, 0, 0, 0, 0, "code", "", CHOICES("code", "solution", "validation"), "code verification, solution verification or validation" },
     { "tags", K_STRING, OFF(tags), sizeof(((sf_scene *)0)->tags), 0, 0, 0, 0, "", "", NULL, "comma-separated tags" },
     { "pin_seed", K_BOOL, OFF(pin_seed), 0, 0, 0, 0, 0, "false", "", NULL, "a deterministic check of one pinned realisation: verify --seed leaves this case's seed alone" },
     { "power_alt", K_STRING, OFF(power_alt), sizeof(((sf_scene *)0)->power_alt), 0, 0, 0, 0, "", "", NULL, "alternative a statistical case's power is measured against: KEY*FACTOR or KEY+DELTA (generator only)" },
@@ -97,15 +100,14 @@ static const key_t_ keys[] = {
 #define NKEYS (sizeof keys / sizeof keys[0])
 _Static_assert(sizeof keys / sizeof keys[0] <= SF_SCENE_MAX_KEYS, "key table too large");
 
-static int seterr(char *err, size_t n, const char *fmt, ...)
+/* An enum key's names as "a|b|c" (help text, error messages). */
+static const char *choices_text(const key_t_ *k, char *buf, size_t n)
 {
-    if (err && n) {
-        va_list ap;
-        va_start(ap, fmt);
-        vsnprintf(err, n, fmt, ap);
-        va_end(ap);
-    }
-    return SF_EPARSE;
+    size_t used = 0;
+    buf[0] = '\0';
+    for (int i = 0; k->choices[i] && used < n; i++)
+        used += (size_t)snprintf(buf + used, n - used, "%s%s", i ? "|" : "", k->choices[i]);
+    return buf;
 }
 
 static const key_t_ *find_key(const char *name, size_t len)
@@ -159,10 +161,10 @@ static int assign(sf_scene *s, const key_t_ *k, const char *v, size_t len,
     case K_DOUBLE: {
         double x;
         if (!parse_double(v, len, &x))
-            return seterr(err, errlen, "%s:%d: key '%s': expected a finite number, got '%.*s'",
+            return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key '%s': expected a finite number, got '%.*s'",
                           file, line, k->name, (int)(len > 40 ? 40 : len), v);
         if (!in_range(k, x))
-            return seterr(err, errlen, "%s:%d: key '%s': must be %s (got %g)",
+            return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key '%s': must be %s (got %g)",
                           file, line, k->name, rng, x);
         *(double *)base = x;
         return SF_SUCCESS;
@@ -171,10 +173,10 @@ static int assign(sf_scene *s, const key_t_ *k, const char *v, size_t len,
         double x;
         int ok = parse_double(v, len, &x) && x == floor(x);
         if (!ok || x < 0)
-            return seterr(err, errlen, "%s:%d: key '%s': expected a non-negative whole number, got '%.*s'",
+            return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key '%s': expected a non-negative whole number, got '%.*s'",
                           file, line, k->name, (int)(len > 40 ? 40 : len), v);
         if (!in_range(k, x))
-            return seterr(err, errlen, "%s:%d: key '%s': must be %s (got %g)",
+            return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key '%s': must be %s (got %g)",
                           file, line, k->name, rng, x);
         *(size_t *)base = (size_t)x;
         return SF_SUCCESS;
@@ -183,14 +185,14 @@ static int assign(sf_scene *s, const key_t_ *k, const char *v, size_t len,
         /* seeds: parsed exactly as an integer, never through a double */
         char buf[32];
         if (len >= sizeof buf)
-            return seterr(err, errlen, "%s:%d: key '%s': value too long", file, line, k->name);
+            return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key '%s': value too long", file, line, k->name);
         memcpy(buf, v, len);
         buf[len] = '\0';
         errno = 0;
         char *end;
         unsigned long u = strtoul(buf, &end, 10);
         if (*end || end == buf || errno == ERANGE || !isdigit((unsigned char)buf[0]))
-            return seterr(err, errlen, "%s:%d: key '%s': expected a non-negative whole number, got '%s'",
+            return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key '%s': expected a non-negative whole number, got '%s'",
                           file, line, k->name, buf);
         *(unsigned long *)base = u;
         return SF_SUCCESS;
@@ -201,33 +203,27 @@ static int assign(sf_scene *s, const key_t_ *k, const char *v, size_t len,
             if (strlen(t[i]) == len && strncmp(v, t[i], len) == 0) { *(int *)base = 1; return SF_SUCCESS; }
             if (strlen(f[i]) == len && strncmp(v, f[i], len) == 0) { *(int *)base = 0; return SF_SUCCESS; }
         }
-        return seterr(err, errlen, "%s:%d: key '%s': expected true or false, got '%.*s'",
+        return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key '%s': expected true or false, got '%.*s'",
                       file, line, k->name, (int)(len > 40 ? 40 : len), v);
     }
     case K_ENUM: {
-        const char *c = k->choices;
-        int idx = 0;
-        while (*c) {
-            const char *bar = strchr(c, '|');
-            size_t cl = bar ? (size_t)(bar - c) : strlen(c);
-            if (cl == len && strncmp(c, v, len) == 0) {
+        for (int idx = 0; k->choices[idx]; idx++)
+            if (strlen(k->choices[idx]) == len && strncmp(k->choices[idx], v, len) == 0) {
                 *(int *)base = idx;
                 return SF_SUCCESS;
             }
-            idx++;
-            c += cl + (bar ? 1 : 0);
-        }
-        return seterr(err, errlen, "%s:%d: key '%s': expected one of %s, got '%.*s'",
-                      file, line, k->name, k->choices, (int)(len > 40 ? 40 : len), v);
+        char names[80];
+        return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key '%s': expected one of %s, got '%.*s'",
+                      file, line, k->name, choices_text(k, names, sizeof names), (int)(len > 40 ? 40 : len), v);
     }
     case K_STRING: {
         if (len >= k->size)
-            return seterr(err, errlen, "%s:%d: key '%s': value longer than %zu characters",
+            return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key '%s': value longer than %zu characters",
                           file, line, k->name, k->size - 1);
         for (size_t i = 0; i < len; i++) {
             unsigned char ch = (unsigned char)v[i];
             if (!(isalnum(ch) || ch == '_' || ch == '-' || ch == ',' || ch == '.' || ch == '*' || ch == '+'))
-                return seterr(err, errlen, "%s:%d: key '%s': only letters, digits and _-,.*+ are allowed",
+                return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key '%s': only letters, digits and _-,.*+ are allowed",
                               file, line, k->name);
         }
         memcpy(base, v, len);
@@ -246,15 +242,15 @@ static int assign(sf_scene *s, const key_t_ *k, const char *v, size_t len,
             while (b > a && isspace((unsigned char)v[b - 1])) b--;
             double x;
             if (!parse_double(v + a, b - a, &x))
-                return seterr(err, errlen, "%s:%d: key '%s': item %zu is not a finite number",
+                return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key '%s': item %zu is not a finite number",
                               file, line, k->name, l->n + 1);
             if (l->n == SF_LIST_MAX)
-                return seterr(err, errlen, "%s:%d: key '%s': more than %d values",
+                return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key '%s': more than %d values",
                               file, line, k->name, SF_LIST_MAX);
             l->v[l->n++] = x;
             i = j + 1;
             if (j < len && j + 1 == len)
-                return seterr(err, errlen, "%s:%d: key '%s': trailing comma", file, line, k->name);
+                return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key '%s': trailing comma", file, line, k->name);
         }
         return SF_SUCCESS;
     }
@@ -292,27 +288,27 @@ int sf_scene_parse(sf_scene *s, const char *text, const char *file,
             size_t ql = b - a;
             for (size_t i = 0; i < ql; i++)
                 if (q[i] == '\0' || (!isprint((unsigned char)q[i]) && q[i] != '\t'))
-                    return seterr(err, errlen, "%s:%d: non-printable character in scene line", file, line);
+                    return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: non-printable character in scene line", file, line);
             const char *eq = memchr(q, '=', ql);
             if (!eq)
-                return seterr(err, errlen, "%s:%d: expected 'key = value', got '%.*s'",
+                return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: expected 'key = value', got '%.*s'",
                               file, line, (int)(ql > 40 ? 40 : ql), q);
             size_t kl = (size_t)(eq - q);
             while (kl > 0 && isspace((unsigned char)q[kl - 1])) kl--;
             if (kl == 0)
-                return seterr(err, errlen, "%s:%d: missing key before '='", file, line);
+                return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: missing key before '='", file, line);
             const key_t_ *k = find_key(q, kl);
             if (!k)
-                return seterr(err, errlen, "%s:%d: unknown key '%.*s' (see 'slipfield help scene')",
+                return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: unknown key '%.*s' (see 'slipfield help scene')",
                               file, line, (int)(kl > 40 ? 40 : kl), q);
             size_t idx = (size_t)(k - keys);
             if (s->set[idx])
-                return seterr(err, errlen, "%s:%d: key '%s': set twice", file, line, k->name);
+                return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key '%s': set twice", file, line, k->name);
             const char *v = eq + 1;
             size_t vl = (size_t)(q + ql - v);
             while (vl > 0 && isspace((unsigned char)*v)) { v++; vl--; }
             if (vl == 0)
-                return seterr(err, errlen, "%s:%d: key '%s': missing value", file, line, k->name);
+                return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key '%s': missing value", file, line, k->name);
             int rc = assign(s, k, v, vl, file, line, err, errlen);
             if (rc)
                 return rc;
@@ -326,13 +322,13 @@ int sf_scene_parse(sf_scene *s, const char *text, const char *file,
     return SF_SUCCESS;
 }
 
-int sf_scene_read_file(sf_scene *s, const char *path, char *err, size_t errlen)
+int sf_read_text(const char *path, const char *what, char **text, size_t *len, char *err, size_t errlen)
 {
+    *text = NULL;
+    *len = 0;
     FILE *f = fopen(path, "rb");
-    if (!f) {
-        seterr(err, errlen, "%s: cannot open: %s", path, strerror(errno));
-        return SF_EIO;
-    }
+    if (!f)
+        return sf_seterr(err, errlen, SF_EIO, "%s: cannot open: %s", path, strerror(errno));
     size_t cap = 1u << 20, n;
     char *buf = malloc(cap + 1);
     if (!buf) {
@@ -344,19 +340,30 @@ int sf_scene_read_file(sf_scene *s, const char *path, char *err, size_t errlen)
     fclose(f);
     if (rd) {   /* e.g. a directory: fopen succeeds, reading fails */
         free(buf);
-        seterr(err, errlen, "%s: cannot read: %s", path, strerror(rd));
-        return SF_EIO;
+        return sf_seterr(err, errlen, SF_EIO, "%s: cannot read: %s", path, strerror(rd));
     }
     if (n > cap) {
         free(buf);
-        return seterr(err, errlen, "%s: scene file larger than 1 MiB", path);
+        return sf_seterr(err, errlen, SF_EPARSE, "%s: %s file larger than 1 MiB", path, what);
     }
     buf[n] = '\0';
     if (strlen(buf) != n) {
         free(buf);
-        return seterr(err, errlen, "%s: scene file contains a NUL byte", path);
+        return sf_seterr(err, errlen, SF_EPARSE, "%s: %s file contains a NUL byte", path, what);
     }
-    int rc = sf_scene_parse(s, buf, path, 1, err, errlen);
+    *text = buf;
+    *len = n;
+    return SF_SUCCESS;
+}
+
+int sf_scene_read_file(sf_scene *s, const char *path, char *err, size_t errlen)
+{
+    char *buf;
+    size_t n;
+    int rc = sf_read_text(path, "scene", &buf, &n, err, errlen);
+    if (rc)
+        return rc;
+    rc = sf_scene_parse(s, buf, path, 1, err, errlen);
     free(buf);
     return rc;
 }
@@ -369,20 +376,12 @@ int sf_scene_was_set(const sf_scene *s, const char *key)
 
 const char *sf_scene_enum_name(const char *key, int value)
 {
-    static char buf[64];
     const key_t_ *k = find_key(key, strlen(key));
-    if (!k || k->type != K_ENUM)
+    if (!k || k->type != K_ENUM || value < 0)
         return "?";
-    const char *c = k->choices;
-    for (int i = 0; *c; i++) {
-        const char *bar = strchr(c, '|');
-        size_t cl = bar ? (size_t)(bar - c) : strlen(c);
-        if (i == value) {
-            snprintf(buf, sizeof buf, "%.*s", (int)cl, c);
-            return buf;
-        }
-        c += cl + (bar ? 1 : 0);
-    }
+    for (int i = 0; k->choices[i]; i++)
+        if (i == value)
+            return k->choices[i];
     return "?";
 }
 
@@ -420,7 +419,7 @@ void sf_scene_print_keys(FILE *out)
     for (size_t i = 0; i < NKEYS; i++) {
         char rng[80];
         if (keys[i].type == K_ENUM)
-            snprintf(rng, sizeof rng, "%s", keys[i].choices);
+            choices_text(&keys[i], rng, sizeof rng);
         else if (keys[i].type == K_DOUBLE || keys[i].type == K_SIZE)
             range_text(&keys[i], rng, sizeof rng);
         else

@@ -81,6 +81,12 @@ int sf_scene_parse(sf_scene *s, const char *text, const char *file,
 /* Read and parse a whole scene file (at most 1 MiB). SF_EIO, SF_EPARSE. */
 int sf_scene_read_file(sf_scene *s, const char *path, char *err, size_t errlen);
 
+/* Read a text file of at most 1 MiB whole (scene and case files): *text
+ * is NUL-terminated and malloc'd (caller frees), *len its length.  SF_EIO
+ * when it cannot be opened or read, SF_EPARSE when larger than 1 MiB or
+ * holding a NUL byte (messages name the file and `what`, e.g. "scene"). */
+int sf_read_text(const char *path, const char *what, char **text, size_t *len, char *err, size_t errlen);
+
 /* Whether a key was set by the file (by name; unknown names -> 0). */
 int sf_scene_was_set(const sf_scene *s, const char *key);
 

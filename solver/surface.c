@@ -30,17 +30,27 @@ int sf_surface_alloc(const sf_contact *c, double xb, double yb, sf_surface **out
     }
     const double *rx, *ry, *wt;
     sf_contact_cells(c, &rx, &ry, &wt);
-    const sf_cof *cof = sf_contact_get_cof(c);
-    double R = sf_contact_radius(c), N = sf_contact_normal_force(c);
-    s->mu_bar = 0;
+    double R = sf_contact_radius(c);
     for (size_t i = 0; i < s->n; i++) {
         s->px[i] = rx[i] / R;
         s->py[i] = ry[i] / R;
+    }
+    sf_surface_recentre(s, c, xb, yb);
+    *out = s;
+    return SF_SUCCESS;
+}
+
+void sf_surface_recentre(sf_surface *s, const sf_contact *c, double xb, double yb)
+{
+    const double *rx, *ry, *wt;
+    sf_contact_cells(c, &rx, &ry, &wt);
+    const sf_cof *cof = sf_contact_get_cof(c);
+    double N = sf_contact_normal_force(c);
+    s->mu_bar = 0;
+    for (size_t i = 0; i < s->n; i++) {
         s->a[i] = wt[i] / N * sf_cof_eval(cof, xb + rx[i], yb + ry[i]);
         s->mu_bar += s->a[i];
     }
-    *out = s;
-    return SF_SUCCESS;
 }
 
 void sf_surface_free(sf_surface *s)
@@ -169,7 +179,6 @@ int sf_surface_section_radius(const sf_surface *s, double alpha, double *rho, do
     return rc ? rc : rc2;
 }
 
-/* Declared in contact.h: stick admissibility belongs to the limit surface. */
 int sf_contact_stick_margin(const sf_contact *c, double xb, double yb,
                             double Fx, double Fy, int exact, double *margin)
 {

@@ -25,6 +25,11 @@ typedef struct sf_surface sf_surface;
 int sf_surface_alloc(const sf_contact *c, double xb, double yb, sf_surface **out);
 void sf_surface_free(sf_surface *s);
 
+/* Move a plan made by sf_surface_alloc(c, ...) to centre (xb, yb) of the
+ * same contact c: only the static COF per cell is looked up again (the
+ * same arithmetic as sf_surface_alloc, so the same bits); no allocation. */
+void sf_surface_recentre(sf_surface *s, const sf_contact *c, double xb, double yb);
+
 /* Eq. 11 at (theta, psi) [rad]: q = (F*x, F*y, T*), dimensionless. */
 void sf_surface_point(const sf_surface *s, double theta, double psi, double q[3]);
 
@@ -41,5 +46,15 @@ int sf_surface_section(const sf_surface *s, double psi, double *theta, double q[
  * (dimensionless, in units of N); *psi_out (may be NULL) is the twist
  * azimuth that produces it. */
 int sf_surface_section_radius(const sf_surface *s, double alpha, double *rho, double *psi_out);
+
+/* Stick admissibility of a planar stick force (Fx, Fy) [N] with T = 0 at
+ * centre (xb, yb) of contact c: exact = 0 uses the paper's equatorial
+ * circle (radius mean COF * N), exact = 1 the true T = 0 section of the
+ * limit surface.  *margin > 0 inside (stick holds), < 0 outside; in
+ * newtons: the section's radius along the direction of F minus |F|.
+ * (Named sf_contact_* for its callers; it lives here because stick
+ * admissibility belongs to the limit surface.) */
+int sf_contact_stick_margin(const sf_contact *c, double xb, double yb,
+                            double Fx, double Fy, int exact, double *margin);
 
 #endif

@@ -14,8 +14,7 @@ int sf_sweep_set(sf_scene *s, const char *name, double value, char *err, size_t 
 {
     if (!strcmp(name, "l_over_R")) {
         if (!(value > 0) || !isfinite(value)) {
-            snprintf(err, errlen, "l_over_R must be > 0 (got %g)", value);
-            return SF_EPARSE;
+            return sf_seterr(err, errlen, SF_EPARSE, "l_over_R must be > 0 (got %g)", value);
         }
         s->l = value * s->R;
         return SF_SUCCESS;
@@ -109,8 +108,7 @@ int sf_sweep_run(const sf_scene *s, size_t n, int threads, const char *checkpoin
     out->det[SF_SWEEP_SF] = r.stick_fraction;
     sf_osc_result_free(&r);
     if (!(out->det[SF_SWEEP_PVX] > 0) || !(out->det[SF_SWEEP_SF] > 0)) {
-        snprintf(err, errlen, "the deterministic reference has no complete cycle after t_skip: raise T");
-        return SF_EINVAL;
+        return sf_seterr(err, errlen, SF_EINVAL, "the deterministic reference has no complete cycle after t_skip: raise T");
     }
     out->n = n;
     out->ratio = calloc(n * SF_SWEEP_NQ, sizeof *out->ratio);

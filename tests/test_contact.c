@@ -116,7 +116,7 @@ static void cof_plan(void **state)
     assert_close(sf_cof_plan_get_info(p)->y0, -(0.2 + s.R + 2 * s.l / 8), 1e-15);
     sf_cof_plan_free(p);
     s.l = 1e-3;   /* a 1e-3 m field over a 30 m strip: refused */
-    assert_int_equal(sf_cof_plan_alloc(&s, &p, err, sizeof err), SF_ECAP);
+    assert_int_equal(sf_cof_plan_alloc(&s, &p, err, sizeof err), SF_ETOOBIG);
     assert_non_null(strstr(err, "grid points"));
     s.l = 1e5;    /* a 1e5 m correlation length over a 15 m strip: one variable */
     assert_int_equal(sf_cof_plan_alloc(&s, &p, err, sizeof err), SF_SUCCESS);
@@ -336,6 +336,7 @@ static void section_inside_circle(void **state)
 
 int main(void)
 {
+    sf_init();
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(cof_bilinear),
         cmocka_unit_test(cof_invalid),

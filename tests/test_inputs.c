@@ -54,6 +54,7 @@ static void saved_inputs(void **state)
 
 int main(void)
 {
+    sf_init();
     const struct CMUnitTest tests[] = { cmocka_unit_test(saved_inputs) };
     return cmocka_run_group_tests_name("inputs", tests, NULL, NULL);
 }

@@ -50,6 +50,7 @@ static void distortion(void **state)
 
 int main(void)
 {
+    sf_init();
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(parameters),
         cmocka_unit_test(invalid),

@@ -114,6 +114,7 @@ static void checkpoint_resume(void **state)
 
 int main(void)
 {
+    sf_init();
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(seeds),
         cmocka_unit_test(thread_count_invariance),

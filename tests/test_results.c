@@ -152,6 +152,7 @@ static void drift_rules(void **state)
 
 int main(void)
 {
+    sf_init();
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(results_row_margins),
         cmocka_unit_test(results_case_json),

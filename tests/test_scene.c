@@ -196,6 +196,7 @@ static void power_alternative(void **state)
 
 int main(void)
 {
+    sf_init();
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(scene_defaults_are_table1),
         cmocka_unit_test(scene_good_input),

@@ -12,6 +12,7 @@
 #include <setjmp.h>
 #include <stdint.h>
 #include <cmocka.h>
+#include "sf_error.h"   /* every test main calls sf_init() first */
 
 #define assert_close(a, b, tol) do {                                         \
         double a_ = (a), b_ = (b), t_ = (tol);                               \

@@ -8,22 +8,13 @@
 #include <stdlib.h>
 #include <string.h>
 
-static int fail(char *err, size_t n, int code, const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(err, n, fmt, ap);
-    va_end(ap);
-    return code;
-}
-
 static char *dup_range(const char *a, const char *b)
 {
     size_t n = (size_t)(b - a);
     char *s = malloc(n + 1);
     if (!s) {
         fputs("slipfield: out of memory\n", stderr);
-        exit(3);
+        exit(SF_EXIT_INTERNAL);
     }
     memcpy(s, a, n);
     s[n] = '\0';
@@ -47,17 +38,17 @@ static int make_id(sf_case *c, const char *path, char *err, size_t errlen)
 {
     size_t len = strlen(path);
     if (len < 4 || strcmp(path + len - 3, ".md") != 0)
-        return fail(err, errlen, SF_EPARSE, "%s: a case file must end in .md", path);
+        return sf_seterr(err, errlen, SF_EPARSE, "%s: a case file must end in .md", path);
     const char *end = path + len - 3;
     const char *slash = end;
     while (slash > path && slash[-1] != '/') slash--;
     if (slash == path)
-        return fail(err, errlen, SF_EPARSE, "%s: a case must live in a family folder (cases/<family>/<name>.md)", path);
+        return sf_seterr(err, errlen, SF_EPARSE, "%s: a case must live in a family folder (cases/<family>/<name>.md)", path);
     const char *fam_end = slash - 1, *fam = fam_end;
     while (fam > path && fam[-1] != '/') fam--;
     size_t fl = (size_t)(fam_end - fam), nl = (size_t)(end - slash);
     if (!valid_name(fam, fl) || !valid_name(slash, nl) || fl + nl + 2 > sizeof c->id || fl + 1 > sizeof c->family)
-        return fail(err, errlen, SF_EPARSE,
+        return sf_seterr(err, errlen, SF_EPARSE,
                     "%s: family and case names must be lower-case letters, digits, '_' or '-'", path);
     snprintf(c->family, sizeof c->family, "%.*s", (int)fl, fam);
     snprintf(c->id, sizeof c->id, "%.*s/%.*s", (int)fl, fam, (int)nl, slash);
@@ -71,15 +62,15 @@ int sf_case_parse(sf_case *c, const char *path, const char *text, size_t n, char
 {
     memset(c, 0, sizeof *c);
     if (strlen(path) >= sizeof c->path)
-        return fail(err, errlen, SF_EPARSE, "%s: path too long", path);
+        return sf_seterr(err, errlen, SF_EPARSE, "%s: path too long", path);
     snprintf(c->path, sizeof c->path, "%s", path);
     int rc = make_id(c, path, err, errlen);
     if (rc)
         return rc;
     if (n > (1u << 20))
-        return fail(err, errlen, SF_EPARSE, "%s: case file larger than 1 MiB", path);
+        return sf_seterr(err, errlen, SF_EPARSE, "%s: case file larger than 1 MiB", path);
     if (memchr(text, '\0', n))
-        return fail(err, errlen, SF_EPARSE, "%s: case file contains a NUL byte", path);
+        return sf_seterr(err, errlen, SF_EPARSE, "%s: case file contains a NUL byte", path);
     char *buf = malloc(n + 1);
     if (!buf)
         return SF_ENOMEM;
@@ -91,23 +82,12 @@ int sf_case_parse(sf_case *c, const char *path, const char *text, size_t n, char
 int sf_case_read(sf_case *c, const char *path, char *err, size_t errlen)
 {
     memset(c, 0, sizeof *c);
-    FILE *f = fopen(path, "rb");
-    if (!f)
-        return fail(err, errlen, SF_EIO, "%s: cannot open: %s", path, strerror(errno));
-    size_t cap = 1u << 20;
-    char *buf = malloc(cap + 1);
-    if (!buf) {
-        fclose(f);
-        return SF_ENOMEM;
-    }
-    size_t n = fread(buf, 1, cap + 1, f);
-    int rd_err = ferror(f);
-    fclose(f);
-    if (rd_err) {
-        free(buf);
-        return fail(err, errlen, SF_EIO, "%s: cannot read (a directory?)", path);
-    }
-    int rc = sf_case_parse(c, path, buf, n, err, errlen);
+    char *buf;
+    size_t n;
+    int rc = sf_read_text(path, "case", &buf, &n, err, errlen);
+    if (rc)
+        return rc;
+    rc = sf_case_parse(c, path, buf, n, err, errlen);
     free(buf);
     return rc;
 }
@@ -139,13 +119,13 @@ static int parse_buf(sf_case *c, const char *path, char *buf, size_t n, char *er
             } else if (open && !close_) {
                 if (il != 0) {
                     free(buf);
-                    return fail(err, errlen, SF_EPARSE, "%s:%d: a fence inside the scene block", path, line);
+                    return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: a fence inside the scene block", path, line);
                 }
                 close_ = p;
                 after = next;
             } else if (is_scene) {
                 free(buf);
-                return fail(err, errlen, SF_EPARSE, "%s:%d: a second ```scene block (one per case)", path, line);
+                return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: a second ```scene block (one per case)", path, line);
             }
         }
         p = next;
@@ -153,15 +133,15 @@ static int parse_buf(sf_case *c, const char *path, char *buf, size_t n, char *er
     }
     if (!title) {
         free(buf);
-        return fail(err, errlen, SF_EPARSE, "%s:1: a case starts with a '# Title' line", path);
+        return sf_seterr(err, errlen, SF_EPARSE, "%s:1: a case starts with a '# Title' line", path);
     }
     if (!open) {
         free(buf);
-        return fail(err, errlen, SF_EPARSE, "%s: no ```scene block", path);
+        return sf_seterr(err, errlen, SF_EPARSE, "%s: no ```scene block", path);
     }
     if (!close_) {
         free(buf);
-        return fail(err, errlen, SF_EPARSE, "%s:%d: unterminated ```scene block", path, open_line);
+        return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: unterminated ```scene block", path, open_line);
     }
     size_t tl = (size_t)(title_end - title);
     while (tl && (title[tl - 1] == '\r' || title[tl - 1] == ' ')) tl--;
@@ -177,21 +157,21 @@ static int parse_buf(sf_case *c, const char *path, char *buf, size_t n, char *er
     if (rc)
         return rc;
     if (!sf_scene_was_set(&c->scene, "check"))
-        return fail(err, errlen, SF_EPARSE, "%s:%d: the scene block has no 'check = NAME'", path, c->scene_line);
+        return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: the scene block has no 'check = NAME'", path, c->scene_line);
     if (!sf_check_find(c->scene.check))
-        return fail(err, errlen, SF_EPARSE, "%s: key 'check': unknown check '%s' (see 'slipfield verify --checks')",
+        return sf_seterr(err, errlen, SF_EPARSE, "%s: key 'check': unknown check '%s' (see 'slipfield verify --checks')",
                     path, c->scene.check);
     if (c->scene.power_alt[0]) {
         sf_alt a;
         char e2[128];
         if (sf_alt_parse(c->scene.power_alt, &a, e2, sizeof e2))
-            return fail(err, errlen, SF_EPARSE, "%s:%d: key 'power_alt': %s", path, c->scene_line, e2);
+            return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key 'power_alt': %s", path, c->scene_line, e2);
         if (!sf_scene_was_set(&c->scene, "alpha"))
-            return fail(err, errlen, SF_EPARSE, "%s:%d: 'power_alt' names the alternative of a statistical "
+            return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: 'power_alt' names the alternative of a statistical "
                         "check: the scene must set 'alpha'", path, c->scene_line);
     }
     if (!sf_scene_was_set(&c->scene, "tolerance") && !sf_scene_was_set(&c->scene, "alpha"))
-        return fail(err, errlen, SF_EPARSE, "%s:%d: the scene states neither 'tolerance' nor 'alpha'", path, c->scene_line);
+        return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: the scene states neither 'tolerance' nor 'alpha'", path, c->scene_line);
     return SF_SUCCESS;
 }
 
@@ -208,7 +188,7 @@ gsl_rng *sf_case_rng(const sf_case *c)
     gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
     if (!r) {
         fputs("slipfield: out of memory\n", stderr);
-        exit(3);
+        exit(SF_EXIT_INTERNAL);
     }
     gsl_rng_set(r, c->scene.seed);
     return r;
@@ -233,27 +213,27 @@ int sf_alt_parse(const char *spec, sf_alt *a, char *err, size_t errlen)
     memset(a, 0, sizeof *a);
     size_t kl = strcspn(spec, "*+");
     if (!spec[kl] || kl == 0 || kl >= sizeof a->key)
-        return fail(err, errlen, SF_EPARSE, "'%s': expected KEY*FACTOR or KEY+DELTA", spec);
+        return sf_seterr(err, errlen, SF_EPARSE, "'%s': expected KEY*FACTOR or KEY+DELTA", spec);
     memcpy(a->key, spec, kl);
     a->key[kl] = '\0';
     a->additive = spec[kl] == '+';
     char *end;
     a->x = strtod(spec + kl + 1, &end);
     if (*end || end == spec + kl + 1 || !isfinite(a->x))
-        return fail(err, errlen, SF_EPARSE, "'%s': the factor or delta is not a number", spec);
+        return sf_seterr(err, errlen, SF_EPARSE, "'%s': the factor or delta is not a number", spec);
     int known = !strcmp(a->key, "field_std") || !strcmp(a->key, "re_im_corr");
     for (size_t i = 0; i < NALT; i++)
         known |= !strcmp(a->key, alt_keys[i].name);
     if (!known)
-        return fail(err, errlen, SF_EPARSE, "'%s': unknown key '%s' (mu_std, mu_mean, l, mu_k_ratio, v_b, "
+        return sf_seterr(err, errlen, SF_EPARSE, "'%s': unknown key '%s' (mu_std, mu_mean, l, mu_k_ratio, v_b, "
                     "field_std, re_im_corr)", spec, a->key);
     /* the alternative must leave a valid generator */
     double v0 = !strcmp(a->key, "re_im_corr") ? 0 : 1;
     double v = a->additive ? v0 + a->x : v0 * a->x;
     if (!(v > 0) && strcmp(a->key, "re_im_corr"))
-        return fail(err, errlen, SF_EPARSE, "'%s': the factor must be > 0", spec);
+        return sf_seterr(err, errlen, SF_EPARSE, "'%s': the factor must be > 0", spec);
     if (!strcmp(a->key, "re_im_corr") && !(fabs(v) < 1))
-        return fail(err, errlen, SF_EPARSE, "'%s': a correlation must lie in (-1, 1)", spec);
+        return sf_seterr(err, errlen, SF_EPARSE, "'%s': a correlation must lie in (-1, 1)", spec);
     return SF_SUCCESS;
 }
 

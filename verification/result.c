@@ -1,5 +1,6 @@
 #include "result.h"
 #include "stats.h"
+#include "sf_error.h"
 
 #include <errno.h>
 #include <math.h>
@@ -54,7 +55,7 @@ static void *xrealloc(void *p, size_t n)
     void *q = realloc(p, n);
     if (!q) {
         fputs("slipfield: out of memory\n", stderr);
-        exit(3);
+        exit(SF_EXIT_INTERNAL);
     }
     return q;
 }
@@ -64,7 +65,7 @@ sf_result *sf_result_alloc(void)
     sf_result *r = calloc(1, sizeof *r);
     if (!r) {
         fputs("slipfield: out of memory\n", stderr);
-        exit(3);
+        exit(SF_EXIT_INTERNAL);
     }
     return r;
 }
@@ -268,7 +269,7 @@ sf_plot *sf_result_plot(sf_result *r, const char *stem, const char *title,
     sf_plot *p = calloc(1, sizeof *p);
     if (!p) {
         fputs("slipfield: out of memory\n", stderr);
-        exit(3);
+        exit(SF_EXIT_INTERNAL);
     }
     size_t j = 0;
     for (size_t i = 0; stem[i] && j + 1 < sizeof p->stem; i++) {

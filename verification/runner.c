@@ -8,6 +8,7 @@
 #include "report.h"
 #include "result.h"
 #include "results.h"
+#include "montecarlo.h"
 #include "sf_error.h"
 
 #include <errno.h>
@@ -54,11 +55,11 @@ static void usage(FILE *f)
 
 static unsigned long mix_seed(unsigned long seed, const char *id)
 {
-    /* FNV-1a of the id, mixed with the override, so cases stay independent */
-    unsigned long h = 1469598103934665603UL;
-    for (; *id; id++)
-        h = (h ^ (unsigned char)*id) * 1099511628211UL;
-    return (h ^ seed) & 0xffffffffUL;
+    /* FNV-1a of the id, mixed with the override, so cases stay independent.
+     * The start value is FNV's offset basis 14695981039346656037 without
+     * its last digit (a slip made long ago): kept, so that a --seed run
+     * draws the seeds it always drew. */
+    return (sf_mc_hash(id, strlen(id), 1469598103934665603UL) ^ seed) & 0xffffffffUL;
 }
 
 /* Does the comma-separated list `have` contain any item of `want`? */
@@ -105,7 +106,7 @@ static void run_child(const sf_case *c, const char *root, int fd, unsigned timeo
        on to write a report nobody asked for any more */
     prctl(PR_SET_PDEATHSIG, SIGKILL);
     if (getppid() == 1)
-        _exit(3);
+        _exit(SF_EXIT_INTERNAL);
     alarm(timeout);
     sf_outcome o;
     fill_outcome(&o, c);
@@ -140,9 +141,9 @@ static void run_child(const sf_case *c, const char *root, int fd, unsigned timeo
     char line[512];
     int n = snprintf(line, sizeof line, "%d\t%.6f\t%s\n", o.verdict, o.seconds, o.key);
     if (n > 0 && write(fd, line, (size_t)(n < (int)sizeof line ? n : (int)sizeof line - 1)) < 0)
-        _exit(3);
+        _exit(SF_EXIT_INTERNAL);
     close(fd);
-    _exit(0);
+    _exit(SF_EXIT_OK);
 }
 
 typedef struct {
@@ -205,12 +206,12 @@ int sf_verify_main(int argc, char **argv)
         const char *v = i + 1 < argc ? argv[i + 1] : NULL;
         if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
             usage(stdout);
-            return 0;
+            return SF_EXIT_OK;
         } else if (!strcmp(a, "--checks")) {
             const sf_check_def *d;
             for (size_t k = 0; (d = sf_check_at(k)); k++)
                 printf("%-36s %s\n", d->name, d->summary);
-            return 0;
+            return SF_EXIT_OK;
         } else if (!strcmp(a, "--list")) {
             list = 1;
         } else if (!strcmp(a, "--baseline") && v) {
@@ -220,24 +221,24 @@ int sf_verify_main(int argc, char **argv)
             tags = v;
             i++;
         } else if (!strcmp(a, "--only") && v) {
-            if (nonly == 16) { fprintf(stderr, "slipfield verify: at most 16 --only\n"); return 2; }
+            if (nonly == 16) { fprintf(stderr, "slipfield verify: at most 16 --only\n"); return SF_EXIT_USAGE; }
             only[nonly++] = v;
             i++;
         } else if (!strcmp(a, "--tier") && v) {
             if (!strcmp(v, "full")) tier_full = 1;
             else if (!strcmp(v, "quick")) tier_full = 0;
-            else { fprintf(stderr, "slipfield verify: --tier takes quick or full, not '%s'\n", v); return 2; }
+            else { fprintf(stderr, "slipfield verify: --tier takes quick or full, not '%s'\n", v); return SF_EXIT_USAGE; }
             i++;
         } else if (!strcmp(a, "--reports") && v) {
             root = v;
             i++;
         } else if (!strcmp(a, "--jobs") && v) {
             jobs = atoi(v);
-            if (jobs < 1 || jobs > 64) { fprintf(stderr, "slipfield verify: --jobs takes 1..64\n"); return 2; }
+            if (jobs < 1 || jobs > 64) { fprintf(stderr, "slipfield verify: --jobs takes 1..64\n"); return SF_EXIT_USAGE; }
             i++;
         } else if (!strcmp(a, "--timeout") && v) {
             timeout = (unsigned)atoi(v);
-            if (timeout < 1) { fprintf(stderr, "slipfield verify: --timeout takes seconds >= 1\n"); return 2; }
+            if (timeout < 1) { fprintf(stderr, "slipfield verify: --timeout takes seconds >= 1\n"); return SF_EXIT_USAGE; }
             i++;
         } else if (!strcmp(a, "--alternative") && v) {
             sf_alt alt;
@@ -255,25 +256,25 @@ int sf_verify_main(int argc, char **argv)
             } else {
                 char *end;
                 seed = strtoul(v, &end, 10);
-                if (*end || !*v) { fprintf(stderr, "slipfield verify: --seed takes a number or 'random'\n"); return 2; }
+                if (*end || !*v) { fprintf(stderr, "slipfield verify: --seed takes a number or 'random'\n"); return SF_EXIT_USAGE; }
             }
             snprintf(seed_note, sizeof seed_note, "override %lu", seed);
             i++;
         } else {
             fprintf(stderr, "slipfield verify: unknown option or missing value: %s\n", a);
             usage(stderr);
-            return 2;
+            return SF_EXIT_USAGE;
         }
     }
     size_t n = (size_t)(argc - i);
     if (n == 0) {
         fprintf(stderr, "slipfield verify: no case files given\n");
         usage(stderr);
-        return 2;
+        return SF_EXIT_USAGE;
     }
     sf_case *cases = calloc(n, sizeof *cases);
     if (!cases)
-        return 3;
+        return SF_EXIT_INTERNAL;
     size_t kept = 0, skipped = 0;
     int bad = 0;
     for (size_t k = 0; k < n; k++) {
@@ -312,13 +313,13 @@ int sf_verify_main(int argc, char **argv)
     if (bad) {
         for (size_t k = 0; k < kept; k++) sf_case_free(&cases[k]);
         free(cases);
-        return 2;
+        return SF_EXIT_USAGE;
     }
     qsort(cases, kept, sizeof *cases, cmp_case);
     for (size_t k = 1; k < kept; k++)
         if (!strcmp(cases[k].id, cases[k - 1].id)) {
             fprintf(stderr, "slipfield verify: case %s given twice\n", cases[k].id);
-            return 2;
+            return SF_EXIT_USAGE;
         }
     if (list) {
         for (size_t k = 0; k < kept; k++)
@@ -328,7 +329,7 @@ int sf_verify_main(int argc, char **argv)
                    cases[k].scene.tags);
         for (size_t k = 0; k < kept; k++) sf_case_free(&cases[k]);
         free(cases);
-        return 0;
+        return SF_EXIT_OK;
     }
     /* the baseline is read now: this run may be about to overwrite it */
     sf_baseline *baseline = NULL;
@@ -338,12 +339,12 @@ int sf_verify_main(int argc, char **argv)
             fprintf(stderr, "slipfield verify: %s\n", err);
             for (size_t k = 0; k < kept; k++) sf_case_free(&cases[k]);
             free(cases);
-            return 2;
+            return SF_EXIT_USAGE;
         }
     }
     if (sf_mkdirs(root) != 0) {
         fprintf(stderr, "slipfield verify: cannot create %s: %s\n", root, strerror(errno));
-        return 3;
+        return SF_EXIT_INTERNAL;
     }
     /* A run that is killed must not leave the previous run's summary
      * claiming verdicts: remove it now, write the new one at the end. */
@@ -370,7 +371,7 @@ int sf_verify_main(int argc, char **argv)
     sf_outcome *out = calloc(kept ? kept : 1, sizeof *out);
     job *run = calloc((size_t)jobs, sizeof *run);
     if (!out || !run)
-        return 3;
+        return SF_EXIT_INTERNAL;
     fflush(stdout);
     double t0 = now();
     size_t next = 0, active = 0;
@@ -385,12 +386,12 @@ int sf_verify_main(int argc, char **argv)
             int fd[2];
             if (pipe(fd) != 0) {
                 perror("slipfield verify: pipe");
-                return 3;
+                return SF_EXIT_INTERNAL;
             }
             pid_t pid = fork();
             if (pid < 0) {
                 perror("slipfield verify: fork");
-                return 3;
+                return SF_EXIT_INTERNAL;
             }
             if (pid == 0) {
                 close(fd[0]);
@@ -466,6 +467,6 @@ int sf_verify_main(int argc, char **argv)
     free(out);
     free(run);
     if (rc)
-        return 3;
-    return nf ? 1 : 0;
+        return SF_EXIT_INTERNAL;
+    return nf ? SF_EXIT_CHECK : SF_EXIT_OK;
 }

@@ -84,7 +84,7 @@ void *check_alloc(size_t n)
     void *p = calloc(n ? n : 1, 1);
     if (!p) {
         fputs("slipfield: out of memory in a check\n", stderr);
-        exit(3);
+        exit(SF_EXIT_INTERNAL);
     }
     return p;
 }
@@ -136,7 +136,7 @@ int check_field_plan(const sf_case *c, sf_result *r, sf_field **out)
     sf_scene gs = check_gen_scene(c);
     sf_field_spec_from_scene(&gs, &spec);
     int rc = sf_field_alloc(&spec, out);
-    if (rc && rc != SF_ECAP)
+    if (!sf_usable(rc))
         return rc;
     const sf_field_info *in = sf_field_get_info(*out);
     sf_note(r, "Embedding: %zu x %zu (minimal %zu x %zu, padding factor %.3g x %.3g), "
@@ -273,11 +273,11 @@ void check_hist_row(void *ctx, const sf_osc_row *row)
         for (int i = 0; i < 6; i++) {
             *a[i] = realloc(*a[i], h->cap * sizeof(double));
             if (!*a[i])
-                exit(3);
+                exit(SF_EXIT_INTERNAL);
         }
         h->stick = realloc(h->stick, h->cap * sizeof(int));
         if (!h->stick)
-            exit(3);
+            exit(SF_EXIT_INTERNAL);
     }
     h->t[h->n] = row->t;
     h->x[h->n] = row->x;

@@ -50,7 +50,7 @@ double ref_rho_h(double sigma, double rho);
 double check_lrt_identity(const gsl_matrix *S, size_t N, double *stat, double *trace);
 
 /* Build the Gaussian field plan a case's (generator) scene asks for; note the
- * embedding facts in the findings.  Returns SF_SUCCESS or SF_ECAP (plan
+ * embedding facts in the findings.  Returns SF_SUCCESS or SF_ETRUNC (plan
  * usable) or an error (plan NULL). */
 int check_field_plan(const sf_case *c, sf_result *r, sf_field **out);
 

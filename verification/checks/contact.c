@@ -520,7 +520,7 @@ static int chk_interpolation(const sf_case *c, sf_result *r)
     sf_field_spec spec;
     sf_scene gs = check_gen_scene(c);   /* the field is drawn from the generator's scene */
     sf_field_spec_default(&spec, m, m, s->dx, s->dx, gs.l);
-    if (sf_field_alloc(&spec, &f) > SF_ECAP)
+    if (!sf_usable(sf_field_alloc(&spec, &f)))
         return SF_EFAIL;
     gsl_rng *rng = sf_case_rng(c);
     double *g = check_alloc(m * m * sizeof *g), *h = check_alloc(K * sizeof *h);

@@ -78,10 +78,10 @@ static int chk_cycle(const sf_case *c, sf_result *r)
     sf_note(r, "%s model, %s; eps_lambda = %g, so slip starts and ends at relative speed delta = eps omega_n R = "
                "%.4g m/s. Closed form with that delta: PV_x = %.9f m, period %.9f s; the ideal cycle (delta = 0) "
                "has PV_x = %.9f m, period %.9f s: the threshold moves PV_x by %.2e relative, which is why the "
-               "comparison is with the corrected form. %lu steps, %lu bisection steps.",
+               "comparison is with the corrected form. %lu steps, %lu event trial steps.",
             s->dof == SF_DOF_1 ? "1-D" : "3-DOF (constant COF, Contensou closed-form wrench)",
             s->integrator == SF_INTEG_RK4 ? "fixed-step RK4" : "adaptive rk8pd", s->eps_lambda, cf.delta, cf.pv_x,
-            cf.period, ideal.pv_x, ideal.period, cf.pv_x / ideal.pv_x - 1, res.steps, res.bisections);
+            cf.period, ideal.pv_x, ideal.period, cf.pv_x / ideal.pv_x - 1, res.steps, res.event_trials);
     sf_plot *p = sf_result_plot(r, "displacement", "Displacement of the disc (1-D stick-slip cycle)", "t [s]", "x [m]");
     sf_plot_series(p, "x(t), simulated", SF_STYLE_LINES, h.n, h.t, h.x);
     sf_plot_hline(p, "x_s = mu_s m g / k", cf.xs);

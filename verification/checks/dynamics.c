@@ -7,6 +7,7 @@
 #include "common.h"
 #include "../stats.h"
 #include "contact.h"
+#include "surface.h"
 #include "cycle1d.h"
 #include "cof.h"
 #include "oscillator.h"
@@ -137,7 +138,7 @@ static void jump_row(void *ctx, const sf_osc_row *row)
             double **a[] = { &j->jt, &j->jmag, &j->jdir };
             for (int i = 0; i < 3; i++)
                 if (!(*a[i] = realloc(*a[i], j->cap * sizeof(double))))
-                    exit(3);
+                    exit(SF_EXIT_INTERNAL);
         }
         j->jt[j->njump] = row->t;
         j->jmag[j->njump] = fmax(mag, 1e-17);   /* log axis */
@@ -258,7 +259,7 @@ static void eq912_row(void *ctx, const sf_osc_row *row)
             double **a[] = { &e->t, &e->lerr, &e->spin };
             for (int i = 0; i < 3; i++)
                 if (!(*a[i] = realloc(*a[i], e->cap * sizeof(double))))
-                    exit(3);
+                    exit(SF_EXIT_INTERNAL);
         }
         e->t[e->n] = row->t;
         e->lerr[e->n] = fmax(err, 1e-17);   /* log axis */

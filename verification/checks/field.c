@@ -70,7 +70,7 @@ static int chk_exact_covariance(const sf_case *c, sf_result *r)
     const sf_scene *s = &c->scene;
     sf_field *f;
     int rc = check_field_plan(c, r, &f);
-    if (rc && rc != SF_ECAP)
+    if (!sf_usable(rc))
         return rc;
     double *cov = check_alloc(s->nx * s->ny * sizeof *cov);
     sf_field_covariance(f, cov);
@@ -112,7 +112,7 @@ static int src_open(const sf_case *c, sf_result *r, field_src *src)
     src->n = s->ny;
     if (s->cof_generator != SF_COFGEN_TILES) {
         int rc = check_field_plan(c, r, &src->f);
-        return rc == SF_ECAP ? SF_EFAIL : rc;
+        return rc == SF_ETRUNC ? SF_EFAIL : rc;
     }
     src->sx = (size_t)ceil(4 * s->dx / s->l - 1e-12);
     src->sy = (size_t)ceil(4 * s->dy / s->l - 1e-12);
@@ -168,7 +168,7 @@ static int chk_eigen_direct(const sf_case *c, sf_result *r)
     const sf_scene *s = &c->scene;
     sf_field *f;
     int rc = check_field_plan(c, r, &f);
-    if (rc && rc != SF_ECAP)
+    if (!sf_usable(rc))
         return rc;
     const sf_field_info *in = sf_field_get_info(f);
     size_t M = in->px * in->py;
@@ -208,7 +208,7 @@ static int chk_truncation_reported(const sf_case *c, sf_result *r)
     const sf_scene *s = &c->scene;
     sf_field *f;
     int rc = check_field_plan(c, r, &f);
-    if (rc && rc != SF_ECAP)
+    if (!sf_usable(rc))
         return rc;
     const sf_field_info *in = sf_field_get_info(f);
     size_t M = in->px * in->py, m = s->nx, n = s->ny;
@@ -221,8 +221,8 @@ static int chk_truncation_reported(const sf_case *c, sf_result *r)
             double e = fabs(cov[i + m * j] - ref_sq_exp((double)i * s->dx, (double)j * s->dy, s->l));
             err = sf_max(err, e);
         }
-    sf_check_true(r, "the plan says it truncated (SF_ECAP)", rc == SF_ECAP && in->truncated,
-                  rc == SF_ECAP ? "SF_ECAP returned" : "no truncation reported");
+    sf_check_true(r, "the plan says it truncated (SF_ETRUNC)", rc == SF_ETRUNC && in->truncated,
+                  rc == SF_ETRUNC ? "SF_ETRUNC returned" : "no truncation reported");
     sf_check_rel(r, "reported covariance error vs direct recomputation", in->cov_error, err, s->tolerance);
     sf_check_ge(r, "true covariance error (must be visible, not round-off)", err, 1e-10);
     sf_note(r, "True max |C - Sigma| of the truncated embedding: %.6g (plan reports %.6g).\n", err, in->cov_error);
@@ -386,7 +386,7 @@ static int chk_re_im_independence(const sf_case *c, sf_result *r)
     sf_field *f;
     int rc = check_field_plan(c, r, &f);
     if (rc)
-        return rc == SF_ECAP ? SF_EFAIL : rc;
+        return rc == SF_ETRUNC ? SF_EFAIL : rc;
     gsl_rng *rng = sf_case_rng(c);
     double *re = check_alloc(p * sizeof *re), *im = check_alloc(p * sizeof *im);
     size_t T = npts * nl;
@@ -570,7 +570,7 @@ static int padding_sweep(const sf_case *c, sf_result *r, int mode)
         int rc = sf_field_alloc(&spec, &f);
         spec.no_padding = 1;
         int rc2 = sf_field_alloc(&spec, &fmin_);
-        if ((rc && rc != SF_ECAP) || (rc2 && rc2 != SF_ECAP)) {
+        if (!sf_usable(rc) || !sf_usable(rc2)) {
             sf_field_free(f);
             sf_field_free(fmin_);
             return rc ? rc : rc2;
@@ -588,7 +588,7 @@ static int padding_sweep(const sf_case *c, sf_result *r, int mode)
         if (!min_ok) first_bad = sf_min(first_bad, ratio_dom[k]);
         if (in->truncated) {
             ncap++;
-            if (rc != SF_ECAP) silent_trunc++;
+            if (rc != SF_ETRUNC) silent_trunc++;
         } else if (!(in->cov_error <= worst_err) && !isnan(worst_err)) {   /* a NaN is the worst */
             worst_err = sf_max(worst_err, in->cov_error);
             worst = k;
@@ -604,7 +604,7 @@ static int padding_sweep(const sf_case *c, sf_result *r, int mode)
     snprintf(t, sizeof t, "max covariance error over plans that did not hit the cap (worst at %s = %.4g)",
              mode ? "l/domain" : "l/dx", x[worst]);
     sf_check_le(r, t, worst_err, s0->tolerance);
-    sf_check_true(r, "every plan that hit the padding cap returned SF_ECAP", silent_trunc == 0,
+    sf_check_true(r, "every plan that hit the padding cap returned SF_ETRUNC", silent_trunc == 0,
                   silent_trunc ? "a truncation went unreported" : "all truncations reported");
     if (isfinite(first_bad)) {
         sf_check_le(r, "largest l/domain where minimal embedding works, below the first failure", last_ok, first_bad);
@@ -644,9 +644,9 @@ static int chk_planner_roundoff(const sf_case *c, sf_result *r)
     sm.measure = 1;
     sf_field *fe, *fm;
     int rc = sf_field_alloc(&se, &fe);
-    if (rc && rc != SF_ECAP)
+    if (!sf_usable(rc))
         return rc;
-    if ((rc = sf_field_alloc(&sm, &fm)) && rc != SF_ECAP) {
+    if (!sf_usable(rc = sf_field_alloc(&sm, &fm))) {
         sf_field_free(fe);
         return rc;
     }

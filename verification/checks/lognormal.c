@@ -28,13 +28,13 @@ static int build(const sf_case *c, sf_result *r, sf_lnfield **lf, int allow_cap)
 {
     sf_scene gs = check_gen_scene(c);   /* the generator's scene: a power run's alternative */
     int rc = sf_lnfield_alloc(&gs, lf);
-    if (rc && rc != SF_ECAP)
+    if (!sf_usable(rc))
         return rc;
     const sf_field_info *in = sf_field_get_info(sf_lnfield_gaussian(*lf));
     sf_note(r, "Gaussian embedding %zu x %zu, lambda_min/lambda_max = %.3g, %zu clamped, "
                "max |C_produced - C_target| = %.3g%s.\n", in->px, in->py, in->lambda_min / in->lambda_max,
             in->n_clamped, in->cov_error, in->truncated ? " (truncated)" : "");
-    return rc == SF_ECAP && !allow_cap ? SF_EFAIL : SF_SUCCESS;
+    return rc == SF_ETRUNC && !allow_cap ? SF_EFAIL : SF_SUCCESS;
 }
 
 /* Indices of grid points spaced at least `gap` apart in both directions:
@@ -164,7 +164,7 @@ static int chk_positivity(const sf_case *c, sf_result *r)
         s.mu_std = s0->sweep.v[k] * s0->mu_mean;
         sf_lnfield *lf;
         int rc = sf_lnfield_alloc(&s, &lf);
-        if (rc && rc != SF_ECAP) { free(h); gsl_rng_free(rng); return rc; }
+        if (!sf_usable(rc)) { free(h); gsl_rng_free(rng); return rc; }
         double mn = INFINITY;
         for (size_t j = 0; j < s.samples; j++) {
             sf_lnfield_sample(lf, rng, NULL, h);

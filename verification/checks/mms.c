@@ -110,7 +110,7 @@ static void ref_quad(mms_ref *q, size_t nr, size_t na)
 {
     gsl_integration_glfixed_table *gl = gsl_integration_glfixed_table_alloc(nr);
     if (!gl)
-        exit(3);
+        exit(SF_EXIT_INTERNAL);
     free(q->x);
     free(q->y);
     free(q->dS);

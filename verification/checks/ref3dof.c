@@ -27,7 +27,7 @@ static void rows_add(void *ctx, const sf_osc_row *row)
         h->cap = h->cap ? 2 * h->cap : 4096;
         h->rows = realloc(h->rows, h->cap * sizeof *h->rows);
         if (!h->rows)
-            exit(3);
+            exit(SF_EXIT_INTERNAL);
     }
     h->rows[h->n++] = *row;
 }

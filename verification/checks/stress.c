@@ -18,7 +18,7 @@
 
 /* The COF plan over l/R from the sweep: each l either plans a strip field
  * whose draws are finite and positive, takes the one-variable shortcut
- * (documented threshold), or is refused with SF_ECAP and a reason; never
+ * (documented threshold), or is refused with SF_ETOOBIG and a reason; never
  * anything else. */
 static int chk_cof_plan_range(const sf_case *c, sf_result *r)
 {
@@ -34,7 +34,7 @@ static int chk_cof_plan_range(const sf_case *c, sf_result *r)
         char err[256] = "";
         sf_cof_plan *p;
         int rc = sf_cof_plan_alloc(&s, &p, err, sizeof err);
-        if (rc == SF_ECAP) {
+        if (rc == SF_ETOOBIG) {
             refused++;
             int has_reason = strstr(err, "grid points") && strstr(err, "raise l");
             bad += !has_reason;
@@ -110,9 +110,9 @@ static int chk_near_singular(const sf_case *c, sf_result *r)
         sf_field_spec_default(&spec, s0->nx, s0->ny, s0->dx, s0->dy, s0->sweep.v[k] * s0->dx);
         sf_field *f;
         int rc = sf_field_alloc(&spec, &f);
-        if (rc && rc != SF_ECAP) {
+        if (!sf_usable(rc)) {
             sf_note(r, "| %g | refused: %s | | | | |", s0->sweep.v[k], sf_strerror(rc));
-            bad += rc != SF_ENOMEM;   /* too large an embedding is a fair refusal */
+            bad += rc != SF_ETOOBIG;   /* too large an embedding is a fair refusal */
             continue;
         }
         const sf_field_info *in = sf_field_get_info(f);
@@ -126,7 +126,7 @@ static int chk_near_singular(const sf_case *c, sf_result *r)
                 mx = sf_max(mx, fabs(g[i]));
             }
         }
-        if ((rc == SF_ECAP) != in->truncated || !isfinite(in->cov_error))
+        if ((rc == SF_ETRUNC) != in->truncated || !isfinite(in->cov_error))
             bad++;
         if (!in->truncated)
             worst_err_untruncated = sf_max(worst_err_untruncated, in->cov_error);
