@@ -67,7 +67,7 @@ static void claim_row(FILE *f, const sf_claim_row *c, const char *link)
 }
 
 static const char *table_head =
-    "| claim | the paper says | ours [(1 - alpha) CI] | verdict | test | explanation | under other QoI definitions |\n"
+    "| claim | the paper says | ours [one-sided (1 - alpha) bounds] | verdict | test | explanation | under other QoI definitions |\n"
     "|---|---|---|---|---|---|---|\n";
 
 void sf_paper_case_claims(FILE *f, const sf_result *r)
