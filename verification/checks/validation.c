@@ -476,6 +476,39 @@ static const char *const qname[NQ] = { "PV_x ratio", "PV_F ratio", "stick-fracti
                                        "mean x at slip-to-stick [m]", "slip-to-stick count" };
 #define NOUT (ND * NQ)
 
+/* The extremum of x between two history rows where vx changes sign: the
+ * cubic Hermite interpolant of (x, vx) at both ends, its stationary point
+ * (the rows are step ends; the solver's own extrema are events that are
+ * not rows: without this, PV_x from rows is 0.1-0.4% short). */
+static double hermite_extremum(double t0, double x0, double v0, double t1, double x1, double v1)
+{
+    double h = t1 - t0;
+    double a = 6 * x0 + 3 * h * v0 - 6 * x1 + 3 * h * v1, b = -6 * x0 - 4 * h * v0 + 6 * x1 - 2 * h * v1, c = h * v0;
+    double sr[2];
+    int nr = 0;
+    if (fabs(a) < 1e-300) {
+        if (b != 0)
+            sr[nr++] = -c / b;
+    } else {
+        double d = b * b - 4 * a * c;
+        if (d >= 0) {
+            double q = -0.5 * (b + copysign(sqrt(d), b));
+            sr[nr++] = q / a;
+            if (q != 0)
+                sr[nr++] = c / q;
+        }
+    }
+    for (int i = 0; i < nr; i++) {
+        double u = sr[i];
+        if (u > 0 && u < 1) {
+            double h00 = (1 + 2 * u) * (1 - u) * (1 - u), h10 = u * (1 - u) * (1 - u), h01 = u * u * (3 - 2 * u),
+                   h11 = u * u * (u - 1);
+            return h00 * x0 + h10 * h * v0 + h01 * x1 + h11 * h * v1;
+        }
+    }
+    return fabs(v0) < fabs(v1) ? x0 : x1;
+}
+
 /* Raw QoIs of one run (t_skip = 0 in the run) under every definition. */
 static void raw_qoi(const sf_osc_result *res, const check_hist *h, double T, double tskip, double tlate, double *out)
 {
@@ -546,6 +579,12 @@ static void raw_qoi(const sf_osc_result *res, const check_hist *h, double T, dou
                     break;
                 xmn = fmin(xmn, h->x[r]);
                 xmx = fmax(xmx, h->x[r]);
+                if (r + 1 < h->n && h->t[r + 1] <= tl[j + 1] && !h->stick[r] && !h->stick[r + 1] &&
+                    h->t[r + 1] > h->t[r] && (h->vx[r] > 0) != (h->vx[r + 1] > 0)) {
+                    double xe = hermite_extremum(h->t[r], h->x[r], h->vx[r], h->t[r + 1], h->x[r + 1], h->vx[r + 1]);
+                    xmn = fmin(xmn, xe);
+                    xmx = fmax(xmx, xe);
+                }
                 Fmn = fmin(Fmn, h->Fx[r]);
                 Fmx = fmax(Fmx, h->Fx[r]);
             }
@@ -714,7 +753,7 @@ static int claims_point(const sf_scene *s0, const char *param, double val, cpoin
         FILE *m = open_memstream(&text, &len);
         if (!m)
             return SF_ENOMEM;
-        fprintf(m, "claims v1 NOUT %d\n", NOUT);
+        fprintf(m, "claims v2 NOUT %d\n", NOUT);
         sf_scene_write(&run, m);
         fclose(m);
         spec.key = sf_mc_hash(text, len, 0);
