@@ -457,6 +457,13 @@ static int chk_fig16(const sf_case *c, sf_result *r)
  * ================================================================== */
 
 #include <time.h>
+static double cpu_s(void)   /* this process's CPU time, all threads [s] */
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
 static double now_s(void)
 {
     struct timespec ts;
@@ -1152,31 +1159,37 @@ static int claims_sweep(const sf_case *c, sf_result *r, const claim_spec *spec, 
         return SF_EINVAL;
     cpoint *pt = check_alloc(K * sizeof *pt);
     memset(pt, 0, K * sizeof *pt);
-    double *secs = check_alloc(K * sizeof *secs);
+    double *secs = check_alloc(K * sizeof *secs), *cpu = check_alloc(K * sizeof *cpu);
     char ck[300];
-    for (size_t k = 0; k < K; k++, secs[k - 1] += now_s())
-        if ((secs[k] = -now_s(), claims_point(s0, s0->sweep_param, s0->sweep.v[k], &pt[k], r,
+    for (size_t k = 0; k < K; k++, secs[k - 1] += now_s(), cpu[k - 1] += cpu_s())
+        if ((secs[k] = -now_s(), cpu[k] = -cpu_s(), claims_point(s0, s0->sweep_param, s0->sweep.v[k], &pt[k], r,
                                               ckpt_path(c, k, ck, sizeof ck)))) {
             for (size_t j = 0; j <= k; j++)
                 cpoint_free(&pt[j]);
             free(pt);
             free(secs);
+            free(cpu);
             return SF_EFAIL;
         }
     sf_note(r, "| %s | det PV_x [m] | det PV_F [N] | det stick fr. | PV_x ratio | PV_F ratio | stick-fr. ratio | "
-               "stick [s] (det) | spread of x at slip-to-stick [m] | with a cycle | wall time [s] |\n|---|---|---|---|---|---|---|---|---|---|---|",
+               "stick [s] (det) | spread of x at slip-to-stick [m] | with a cycle | wall time [s] | CPU time [s] |\n|---|---|---|---|---|---|---|---|---|---|---|---|",
             *s0->sweep_param ? s0->sweep_param : "value");
     size_t fewest = SIZE_MAX;
     for (size_t k = 0; k < K; k++) {
         const cpoint *p = &pt[k];
         const double *d = p->det + D_OURS * NQ;
         sf_note(r, "| %g | %.4f | %.4f | %.4f | %.4f +- %.4f | %.4f +- %.4f | %.4f +- %.4f | %.3f +- %.3f (%.3f) | "
-                   "%.4f +- %.4f | %zu/%zu | %.2f |", p->val, d[Q_PVX], d[Q_PVF], d[Q_SF], p->mean[0][Q_PVX], p->sd[0][Q_PVX],
+                   "%.4f +- %.4f | %zu/%zu | %.2f | %.2f |", p->val, d[Q_PVX], d[Q_PVF], d[Q_SF], p->mean[0][Q_PVX], p->sd[0][Q_PVX],
                 p->mean[0][Q_PVF], p->sd[0][Q_PVF], p->mean[0][Q_SF], p->sd[0][Q_SF], p->mean[0][Q_TSTK],
-                p->sd[0][Q_TSTK], d[Q_TSTK], p->mean[0][Q_BIFSD], p->sd[0][Q_BIFSD], p->nv[0][Q_PVX], p->n, secs[k]);
+                p->sd[0][Q_TSTK], d[Q_TSTK], p->mean[0][Q_BIFSD], p->sd[0][Q_BIFSD], p->nv[0][Q_PVX], p->n, secs[k], cpu[k]);
         fewest = p->nv[0][Q_PVX] < fewest ? p->nv[0][Q_PVX] : fewest;
     }
+    double cpu_tot = 0;
+    for (size_t k = 0; k < K; k++)
+        cpu_tot += cpu[k];
     free(secs);
+    free(cpu);
+    sf_note(r, "\n(CPU time of the sweep, all threads: %.1f s; on two idle cores the wall time is about half.)", cpu_tot);
     sf_note(r, "\n(mean +- std over the realisations with a complete cycle after t_skip; T = %g s, t_skip = %g s, "
                "%zu realisations per value; ratios to the deterministic model at the same parameters and QoI "
                "definitions.)\n", s0->T, s0->t_skip, s0->samples);
