@@ -47,7 +47,7 @@ int sf_check_true(sf_result *r, const char *quantity, int ok, const char *found)
 enum { SF_CLAIM_CONFIRMED = 0, SF_CLAIM_CONTRADICTED = 1, SF_CLAIM_UNDECIDED = 2 };
 typedef struct {
     char id[48], text[320], how[200], note[400];
-    char defs[240];   /* the verdict under other QoI definitions (sf_claim_defs) */
+    char defs[400];   /* the verdict under other QoI definitions (sf_claim_defs) */
     int status;
     double measured, ci_lo, ci_hi, alpha;
 } sf_claim_row;
