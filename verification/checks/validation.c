@@ -940,8 +940,12 @@ static int claim_eval_at(const claim_spec *c, const cpoint *pt, size_t K, int dd
         return 0;
     const cpoint *A = &pt[a], *B = b >= 0 ? &pt[b] : NULL;
     int q = c->q;
-    double ma = A->mean[dd][q], sa = A->sd[dd][q], na = (double)A->nv[dd][q];
-    double mb = B ? B->mean[dd][q] : 0, sb = B ? B->sd[dd][q] : 0, nb = B ? (double)B->nv[dd][q] : 0;
+    /* the pooled spread describes cycles; a mean's standard error comes
+     * from the independent units, the realisations: claims about means
+     * use the spread of the per-realisation values under every definition */
+    int ds = (dd == D_POOLED && c->kind != K_SD && c->kind != K_SD_EQ) ? D_OURS : dd;
+    double ma = A->mean[dd][q], sa = A->sd[ds][q], na = (double)A->nv[dd][q];
+    double mb = B ? B->mean[dd][q] : 0, sb = B ? B->sd[ds][q] : 0, nb = B ? (double)B->nv[dd][q] : 0;
     double va = sa * sa / na, vb = B ? sb * sb / nb : 0;
     switch (c->kind) {
     case K_MEAN:
