@@ -64,7 +64,7 @@ TESTS_SAN := $(patsubst tests/%.c,$(BUILD)/san/tests/%,$(TEST_SRC))
 .DEFAULT_GOAL := all
 
 help:
-	@echo "make verify   install deps if missing, build, run the quick-tier cases (TIER=full: all; CASES='cases/field/*')"
+	@echo "make verify   install deps if missing, build, run the quick-tier cases (TIER=full: quick and full; TIER=paper: the paper's claims at its scale, reports/paper.md; CASES='cases/field/*')"
 	@echo "make test     install deps if missing, run the CMocka unit tests (plain and under ASan+UBSan)"
 	@echo "make bench    benchmarks -> reports/bench/report.md"
 	@echo "make mutants  seeded defects that the cases must catch"

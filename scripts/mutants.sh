@@ -32,8 +32,9 @@ tmp_report="$report.tmp$$"
 eqmap="$work/eqmap.tsv"   # eq <TAB> mutant <TAB> moderate <TAB> verdict <TAB> cases
 : > "$eqmap"
 { echo "# Mutation testing"; echo; echo "| mutant | file | eq. | moderate | verdict | cases that failed |"; echo "|---|---|---|---|---|---|"; } > "$tmp_report"
-# a case file's tier (quick unless its scene block says tier = full)
-tier_of() { grep -qE '^[[:space:]]*tier[[:space:]]*=[[:space:]]*full' "$1" && echo full || echo quick; }
+# a case file's tier (quick unless its scene block says tier = full or
+# tier = paper; both count as "not quick" below)
+tier_of() { grep -qE '^[[:space:]]*tier[[:space:]]*=[[:space:]]*(full|paper)' "$1" && echo full || echo quick; }
 for m in $list; do
     total=$((total + 1))
     name=$(basename "$m" .mut)

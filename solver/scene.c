@@ -87,7 +87,7 @@ static const key_t_ keys[] = {
     { "check", K_STRING, OFF(check), sizeof(((sf_scene *)0)->check), 0, 0, 0, 0, "", "", NULL, "check to run (cases)" },
     { "tolerance", K_DOUBLE, OFF(tolerance), 0, 0, INF, 0, 0, "0", "", NULL, "tolerance of the check (its units are the check's)" },
     { "alpha", K_DOUBLE, OFF(alpha), 0, 0, 1, 1, 1, "1e-3", "1", NULL, "significance level of a statistical check" },
-    { "tier", K_ENUM, OFF(tier), 0, 0, 0, 0, 0, "quick", "", CHOICES("quick", "full"), "verification tier" },
+    { "tier", K_ENUM, OFF(tier), 0, 0, 0, 0, 0, "quick", "", CHOICES("quick", "full", "paper"), "verification tier (paper: the paper's settings, run only with --tier paper)" },
     { "vv", K_ENUM, OFF(vv), 0, 0, 0, 0, 0, "code", "", CHOICES("code", "solution", "validation"), "code verification, solution verification or validation" },
     { "tags", K_STRING, OFF(tags), sizeof(((sf_scene *)0)->tags), 0, 0, 0, 0, "", "", NULL, "comma-separated tags" },
     { "pin_seed", K_BOOL, OFF(pin_seed), 0, 0, 0, 0, 0, "false", "", NULL, "a deterministic check of one pinned realisation: verify --seed leaves this case's seed alone" },

@@ -20,7 +20,7 @@ typedef struct {
     double v[SF_LIST_MAX];
 } sf_list;
 
-enum { SF_TIER_QUICK = 0, SF_TIER_FULL = 1 };
+enum { SF_TIER_QUICK = 0, SF_TIER_FULL = 1, SF_TIER_PAPER = 2 };
 enum { SF_VV_CODE = 0, SF_VV_SOLUTION = 1, SF_VV_VALIDATION = 2 };
 enum { SF_INTEG_ADAPTIVE = 0, SF_INTEG_RK4 = 1, SF_INTEG_RK8PD = 2, SF_INTEG_RKCK = 3 };
 enum { SF_DOF_1 = 0, SF_DOF_3 = 1 };

@@ -2,6 +2,7 @@
 #include "drift.h"
 #include "html.h"
 #include "results.h"
+#include "paper.h"
 #include "sf_error.h"
 #include "version.h"
 
@@ -127,7 +128,7 @@ static void write_header(FILE *f, const sf_case *c, const sf_outcome *o)
     fprintf(f, "# %s\n\n", c->title);
     fprintf(f, "- Case: `%s` (`%s`)\n", c->id, c->path);
     fprintf(f, "- Kind: %s; tier: %s; check: `%s`\n", vv_name(c->scene.vv),
-            c->scene.tier ? "full" : "quick", c->scene.check);
+            sf_scene_enum_name("tier", c->scene.tier), c->scene.check);
     fprintf(f, "- Verdict: **%s**\n", sf_verdict_name(o->verdict));
     fprintf(f, "- Run time: %.3f s\n", o->seconds);
     write_rerun(f, c);
@@ -171,6 +172,7 @@ int sf_report_case(const char *root, const sf_case *c, const sf_result *r,
     fputc('\n', f);
     if (error && *error)
         fprintf(f, "**Error:** %s\n\n", error);
+    sf_paper_case_claims(f, r);
     if (*sf_result_notes(r))
         fprintf(f, "## Findings\n\n%s\n", sf_result_notes(r));
     if (sf_result_nplots(r)) {
@@ -191,6 +193,10 @@ int sf_report_case(const char *root, const sf_case *c, const sf_result *r,
         rc = sf_results_case_write(tmp, c, r, o, err, errlen);
     if (rc)
         return rc;
+    if (sf_paper_write_tsv(tmp, r) != 0) {
+        snprintf(err, errlen, "cannot write %s/claims.tsv", tmp);
+        return SF_EIO;
+    }
     if (commit_dir(tmp, fin) != 0) {
         snprintf(err, errlen, "cannot rename %s to %s: %s", tmp, fin, strerror(errno));
         return SF_EIO;
@@ -282,6 +288,7 @@ static void write_index(FILE *f, const sf_run_meta *meta, const sf_outcome *o, s
         cell(f, o[i].key);
         fprintf(f, " | %.2f |\n", o[i].seconds);
     }
+    sf_paper_index_section(f, meta->root, o, n, strcmp(page, "report.html") == 0);
 }
 
 int sf_report_index(const sf_run_meta *meta, const sf_outcome *o, size_t n,

@@ -38,6 +38,8 @@ struct sf_result {
      * plotted series and arrays given to sf_result_data */
     size_t nonfinite, nvalues;
     char first_bad[128];   /* where the first one was seen */
+    sf_claim_row *claims;
+    size_t nclaims;
 };
 
 static void count_values(sf_result *r, const char *where, size_t n, const double *x)
@@ -85,6 +87,7 @@ void sf_result_free(sf_result *r)
         free(p);
     }
     free(r->plots);
+    free(r->claims);
     free(r->rows);
     free(r->notes);
     free(r);
@@ -219,6 +222,37 @@ void sf_note(sf_result *r, const char *fmt, ...)
     r->notes_len += (size_t)n;
     r->notes[r->notes_len++] = '\n';
     r->notes[r->notes_len] = '\0';
+}
+
+void sf_claim(sf_result *r, const char *id, const char *text, int status, double measured, double ci_lo,
+              double ci_hi, double alpha, const char *how, const char *note)
+{
+    r->claims = xrealloc(r->claims, (r->nclaims + 1) * sizeof *r->claims);
+    sf_claim_row *c = &r->claims[r->nclaims++];
+    memset(c, 0, sizeof *c);
+    snprintf(c->id, sizeof c->id, "%s", id);
+    snprintf(c->text, sizeof c->text, "%s", text);
+    snprintf(c->how, sizeof c->how, "%s", how ? how : "");
+    snprintf(c->note, sizeof c->note, "%s", note ? note : "");
+    /* a claim whose estimate is not a number cannot be decided */
+    c->status = isfinite(measured) ? status : SF_CLAIM_UNDECIDED;
+    c->measured = measured;
+    c->ci_lo = ci_lo;
+    c->ci_hi = ci_hi;
+    c->alpha = alpha;
+}
+
+void sf_claim_defs(sf_result *r, const char *defs)
+{
+    if (r->nclaims)
+        snprintf(r->claims[r->nclaims - 1].defs, sizeof r->claims[0].defs, "%s", defs);
+}
+
+size_t sf_result_nclaims(const sf_result *r) { return r->nclaims; }
+const sf_claim_row *sf_result_claim(const sf_result *r, size_t i) { return &r->claims[i]; }
+const char *sf_claim_status_name(int s)
+{
+    return s == SF_CLAIM_CONFIRMED ? "confirmed" : s == SF_CLAIM_CONTRADICTED ? "contradicted" : "not decidable at this N";
 }
 
 size_t sf_result_nrows(const sf_result *r) { return r->nrows; }
@@ -441,6 +475,9 @@ static void write_plot(FILE *g, const sf_plot *p, const char *path)
                 break;
             case SF_STYLE_STEPS:
                 fprintf(g, "$d%zu using 1:2 with steps title \"%s\"", j, s->label);
+                break;
+            case SF_STYLE_DASHED:
+                fprintf(g, "$d%zu using 1:2 with lines dt 2 lw 2 lc rgb 'black' title \"%s\"", j, s->label);
                 break;
             default:
                 fprintf(g, "$d%zu using 1:2 with lines title \"%s\"", j, s->label);

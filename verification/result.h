@@ -59,6 +59,30 @@ void sf_result_data(sf_result *r, const char *what, size_t n, double *x);
 size_t sf_result_nonfinite(const sf_result *r);
 int sf_result_gate_nonfinite(sf_result *r);
 
+/* A claim of the paper and our verdict on it, as data (the case report,
+ * the index and reports/paper.md list them).  `id` is short and stable
+ * (e.g. "fig11-std-large"); `text` quotes or paraphrases the paper;
+ * `measured` is our estimate with its (1 - alpha) confidence interval
+ * [ci_lo, ci_hi] (NAN when there is none); `how` names the test and the
+ * sample size; `note` explains a contradiction or what would decide it.
+ * A claim is not a row: a check gates the claims it expects to hold (or to
+ * fail) with rows of its own. */
+enum { SF_CLAIM_CONFIRMED = 0, SF_CLAIM_CONTRADICTED = 1, SF_CLAIM_UNDECIDED = 2 };
+typedef struct {
+    char id[48], text[320], how[200], note[400];
+    char defs[400];   /* the verdict under other QoI definitions (sf_claim_defs) */
+    int status;
+    double measured, ci_lo, ci_hi, alpha;
+} sf_claim_row;
+void sf_claim(sf_result *r, const char *id, const char *text, int status, double measured, double ci_lo,
+              double ci_hi, double alpha, const char *how, const char *note);
+/* The last claim's verdicts under alternative QoI definitions (DESIGN.md
+ * sec. 3), e.g. "t_skip 0 s: confirmed; window stick fraction: confirmed". */
+void sf_claim_defs(sf_result *r, const char *defs);
+size_t sf_result_nclaims(const sf_result *r);
+const sf_claim_row *sf_result_claim(const sf_result *r, size_t i);
+const char *sf_claim_status_name(int status);
+
 /* Findings: Markdown appended to the report (printf-style). */
 void sf_note(sf_result *r, const char *fmt, ...)
     __attribute__((format(printf, 2, 3)));
@@ -71,7 +95,8 @@ int sf_result_passed(const sf_result *r);
 const sf_row *sf_result_key_row(const sf_result *r);
 
 /* Plots.  `stem` names the PNG (letters, digits, _ and -). */
-enum { SF_STYLE_LINES = 0, SF_STYLE_POINTS = 1, SF_STYLE_LINESPOINTS = 2, SF_STYLE_STEPS = 3 };
+/* SF_STYLE_DASHED: a dashed line (the paper's deterministic reference). */
+enum { SF_STYLE_LINES = 0, SF_STYLE_POINTS = 1, SF_STYLE_LINESPOINTS = 2, SF_STYLE_STEPS = 3, SF_STYLE_DASHED = 4 };
 sf_plot *sf_result_plot(sf_result *r, const char *stem, const char *title,
                         const char *xlabel, const char *ylabel);
 void sf_plot_log(sf_plot *p, int logx, int logy);

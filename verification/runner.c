@@ -5,6 +5,7 @@
 #include "case.h"
 #include "drift.h"
 #include "registry.h"
+#include "paper.h"
 #include "report.h"
 #include "result.h"
 #include "results.h"
@@ -35,7 +36,9 @@ static void usage(FILE *f)
     fputs("usage: slipfield verify [options] CASE.md...\n"
           "Run literate verification cases, write reports, exit 0 only if all pass.\n\n"
           "options:\n"
-          "  --tier quick|full   quick (default) runs tier=quick cases; full runs all\n"
+          "  --tier quick|full|paper  quick (default) runs tier=quick cases; full runs\n"
+          "                      quick and full; paper runs only tier=paper cases (the\n"
+          "                      paper's settings, reports/paper.md)\n"
           "  --reports DIR       report folder (default: reports)\n"
           "  --jobs N            cases run in parallel (default 1)\n"
           "  --timeout S         per-case time limit in seconds (default 900)\n"
@@ -227,7 +230,8 @@ int sf_verify_main(int argc, char **argv)
         } else if (!strcmp(a, "--tier") && v) {
             if (!strcmp(v, "full")) tier_full = 1;
             else if (!strcmp(v, "quick")) tier_full = 0;
-            else { fprintf(stderr, "slipfield verify: --tier takes quick or full, not '%s'\n", v); return SF_EXIT_USAGE; }
+            else if (!strcmp(v, "paper")) tier_full = 2;
+            else { fprintf(stderr, "slipfield verify: --tier takes quick, full or paper, not '%s'\n", v); return SF_EXIT_USAGE; }
             i++;
         } else if (!strcmp(a, "--reports") && v) {
             root = v;
@@ -296,7 +300,10 @@ int sf_verify_main(int argc, char **argv)
             sf_case_free(&cases[kept]);
             continue;
         }
-        if (cases[kept].scene.tier == SF_TIER_FULL && !tier_full) {
+        /* paper-tier cases (the paper's T = 100 s, 100 realisations: ~30 min)
+           run only with --tier paper, which runs nothing else */
+        int tier = cases[kept].scene.tier;
+        if (tier_full == 2 ? tier != SF_TIER_PAPER : (tier == SF_TIER_PAPER || (tier == SF_TIER_FULL && !tier_full))) {
             sf_case_free(&cases[kept]);
             skipped++;
             continue;
@@ -323,10 +330,11 @@ int sf_verify_main(int argc, char **argv)
         }
     if (list) {
         for (size_t k = 0; k < kept; k++)
-            printf("%-48s tier=%-5s vv=%-10s check=%s tags=%s\n", cases[k].id,
-                   cases[k].scene.tier ? "full" : "quick",
-                   sf_scene_enum_name("vv", cases[k].scene.vv), cases[k].scene.check,
+        {   /* sf_scene_enum_name may share its buffer between calls: one per printf */
+            printf("%-48s tier=%-5s ", cases[k].id, sf_scene_enum_name("tier", cases[k].scene.tier));
+            printf("vv=%-10s check=%s tags=%s\n", sf_scene_enum_name("vv", cases[k].scene.vv), cases[k].scene.check,
                    cases[k].scene.tags);
+        }
         for (size_t k = 0; k < kept; k++) sf_case_free(&cases[k]);
         free(cases);
         return SF_EXIT_OK;
@@ -349,7 +357,7 @@ int sf_verify_main(int argc, char **argv)
     /* A run that is killed must not leave the previous run's summary
      * claiming verdicts: remove it now, write the new one at the end. */
     static const char *summaries[] = { "index.md", "index.html", "junit.xml", "results.json",
-                                       "drift.md", "drift.html" };
+                                       "drift.md", "drift.html", "paper.md", "paper.html" };
     for (size_t k = 0; k < sizeof summaries / sizeof *summaries; k++) {
         char p[1100];
         snprintf(p, sizeof p, "%s/%s", root, summaries[k]);
@@ -366,7 +374,7 @@ int sf_verify_main(int argc, char **argv)
         }
     }
     if (skipped)
-        printf("(%zu full-tier cases skipped; run with TIER=full / --tier full)\n", skipped);
+        printf("(%zu cases of other tiers skipped; run with TIER=full or TIER=paper)\n", skipped);
 
     sf_outcome *out = calloc(kept ? kept : 1, sizeof *out);
     job *run = calloc((size_t)jobs, sizeof *run);
@@ -435,7 +443,7 @@ int sf_verify_main(int argc, char **argv)
         if (out[k].verdict == SF_VERDICT_PASS) np++;
         else nf++;
     }
-    sf_run_meta meta = { root, seed_note, tier_full ? "full" : "quick", now() - t0, skipped, NULL };
+    sf_run_meta meta = { root, seed_note, tier_full == 2 ? "paper" : tier_full ? "full" : "quick", now() - t0, skipped, NULL };
     char err[512];
     int rc = sf_results_write(&meta, out, kept, baseline_path, err, sizeof err);
     sf_drift_summary drift;
@@ -448,6 +456,8 @@ int sf_verify_main(int argc, char **argv)
     if (rc)
         fprintf(stderr, "slipfield verify: %s\n", err);
     int rc2 = sf_report_index(&meta, out, kept, err, sizeof err);
+    if (!rc2 && (rc2 = sf_paper_report(&meta, out, kept, err, sizeof err)) == 0 && tier_full == 2)
+        printf("the paper's claims: %s/paper.md, %s/paper.html\n", root, root);
     if (rc2)
         fprintf(stderr, "slipfield verify: %s\n", err);
     rc = rc ? rc : rc2;
