@@ -69,7 +69,7 @@ CLI_OBJ := $(call objs,rel,$(CLI_SRC))
 TESTS := $(patsubst tests/%.c,$(BUILD)/rel/tests/%,$(TEST_SRC))
 TESTS_SAN := $(patsubst tests/%.c,$(BUILD)/san/tests/%,$(TEST_SRC))
 
-.PHONY: all deps verify test bench mutants clean help report-test fuzz valgrind catalogue mpi-test install uninstall layering
+.PHONY: all deps verify test bench mutants clean help report-test fuzz valgrind catalogue mpi-test install uninstall layering coverage
 .SECONDARY:
 .DEFAULT_GOAL := all
 
@@ -77,6 +77,7 @@ help:
 	@echo "make verify   install deps if missing, build, run the quick-tier cases (TIER=full: all; CASES='cases/field/*')"
 	@echo "make test     install deps if missing, run the CMocka unit tests (plain and under ASan+UBSan)"
 	@echo "make layering solver/ includes only solver/, verification/ not cli/ (also run by make test)"
+	@echo "make coverage line and branch coverage of solver/ by the unit tests + quick tier (gcov, lcov) -> reports/coverage/"
 	@echo "make bench    benchmarks -> reports/bench/report.md"
 	@echo "make mutants  seeded defects that the cases must catch"
 	@echo "make fuzz     libFuzzer on the scene parser and case reader (FUZZ_TIME=60 s each; needs clang)"
@@ -196,6 +197,35 @@ bench: all
 	   echo "bench: peers not installed: their sections will say so" >&2; fi
 	@$(MAKE) --no-print-directory $(BUILD)/bench/slipfield-bench $(BUILD)/slipfield
 	@$(BUILD)/bench/slipfield-bench reports/bench $(BENCH_SECTIONS)
+
+# ---- make coverage ---------------------------------------------------------
+# solver/ compiled again with --coverage (-O0: branch counts map to the
+# source) in $(BUILD)/cov/; the unit tests and the CLI link it in place of
+# the optimised library; scripts/coverage.sh runs the unit tests, the CLI
+# scripts of make test and the quick tier with them, then lcov/genhtml
+# write reports/coverage/ and the floor in tests/coverage-floor.txt is
+# enforced.  lcov is installed (Debian) only for this target.
+COV_FLAGS := -O0 -g --coverage
+$(BUILD)/cov/%.o: %.c | $(GEN_HDRS)
+	@mkdir -p $(dir $@)
+	$(CC) $(BASE_CFLAGS) $(call incs,$<) $(COV_FLAGS) $(PKG_CFLAGS) -MMD -MP -c $< -o $@
+
+$(BUILD)/cov/libslipfield.a: $(call objs,cov,$(SOLVER_SRC))
+	@rm -f $@
+	ar rcs $@ $^
+
+$(BUILD)/cov/tests/%: $(BUILD)/rel/tests/%.o $(BUILD)/libsfverify.a $(BUILD)/cov/libslipfield.a
+	@mkdir -p $(dir $@)
+	$(CC) --coverage $^ -o $@ $(CMOCKA_LIBS) $(HTML_LIBS) $(PKG_LIBS)
+
+$(BUILD)/cov/slipfield: $(CLI_OBJ) $(BUILD)/libsfverify.a $(BUILD)/cov/libslipfield.a
+	$(CC) --coverage $^ -o $@ $(HTML_LIBS) $(PKG_LIBS)
+
+TESTS_COV := $(patsubst tests/%.c,$(BUILD)/cov/tests/%,$(TEST_SRC))
+coverage: deps
+	@sh scripts/deps.sh lcov
+	@$(MAKE) --no-print-directory $(TESTS_COV) $(BUILD)/cov/slipfield
+	@sh scripts/coverage.sh $(BUILD) $(JOBS) $(TESTS_COV)
 
 mutants: all
 	@sh scripts/mutants.sh $(MUTANTS)
