@@ -1,0 +1,146 @@
+/* The solver's text outputs and look-ups: error messages, the scene key
+ * table (units for axis labels, `help scene`), and the plan's account of
+ * itself (`run --explain`).  No case exercises these (issue 16: coverage
+ * of solver/ by make test + the quick tier). */
+#include "test_util.h"
+#include "cof.h"
+#include "numplan.h"
+#include "oscillator.h"
+#include "scene.h"
+#include "sf_error.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+/* every error code has its own message; an unknown code says so */
+static void strerror_codes(void **state)
+{
+    (void)state;
+    const int codes[] = { SF_SUCCESS, SF_EINVAL, SF_ENOMEM, SF_ECAP, SF_EIO, SF_EPARSE, SF_EFAIL, SF_EMAXITER };
+    const size_t n = sizeof codes / sizeof codes[0];
+    for (size_t i = 0; i < n; i++) {
+        const char *m = sf_strerror(codes[i]);
+        assert_non_null(m);
+        assert_true(strlen(m) > 0);
+        assert_string_not_equal(m, "unknown error");
+        for (size_t j = 0; j < i; j++)
+            assert_string_not_equal(m, sf_strerror(codes[j]));
+    }
+    assert_string_equal(sf_strerror(-12345), "unknown error");
+}
+
+static void key_units(void **state)
+{
+    (void)state;
+    assert_string_equal(sf_scene_key_unit("v_b"), "m/s");
+    assert_string_equal(sf_scene_key_unit("k"), "N/m");
+    assert_string_equal(sf_scene_key_unit("mu_mean"), "1");
+    assert_string_equal(sf_scene_key_unit("l_over_R"), "1");
+    assert_null(sf_scene_key_unit("no_such_key"));
+    assert_null(sf_scene_key_unit(NULL));
+}
+
+/* the text of a FILE * writer, NUL-terminated (caller frees) */
+static char *text_of(void (*fn)(const void *, FILE *), const void *arg)
+{
+    char *buf = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&buf, &len);
+    assert_non_null(f);
+    fn(arg, f);
+    fclose(f);
+    return buf;
+}
+
+static void print_keys_fn(const void *arg, FILE *f) { (void)arg; sf_scene_print_keys(f); }
+
+/* `help scene`: one line per key with unit, default and range or choices */
+static void key_table(void **state)
+{
+    (void)state;
+    char *t = text_of(print_keys_fn, NULL);
+    assert_non_null(strstr(t, "unit"));
+    assert_non_null(strstr(t, "v_b"));
+    assert_non_null(strstr(t, "m/s"));
+    assert_non_null(strstr(t, "polar|cartesian"));   /* an enum's choices */
+    free(t);
+}
+
+static void explain_fn(const void *arg, FILE *f) { sf_osc_explain(arg, f); }
+
+/* the account of one oscillator, for a scene changed by `edit` */
+static char *explain(void (*edit)(sf_scene *))
+{
+    sf_scene s;
+    sf_scene_default(&s);
+    s.T = 1;
+    s.t_skip = 0;
+    edit(&s);
+    sf_cof *cof;
+    assert_int_equal(sf_cof_alloc_uniform(s.mu_mean, &cof), SF_SUCCESS);
+    sf_osc *o;
+    char err[256] = "";
+    int rc = sf_osc_alloc(&s, cof, &o, err, sizeof err);
+    if (rc)
+        print_error("sf_osc_alloc: %s\n", err);
+    assert_int_equal(rc, SF_SUCCESS);
+    char *t = text_of(explain_fn, o);
+    sf_osc_free(o);
+    sf_cof_free(cof);
+    return t;
+}
+
+static void e_default(sf_scene *s) { (void)s; }
+static void e_one_dof(sf_scene *s) { s->dof = SF_DOF_1; }
+static void e_quadrature_rk4(sf_scene *s)
+{
+    s->shortcuts = 0;            /* constant COF through the quadrature */
+    s->integrator = SF_INTEG_RK4;
+    s->dt = 1e-3;
+    s->cells = 8;
+    s->exact_section = 1;
+    s->velocity_jump = 0;
+}
+static void e_rkck(sf_scene *s)
+{
+    s->shortcuts = 0;
+    s->integrator = SF_INTEG_RKCK;
+    s->rtol = 1e-6;
+    s->cells = 8;
+}
+
+static void explain_variants(void **state)
+{
+    (void)state;
+    char *t = explain(e_default);
+    assert_non_null(strstr(t, "3-DOF"));
+    assert_non_null(strstr(t, "closed form"));
+    assert_non_null(strstr(t, "accuracy plan"));
+    free(t);
+    t = explain(e_one_dof);
+    assert_non_null(strstr(t, "1-D oscillator"));
+    assert_non_null(strstr(t, "Eq. 4"));
+    free(t);
+    t = explain(e_quadrature_rk4);
+    assert_non_null(strstr(t, "quadrature"));
+    assert_non_null(strstr(t, "constant COF"));
+    assert_non_null(strstr(t, "rk4"));
+    assert_non_null(strstr(t, "exact T = 0 section"));
+    assert_non_null(strstr(t, "set by the scene"));
+    free(t);
+    t = explain(e_rkck);
+    assert_non_null(strstr(t, "rtol = 1e-06"));
+    assert_non_null(strstr(t, "predicted QoI error"));
+    free(t);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(strerror_codes),
+        cmocka_unit_test(key_units),
+        cmocka_unit_test(key_table),
+        cmocka_unit_test(explain_variants),
+    };
+    return cmocka_run_group_tests_name("text", tests, NULL, NULL);
+}
