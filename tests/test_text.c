@@ -8,6 +8,7 @@
 #include "oscillator.h"
 #include "scene.h"
 #include "sf_error.h"
+#include "sweep.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -134,6 +135,54 @@ static void explain_variants(void **state)
     free(t);
 }
 
+/* the plan's refusals and warnings: qoi_tol outside (0, 1); cells set
+ * coarser than l; a qoi_tol the ring cap cannot meet */
+static void plan_edges(void **state)
+{
+    (void)state;
+    sf_scene s;
+    sf_scene_default(&s);
+    sf_numplan p;
+    char err[256] = "";
+    s.qoi_tol = 0;
+    assert_int_equal(sf_numplan_make(&s, 1, &p, err, sizeof err), SF_EINVAL);
+    assert_non_null(strstr(err, "qoi_tol"));
+    s.qoi_tol = 1;
+    assert_int_equal(sf_numplan_make(&s, 1, &p, NULL, 0), SF_EINVAL);
+    sf_scene_default(&s);
+    s.cells = 4;
+    s.l = 0.01 * s.R;   /* cells of R/4, far coarser than l */
+    assert_int_equal(sf_numplan_make(&s, 1, &p, err, sizeof err), SF_SUCCESS);
+    assert_int_equal(p.cells_from, SF_PLAN_SCENE);
+    assert_non_null(strstr(p.warning, "does not resolve"));
+    sf_scene_default(&s);
+    s.qoi_tol = 1e-9;   /* more rings than the cap */
+    s.l = 0.3 * s.R;
+    assert_int_equal(sf_numplan_make(&s, 1, &p, err, sizeof err), SF_SUCCESS);
+    assert_int_equal(p.cells, SF_PLAN_MAX_RINGS);
+    assert_non_null(strstr(p.warning, "capped"));
+}
+
+/* sweep parameters: l_over_R must be positive and finite; mu_mean keeps
+ * the CV (Fig. 13); an unknown key is refused with the parser's reason */
+static void sweep_set_edges(void **state)
+{
+    (void)state;
+    sf_scene s;
+    sf_scene_default(&s);
+    char err[256] = "";
+    assert_int_equal(sf_sweep_set(&s, "l_over_R", 0, err, sizeof err), SF_EPARSE);
+    assert_non_null(strstr(err, "l_over_R"));
+    assert_int_equal(sf_sweep_set(&s, "l_over_R", INFINITY, err, sizeof err), SF_EPARSE);
+    assert_int_equal(sf_sweep_set(&s, "l_over_R", 2, err, sizeof err), SF_SUCCESS);
+    assert_close(s.l, 2 * s.R, 1e-15);
+    double cv = s.mu_std / s.mu_mean;
+    assert_int_equal(sf_sweep_set(&s, "mu_mean", 0.8, err, sizeof err), SF_SUCCESS);
+    assert_close(s.mu_mean, 0.8, 1e-15);
+    assert_close(s.mu_std / s.mu_mean, cv, 1e-15);
+    assert_int_not_equal(sf_sweep_set(&s, "no_such_key", 1, err, sizeof err), SF_SUCCESS);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -141,6 +190,8 @@ int main(void)
         cmocka_unit_test(key_units),
         cmocka_unit_test(key_table),
         cmocka_unit_test(explain_variants),
+        cmocka_unit_test(plan_edges),
+        cmocka_unit_test(sweep_set_edges),
     };
     return cmocka_run_group_tests_name("text", tests, NULL, NULL);
 }
