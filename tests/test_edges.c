@@ -1,7 +1,8 @@
-/* The solver's text outputs and look-ups: error messages, the scene key
- * table (units for axis labels, `help scene`), and the plan's account of
- * itself (`run --explain`).  No case exercises these (issue 16: coverage
- * of solver/ by make test + the quick tier). */
+/* Solver paths no case exercises (issue 16: coverage of solver/ by make
+ * test + the quick tier): error messages, the scene key table (units for
+ * axis labels, `help scene`), the plan's account of itself (`run
+ * --explain`), its refusals and warnings, sweep-parameter edges, and the
+ * stick break on the exact T = 0 section. */
 #include "test_util.h"
 #include "cof.h"
 #include "numplan.h"
@@ -183,6 +184,45 @@ static void sweep_set_edges(void **state)
     assert_int_not_equal(sf_sweep_set(&s, "no_such_key", 1, err, sizeof err), SF_SUCCESS);
 }
 
+/* Stick duration from rest at the origin, uniform COF through the
+ * quadrature: on the equatorial circle it is the closed form
+ * (mu N / k) / v_b; on the exact section (a uniform disc's T = 0 section
+ * is that circle, up to the quadrature) it lies in (0, tau] and within 1 %
+ * of it (8 rings).  Outside the stick set it is 0. */
+static void stick_on_exact_section(void **state)
+{
+    (void)state;
+    sf_scene s;
+    sf_scene_default(&s);
+    s.shortcuts = 0;
+    s.cells = 8;
+    s.mu_std = 0;
+    sf_cof *cof;
+    assert_int_equal(sf_cof_alloc_uniform(s.mu_mean, &cof), SF_SUCCESS);
+    double y[SF_OSC_NSTATE] = { 0 }, tau = s.mu_mean * s.m * s.g / s.k / s.v_b;
+    char err[256] = "";
+    for (int exact = 0; exact <= 1; exact++) {
+        s.exact_section = exact;
+        sf_osc *o;
+        assert_int_equal(sf_osc_alloc(&s, cof, &o, err, sizeof err), SF_SUCCESS);
+        y[SF_OSC_X] = y[SF_OSC_Y] = 0;
+        double d = sf_osc_stick_duration(o, 0, y);
+        if (exact) {
+            assert_true(d > 0 && d <= tau * (1 + 1e-9));
+            assert_close(d, tau, 1e-2);
+        } else {
+            assert_close(d, tau, 1e-12);
+        }
+        y[SF_OSC_X] = 2 * s.mu_mean * s.m * s.g / s.k;   /* beyond the break */
+        assert_true(sf_osc_stick_duration(o, 0, y) == 0);
+        y[SF_OSC_X] = 0;
+        y[SF_OSC_Y] = y[SF_OSC_X] + 2 * s.mu_mean * s.m * s.g / s.k;
+        assert_true(sf_osc_stick_duration(o, 0, y) == 0);
+        sf_osc_free(o);
+    }
+    sf_cof_free(cof);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -192,6 +232,7 @@ int main(void)
         cmocka_unit_test(explain_variants),
         cmocka_unit_test(plan_edges),
         cmocka_unit_test(sweep_set_edges),
+        cmocka_unit_test(stick_on_exact_section),
     };
-    return cmocka_run_group_tests_name("text", tests, NULL, NULL);
+    return cmocka_run_group_tests_name("edges", tests, NULL, NULL);
 }
