@@ -223,6 +223,50 @@ static void stick_on_exact_section(void **state)
     sf_cof_free(cof);
 }
 
+/* the parser's length and count limits, enum names, and writing a list */
+static void scene_parse_limits(void **state)
+{
+    (void)state;
+    sf_scene s;
+    sf_scene_default(&s);
+    char err[256] = "", text[4096];
+    /* a seed is an integer of at most 31 characters */
+    assert_int_equal(sf_scene_parse(&s, "seed = 1234567890123456789012345678901234567890\n", "t", 1, err, sizeof err),
+                     SF_EPARSE);
+    assert_non_null(strstr(err, "too long"));
+    /* a string key longer than its buffer */
+    int n = snprintf(text, sizeof text, "check = ");
+    for (int i = 0; i < 300; i++)
+        text[n++] = 'a';
+    text[n++] = '\n';
+    text[n] = '\0';
+    assert_int_equal(sf_scene_parse(&s, text, "t", 1, err, sizeof err), SF_EPARSE);
+    assert_non_null(strstr(err, "longer than"));
+    /* a list of more than SF_LIST_MAX values */
+    n = snprintf(text, sizeof text, "sweep = 1");
+    for (int i = 0; i < SF_LIST_MAX; i++)
+        n += snprintf(text + n, sizeof text - (size_t)n, ", %d", i + 2);
+    snprintf(text + n, sizeof text - (size_t)n, "\n");
+    assert_int_equal(sf_scene_parse(&s, text, "t", 1, err, sizeof err), SF_EPARSE);
+    assert_non_null(strstr(err, "more than"));
+    /* enum names: known, out of range, not an enum, unknown key */
+    assert_string_equal(sf_scene_enum_name("layout", 1), "cartesian");
+    assert_string_equal(sf_scene_enum_name("layout", 7), "?");
+    assert_string_equal(sf_scene_enum_name("v_b", 0), "?");
+    assert_string_equal(sf_scene_enum_name("no_such_key", 0), "?");
+    /* a list written back as "a, b, c" */
+    sf_scene_default(&s);
+    assert_int_equal(sf_scene_parse(&s, "sweep = 0.5, 2, 8\n", "t", 1, err, sizeof err), SF_SUCCESS);
+    char *buf = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&buf, &len);
+    assert_non_null(f);
+    sf_scene_write(&s, f);
+    fclose(f);
+    assert_non_null(strstr(buf, "sweep = 0.5, 2, 8"));
+    free(buf);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -233,6 +277,7 @@ int main(void)
         cmocka_unit_test(plan_edges),
         cmocka_unit_test(sweep_set_edges),
         cmocka_unit_test(stick_on_exact_section),
+        cmocka_unit_test(scene_parse_limits),
     };
     return cmocka_run_group_tests_name("edges", tests, NULL, NULL);
 }
