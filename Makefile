@@ -29,11 +29,21 @@ WARN := -Wall -Wextra -Wpedantic -Werror
 # the wrench's cell loop does not vectorise (-fopt-info-vec).  Values are
 # unchanged: no reassociation, no contraction (-std=c11 keeps
 # -ffp-contract=off).
-BASE_CFLAGS := -std=c11 -D_POSIX_C_SOURCE=200809L -fno-math-errno -fno-trapping-math $(WARN) -Isolver -Iverification -Icli -Itests -I$(BUILD)/gen -fopenmp $(MPI_FLAGS)
-# The git revision lives in a generated header rewritten only when it
-# changes, so a commit does not rebuild everything.
-_rev := $(shell mkdir -p $(BUILD)/gen && echo '#define SF_GIT_REV "$(GIT_REV)"' > $(BUILD)/gen/sf_rev.h.new && \
-          (cmp -s $(BUILD)/gen/sf_rev.h.new $(BUILD)/gen/sf_rev.h || mv $(BUILD)/gen/sf_rev.h.new $(BUILD)/gen/sf_rev.h))
+# Layering (issue 16): solver/ sees only itself, verification/ sees solver/
+# and itself (plus the generated headers), cli/, tests/ and bench/ see
+# everything.  The -I flags are per directory, so an upward #include does
+# not compile; scripts/layering.sh (make layering, run by make test) also
+# greps for one, with a message that names the rule.
+BASE_CFLAGS := -std=c11 -D_POSIX_C_SOURCE=200809L -fno-math-errno -fno-trapping-math $(WARN) -fopenmp $(MPI_FLAGS)
+INC_solver := -Isolver
+INC_verification := -Isolver -Iverification -I$(BUILD)/gen
+INC_ALL := -Isolver -Iverification -Icli -Itests -I$(BUILD)/gen
+# $(call incs,source.c): the -I flags of the source's top directory
+incs = $(or $(INC_$(firstword $(subst /, ,$(1)))),$(INC_ALL))
+# The git revision and the CVODE choice live in generated headers, rewritten
+# by rules (not at parse time: `make help` writes nothing) and only when
+# their content changes, so a commit does not rebuild everything.
+GEN_HDRS := $(BUILD)/gen/sf_rev.h $(BUILD)/gen/bench_config.h
 OPT ?= -O2 -g
 PKG_CFLAGS = $(shell pkg-config --cflags $(PKGS) 2>/dev/null)
 PKG_LIBS = $(shell pkg-config --libs $(PKGS) 2>/dev/null || echo -lgsl -lgslcblas -lfftw3 -ljansson) -lm -fopenmp
@@ -59,13 +69,15 @@ CLI_OBJ := $(call objs,rel,$(CLI_SRC))
 TESTS := $(patsubst tests/%.c,$(BUILD)/rel/tests/%,$(TEST_SRC))
 TESTS_SAN := $(patsubst tests/%.c,$(BUILD)/san/tests/%,$(TEST_SRC))
 
-.PHONY: all deps verify test bench mutants clean help report-test fuzz valgrind catalogue mpi-test install uninstall power
+.PHONY: all deps verify test bench mutants clean help report-test fuzz valgrind catalogue mpi-test install uninstall power layering coverage
 .SECONDARY:
 .DEFAULT_GOAL := all
 
 help:
 	@echo "make verify   install deps if missing, build, run the quick-tier cases (TIER=full: quick and full; TIER=paper: the paper's claims at its scale, reports/paper.md; CASES='cases/field/*')"
 	@echo "make test     install deps if missing, run the CMocka unit tests (plain and under ASan+UBSan)"
+	@echo "make layering solver/ includes only solver/, verification/ not cli/ (also run by make test)"
+	@echo "make coverage line and branch coverage of solver/ by the unit tests + quick tier (gcov, lcov) -> reports/coverage/"
 	@echo "make bench    benchmarks -> reports/bench/report.md"
 	@echo "make mutants  seeded defects that the cases must catch"
 	@echo "make power    measured power of the statistical cases under their power_alt (R=50 runs each) -> reports/power.md"
@@ -92,13 +104,22 @@ $(BUILD)/gen/plot_style.h: verification/plot-style.gp
 	@{ echo 'static const char sf_plot_style[] ='; sed -e 's/\\/\\\\/g' -e 's/"/\\"/g' -e 's/^/    "/' -e 's/$$/\\n"/' $<; echo '    ;'; } > $@.tmp && mv $@.tmp $@
 $(BUILD)/rel/verification/result.o $(BUILD)/san/verification/result.o: $(BUILD)/gen/plot_style.h
 
-$(BUILD)/rel/%.o: %.c
-	@mkdir -p $(dir $@)
-	$(CC) $(BASE_CFLAGS) $(OPT) $(PKG_CFLAGS) $(HTML_CFLAGS) $(CMOCKA_CFLAGS) -MMD -MP -c $< -o $@
+.PHONY: FORCE
+FORCE:
+$(BUILD)/gen/sf_rev.h: FORCE
+	@sh scripts/gen-header.sh $@ '#define SF_GIT_REV "$(GIT_REV)"'
+$(BUILD)/gen/bench_config.h: FORCE
+	@sh scripts/gen-header.sh $@ '#define SF_HAVE_CVODE $(if $(CVODE_OK),1,0)'
 
-$(BUILD)/san/%.o: %.c
+# every object waits for the generated headers (the .d files then track
+# which ones it includes)
+$(BUILD)/rel/%.o: %.c | $(GEN_HDRS)
 	@mkdir -p $(dir $@)
-	$(CC) $(BASE_CFLAGS) -O1 -g $(SAN) $(PKG_CFLAGS) $(HTML_CFLAGS) $(CMOCKA_CFLAGS) -MMD -MP -c $< -o $@
+	$(CC) $(BASE_CFLAGS) $(call incs,$<) $(OPT) $(PKG_CFLAGS) $(HTML_CFLAGS) $(CMOCKA_CFLAGS) -MMD -MP -c $< -o $@
+
+$(BUILD)/san/%.o: %.c | $(GEN_HDRS)
+	@mkdir -p $(dir $@)
+	$(CC) $(BASE_CFLAGS) $(call incs,$<) -O1 -g $(SAN) $(PKG_CFLAGS) $(HTML_CFLAGS) $(CMOCKA_CFLAGS) -MMD -MP -c $< -o $@
 
 $(BUILD)/libslipfield.a: $(SOLVER_OBJ)
 	@rm -f $@
@@ -130,8 +151,6 @@ $(BUILD)/san/tests/%: $(BUILD)/san/tests/%.o $(BUILD)/san/libsfverify.a $(BUILD)
 # rebuilds the bench).
 CVODE_OK := $(shell test -f /usr/include/cvode/cvode.h && echo 1)
 CVODE_LIBS := $(if $(CVODE_OK),-lsundials_cvode -lsundials_nvecserial)
-_benchcfg := $(shell mkdir -p $(BUILD)/gen && echo '#define SF_HAVE_CVODE $(if $(CVODE_OK),1,0)' > $(BUILD)/gen/bench_config.h.new && \
-          (cmp -s $(BUILD)/gen/bench_config.h.new $(BUILD)/gen/bench_config.h || mv $(BUILD)/gen/bench_config.h.new $(BUILD)/gen/bench_config.h))
 $(BUILD)/bench/slipfield-bench: $(call objs,rel,$(BENCH_SRC)) $(BUILD)/libsfverify.a $(BUILD)/libslipfield.a
 	@mkdir -p $(dir $@)
 	$(CC) $(OPT) $^ -o $@ $(HTML_LIBS) $(CVODE_LIBS) $(PKG_LIBS)
@@ -141,7 +160,8 @@ test: deps
 
 .PHONY: test-run
 test-run: $(TESTS) $(TESTS_SAN) $(BUILD)/slipfield
-	@st=0; sh scripts/run-tests.sh $(BUILD) $(TESTS) -- $(TESTS_SAN) || st=1; \
+	@st=0; sh scripts/layering.sh || st=1; \
+	 sh scripts/run-tests.sh $(BUILD) $(TESTS) -- $(TESTS_SAN) || st=1; \
 	 sh scripts/bad-input.sh $(BUILD)/slipfield || st=1; \
 	 sh scripts/isolation.sh $(BUILD)/slipfield || st=1; \
 	 sh scripts/resume-test.sh $(BUILD)/slipfield || st=1; \
@@ -151,6 +171,9 @@ test-run: $(TESTS) $(TESTS_SAN) $(BUILD)/slipfield
 	 sh scripts/catalogue.sh $(BUILD)/slipfield $(BUILD)/catalogue.md && \
 	 if cmp -s $(BUILD)/catalogue.md cases/README.md; then echo "catalogue: cases/README.md up to date"; \
 	 else echo "catalogue: cases/README.md is stale: run make catalogue" >&2; st=1; fi; exit $$st
+
+layering:
+	@sh scripts/layering.sh
 
 REPEAT ?=
 verify: all
@@ -180,6 +203,35 @@ bench: all
 	   echo "bench: peers not installed: their sections will say so" >&2; fi
 	@$(MAKE) --no-print-directory $(BUILD)/bench/slipfield-bench $(BUILD)/slipfield
 	@$(BUILD)/bench/slipfield-bench reports/bench $(BENCH_SECTIONS)
+
+# ---- make coverage ---------------------------------------------------------
+# solver/ compiled again with --coverage (-O0: branch counts map to the
+# source) in $(BUILD)/cov/; the unit tests and the CLI link it in place of
+# the optimised library; scripts/coverage.sh runs the unit tests, the CLI
+# scripts of make test and the quick tier with them, then lcov/genhtml
+# write reports/coverage/ and the floor in tests/coverage-floor.txt is
+# enforced.  lcov is installed (Debian) only for this target.
+COV_FLAGS := -O0 -g --coverage
+$(BUILD)/cov/%.o: %.c | $(GEN_HDRS)
+	@mkdir -p $(dir $@)
+	$(CC) $(BASE_CFLAGS) $(call incs,$<) $(COV_FLAGS) $(PKG_CFLAGS) -MMD -MP -c $< -o $@
+
+$(BUILD)/cov/libslipfield.a: $(call objs,cov,$(SOLVER_SRC))
+	@rm -f $@
+	ar rcs $@ $^
+
+$(BUILD)/cov/tests/%: $(BUILD)/rel/tests/%.o $(BUILD)/libsfverify.a $(BUILD)/cov/libslipfield.a
+	@mkdir -p $(dir $@)
+	$(CC) --coverage $^ -o $@ $(CMOCKA_LIBS) $(HTML_LIBS) $(PKG_LIBS)
+
+$(BUILD)/cov/slipfield: $(CLI_OBJ) $(BUILD)/libsfverify.a $(BUILD)/cov/libslipfield.a
+	$(CC) --coverage $^ -o $@ $(HTML_LIBS) $(PKG_LIBS)
+
+TESTS_COV := $(patsubst tests/%.c,$(BUILD)/cov/tests/%,$(TEST_SRC))
+coverage: deps
+	@sh scripts/deps.sh lcov
+	@$(MAKE) --no-print-directory $(TESTS_COV) $(BUILD)/cov/slipfield
+	@sh scripts/coverage.sh $(BUILD) $(JOBS) $(TESTS_COV)
 
 mutants: all
 	@sh scripts/mutants.sh $(MUTANTS)
@@ -228,9 +280,9 @@ PUBLIC_HEADERS := $(sort $(wildcard solver/*.h))
 LIB_PKGS := gsl fftw3
 LIB_LIBS = $(shell pkg-config --libs $(LIB_PKGS) 2>/dev/null || echo -lgsl -lgslcblas -lfftw3) -lm -fopenmp
 
-$(BUILD)/pic/%.o: %.c
+$(BUILD)/pic/%.o: %.c | $(GEN_HDRS)
 	@mkdir -p $(dir $@)
-	$(CC) $(BASE_CFLAGS) $(OPT) -fPIC $(PKG_CFLAGS) -MMD -MP -c $< -o $@
+	$(CC) $(BASE_CFLAGS) $(call incs,$<) $(OPT) -fPIC $(PKG_CFLAGS) -MMD -MP -c $< -o $@
 
 # -z defs: the shared library must not lean on symbols of the harness or CLI
 $(BUILD)/$(SHLIB): $(call objs,pic,$(SOLVER_SRC))

@@ -20,6 +20,9 @@ for k in abort segv hang; do
 done
 grep -qE "^PASS +isolation/pass " "$tmp/out" || bad "the passing case did not pass"
 grep -c '<testcase' "$tmp/r/junit.xml" | grep -qx 4 || bad "junit.xml does not list the 4 cases"
+# a check that produces rows but no plot is an ERROR, not a pass
+SF_SELFTEST=1 "$bin" verify --jobs 1 --reports "$tmp/np" tests/noplot/noplot.md > "$tmp/np.out" 2>&1
+[ $? -eq 1 ] && grep -qE "^ERROR +noplot/noplot .*no plot" "$tmp/np.out" || bad "a check without a plot was not an ERROR"
 # kill mid-run: the hang case is in flight when the runner is killed
 SF_SELFTEST=1 "$bin" verify --jobs 1 --timeout 60 --reports "$tmp/k" tests/isolation/pass.md tests/isolation/hang.md > /dev/null 2>&1 &
 pid=$!

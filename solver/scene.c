@@ -413,6 +413,18 @@ void sf_scene_write(const sf_scene *s, FILE *out)
     }
 }
 
+const char *sf_scene_key_unit(const char *key)
+{
+    if (!key)
+        return NULL;
+    if (!strcmp(key, "l_over_R"))
+        return "1";
+    for (size_t i = 0; i < NKEYS; i++)
+        if (!strcmp(keys[i].name, key))
+            return keys[i].unit;
+    return NULL;
+}
+
 void sf_scene_print_keys(FILE *out)
 {
     fprintf(out, "%-14s %-7s %-10s %-24s %s\n", "key", "unit", "default", "range/choices", "meaning");

@@ -96,6 +96,11 @@ void sf_scene_write(const sf_scene *s, FILE *out);
 /* Print the key table (name, unit, default, range, help). */
 void sf_scene_print_keys(FILE *out);
 
+/* The unit of a key as the key table has it ("m/s", "1" for a
+ * dimensionless number, "" for a switch or a name); l_over_R (a sweep
+ * parameter) is "1"; NULL for an unknown key.  For axis labels. */
+const char *sf_scene_key_unit(const char *key);
+
 /* Names of the enum values, for messages and reports. */
 const char *sf_scene_enum_name(const char *key, int value);
 

@@ -129,6 +129,11 @@ static void run_child(const sf_case *c, const char *root, int fd, unsigned timeo
     } else if (sf_result_nrows(r) == 0) {
         o.verdict = SF_VERDICT_ERROR;
         snprintf(o.key, sizeof o.key, "the check produced no row (it cannot fail, so it cannot pass)");
+    } else if (sf_result_nplots(r) == 0) {
+        /* every case report shows its evidence: a check without a plot is
+           a defect like a check without a row (issue 16) */
+        o.verdict = SF_VERDICT_ERROR;
+        snprintf(o.key, sizeof o.key, "the check produced no plot (a report must show its evidence)");
     } else {
         sf_result_gate_nonfinite(r);
         o.verdict = sf_result_passed(r) ? SF_VERDICT_PASS : SF_VERDICT_FAIL;

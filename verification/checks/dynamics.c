@@ -684,6 +684,25 @@ static int chk_reproducible(const sf_case *c, sf_result *r)
     int differ = a.nsamples != d.nsamples || memcmp(a.x_samples, d.x_samples, a.nsamples * sizeof(double));
     sf_check_true(r, "same seed: identical x samples and transition times (bytes)", same, same ? "identical" : "differ");
     sf_check_true(r, "other seed: a different history", differ, differ ? "different" : "identical");
+    /* the evidence: the two same-seed runs overlaid, the other seed beside
+       them, and both differences from run 1 (the same-seed one is 0) */
+    size_t n = a.nsamples < b.nsamples ? a.nsamples : b.nsamples;
+    n = n < d.nsamples ? n : d.nsamples;
+    double *t = check_alloc(3 * (n ? n : 1) * sizeof *t), *db = t + n, *dd = t + 2 * n;
+    for (size_t i = 0; i < n; i++) {
+        t[i] = (double)i * a.sample_dt;
+        db[i] = b.x_samples[i] - a.x_samples[i];
+        dd[i] = d.x_samples[i] - a.x_samples[i];
+    }
+    sf_plot *pl = sf_result_plot(r, "reproducible_runs", "Displacement of two runs with the same seed, and another seed",
+                                 "time t [s]", "x [m]");
+    sf_plot_series(pl, "run 1 (seed)", SF_STYLE_LINES, n, t, a.x_samples);
+    sf_plot_series(pl, "run 2 (same seed)", SF_STYLE_POINTS, n, t, b.x_samples);
+    sf_plot_series(pl, "other seed", SF_STYLE_LINES, n, t, d.x_samples);
+    pl = sf_result_plot(r, "reproducible_difference", "Difference from run 1", "time t [s]", "x - x_run1 [m]");
+    sf_plot_series(pl, "run 2 (same seed): must be 0", SF_STYLE_LINES, n, t, db);
+    sf_plot_series(pl, "other seed", SF_STYLE_LINES, n, t, dd);
+    free(t);
     sf_osc_result_free(&a); sf_osc_result_free(&b); sf_osc_result_free(&d);
     return SF_SUCCESS;
 }

@@ -656,7 +656,12 @@ static int chk_planner_roundoff(const sf_case *c, sf_result *r)
     double dcov = 0, dmax = 0, amax = 0;
     for (size_t i = 0; i < p; i++)
         dcov = sf_max(dcov, fabs(ce[i] - cm[i]));
+    /* for the plot: each sample's max difference (floored at 1e-18 so an
+       exact 0 shows on the log axis) */
+    size_t ns = s->samples ? s->samples : 1;
+    double *pk = check_alloc(2 * ns * sizeof *pk), *pd = pk + ns;
     for (size_t k = 0; k < s->samples; k++) {
+        double dk = 0;
         gsl_rng *g1 = gsl_rng_alloc(gsl_rng_mt19937), *g2 = gsl_rng_alloc(gsl_rng_mt19937);
         gsl_rng_set(g1, s->seed + k);
         gsl_rng_set(g2, s->seed + k);
@@ -665,7 +670,10 @@ static int chk_planner_roundoff(const sf_case *c, sf_result *r)
         for (size_t i = 0; i < 2 * p; i++) {
             dmax = sf_max(dmax, fabs(a[i] - b[i]));
             amax = sf_max(amax, fabs(a[i]));
+            dk = sf_max(dk, fabs(a[i] - b[i]));
         }
+        pk[k] = (double)k;
+        pd[k] = fmax(dk, 1e-18);
         gsl_rng_free(g1);
         gsl_rng_free(g2);
     }
@@ -675,6 +683,23 @@ static int chk_planner_roundoff(const sf_case *c, sf_result *r)
             in->px, in->py, amax);
     sf_check_le(r, "max |G_measure - G_estimate| over all points and samples", dmax, s->tolerance);
     sf_check_abs(r, "produced covariance, measure minus estimate plan (bits)", dcov, 0, 0);
+    if (s->samples) {
+        /* the last sample's first grid row (x index fastest), both plans */
+        double *xr = check_alloc(s->nx * sizeof *xr);
+        for (size_t i = 0; i < s->nx; i++)
+            xr[i] = (double)i * s->dx;
+        sf_plot *pl = sf_result_plot(r, "planner_fields", "Last sample, first grid row: FFTW_ESTIMATE and FFTW_MEASURE plans",
+                                     "x along the first grid row [m]", "Gaussian field G [dimensionless]");
+        sf_plot_series(pl, "FFTW_ESTIMATE", SF_STYLE_LINES, s->nx, xr, a);
+        sf_plot_series(pl, "FFTW_MEASURE", SF_STYLE_POINTS, s->nx, xr, b);
+        free(xr);
+    }
+    sf_plot *pl = sf_result_plot(r, "planner_roundoff", "Max |G_measure - G_estimate| per sample pair",
+                                 "sample pair [index]", "max |difference| (floored at 1e-18) [dimensionless]");
+    sf_plot_log(pl, 0, 1);
+    sf_plot_series(pl, "max over the grid", SF_STYLE_POINTS, s->samples, pk, pd);
+    sf_plot_hline(pl, "tolerance", s->tolerance);
+    free(pk);
     free(a);
     free(ce);
     sf_field_free(fe);

@@ -217,6 +217,10 @@ static int chk_history_skip(const sf_case *c, sf_result *r)
     snprintf(found, sizeof found, "%zu and %zu transitions", full.ntrans, sum.ntrans);
     sf_check_true(r, "every transition time identical", (int)same, found);
     sf_check_true(r, "the full run recorded a history", rows.n > 0 && full.nsamples > 0, "rows and samples");
+    sf_plot *pl = sf_result_plot(r, "history_skip", "Stick-slip transitions: full-history run and summary-only run",
+                                 "time t [s]", "x at a transition [m]");
+    sf_plot_series(pl, "full history", SF_STYLE_LINES, full.ntrans, full.trans_t, full.trans_x);
+    sf_plot_series(pl, "summary only", SF_STYLE_POINTS, sum.ntrans, sum.trans_t, sum.trans_x);
     sf_osc_result_free(&full);
     sf_osc_result_free(&sum);
     sf_cof_free(cof);
@@ -242,6 +246,8 @@ static int chk_reuse(const sf_case *c, sf_result *r)
         return SF_EINVAL;
     }
     size_t differ = 0, points = 0;
+    /* for the plot: realisation 0 along the strip's centre line, both ways */
+    double *pxb = check_alloc(3 * in->nx * sizeof *pxb), *pa = pxb + in->nx, *pb = pxb + 2 * in->nx;
     for (size_t i = 0; i < n && !rc; i++) {
         gsl_rng *g1 = gsl_rng_alloc(gsl_rng_mt19937), *g2 = gsl_rng_alloc(gsl_rng_mt19937);
         gsl_rng_set(g1, sf_mc_seed(s->seed, i));
@@ -256,8 +262,14 @@ static int chk_reuse(const sf_case *c, sf_result *r)
         for (size_t j = 0; !rc && j < in->ny; j++)
             for (size_t k = 0; k < in->nx; k++) {
                 double xb = in->x0 + (double)k * in->dx, yb = in->y0 + (double)j * in->dy;
-                differ += sf_cof_eval(a, xb, yb) != sf_cof_eval(b, xb, yb);
+                double va = sf_cof_eval(a, xb, yb), vb = sf_cof_eval(b, xb, yb);
+                differ += va != vb;
                 points++;
+                if (i == 0 && j == in->ny / 2) {
+                    pxb[k] = xb;
+                    pa[k] = va;
+                    pb[k] = vb;
+                }
             }
         sf_cof_free(a);
         sf_cof_free(b);
@@ -265,9 +277,17 @@ static int chk_reuse(const sf_case *c, sf_result *r)
         gsl_rng_free(g1);
         gsl_rng_free(g2);
     }
+    size_t nx = in->nx;
     sf_cof_plan_free(kept);
-    if (rc)
+    if (rc) {
+        free(pxb);
         return rc;
+    }
+    sf_plot *pl = sf_result_plot(r, "plan_reuse", "Realisation 0 on the strip's centre line: reused and fresh plan",
+                                 "belt coordinate x_b [m]", "COF [dimensionless]");
+    sf_plot_series(pl, "reused plan", SF_STYLE_LINES, nx, pxb, pa);
+    sf_plot_series(pl, "fresh plan", SF_STYLE_POINTS, nx, pxb, pb);
+    free(pxb);
     sf_note(r, "%zu realisations of a %zu x %zu strip field (one FFTW plan, FFTW_ESTIMATE) drawn by one plan in "
                "turn and each by a fresh plan, with realisation i's own stream (sf_mc_seed): the plan is reused "
                "across realisations only if that changes nothing.", n, in->nx, in->ny);

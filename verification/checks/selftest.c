@@ -50,6 +50,20 @@ static int chk_pass(const sf_case *c, sf_result *r)
     if (!armed(r))
         return SF_EINVAL;
     sf_check_abs(r, "1 + 1", 1.0 + 1.0, 2.0, 0);
+    const double x[2] = { 0, 1 }, y[2] = { 2, 1.0 + 1.0 };
+    sf_plot *p = sf_result_plot(r, "sum", "1 + 1", "operand index (dimensionless)",
+                                "value (dimensionless)");
+    sf_plot_series(p, "1 + 1", SF_STYLE_POINTS, 2, x, y);
+    return SF_SUCCESS;
+}
+
+/* a row but no plot: the runner must call it an ERROR */
+static int chk_noplot(const sf_case *c, sf_result *r)
+{
+    (void)c;
+    if (!armed(r))
+        return SF_EINVAL;
+    sf_check_abs(r, "1 + 1", 1.0 + 1.0, 2.0, 0);
     return SF_SUCCESS;
 }
 
@@ -58,5 +72,6 @@ const sf_check_def sf_checks_selftest[] = {
     { "selftest_segv", chk_segv, "raises SIGSEGV (isolation test)" },
     { "selftest_hang", chk_hang, "never returns (time-out test)" },
     { "selftest_pass", chk_pass, "passes (isolation test)" },
+    { "selftest_noplot", chk_noplot, "a row but no plot: an ERROR (isolation test)" },
     { NULL, NULL, NULL }
 };

@@ -15,6 +15,27 @@
 #include <stdlib.h>
 #include <string.h>
 #include <gsl/gsl_math.h>
+#include <stdio.h>
+
+/* "v_b [m/s]": the axis label of a swept scene key, unit from the key table */
+static void sweep_label(const char *key, char *buf, size_t n)
+{
+    const char *u = sf_scene_key_unit(key);
+    snprintf(buf, n, "%s [%s]", key, !u || !*u || !strcmp(u, "1") ? "dimensionless" : u);
+}
+
+/* log x when the values are positive and span more than a decade */
+static int spans_decades(size_t n, const double *v)
+{
+    double lo = INFINITY, hi = 0;
+    for (size_t i = 0; i < n; i++) {
+        if (!(v[i] > 0))
+            return 0;
+        lo = fmin(lo, v[i]);
+        hi = fmax(hi, v[i]);
+    }
+    return n > 1 && hi > 10 * lo;
+}
 
 /* The COF plan over l/R from the sweep: each l either plans a strip field
  * whose draws are finite and positive, takes the one-variable shortcut
@@ -28,6 +49,11 @@ static int chk_cof_plan_range(const sf_case *c, sf_result *r)
         return SF_EINVAL;
     gsl_rng *rng = sf_case_rng(c);
     sf_note(r, "| l/R | decision | grid | smallest COF drawn |\n|---|---|---|---|");
+    /* for the plot: (l/R, smallest COF drawn) per decision: 0 field,
+     * 1 shortcut, 2 refused (x at [2K d + i], y at [2K d + K + i]) */
+    double *pd = check_alloc(6 * K * sizeof *pd);
+    size_t nd[3] = { 0, 0, 0 };
+#define PUSH(d, xv, yv) (pd[2 * K * (d) + nd[d]] = (xv), pd[2 * K * (d) + K + nd[d]] = (yv), nd[d]++)
     for (size_t k = 0; k < K; k++) {
         sf_scene s = *s0;
         s.l = s0->sweep.v[k] * s0->R;
@@ -39,6 +65,7 @@ static int chk_cof_plan_range(const sf_case *c, sf_result *r)
             int has_reason = strstr(err, "grid points") && strstr(err, "raise l");
             bad += !has_reason;
             sf_note(r, "| %g | refused: %s | | |", s0->sweep.v[k], err);
+            PUSH(2, s0->sweep.v[k], 0);
             continue;
         }
         if (rc) {
@@ -77,6 +104,7 @@ static int chk_cof_plan_range(const sf_case *c, sf_result *r)
             shortcut++;
         else
             fields++;
+        PUSH(in->shortcut ? 1 : 0, s0->sweep.v[k], mn);
         sf_note(r, "| %g | %s | %zu x %zu | %.4g |", s0->sweep.v[k],
                 in->shortcut ? "one random variable"
                 : in->generator == SF_COFGEN_TILES ? "strip field, tiles in a sliding window"
@@ -88,6 +116,16 @@ static int chk_cof_plan_range(const sf_case *c, sf_result *r)
                 (double)bad, 0);
     sf_check_true(r, "the sweep exercises all three decisions (field, shortcut, refusal)",
                   fields && shortcut && refused, fields && shortcut && refused ? "all three seen" : "one is missing");
+    sf_plot *pl = sf_result_plot(r, "cof_plan_range", "COF plan over l/R: decision and smallest COF drawn",
+                                 "correlation length l/R [dimensionless]", "smallest COF drawn [dimensionless]");
+    sf_plot_log(pl, spans_decades(K, s0->sweep.v), 0);
+    const char *lab[3] = { "strip field", "one random variable (shortcut)", "refused with a reason (no draw; shown at 0)" };
+    for (int d = 0; d < 3; d++)
+        if (nd[d])
+            sf_plot_series(pl, lab[d], SF_STYLE_POINTS, nd[d], pd + 2 * K * d, pd + 2 * K * d + K);
+#undef PUSH
+    sf_plot_hline(pl, "COF = 0 (a draw must stay above)", 0);
+    free(pd);
     gsl_rng_free(rng);
     return SF_SUCCESS;
 }
@@ -105,6 +143,10 @@ static int chk_near_singular(const sf_case *c, sf_result *r)
     gsl_rng *rng = sf_case_rng(c);
     double worst_err_untruncated = 0;
     sf_note(r, "| l/dx | embedding | truncated | clamped | covariance error | max abs sample |\n|---|---|---|---|---|---|");
+    /* for the plot: (l/dx, covariance error), untruncated (0) and truncated (1):
+     * x at [2K d + i], y at [2K d + K + i] */
+    double *pe = check_alloc(4 * K * sizeof *pe);
+    size_t ne[2] = { 0, 0 };
     for (size_t k = 0; k < K; k++) {
         sf_field_spec spec;
         sf_field_spec_default(&spec, s0->nx, s0->ny, s0->dx, s0->dy, s0->sweep.v[k] * s0->dx);
@@ -130,6 +172,13 @@ static int chk_near_singular(const sf_case *c, sf_result *r)
             bad++;
         if (!in->truncated)
             worst_err_untruncated = sf_max(worst_err_untruncated, in->cov_error);
+        /* floored at 1e-17 so that an exact 0 shows on the log axis */
+        {
+            int d = in->truncated != 0;
+            pe[2 * K * d + ne[d]] = s0->sweep.v[k];
+            pe[2 * K * d + K + ne[d]] = isnan(in->cov_error) ? NAN : fmax(in->cov_error, 1e-17);
+            ne[d]++;
+        }
         sf_note(r, "| %g | %zu x %zu | %s | %zu | %.3e | %.3g |", s0->sweep.v[k], in->px, in->py,
                 in->truncated ? "yes" : "no", in->n_clamped, in->cov_error, mx);
         bad += mx > 8;   /* |N(0,1)| > 8 has probability 1e-15 per value */
@@ -139,6 +188,16 @@ static int chk_near_singular(const sf_case *c, sf_result *r)
     sf_check_le(r, "non-finite samples, wrong truncation flag, or |sample| > 8", (double)bad, 0);
     sf_check_le(r, "covariance error of the untruncated embeddings (round-off clamps only)",
                 worst_err_untruncated, s0->tolerance);
+    sf_plot *pl = sf_result_plot(r, "near_singular", "Circulant embedding: covariance error against l/dx",
+                                 "correlation length l/dx [dimensionless]",
+                                 "max covariance error (floored at 1e-17) [dimensionless]");
+    sf_plot_log(pl, spans_decades(K, s0->sweep.v), 1);
+    if (ne[0])
+        sf_plot_series(pl, "PSD embedding (round-off clamps only)", SF_STYLE_POINTS, ne[0], pe, pe + K);
+    if (ne[1])
+        sf_plot_series(pl, "truncated (error reported)", SF_STYLE_POINTS, ne[1], pe + 2 * K, pe + 3 * K);
+    sf_plot_hline(pl, "tolerance (untruncated)", s0->tolerance);
+    free(pe);
     gsl_rng_free(rng);
     return SF_SUCCESS;
 }
@@ -156,6 +215,9 @@ static int chk_wrench_extremes(const sf_case *c, sf_result *r)
     double mus[4] = { 0, 1e-300, 1e-12, 1e3 };
     double vel[7] = { 0, 1e-300, 1e-150, 1e-8, 1, 1e8, 1e150 };
     size_t bad = 0, tried = 0;
+    /* for the plot (COF 1e3): |F|/(mu N) in pure translation and
+       |T|/(mu N R) in pure spin against the speed (slip, or w R) */
+    double spd[6] = { 0 }, fpl[6] = { 0 }, tpl[6] = { 0 };
     for (int a = 0; a < 4; a++) {
         sf_cof *cof;
         sf_cof_alloc_uniform(mus[a], &cof);
@@ -172,6 +234,14 @@ static int chk_wrench_extremes(const sf_case *c, sf_result *r)
                     double u = (sg & 1 ? -1 : 1) * vel[i], w = (sg & 2 ? -1 : 1) * vel[j] / s->R, q[3];
                     int rc = sf_contact_wrench(ct, 0, 0, u, 0, w, 1.0, q);
                     tried++;
+                    if (a == 3 && sg == 0 && (i == 0) != (j == 0)) {
+                        int m = (i ? i : j) - 1;
+                        spd[m] = vel[i ? i : j];
+                        if (i)
+                            fpl[m] = hypot(q[0], q[1]) / (mus[a] * N);
+                        else
+                            tpl[m] = fabs(q[2]) / (mus[a] * N * s->R);
+                    }
                     if (rc || !isfinite(q[0]) || !isfinite(q[1]) || !isfinite(q[2]) ||
                         hypot(q[0], q[1]) > bound || fabs(q[2]) > bound * s->R ||
                         (w == 0 && q[0] * u > 0) || (u == 0 && q[2] * w > 0) ||
@@ -183,11 +253,17 @@ static int chk_wrench_extremes(const sf_case *c, sf_result *r)
         sf_contact_free(ct);
         sf_cof_free(cof);
     }
-    double pf = -1, pt = 1;
+    double pf = -1, pt = 1, pe[60], pfe[60], pte[60];
+    size_t ne = 0;
     for (double e = 1e-300; e < 1e300; e *= 1e10) {
         double f, t;
         sf_contensou(e, &f, &t);
         tried++;
+        if (ne < 60) {
+            pe[ne] = e;
+            pfe[ne] = f;
+            pte[ne++] = t;
+        }
         const double ro = 1e-14;   /* round-off slack, relative */
         if (!isfinite(f) || !isfinite(t) || f < 0 || f > 1 + ro || t < 0 || t > 2.0 / 3.0 * (1 + ro) ||
             f < pf * (1 - ro) || t > pt * (1 + ro))
@@ -199,6 +275,18 @@ static int chk_wrench_extremes(const sf_case *c, sf_result *r)
     sf_note(r, "%zu evaluations: COF in {0, 1e-300, 1e-12, 1e3}, slip and spin speeds from 1e-300 to 1e150 "
                "(both signs), eps from 1e-300 to 1e300. hypot() keeps subnormal slip speeds from "
                "underflowing to a zero direction.", tried);
+    sf_plot *pl = sf_result_plot(r, "contensou_extremes", "Contensou closed forms over eps = 1e-300 .. 1e300",
+                                 "eps = U / (|w| R) [dimensionless]", "f = |F|/(mu N), t = |T|/(mu N R) [dimensionless]");
+    sf_plot_log(pl, 1, 0);
+    sf_plot_series(pl, "f (force)", SF_STYLE_LINESPOINTS, ne, pe, pfe);
+    sf_plot_series(pl, "t (torque)", SF_STYLE_LINESPOINTS, ne, pe, pte);
+    sf_plot_hline(pl, "bound of f: 1", 1);
+    sf_plot_hline(pl, "bound of t: 2/3", 2.0 / 3.0);
+    pl = sf_result_plot(r, "wrench_extremes", "Wrench at COF 1e3: pure translation and pure spin",
+                        "slip speed |u|, or |w| R [m/s]", "|F|/(mu N), |T|/(mu N R) [dimensionless]");
+    sf_plot_log(pl, 1, 0);
+    sf_plot_series(pl, "|F|/(mu N), pure translation (exact: 1)", SF_STYLE_POINTS, 6, spd, fpl);
+    sf_plot_series(pl, "|T|/(mu N R), pure spin (polar exact: 2/3)", SF_STYLE_POINTS, 6, spd, tpl);
     return SF_SUCCESS;
 }
 
@@ -213,13 +301,18 @@ static int chk_run(const sf_case *c, sf_result *r)
     size_t K = *s0->sweep_param ? s0->sweep.n : 1;
     size_t bad = 0;
     double worst_e = 0;
+    /* for the plot: the stressed value, the energy residual and the
+       excursion over its bound */
+    double *pv = check_alloc(3 * K * sizeof *pv), *pe = pv + K, *px = pv + 2 * K;
     sf_note(r, "| %s | result | transitions | cycles | stick fraction | x range [m] | max abs y [m] | energy residual (rel.) | steps |\n"
                "|---|---|---|---|---|---|---|---|---|", *s0->sweep_param ? s0->sweep_param : "run");
     for (size_t k = 0; k < K; k++) {
         sf_scene s = *s0;
         char err[256] = "";
-        if (*s0->sweep_param && sf_sweep_set(&s, s0->sweep_param, s0->sweep.v[k], err, sizeof err))
+        if (*s0->sweep_param && sf_sweep_set(&s, s0->sweep_param, s0->sweep.v[k], err, sizeof err)) {
+            free(pv);
             return SF_EINVAL;
+        }
         gsl_rng *rng = sf_case_rng(c);
         sf_osc_result res;
         int rc = check_osc_run(&s, rng, NULL, 0, &res, NULL, NULL, r);
@@ -230,6 +323,17 @@ static int chk_run(const sf_case *c, sf_result *r)
                  sf_max(fabs(res.x_min), fabs(res.x_max)) <= bound && res.y_absmax <= bound && e <= s0->tolerance;
         bad += !ok;
         worst_e = sf_max(worst_e, rc ? INFINITY : e);
+        pv[k] = *s0->sweep_param ? s0->sweep.v[k] : 1.0;
+        pe[k] = rc ? NAN : fmax(e, 1e-17);
+        px[k] = rc ? NAN : fmax(fmax(fabs(res.x_min), fabs(res.x_max)), res.y_absmax) / bound;
+        if (K == 1 && rc == SF_SUCCESS) {
+            /* one run: its stick-slip transitions against the bound */
+            sf_plot *pt = sf_result_plot(r, "transitions", "Stick-slip transitions of the run, within the bound",
+                                         "time t [s]", "x at a transition [m]");
+            sf_plot_series(pt, "x at a stick-slip transition", SF_STYLE_POINTS, res.ntrans, res.trans_t, res.trans_x);
+            sf_plot_hline(pt, "+2 mu_hi m g / k", bound);
+            sf_plot_hline(pt, "-2 mu_hi m g / k", -bound);
+        }
         sf_note(r, "| %g | %s | %zu | %zu | %.4g | [%.4g, %.4g] | %.3g | %.2e | %lu |",
                 *s0->sweep_param ? s0->sweep.v[k] : 0.0, rc ? sf_strerror(rc) : (ok ? "ok" : "**out of bounds**"),
                 res.ntrans, res.ncycles, res.stick_fraction, res.x_min, res.x_max, res.y_absmax, e, res.steps);
@@ -238,6 +342,19 @@ static int chk_run(const sf_case *c, sf_result *r)
     sf_check_le(r, "runs that failed, went non-finite, left the bound 2 mu_hi m g / k, or broke the energy balance",
                 (double)bad, 0);
     sf_check_le(r, "worst relative energy residual", worst_e, s0->tolerance);
+    char xl[64];
+    sweep_label(s0->sweep_param, xl, sizeof xl);
+    sf_plot *pl = K == 1 ? NULL
+                         : sf_result_plot(r, "stress_run", "Energy balance and excursion at the stressed parameter",
+                                          xl, "ratio [dimensionless]");
+    if (pl) {
+        sf_plot_log(pl, spans_decades(K, pv), 1);
+        sf_plot_series(pl, "relative energy residual (floored at 1e-17)", SF_STYLE_LINESPOINTS, K, pv, pe);
+        sf_plot_series(pl, "max(|x|, |y|) / (2 mu_hi m g / k)", SF_STYLE_LINESPOINTS, K, pv, px);
+        sf_plot_hline(pl, "energy tolerance", s0->tolerance);
+        sf_plot_hline(pl, "excursion bound", 1);
+    }
+    free(pv);
     return SF_SUCCESS;
 }
 

@@ -1,0 +1,283 @@
+/* Solver paths no case exercises (issue 16: coverage of solver/ by make
+ * test + the quick tier): error messages, the scene key table (units for
+ * axis labels, `help scene`), the plan's account of itself (`run
+ * --explain`), its refusals and warnings, sweep-parameter edges, and the
+ * stick break on the exact T = 0 section. */
+#include "test_util.h"
+#include "cof.h"
+#include "numplan.h"
+#include "oscillator.h"
+#include "scene.h"
+#include "sf_error.h"
+#include "sweep.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+/* every error code has its own message; an unknown code says so */
+static void strerror_codes(void **state)
+{
+    (void)state;
+    const int codes[] = { SF_SUCCESS, SF_EINVAL, SF_ENOMEM, SF_ETRUNC, SF_ETOOBIG, SF_EIO, SF_EPARSE, SF_EFAIL, SF_EMAXITER };
+    const size_t n = sizeof codes / sizeof codes[0];
+    for (size_t i = 0; i < n; i++) {
+        const char *m = sf_strerror(codes[i]);
+        assert_non_null(m);
+        assert_true(strlen(m) > 0);
+        assert_string_not_equal(m, "unknown error");
+        for (size_t j = 0; j < i; j++)
+            assert_string_not_equal(m, sf_strerror(codes[j]));
+    }
+    assert_string_equal(sf_strerror(-12345), "unknown error");
+}
+
+static void key_units(void **state)
+{
+    (void)state;
+    assert_string_equal(sf_scene_key_unit("v_b"), "m/s");
+    assert_string_equal(sf_scene_key_unit("k"), "N/m");
+    assert_string_equal(sf_scene_key_unit("mu_mean"), "1");
+    assert_string_equal(sf_scene_key_unit("l_over_R"), "1");
+    assert_null(sf_scene_key_unit("no_such_key"));
+    assert_null(sf_scene_key_unit(NULL));
+}
+
+/* the text of a FILE * writer, NUL-terminated (caller frees) */
+static char *text_of(void (*fn)(const void *, FILE *), const void *arg)
+{
+    char *buf = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&buf, &len);
+    assert_non_null(f);
+    fn(arg, f);
+    fclose(f);
+    return buf;
+}
+
+static void print_keys_fn(const void *arg, FILE *f) { (void)arg; sf_scene_print_keys(f); }
+
+/* `help scene`: one line per key with unit, default and range or choices */
+static void key_table(void **state)
+{
+    (void)state;
+    char *t = text_of(print_keys_fn, NULL);
+    assert_non_null(strstr(t, "unit"));
+    assert_non_null(strstr(t, "v_b"));
+    assert_non_null(strstr(t, "m/s"));
+    assert_non_null(strstr(t, "polar|cartesian"));   /* an enum's choices */
+    free(t);
+}
+
+static void explain_fn(const void *arg, FILE *f) { sf_osc_explain(arg, f); }
+
+/* the account of one oscillator, for a scene changed by `edit` */
+static char *explain(void (*edit)(sf_scene *))
+{
+    sf_scene s;
+    sf_scene_default(&s);
+    s.T = 1;
+    s.t_skip = 0;
+    edit(&s);
+    sf_cof *cof;
+    assert_int_equal(sf_cof_alloc_uniform(s.mu_mean, &cof), SF_SUCCESS);
+    sf_osc *o;
+    char err[256] = "";
+    int rc = sf_osc_alloc(&s, cof, &o, err, sizeof err);
+    if (rc)
+        print_error("sf_osc_alloc: %s\n", err);
+    assert_int_equal(rc, SF_SUCCESS);
+    char *t = text_of(explain_fn, o);
+    sf_osc_free(o);
+    sf_cof_free(cof);
+    return t;
+}
+
+static void e_default(sf_scene *s) { (void)s; }
+static void e_one_dof(sf_scene *s) { s->dof = SF_DOF_1; }
+static void e_quadrature_rk4(sf_scene *s)
+{
+    s->shortcuts = 0;            /* constant COF through the quadrature */
+    s->integrator = SF_INTEG_RK4;
+    s->dt = 1e-3;
+    s->cells = 8;
+    s->exact_section = 1;
+    s->velocity_jump = 0;
+}
+static void e_rkck(sf_scene *s)
+{
+    s->shortcuts = 0;
+    s->integrator = SF_INTEG_RKCK;
+    s->rtol = 1e-6;
+    s->cells = 8;
+}
+
+static void explain_variants(void **state)
+{
+    (void)state;
+    char *t = explain(e_default);
+    assert_non_null(strstr(t, "3-DOF"));
+    assert_non_null(strstr(t, "closed form"));
+    assert_non_null(strstr(t, "accuracy plan"));
+    free(t);
+    t = explain(e_one_dof);
+    assert_non_null(strstr(t, "1-D oscillator"));
+    assert_non_null(strstr(t, "Eq. 4"));
+    free(t);
+    t = explain(e_quadrature_rk4);
+    assert_non_null(strstr(t, "quadrature"));
+    assert_non_null(strstr(t, "constant COF"));
+    assert_non_null(strstr(t, "rk4"));
+    assert_non_null(strstr(t, "exact T = 0 section"));
+    assert_non_null(strstr(t, "set by the scene"));
+    free(t);
+    t = explain(e_rkck);
+    assert_non_null(strstr(t, "rtol = 1e-06"));
+    assert_non_null(strstr(t, "predicted QoI error"));
+    free(t);
+}
+
+/* the plan's refusals and warnings: qoi_tol outside (0, 1); cells set
+ * coarser than l; a qoi_tol the ring cap cannot meet */
+static void plan_edges(void **state)
+{
+    (void)state;
+    sf_scene s;
+    sf_scene_default(&s);
+    sf_numplan p;
+    char err[256] = "";
+    s.qoi_tol = 0;
+    assert_int_equal(sf_numplan_make(&s, 1, &p, err, sizeof err), SF_EINVAL);
+    assert_non_null(strstr(err, "qoi_tol"));
+    s.qoi_tol = 1;
+    assert_int_equal(sf_numplan_make(&s, 1, &p, NULL, 0), SF_EINVAL);
+    sf_scene_default(&s);
+    s.cells = 4;
+    s.l = 0.01 * s.R;   /* cells of R/4, far coarser than l */
+    assert_int_equal(sf_numplan_make(&s, 1, &p, err, sizeof err), SF_SUCCESS);
+    assert_int_equal(p.cells_from, SF_PLAN_SCENE);
+    assert_non_null(strstr(p.warning, "does not resolve"));
+    sf_scene_default(&s);
+    s.qoi_tol = 1e-9;   /* more rings than the cap */
+    s.l = 0.3 * s.R;
+    assert_int_equal(sf_numplan_make(&s, 1, &p, err, sizeof err), SF_SUCCESS);
+    assert_int_equal(p.cells, SF_PLAN_MAX_RINGS);
+    assert_non_null(strstr(p.warning, "capped"));
+}
+
+/* sweep parameters: l_over_R must be positive and finite; mu_mean keeps
+ * the CV (Fig. 13); an unknown key is refused with the parser's reason */
+static void sweep_set_edges(void **state)
+{
+    (void)state;
+    sf_scene s;
+    sf_scene_default(&s);
+    char err[256] = "";
+    assert_int_equal(sf_sweep_set(&s, "l_over_R", 0, err, sizeof err), SF_EPARSE);
+    assert_non_null(strstr(err, "l_over_R"));
+    assert_int_equal(sf_sweep_set(&s, "l_over_R", INFINITY, err, sizeof err), SF_EPARSE);
+    assert_int_equal(sf_sweep_set(&s, "l_over_R", 2, err, sizeof err), SF_SUCCESS);
+    assert_close(s.l, 2 * s.R, 1e-15);
+    double cv = s.mu_std / s.mu_mean;
+    assert_int_equal(sf_sweep_set(&s, "mu_mean", 0.8, err, sizeof err), SF_SUCCESS);
+    assert_close(s.mu_mean, 0.8, 1e-15);
+    assert_close(s.mu_std / s.mu_mean, cv, 1e-15);
+    assert_int_not_equal(sf_sweep_set(&s, "no_such_key", 1, err, sizeof err), SF_SUCCESS);
+}
+
+/* Stick duration from rest at the origin, uniform COF through the
+ * quadrature: on the equatorial circle it is the closed form
+ * (mu N / k) / v_b; on the exact section (a uniform disc's T = 0 section
+ * is that circle, up to the quadrature) it lies in (0, tau] and within 1 %
+ * of it (8 rings).  Outside the stick set it is 0. */
+static void stick_on_exact_section(void **state)
+{
+    (void)state;
+    sf_scene s;
+    sf_scene_default(&s);
+    s.shortcuts = 0;
+    s.cells = 8;
+    s.mu_std = 0;
+    sf_cof *cof;
+    assert_int_equal(sf_cof_alloc_uniform(s.mu_mean, &cof), SF_SUCCESS);
+    double y[SF_OSC_NSTATE] = { 0 }, tau = s.mu_mean * s.m * s.g / s.k / s.v_b;
+    char err[256] = "";
+    for (int exact = 0; exact <= 1; exact++) {
+        s.exact_section = exact;
+        sf_osc *o;
+        assert_int_equal(sf_osc_alloc(&s, cof, &o, err, sizeof err), SF_SUCCESS);
+        y[SF_OSC_X] = y[SF_OSC_Y] = 0;
+        double d = sf_osc_stick_duration(o, 0, y);
+        if (exact) {
+            assert_true(d > 0 && d <= tau * (1 + 1e-9));
+            assert_close(d, tau, 1e-2);
+        } else {
+            assert_close(d, tau, 1e-12);
+        }
+        y[SF_OSC_X] = 2 * s.mu_mean * s.m * s.g / s.k;   /* beyond the break */
+        assert_true(sf_osc_stick_duration(o, 0, y) == 0);
+        y[SF_OSC_X] = 0;
+        y[SF_OSC_Y] = y[SF_OSC_X] + 2 * s.mu_mean * s.m * s.g / s.k;
+        assert_true(sf_osc_stick_duration(o, 0, y) == 0);
+        sf_osc_free(o);
+    }
+    sf_cof_free(cof);
+}
+
+/* the parser's length and count limits, enum names, and writing a list */
+static void scene_parse_limits(void **state)
+{
+    (void)state;
+    sf_scene s;
+    sf_scene_default(&s);
+    char err[256] = "", text[4096];
+    /* a seed is an integer of at most 31 characters */
+    assert_int_equal(sf_scene_parse(&s, "seed = 1234567890123456789012345678901234567890\n", "t", 1, err, sizeof err),
+                     SF_EPARSE);
+    assert_non_null(strstr(err, "too long"));
+    /* a string key longer than its buffer */
+    int n = snprintf(text, sizeof text, "check = ");
+    for (int i = 0; i < 300; i++)
+        text[n++] = 'a';
+    text[n++] = '\n';
+    text[n] = '\0';
+    assert_int_equal(sf_scene_parse(&s, text, "t", 1, err, sizeof err), SF_EPARSE);
+    assert_non_null(strstr(err, "longer than"));
+    /* a list of more than SF_LIST_MAX values */
+    n = snprintf(text, sizeof text, "sweep = 1");
+    for (int i = 0; i < SF_LIST_MAX; i++)
+        n += snprintf(text + n, sizeof text - (size_t)n, ", %d", i + 2);
+    snprintf(text + n, sizeof text - (size_t)n, "\n");
+    assert_int_equal(sf_scene_parse(&s, text, "t", 1, err, sizeof err), SF_EPARSE);
+    assert_non_null(strstr(err, "more than"));
+    /* enum names: known, out of range, not an enum, unknown key */
+    assert_string_equal(sf_scene_enum_name("layout", 1), "cartesian");
+    assert_string_equal(sf_scene_enum_name("layout", 7), "?");
+    assert_string_equal(sf_scene_enum_name("v_b", 0), "?");
+    assert_string_equal(sf_scene_enum_name("no_such_key", 0), "?");
+    /* a list written back as "a, b, c" */
+    sf_scene_default(&s);
+    assert_int_equal(sf_scene_parse(&s, "sweep = 0.5, 2, 8\n", "t", 1, err, sizeof err), SF_SUCCESS);
+    char *buf = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&buf, &len);
+    assert_non_null(f);
+    sf_scene_write(&s, f);
+    fclose(f);
+    assert_non_null(strstr(buf, "sweep = 0.5, 2, 8"));
+    free(buf);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(strerror_codes),
+        cmocka_unit_test(key_units),
+        cmocka_unit_test(key_table),
+        cmocka_unit_test(explain_variants),
+        cmocka_unit_test(plan_edges),
+        cmocka_unit_test(sweep_set_edges),
+        cmocka_unit_test(stick_on_exact_section),
+        cmocka_unit_test(scene_parse_limits),
+    };
+    return cmocka_run_group_tests_name("edges", tests, NULL, NULL);
+}
