@@ -414,3 +414,17 @@ int sf_cof_from_scene(const sf_scene *s, gsl_rng *rng, sf_cof **out)
     sf_cof_plan_free(p);
     return rc;
 }
+
+int sf_cof_plan_alloc_mt(const sf_scene *s, sf_cof_plan **out, char *err, size_t errlen)
+{
+    int rc;
+#pragma omp critical(sf_fftw_plan)
+    rc = sf_cof_plan_alloc(s, out, err, errlen);
+    return rc;
+}
+
+void sf_cof_plan_free_mt(sf_cof_plan *p)
+{
+#pragma omp critical(sf_fftw_plan)
+    sf_cof_plan_free(p);
+}

@@ -187,6 +187,11 @@ typedef struct {
 
 int sf_cof_plan_alloc(const sf_scene *s, sf_cof_plan **out, char *err, size_t errlen);
 void sf_cof_plan_free(sf_cof_plan *p);
+/* The same from a thread of an OpenMP team (a Monte Carlo workspace):
+ * FFTW's planner is not thread-safe, so plans are made and freed one at a
+ * time, in the library's one critical section for FFTW planning. */
+int sf_cof_plan_alloc_mt(const sf_scene *s, sf_cof_plan **out, char *err, size_t errlen);
+void sf_cof_plan_free_mt(sf_cof_plan *p);
 const sf_cof_plan_info *sf_cof_plan_get_info(const sf_cof_plan *p);
 /* One realisation from rng (nothing is drawn for a uniform COF).  A
  * function of the rng state alone: no field is carried over between

@@ -41,11 +41,7 @@ static void *ws_alloc(void *ctx)
     if (!w)
         return NULL;
     *w = *c;
-    int rc;
-    /* FFTW's planner is not thread-safe: plan one thread at a time */
-#pragma omp critical(sf_fftw_plan)
-    rc = sf_cof_plan_alloc(c->s, &w->plan, NULL, 0);
-    if (rc) {
+    if (sf_cof_plan_alloc_mt(c->s, &w->plan, NULL, 0)) {
         free(w);
         return NULL;
     }
@@ -55,8 +51,7 @@ static void *ws_alloc(void *ctx)
 static void ws_free(void *p)
 {
     ws_t *w = p;
-#pragma omp critical(sf_fftw_plan)
-    sf_cof_plan_free(w->plan);
+    sf_cof_plan_free_mt(w->plan);
     free(w);
 }
 

@@ -677,10 +677,7 @@ static void *claims_ws_alloc(void *ctx)
     const claims_ws *c = ctx;
     claims_ws *w = check_alloc(sizeof *w);
     *w = *c;
-    int rc;
-#pragma omp critical(sf_fftw_plan)
-    rc = sf_cof_plan_alloc(c->s, &w->plan, NULL, 0);
-    if (rc) {
+    if (sf_cof_plan_alloc_mt(c->s, &w->plan, NULL, 0)) {
         free(w);
         return NULL;
     }
@@ -690,8 +687,7 @@ static void *claims_ws_alloc(void *ctx)
 static void claims_ws_free(void *p)
 {
     claims_ws *w = p;
-#pragma omp critical(sf_fftw_plan)
-    sf_cof_plan_free(w->plan);
+    sf_cof_plan_free_mt(w->plan);
     free(w);
 }
 
