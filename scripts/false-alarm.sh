@@ -17,25 +17,19 @@ set -eu
 N=${1:-20}
 TIER=${2:-quick}
 JOBS=${3:-2}
-top=$(cd "$(dirname "$0")/.." && pwd)
 BIN=${SLIPFIELD:-build/slipfield}   # a copy keeps a long study safe from rebuilds
-cd "$top"
+sf_name=fa; . "$(dirname "$0")/common.sh"
 out=reports/false-alarm
 mkdir -p "$out"
-tmp=$(mktemp -d /tmp/sf-fa.XXXXXX)
-trap 'rm -rf "$tmp"' EXIT INT TERM
-scene_val() {   # scene_val FILE KEY: the key's value in the scene block
-    awk -v k="$2" '/^```scene/ { f = 1; next } /^```/ { f = 0 } f && $1 == k && $2 == "=" { $1 = ""; $2 = ""; sub(/^ +/, ""); print; exit }' "$1"
-}
 cand=""
 for f in ${CASES:-cases/*/*.md}; do
-    if [ "$TIER" = quick ] && [ "$(scene_val "$f" tier)" = full ]; then continue; fi
+    in_tier "$f" "$TIER" || continue
     cand="$cand $f"
 done
 # which candidates draw random numbers: two seeds, compare the results
 "$BIN" verify --seed 1 --jobs "$JOBS" --reports "$tmp/s1" $cand > /dev/null 2>&1 || true
 "$BIN" verify --seed 2 --jobs "$JOBS" --reports "$tmp/s2" $cand > /dev/null 2>&1 || true
-body() { sed -n '/^## Results/,/^## Plots/p' "$1" 2>/dev/null; }
+body() { sed -n '/^## Results/,/^## Plots/p' "$1" 2>/dev/null || true; }
 cases=""
 : > "$out/random-cases.txt"
 for f in $cand; do

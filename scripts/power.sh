@@ -12,20 +12,14 @@ set -eu
 R=${1:-50}
 TIER=${2:-quick}
 JOBS=${3:-2}
-top=$(cd "$(dirname "$0")/.." && pwd)
 BIN=${SLIPFIELD:-build/slipfield}   # a copy keeps a long study safe from rebuilds
-cd "$top"
+sf_name=power; . "$(dirname "$0")/common.sh"
 out=reports/power
 mkdir -p "$out"
-tmp=$(mktemp -d /tmp/sf-power.XXXXXX)
-trap 'rm -rf "$tmp"' EXIT INT TERM
-scene_val() {   # scene_val FILE KEY: the key's value in the scene block
-    awk -v k="$2" '/^```scene/ { f = 1; next } /^```/ { f = 0 } f && $1 == k && $2 == "=" { $1 = ""; $2 = ""; sub(/^ +/, ""); print; exit }' "$1"
-}
 cases=""
 for f in ${CASES:-cases/*/*.md}; do
     [ -n "$(scene_val "$f" power_alt)" ] || continue
-    if [ "$TIER" = quick ] && [ "$(scene_val "$f" tier)" = full ]; then continue; fi
+    in_tier "$f" "$TIER" || continue
     cases="$cases $f"
 done
 [ -n "$cases" ] || { echo "power: no case names a power_alt" >&2; exit 2; }
