@@ -95,10 +95,10 @@ static void fill_outcome(sf_outcome *o, const sf_case *c)
     snprintf(o->family, sizeof o->family, "%s", c->family);
     snprintf(o->path, sizeof o->path, "%s", c->path);
     snprintf(o->title, sizeof o->title, "%s", c->title);
-    o->tier = c->scene.tier;
-    o->vv = c->scene.vv;
+    o->tier = c->spec.tier;
+    o->vv = c->spec.vv;
     o->seed = c->scene.seed;
-    snprintf(o->check, sizeof o->check, "%s", c->scene.check);
+    snprintf(o->check, sizeof o->check, "%s", c->spec.check);
     o->margin = NAN;
 }
 
@@ -113,7 +113,7 @@ static void run_child(const sf_case *c, const char *root, int fd, unsigned timeo
     alarm(timeout);
     sf_outcome o;
     fill_outcome(&o, c);
-    const sf_check_def *d = sf_check_find(c->scene.check);
+    const sf_check_def *d = sf_check_find(c->spec.check);
     sf_result *r = sf_result_alloc();
     if (c->alternative[0])
         sf_note(r, "**Power run:** the data generator draws under the alternative `%s` (the oracle does not): "
@@ -294,7 +294,7 @@ int sf_verify_main(int argc, char **argv)
             bad = 1;
             continue;
         }
-        int want = !tags || tags_match(cases[kept].scene.tags, tags);
+        int want = !tags || tags_match(cases[kept].spec.tags, tags);
         if (nonly) {
             int any = 0;
             for (int q = 0; q < nonly; q++)
@@ -307,7 +307,7 @@ int sf_verify_main(int argc, char **argv)
         }
         /* paper-tier cases (the paper's T = 100 s, 100 realisations: ~30 min)
            run only with --tier paper, which runs nothing else */
-        int tier = cases[kept].scene.tier;
+        int tier = cases[kept].spec.tier;
         if (tier_full == 2 ? tier != SF_TIER_PAPER : (tier == SF_TIER_PAPER || (tier == SF_TIER_FULL && !tier_full))) {
             sf_case_free(&cases[kept]);
             skipped++;
@@ -315,11 +315,11 @@ int sf_verify_main(int argc, char **argv)
         }
         /* a pinned case checks one realisation deterministically: a fresh
            seed would change the problem, not draw a fresh sample of a test */
-        if (have_seed && !cases[kept].scene.pin_seed)
+        if (have_seed && !cases[kept].spec.pin_seed)
             cases[kept].scene.seed = mix_seed(seed, cases[kept].id);
         if (alternative)
             snprintf(cases[kept].alternative, sizeof cases[kept].alternative, "%s",
-                     strcmp(alternative, "scene") ? alternative : cases[kept].scene.power_alt);
+                     strcmp(alternative, "scene") ? alternative : cases[kept].spec.power_alt);
         kept++;
     }
     if (bad) {
@@ -335,10 +335,10 @@ int sf_verify_main(int argc, char **argv)
         }
     if (list) {
         for (size_t k = 0; k < kept; k++)
-        {   /* sf_scene_enum_name may share its buffer between calls: one per printf */
-            printf("%-48s tier=%-5s ", cases[k].id, sf_scene_enum_name("tier", cases[k].scene.tier));
-            printf("vv=%-10s check=%s tags=%s\n", sf_scene_enum_name("vv", cases[k].scene.vv), cases[k].scene.check,
-                   cases[k].scene.tags);
+        {
+            printf("%-48s tier=%-5s ", cases[k].id, sf_case_enum_name("tier", cases[k].spec.tier));
+            printf("vv=%-10s check=%s tags=%s\n", sf_case_enum_name("vv", cases[k].spec.vv), cases[k].spec.check,
+                   cases[k].spec.tags);
         }
         for (size_t k = 0; k < kept; k++) sf_case_free(&cases[k]);
         free(cases);
