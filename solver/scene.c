@@ -119,6 +119,53 @@ static int parse_double(const char *s, size_t len, double *out)
     return 1;
 }
 
+/* A list "a, b, c" of finite numbers (at most SF_LIST_MAX). */
+static int assign_list(sf_list *l, const sf_key *k, const char *v, size_t len,
+                       const char *file, int line, char *err, size_t errlen)
+{
+    l->n = 0;
+    size_t i = 0;
+    while (i < len) {
+        size_t j = i;
+        while (j < len && v[j] != ',') j++;
+        size_t a = i, b = j;
+        while (a < b && isspace((unsigned char)v[a])) a++;
+        while (b > a && isspace((unsigned char)v[b - 1])) b--;
+        double x;
+        if (!parse_double(v + a, b - a, &x))
+            return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key '%s': item %zu is not a finite number",
+                          file, line, k->name, l->n + 1);
+        if (l->n == SF_LIST_MAX)
+            return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key '%s': more than %d values",
+                          file, line, k->name, SF_LIST_MAX);
+        l->v[l->n++] = x;
+        i = j + 1;
+        if (j < len && j + 1 == len)
+            return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key '%s': trailing comma", file, line, k->name);
+    }
+    return SF_SUCCESS;
+}
+
+/* A whole number for an unsigned long key. */
+static int assign_ulong(unsigned long *out, const sf_key *k, const char *v, size_t len,
+                        const char *file, int line, char *err, size_t errlen)
+{
+    /* seeds: parsed exactly as an integer, never through a double */
+    char buf[32];
+    if (len >= sizeof buf)
+        return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key '%s': value too long", file, line, k->name);
+    memcpy(buf, v, len);
+    buf[len] = '\0';
+    errno = 0;
+    char *end;
+    unsigned long u = strtoul(buf, &end, 10);
+    if (*end || end == buf || errno == ERANGE || !isdigit((unsigned char)buf[0]))
+        return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key '%s': expected a non-negative whole number, got '%s'",
+                      file, line, k->name, buf);
+    *out = u;
+    return SF_SUCCESS;
+}
+
 /* Assign the value text [v, v+len) to key k of the struct at obj. */
 static int assign(void *obj, const sf_key *k, const char *v, size_t len,
                   const char *file, int line, char *err, size_t errlen)
@@ -150,22 +197,8 @@ static int assign(void *obj, const sf_key *k, const char *v, size_t len,
         *(size_t *)base = (size_t)x;
         return SF_SUCCESS;
     }
-    case SF_KEY_ULONG: {
-        /* seeds: parsed exactly as an integer, never through a double */
-        char buf[32];
-        if (len >= sizeof buf)
-            return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key '%s': value too long", file, line, k->name);
-        memcpy(buf, v, len);
-        buf[len] = '\0';
-        errno = 0;
-        char *end;
-        unsigned long u = strtoul(buf, &end, 10);
-        if (*end || end == buf || errno == ERANGE || !isdigit((unsigned char)buf[0]))
-            return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key '%s': expected a non-negative whole number, got '%s'",
-                          file, line, k->name, buf);
-        *(unsigned long *)base = u;
-        return SF_SUCCESS;
-    }
+    case SF_KEY_ULONG:
+        return assign_ulong((unsigned long *)base, k, v, len, file, line, err, errlen);
     case SF_KEY_BOOL: {
         static const char *t[] = { "true", "yes", "on", "1" }, *f[] = { "false", "no", "off", "0" };
         for (int i = 0; i < 4; i++) {
@@ -199,30 +232,8 @@ static int assign(void *obj, const sf_key *k, const char *v, size_t len,
         base[len] = '\0';
         return SF_SUCCESS;
     }
-    case SF_KEY_LIST: {
-        sf_list *l = (sf_list *)base;
-        l->n = 0;
-        size_t i = 0;
-        while (i < len) {
-            size_t j = i;
-            while (j < len && v[j] != ',') j++;
-            size_t a = i, b = j;
-            while (a < b && isspace((unsigned char)v[a])) a++;
-            while (b > a && isspace((unsigned char)v[b - 1])) b--;
-            double x;
-            if (!parse_double(v + a, b - a, &x))
-                return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key '%s': item %zu is not a finite number",
-                              file, line, k->name, l->n + 1);
-            if (l->n == SF_LIST_MAX)
-                return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key '%s': more than %d values",
-                              file, line, k->name, SF_LIST_MAX);
-            l->v[l->n++] = x;
-            i = j + 1;
-            if (j < len && j + 1 == len)
-                return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key '%s': trailing comma", file, line, k->name);
-        }
-        return SF_SUCCESS;
-    }
+    case SF_KEY_LIST:
+        return assign_list((sf_list *)base, k, v, len, file, line, err, errlen);
     }
     return SF_EPARSE;
 }

@@ -57,6 +57,35 @@ static int make_id(sf_case *c, const char *path, char *err, size_t errlen)
     return SF_SUCCESS;
 }
 
+/* The scene block: the scene's keys and the case's, then what a case
+ * must state (a known check, a tolerance or alpha, a valid power_alt). */
+static int parse_scene(sf_case *c, const char *path, char *err, size_t errlen)
+{
+    sf_scene_default(&c->scene);
+    sf_case_spec_default(&c->spec);
+    int rc = sf_case_scene_parse(&c->scene, &c->spec, c->scene_text, path, c->scene_line, err, errlen);
+    if (rc)
+        return rc;
+    sf_keytab vt = sf_case_spec_keytab(&c->spec);
+    if (!sf_keys_was_set(&vt, "check"))
+        return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: the scene block has no 'check = NAME'", path, c->scene_line);
+    if (!sf_check_find(c->spec.check))
+        return sf_seterr(err, errlen, SF_EPARSE, "%s: key 'check': unknown check '%s' (see 'slipfield verify --checks')",
+                    path, c->spec.check);
+    if (c->spec.power_alt[0]) {
+        sf_alt a;
+        char e2[128];
+        if (sf_alt_parse(c->spec.power_alt, &a, e2, sizeof e2))
+            return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key 'power_alt': %s", path, c->scene_line, e2);
+        if (!sf_keys_was_set(&vt, "alpha"))
+            return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: 'power_alt' names the alternative of a statistical "
+                        "check: the scene must set 'alpha'", path, c->scene_line);
+    }
+    if (!sf_keys_was_set(&vt, "tolerance") && !sf_keys_was_set(&vt, "alpha"))
+        return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: the scene states neither 'tolerance' nor 'alpha'", path, c->scene_line);
+    return SF_SUCCESS;
+}
+
 /* The parse proper, on a NUL-terminated copy buf of n bytes (freed here). */
 static int parse_buf(sf_case *c, const char *path, char *buf, size_t n, char *err, size_t errlen);
 
@@ -96,7 +125,6 @@ int sf_case_read(sf_case *c, const char *path, char *err, size_t errlen)
 
 static int parse_buf(sf_case *c, const char *path, char *buf, size_t n, char *err, size_t errlen)
 {
-    int rc;
     /* Walk lines: title, the single ```scene fence. */
     const char *p = buf, *open = NULL, *body = NULL, *close_ = NULL, *after = NULL;
     const char *title = NULL, *title_end = NULL, *after_title = buf;
@@ -154,29 +182,7 @@ static int parse_buf(sf_case *c, const char *path, char *buf, size_t n, char *er
     c->scene_line = open_line + 1;
     free(buf);
 
-    sf_scene_default(&c->scene);
-    sf_case_spec_default(&c->spec);
-    rc = sf_case_scene_parse(&c->scene, &c->spec, c->scene_text, path, c->scene_line, err, errlen);
-    if (rc)
-        return rc;
-    sf_keytab vt = sf_case_spec_keytab(&c->spec);
-    if (!sf_keys_was_set(&vt, "check"))
-        return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: the scene block has no 'check = NAME'", path, c->scene_line);
-    if (!sf_check_find(c->spec.check))
-        return sf_seterr(err, errlen, SF_EPARSE, "%s: key 'check': unknown check '%s' (see 'slipfield verify --checks')",
-                    path, c->spec.check);
-    if (c->spec.power_alt[0]) {
-        sf_alt a;
-        char e2[128];
-        if (sf_alt_parse(c->spec.power_alt, &a, e2, sizeof e2))
-            return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key 'power_alt': %s", path, c->scene_line, e2);
-        if (!sf_keys_was_set(&vt, "alpha"))
-            return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: 'power_alt' names the alternative of a statistical "
-                        "check: the scene must set 'alpha'", path, c->scene_line);
-    }
-    if (!sf_keys_was_set(&vt, "tolerance") && !sf_keys_was_set(&vt, "alpha"))
-        return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: the scene states neither 'tolerance' nor 'alpha'", path, c->scene_line);
-    return SF_SUCCESS;
+    return parse_scene(c, path, err, errlen);
 }
 
 void sf_case_free(sf_case *c)
