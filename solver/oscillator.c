@@ -697,7 +697,7 @@ static int run_stick(run_state *r)
     r->jumps += sf_osc_slip_onset(o, y);
     r->stick = 0;
     r->armed = 0;
-    r->h = s->dt;
+    r->h = s->dt;   /* each slip phase starts from dt */
     gsl_odeiv2_evolve_reset(o->ev);
     gsl_odeiv2_step_reset(o->step);
     wrench(o, t, y, r->q);
