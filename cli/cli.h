@@ -3,6 +3,7 @@
 #define SF_CLI_H
 
 #include <stdio.h>
+#include "options.h"
 #include "scene.h"
 #include "sf_error.h"   /* SF_EXIT_* */
 
@@ -20,22 +21,11 @@ typedef struct {
 int sf_cli_open(const char *cmd, const char *path, sf_out *o);
 int sf_cli_close(const char *cmd, sf_out *o, int ok);
 
-/* Parse a whole positive integer option value, or print an error. */
-int sf_cli_size(const char *cmd, const char *opt, const char *v, size_t lo, size_t hi, size_t *out);
-int sf_cli_double(const char *cmd, const char *opt, const char *v, double *out);
-
-/* A subcommand's options: `--name VALUE` (size, double or string) or a
- * flag `--name` (int set to 1).  sf_cli_parse() fills them, takes one
- * positional SCENE argument, prints usage on -h/--help (returns
- * SF_CLI_HELP) and errors naming the option (returns SF_EXIT_USAGE). */
-enum { SF_OPT_SIZE, SF_OPT_DOUBLE, SF_OPT_STRING, SF_OPT_FLAG };
-typedef struct {
-    const char *name;   /* e.g. "--samples" */
-    int kind;
-    void *dst;          /* size_t *, double *, const char **, int * */
-    size_t lo, hi;      /* SF_OPT_SIZE range */
-} sf_opt;
-#define SF_CLI_HELP (-1)
+/* A subcommand's options (options.h: the one parser of every command):
+ * sf_cli_parse() fills them, takes one positional SCENE argument, prints
+ * usage on -h/--help (returns SF_CLI_HELP) and errors naming the option
+ * (returns SF_EXIT_USAGE). */
+#define SF_CLI_HELP SF_OPT_DONE
 int sf_cli_parse(const char *cmd, int argc, char **argv, const sf_opt *opts, size_t nopts,
                  const char **scene, void (*usage)(FILE *));
 

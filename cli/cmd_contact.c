@@ -76,9 +76,9 @@ int sf_cmd_surface(int argc, char **argv)
     const char *path, *out_path = "-";
     double xb = 0, yb = 0;
     const sf_opt opts[] = {
-        { "--out", SF_OPT_STRING, &out_path, 0, 0 },
-        { "--xb", SF_OPT_DOUBLE, &xb, 0, 0 },
-        { "--yb", SF_OPT_DOUBLE, &yb, 0, 0 },
+        { "--out", SF_OPT_STRING, &out_path, 0, 0, NULL },
+        { "--xb", SF_OPT_DOUBLE, &xb, 0, 0, NULL },
+        { "--yb", SF_OPT_DOUBLE, &yb, 0, 0, NULL },
     };
     int rc = sf_cli_parse("surface", argc, argv, opts, 3, &path, surface_usage);
     if (rc)
@@ -137,13 +137,13 @@ int sf_cmd_wrench(int argc, char **argv)
     double vx = NAN, vy = NAN, w = NAN, xb = 0, yb = 0;
     int kinetic = 0;
     const sf_opt opts[] = {
-        { "--vx", SF_OPT_DOUBLE, &vx, 0, 0 },
-        { "--vy", SF_OPT_DOUBLE, &vy, 0, 0 },
-        { "--spin", SF_OPT_DOUBLE, &w, 0, 0 },
-        { "--xb", SF_OPT_DOUBLE, &xb, 0, 0 },
-        { "--yb", SF_OPT_DOUBLE, &yb, 0, 0 },
-        { "--kinetic", SF_OPT_FLAG, &kinetic, 0, 0 },
-        { "--out", SF_OPT_STRING, &out_path, 0, 0 },
+        { "--vx", SF_OPT_DOUBLE, &vx, 0, 0, NULL },
+        { "--vy", SF_OPT_DOUBLE, &vy, 0, 0, NULL },
+        { "--spin", SF_OPT_DOUBLE, &w, 0, 0, NULL },
+        { "--xb", SF_OPT_DOUBLE, &xb, 0, 0, NULL },
+        { "--yb", SF_OPT_DOUBLE, &yb, 0, 0, NULL },
+        { "--kinetic", SF_OPT_FLAG, &kinetic, 0, 0, NULL },
+        { "--out", SF_OPT_STRING, &out_path, 0, 0, NULL },
     };
     int rc = sf_cli_parse("wrench", argc, argv, opts, 7, &path, wrench_usage);
     if (rc)

@@ -24,8 +24,8 @@ int sf_cmd_field(int argc, char **argv)
     const char *scene_path, *out_path = "-";
     size_t samples = 1;
     const sf_opt opts[] = {
-        { "--samples", SF_OPT_SIZE, &samples, 1, 1000000 },
-        { "--out", SF_OPT_STRING, &out_path, 0, 0 },
+        { "--samples", SF_OPT_SIZE, &samples, 1, 1000000, NULL },
+        { "--out", SF_OPT_STRING, &out_path, 0, 0, NULL },
     };
     int rc = sf_cli_parse("field", argc, argv, opts, 2, &scene_path, usage);
     if (rc)

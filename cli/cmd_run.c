@@ -50,9 +50,9 @@ int sf_cmd_run(int argc, char **argv)
     const char *path, *out_path = NULL, *sum_path = NULL;
     int explain = 0;
     const sf_opt opts[] = {
-        { "--out", SF_OPT_STRING, &out_path, 0, 0 },
-        { "--summary", SF_OPT_STRING, &sum_path, 0, 0 },
-        { "--explain", SF_OPT_FLAG, &explain, 0, 0 },
+        { "--out", SF_OPT_STRING, &out_path, 0, 0, NULL },
+        { "--summary", SF_OPT_STRING, &sum_path, 0, 0, NULL },
+        { "--explain", SF_OPT_FLAG, &explain, 0, 0, NULL },
     };
     int rc = sf_cli_parse("run", argc, argv, opts, 3, &path, usage);
     if (rc)

@@ -54,13 +54,13 @@ int sf_cmd_sweep(int argc, char **argv)
     size_t n = 0, threads = 0;
     int resume = 0;
     const sf_opt opts[] = {
-        { "--param", SF_OPT_STRING, &param, 0, 0 },
-        { "--values", SF_OPT_STRING, &values, 0, 0 },
-        { "--realisations", SF_OPT_SIZE, &n, 1, 10000000 },
-        { "--out", SF_OPT_STRING, &out_path, 0, 0 },
-        { "--summary", SF_OPT_STRING, &sum_path, 0, 0 },
-        { "--threads", SF_OPT_SIZE, &threads, 1, 1024 },
-        { "--resume", SF_OPT_FLAG, &resume, 0, 0 },
+        { "--param", SF_OPT_STRING, &param, 0, 0, NULL },
+        { "--values", SF_OPT_STRING, &values, 0, 0, NULL },
+        { "--realisations", SF_OPT_SIZE, &n, 1, 10000000, NULL },
+        { "--out", SF_OPT_STRING, &out_path, 0, 0, NULL },
+        { "--summary", SF_OPT_STRING, &sum_path, 0, 0, NULL },
+        { "--threads", SF_OPT_SIZE, &threads, 1, 1024, NULL },
+        { "--resume", SF_OPT_FLAG, &resume, 0, 0, NULL },
     };
     int rc = sf_cli_parse("sweep", argc, argv, opts, 7, &path, usage);
     if (rc)

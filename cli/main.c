@@ -1,6 +1,7 @@
 /* slipfield: the command-line entry.  Dispatches to the solver commands
  * (cli/cmd_*.c) and to the verification harness (verification/). */
 #include "cli.h"
+#include "case.h"
 #include "runner.h"
 #include "version.h"
 
@@ -50,7 +51,7 @@ static void usage(FILE *f)
 static int cmd_help(int argc, char **argv)
 {
     if (argc >= 2 && !strcmp(argv[1], "scene")) {
-        sf_scene_print_keys(stdout);
+        sf_case_print_keys(stdout);   /* the solver's keys, then the case's */
         return SF_EXIT_OK;
     }
     usage(stdout);

@@ -186,18 +186,93 @@ static int ck_start(const sf_mc_spec *s, double *out, unsigned char *done, size_
     return SF_SUCCESS;
 }
 
+/* MPI: one checkpoint per rank (resume with the same rank count), progress
+ * from rank 0 only.  ckpath holds the rank's checkpoint name. */
+static void rank_spec(sf_mc_spec *s, int rank, int size, char *ckpath, size_t len)
+{
+    if (size > 1 && s->checkpoint) {
+        snprintf(ckpath, len, "%s.rank%dof%d", s->checkpoint, rank, size);
+        s->checkpoint = ckpath;
+    }
+    if (size > 1 && rank != 0)
+        s->label = NULL;
+}
+
+/* The realisation loop's shared state. */
+typedef struct {
+    const sf_mc_spec *s;
+    double *out;
+    const unsigned char *done, *theirs;   /* resumed; another rank's */
+    FILE *ck;                             /* the checkpoint, open to append (or NULL) */
+    size_t finished;
+    int failed, rc, tty;
+} mc_loop;
+
+/* Realisation i returned r: keep the first error, or checkpoint it and
+ * report progress.  Called inside the critical section. */
+static void record(mc_loop *L, size_t i, int r)
+{
+    const sf_mc_spec *s = L->s;
+    if (r) {
+        if (!L->failed)
+            L->rc = r;
+        L->failed = 1;
+        return;
+    }
+    if (L->ck) {
+        ck_line(L->ck, i, L->out + i * s->nout, s->nout);
+        fflush(L->ck);
+    }
+    L->finished++;
+    if (L->tty)
+        fprintf(stderr, "\r%s: %zu/%zu realisations", s->label, L->finished, s->n);
+}
+
+/* The realisations not done yet, on an OpenMP team: each thread has its
+ * own workspace and generator, realisation i its own stream (seed, i). */
+static void realise_all(mc_loop *L, const sf_mc_ops *ops, void *ctx)
+{
+    const sf_mc_spec *s = L->s;
+#ifdef _OPENMP
+    int nt = s->threads > 0 ? s->threads : omp_get_max_threads();
+#endif
+#pragma omp parallel num_threads(nt)
+    {
+        void *ws = ops->ws_alloc ? ops->ws_alloc(ctx) : ctx;
+        gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+        int ready = rng && (ws || !ops->ws_alloc);
+        if (!ready) {
+#pragma omp critical(sf_mc)
+            {
+                L->failed = 1;
+                L->rc = SF_ENOMEM;
+            }
+        }
+#pragma omp for schedule(dynamic, 1)
+        for (size_t i = 0; i < s->n; i++) {
+            int stop;
+#pragma omp atomic read
+            stop = L->failed;
+            if (L->done[i] || L->theirs[i] || stop || !ready)
+                continue;
+            gsl_rng_set(rng, sf_mc_seed(s->seed, i));
+            int r = ops->realise(ws, i, rng, L->out + i * s->nout);
+#pragma omp critical(sf_mc)
+            record(L, i, r);
+        }
+        if (ops->ws_free && ws)
+            ops->ws_free(ws);
+        gsl_rng_free(rng);
+    }
+}
+
 int sf_mc_run(const sf_mc_spec *s0, const sf_mc_ops *ops, void *ctx, double *out,
               size_t *done_before, char *err, size_t errlen)
 {
     sf_mc_spec sl = *s0, *s = &sl;
     int size, rank = sf_mc_rank(&size);
     char ckpath[4200];
-    if (size > 1 && s->checkpoint) {   /* one checkpoint per rank (resume with the same rank count) */
-        snprintf(ckpath, sizeof ckpath, "%s.rank%dof%d", s->checkpoint, rank, size);
-        s->checkpoint = ckpath;
-    }
-    if (size > 1 && rank != 0)
-        s->label = NULL;
+    rank_spec(s, rank, size, ckpath, sizeof ckpath);
     unsigned char *done = calloc(s->n ? s->n : 1, 1);
     unsigned char *theirs = calloc(s->n ? s->n : 1, 1);
     if (!done || !theirs) {
@@ -215,55 +290,10 @@ int sf_mc_run(const sf_mc_spec *s0, const sf_mc_ops *ops, void *ctx, double *out
         free(theirs);
         return rc;
     }
-    int tty = s->label && isatty(2);
-    size_t finished = before;
-    int failed = 0;
-#ifdef _OPENMP
-    int nt = s->threads > 0 ? s->threads : omp_get_max_threads();
-#endif
-#pragma omp parallel num_threads(nt)
-    {
-        void *ws = ops->ws_alloc ? ops->ws_alloc(ctx) : ctx;
-        gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
-        int ready = rng && (ws || !ops->ws_alloc);
-        if (!ready) {
-#pragma omp critical(sf_mc)
-            {
-                failed = 1;
-                rc = SF_ENOMEM;
-            }
-        }
-#pragma omp for schedule(dynamic, 1)
-        for (size_t i = 0; i < s->n; i++) {
-            int stop;
-#pragma omp atomic read
-            stop = failed;
-            if (done[i] || theirs[i] || stop || !ready)
-                continue;
-            gsl_rng_set(rng, sf_mc_seed(s->seed, i));
-            int r = ops->realise(ws, i, rng, out + i * s->nout);
-#pragma omp critical(sf_mc)
-            {
-                if (r) {
-                    if (!failed)
-                        rc = r;
-                    failed = 1;
-                } else {
-                    if (ck) {
-                        ck_line(ck, i, out + i * s->nout, s->nout);
-                        fflush(ck);
-                    }
-                    finished++;
-                    if (tty)
-                        fprintf(stderr, "\r%s: %zu/%zu realisations", s->label, finished, s->n);
-                }
-            }
-        }
-        if (ops->ws_free && ws)
-            ops->ws_free(ws);
-        gsl_rng_free(rng);
-    }
-    if (tty)
+    mc_loop L = { s, out, done, theirs, ck, before, 0, SF_SUCCESS, s->label && isatty(2) };
+    realise_all(&L, ops, ctx);
+    rc = L.rc;
+    if (L.tty)
         fputc('\n', stderr);
     if (ck && fclose(ck) && !rc) {
         rc = sf_seterr(err, errlen, SF_EIO, "%s: cannot write the checkpoint", s->checkpoint);

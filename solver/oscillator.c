@@ -596,15 +596,36 @@ static void cycle_means(sf_osc_result *res, const acc *a)
     res->period = a->cycle_total / (double)res->ncycles;
 }
 
-int sf_osc_run(sf_osc *o, sf_osc_row_fn row, void *ctx, double sample_dt, sf_osc_result *res,
-               char *err, size_t errlen)
+/* One run's state, shared by sf_osc_run's phases: the start, a stick
+ * phase, a slip step, the end. */
+typedef struct {
+    sf_osc *o;
+    sf_osc_row_fn row;
+    void *ctx;
+    sf_osc_result *res;
+    acc a;
+    size_t next;             /* the next x sample */
+    double t, y[NSTATE], q[3], h, jumps;
+    double hcap;             /* the COF window's step cap [s] */
+    double pa[3];            /* x, vx, ax at the last step end */
+    double E0;               /* energy at the start */
+    int stick, armed;
+    char *err;
+    size_t errlen;
+} run_state;
+
+/* The result's arrays, the initial state (stick from the start inside the
+ * stick set), the first sample and row. */
+static int run_start(run_state *r, double sample_dt)
 {
+    sf_osc *o = r->o;
+    sf_osc_result *res = r->res;
     const sf_scene *s = &o->s;
     memset(res, 0, sizeof *res);
     res->x_min = INFINITY;
     res->x_max = -INFINITY;
-    acc a = { .r = res, .t_skip = s->t_skip };
-    size_t next = 0;
+    r->a = (acc){ .r = res, .t_skip = s->t_skip };
+    r->next = 0;
     if (sample_dt > 0) {
         res->sample_dt = sample_dt;
         res->nsamples = (size_t)floor(s->T / sample_dt) + 1;
@@ -615,127 +636,172 @@ int sf_osc_run(sf_osc *o, sf_osc_row_fn row, void *ctx, double sample_dt, sf_osc
     o->wrench_evals = 0;
     /* the scene's initial state (x0 ... w0; default rest at the origin;
      * the 1-D model keeps y, phi, vy, w at 0: sf_osc_alloc refuses others) */
-    double t = 0, y[NSTATE] = { s->x0, s->y0, s->phi0, s->vx0, s->vy0, s->w0, 0 }, q[3], h = s->dt, jumps = 0;
-    unsigned long budget = 200000000UL;
-    double E0 = energy(o, y), g0 = sf_osc_g_stick(o, 0, y);   /* E0 = 0 from rest at the origin */
+    double *y = r->y;
+    const double y_init[NSTATE] = { s->x0, s->y0, s->phi0, s->vx0, s->vy0, s->w0, 0 };
+    memcpy(y, y_init, sizeof y_init);
+    r->t = 0;
+    r->h = s->dt;
+    r->jumps = 0;
+    r->E0 = energy(o, y);   /* 0 from rest at the origin */
+    double g0 = sf_osc_g_stick(o, 0, y);
     /* armed from the start unless the run starts on the threshold */
-    int stick = g0 < 0, armed = g0 > 0, rc = SF_SUCCESS;
+    r->stick = g0 < 0;
+    r->armed = g0 > 0;
+    int rc;
     gsl_odeiv2_evolve_reset(o->ev);
-    if (stick) {   /* relative speed below eps_lambda omega_n R inside the stick set: stick from the start (Eq. 12) */
+    if (r->stick) {   /* relative speed below eps_lambda omega_n R inside the stick set: stick from the start (Eq. 12) */
         /* sf_osc_stick_onset's jump, its energy in the product order of
          * the first release (from rest: bits of jump_energy kept) */
-        jumps += 0.5 * s->m * s->v_b * s->v_b -
-                 (0.5 * s->m * (y[VX] * y[VX] + y[VY] * y[VY]) + 0.5 * o->J * y[W] * y[W]);
+        r->jumps += 0.5 * s->m * s->v_b * s->v_b -
+                    (0.5 * s->m * (y[VX] * y[VX] + y[VY] * y[VY]) + 0.5 * o->J * y[W] * y[W]);
         y[VX] = s->v_b;
         y[VY] = y[W] = 0;
-        if ((rc = transition(&a, SF_OSC_STICK_ONSET, 0, y[X], s->k * y[X])))
+        if ((rc = transition(&r->a, SF_OSC_STICK_ONSET, 0, y[X], s->k * y[X])))
             return rc;
     }
-    double hcap;
-    if ((rc = follow(o, 0, y, &hcap)))
-        return sf_seterr(err, errlen, rc, "the COF window cannot follow the disc");
-    wrench(o, 0, y, q);
-    double pa[3] = { y[X], y[VX], stick ? 0 : (-s->k * y[X] + q[0]) / s->m };   /* x, vx, ax at the last step end */
-    sample(res, &next, 0, pa, 0, pa);
-    emit(o, row, ctx, 0, y, stick ? (double[3]){ s->k * y[X], s->k * y[Y], 0 } : q, stick);
-    while (t < s->T && rc == SF_SUCCESS) {
-        if ((rc = follow(o, t, y, &hcap))) {
-            rc = sf_seterr(err, errlen, rc, "the COF window cannot follow the disc");
-            break;
+    if ((rc = follow(o, 0, y, &r->hcap)))
+        return sf_seterr(r->err, r->errlen, rc, "the COF window cannot follow the disc");
+    wrench(o, 0, y, r->q);
+    double pa[3] = { y[X], y[VX], r->stick ? 0 : (-s->k * y[X] + r->q[0]) / s->m };
+    memcpy(r->pa, pa, sizeof pa);
+    sample(res, &r->next, 0, r->pa, 0, r->pa);
+    emit(o, r->row, r->ctx, 0, y, r->stick ? (double[3]){ s->k * y[X], s->k * y[Y], 0 } : r->q, r->stick);
+    return SF_SUCCESS;
+}
+
+/* A stick phase to its break (Eq. 14) or to T, then the release. */
+static int run_stick(run_state *r)
+{
+    sf_osc *o = r->o;
+    const sf_scene *s = &o->s;
+    double *y = r->y, t = r->t;
+    double tau = sf_osc_stick_duration(o, t, y), t1 = fmin(t + tau, s->T), x0 = y[X];
+    sf_osc_stick_move(o, y, t1 - t);
+    double x1 = y[X];
+    double kq0[3] = { s->k * x0, s->k * y[Y], 0 }, kq1[3] = { s->k * x1, s->k * y[Y], 0 };
+    note(&r->a, x0, kq0[0]);
+    note(&r->a, x1, kq1[0]);
+    if (r->a.open)
+        r->a.stick += t1 - t;
+    double p0[3] = { x0, s->v_b, 0 }, p1[3] = { x1, s->v_b, 0 };
+    sample(r->res, &r->next, t, p0, t1, p1);
+    r->t = t = t1;
+    track(o, t, r->res, y);
+    emit(o, r->row, r->ctx, t, y, kq1, 1);
+    if (t >= s->T)
+        return SF_SUCCESS;
+    /* break: Eq. 14 */
+    int rc = transition(&r->a, SF_OSC_SLIP_ONSET, t, y[X], kq1[0]);
+    if (rc)
+        return rc;
+    r->jumps += sf_osc_slip_onset(o, y);
+    r->stick = 0;
+    r->armed = 0;
+    r->h = s->dt;   /* each slip phase starts from dt */
+    gsl_odeiv2_evolve_reset(o->ev);
+    gsl_odeiv2_step_reset(o->step);
+    wrench(o, t, y, r->q);
+    r->pa[0] = y[X];
+    r->pa[1] = y[VX];
+    r->pa[2] = (-s->k * y[X] + r->q[0]) / s->m;
+    note(&r->a, y[X], r->q[0]);
+    emit(o, r->row, r->ctx, t, y, r->q, 0);
+    return SF_SUCCESS;
+}
+
+/* One slip step: the stepper, the stick event inside it (Eq. 12) and an
+ * x extremum inside it. */
+static int run_slip(run_state *r)
+{
+    sf_osc *o = r->o;
+    sf_osc_result *res = r->res;
+    const sf_scene *s = &o->s;
+    double *y = r->y, *q = r->q;
+    const unsigned long budget = 200000000UL;
+    double t0 = r->t, y0[NSTATE];
+    memcpy(y0, y, sizeof y0);
+    int rc = slip_step(o, &r->t, y, r->hcap, &r->h, r->err, r->errlen);
+    if (rc)
+        return rc;
+    res->steps++;
+    for (int i = 0; i < NSTATE; i++)
+        if (!isfinite(y[i])) {
+            rc = sf_seterr(r->err, r->errlen, SF_EFAIL, "non-finite state at t = %.9g s (slip)", r->t);
         }
-        if (stick) {
-            double tau = sf_osc_stick_duration(o, t, y), t1 = fmin(t + tau, s->T), x0 = y[X];
-            sf_osc_stick_move(o, y, t1 - t);
-            double x1 = y[X];
-            double kq0[3] = { s->k * x0, s->k * y[Y], 0 }, kq1[3] = { s->k * x1, s->k * y[Y], 0 };
-            note(&a, x0, kq0[0]);
-            note(&a, x1, kq1[0]);
-            if (a.open)
-                a.stick += t1 - t;
-            double p0[3] = { x0, s->v_b, 0 }, p1[3] = { x1, s->v_b, 0 };
-            sample(res, &next, t, p0, t1, p1);
-            t = t1;
-            track(o, t, res, y);
-            emit(o, row, ctx, t, y, kq1, 1);
-            if (t >= s->T)
-                break;
-            /* break: Eq. 14 */
-            if ((rc = transition(&a, SF_OSC_SLIP_ONSET, t, y[X], kq1[0])))
-                break;
-            jumps += sf_osc_slip_onset(o, y);
-            stick = 0;
-            armed = 0;
-            h = s->dt;
-            gsl_odeiv2_evolve_reset(o->ev);
-            gsl_odeiv2_step_reset(o->step);
-            wrench(o, t, y, q);
-            pa[0] = y[X];
-            pa[1] = y[VX];
-            pa[2] = (-s->k * y[X] + q[0]) / s->m;
-            note(&a, y[X], q[0]);
-            emit(o, row, ctx, t, y, q, 0);
-            continue;
-        }
-        /* slip: one step */
-        double t0 = t, y0[NSTATE];
-        memcpy(y0, y, sizeof y0);
-        if ((rc = slip_step(o, &t, y, hcap, &h, err, errlen)))
-            break;
-        res->steps++;
-        for (int i = 0; i < NSTATE; i++)
-            if (!isfinite(y[i])) {
-                rc = sf_seterr(err, errlen, SF_EFAIL, "non-finite state at t = %.9g s (slip)", t);
-            }
-        if (rc)
-            break;
-        if (res->steps > budget) {
-            rc = sf_seterr(err, errlen, SF_EMAXITER, "step budget (2e8 steps) exhausted");
-            break;
-        }
-        double g1 = sf_osc_g_stick(o, t, y);
-        int to_stick = armed && g1 < 0;
-        double ye[NSTATE], te = t;
-        if (to_stick) {
-            te = locate_event(o, EV_STICK, t0, y0, t, ye, &res->event_trials);
-            t = te;
-            memcpy(y, ye, sizeof ye);
-        }
-        if (y0[VX] * y[VX] < 0) {   /* an extremum of x inside the step */
-            double yx[NSTATE];
-            double tx = locate_event(o, EV_VX0, t0, y0, t, yx, &res->event_trials), qx[3];
-            wrench(o, tx, yx, qx);   /* at the extremum's own time: the belt has moved on by t */
-            note(&a, yx[X], qx[0]);
-            track(o, tx, res, yx);
-        }
-        wrench(o, t, y, q);
-        double p1[3] = { y[X], y[VX], (-s->k * y[X] + q[0]) / s->m };
-        sample(res, &next, t0, pa, t, p1);
-        memcpy(pa, p1, sizeof pa);
-        note(&a, y[X], q[0]);
-        track(o, t, res, y);
-        emit(o, row, ctx, t, y, q, 0);
-        if (!to_stick) {
-            if (g1 > 0)
-                armed = 1;
-            continue;
-        }
-        /* slip -> stick: Eq. 12 */
-        jumps += sf_osc_stick_onset(o, y);
-        stick = 1;
-        if ((rc = transition(&a, SF_OSC_STICK_ONSET, t, y[X], s->k * y[X])))
-            break;
-        emit(o, row, ctx, t, y, (double[3]){ s->k * y[X], s->k * y[Y], 0 }, 1);
+    if (rc)
+        return rc;
+    if (res->steps > budget)
+        return sf_seterr(r->err, r->errlen, SF_EMAXITER, "step budget (2e8 steps) exhausted");
+    double g1 = sf_osc_g_stick(o, r->t, y);
+    int to_stick = r->armed && g1 < 0;
+    double ye[NSTATE], te = r->t;
+    if (to_stick) {
+        te = locate_event(o, EV_STICK, t0, y0, r->t, ye, &res->event_trials);
+        r->t = te;
+        memcpy(y, ye, sizeof ye);
     }
+    double t = r->t;
+    if (y0[VX] * y[VX] < 0) {   /* an extremum of x inside the step */
+        double yx[NSTATE];
+        double tx = locate_event(o, EV_VX0, t0, y0, t, yx, &res->event_trials), qx[3];
+        wrench(o, tx, yx, qx);   /* at the extremum's own time: the belt has moved on by t */
+        note(&r->a, yx[X], qx[0]);
+        track(o, tx, res, yx);
+    }
+    wrench(o, t, y, q);
+    double p1[3] = { y[X], y[VX], (-s->k * y[X] + q[0]) / s->m };
+    sample(res, &r->next, t0, r->pa, t, p1);
+    memcpy(r->pa, p1, sizeof r->pa);
+    note(&r->a, y[X], q[0]);
+    track(o, t, res, y);
+    emit(o, r->row, r->ctx, t, y, q, 0);
+    if (!to_stick) {
+        if (g1 > 0)
+            r->armed = 1;
+        return SF_SUCCESS;
+    }
+    /* slip -> stick: Eq. 12 */
+    r->jumps += sf_osc_stick_onset(o, y);
+    r->stick = 1;
+    if ((rc = transition(&r->a, SF_OSC_STICK_ONSET, t, y[X], s->k * y[X])))
+        return rc;
+    emit(o, r->row, r->ctx, t, y, (double[3]){ s->k * y[X], s->k * y[Y], 0 }, 1);
+    return SF_SUCCESS;
+}
+
+/* Energy balance, step counts, the strip check and the QoIs. */
+static int run_end(run_state *r, int rc)
+{
+    sf_osc *o = r->o;
+    sf_osc_result *res = r->res;
+    const double *y = r->y;
     res->friction_work = y[WK];
-    res->jump_energy = jumps;
-    res->energy_change = energy(o, y) - E0;
+    res->jump_energy = r->jumps;
+    res->energy_change = energy(o, y) - r->E0;
     res->energy_residual = res->energy_change - res->friction_work - res->jump_energy;
     res->rejected = o->ev->failed_steps;
     res->wrench_evals = o->wrench_evals;
     if (!rc && res->off_strip)
-        rc = sf_seterr(err, errlen, SF_EFAIL, "the disc left the belt strip of the COF field: raise strip_halfwidth");
-    cycle_means(res, &a);
+        rc = sf_seterr(r->err, r->errlen, SF_EFAIL, "the disc left the belt strip of the COF field: raise strip_halfwidth");
+    cycle_means(res, &r->a);
     return rc;
+}
+
+int sf_osc_run(sf_osc *o, sf_osc_row_fn row, void *ctx, double sample_dt, sf_osc_result *res,
+               char *err, size_t errlen)
+{
+    run_state r = { .o = o, .row = row, .ctx = ctx, .res = res, .err = err, .errlen = errlen };
+    int rc = run_start(&r, sample_dt);
+    if (rc)
+        return rc;
+    while (r.t < o->s.T && rc == SF_SUCCESS) {
+        if ((rc = follow(o, r.t, r.y, &r.hcap))) {
+            rc = sf_seterr(err, errlen, rc, "the COF window cannot follow the disc");
+            break;
+        }
+        rc = r.stick ? run_stick(&r) : run_slip(&r);
+    }
+    return run_end(&r, rc);
 }
 
 void sf_osc_result_free(sf_osc_result *r)

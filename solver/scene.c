@@ -8,100 +8,69 @@
 #include <stdlib.h>
 #include <string.h>
 
-typedef enum { K_DOUBLE, K_SIZE, K_ULONG, K_BOOL, K_ENUM, K_STRING, K_LIST } ktype;
-
-/* Range flags: lo/hi bounds are inclusive unless the *_open flag is set. */
-typedef struct {
-    const char *name;
-    ktype type;
-    size_t off;
-    size_t size;        /* string buffer size */
-    double lo, hi;
-    int lo_open, hi_open;
-    const char *def;    /* default as text, parsed by the same code */
-    const char *unit;
-    const char *const *choices; /* enum: names in value order, NULL-terminated (CHOICES) */
-    const char *help;
-} key_t_;
-
 #define OFF(f) offsetof(sf_scene, f)
-/* An enum key's names, in value order: a static array (C11 6.5.2.5), so
- * sf_scene_enum_name() can return them as they are. */
-#define CHOICES(...) ((const char *const[]){ __VA_ARGS__, NULL })
 #define INF HUGE_VAL
 
-static const key_t_ keys[] = {
+static const sf_key keys[] = {
     /* physics: Table 1 stochastic baseline */
-    { "m", K_DOUBLE, OFF(m), 0, 0, INF, 1, 0, "10", "kg", NULL, "disc mass" },
-    { "k", K_DOUBLE, OFF(k), 0, 0, INF, 1, 0, "30", "N/m", NULL, "spring stiffness in x and y" },
-    { "v_b", K_DOUBLE, OFF(v_b), 0, 0, INF, 1, 0, "0.2", "m/s", NULL, "belt speed" },
-    { "R", K_DOUBLE, OFF(R), 0, 0, INF, 1, 0, "0.5", "m", NULL, "disc radius" },
-    { "l", K_DOUBLE, OFF(l), 0, 0, INF, 1, 0, "0.1", "m", NULL, "correlation length of Eq. 2" },
-    { "mu_mean", K_DOUBLE, OFF(mu_mean), 0, 0, INF, 1, 0, "0.5", "1", NULL, "mean static COF" },
-    { "mu_std", K_DOUBLE, OFF(mu_std), 0, 0, INF, 0, 0, "0.1", "1", NULL, "std of the static COF" },
-    { "mu_k_ratio", K_DOUBLE, OFF(mu_k_ratio), 0, 0, 1, 1, 0, "0.9", "1", NULL, "mu_k / mu_s (Eq. 1)" },
-    { "g", K_DOUBLE, OFF(g), 0, 0, INF, 1, 0, "9.81", "m/s^2", NULL, "gravity" },
-    { "T", K_DOUBLE, OFF(T), 0, 0, INF, 1, 0, "100", "s", NULL, "simulated time" },
-    { "eps_lambda", K_DOUBLE, OFF(eps_lambda), 0, 0, 1, 1, 0, "1e-3", "1", NULL, "slip-to-stick threshold on lambda (Eq. 12-14)" },
-    { "dt", K_DOUBLE, OFF(dt), 0, 0, INF, 1, 0, "1e-3", "s", NULL, "fixed step (rk4) or initial step" },
-    { "seed", K_ULONG, OFF(seed), 0, 0, 0, 0, 0, "20230101", "1", NULL, "random seed" },
-    { "cof", K_ENUM, OFF(cof), 0, 0, 0, 0, 0, "field", "", CHOICES("uniform", "variable", "field"), "COF model" },
+    { "m", SF_KEY_DOUBLE, OFF(m), 0, 0, INF, 1, 0, "10", "kg", NULL, "disc mass" },
+    { "k", SF_KEY_DOUBLE, OFF(k), 0, 0, INF, 1, 0, "30", "N/m", NULL, "spring stiffness in x and y" },
+    { "v_b", SF_KEY_DOUBLE, OFF(v_b), 0, 0, INF, 1, 0, "0.2", "m/s", NULL, "belt speed" },
+    { "R", SF_KEY_DOUBLE, OFF(R), 0, 0, INF, 1, 0, "0.5", "m", NULL, "disc radius" },
+    { "l", SF_KEY_DOUBLE, OFF(l), 0, 0, INF, 1, 0, "0.1", "m", NULL, "correlation length of Eq. 2" },
+    { "mu_mean", SF_KEY_DOUBLE, OFF(mu_mean), 0, 0, INF, 1, 0, "0.5", "1", NULL, "mean static COF" },
+    { "mu_std", SF_KEY_DOUBLE, OFF(mu_std), 0, 0, INF, 0, 0, "0.1", "1", NULL, "std of the static COF" },
+    { "mu_k_ratio", SF_KEY_DOUBLE, OFF(mu_k_ratio), 0, 0, 1, 1, 0, "0.9", "1", NULL, "mu_k / mu_s (Eq. 1)" },
+    { "g", SF_KEY_DOUBLE, OFF(g), 0, 0, INF, 1, 0, "9.81", "m/s^2", NULL, "gravity" },
+    { "T", SF_KEY_DOUBLE, OFF(T), 0, 0, INF, 1, 0, "100", "s", NULL, "simulated time" },
+    { "eps_lambda", SF_KEY_DOUBLE, OFF(eps_lambda), 0, 0, 1, 1, 0, "1e-3", "1", NULL, "slip-to-stick threshold on lambda (Eq. 12-14)" },
+    { "dt", SF_KEY_DOUBLE, OFF(dt), 0, 0, INF, 1, 0, "1e-3", "s", NULL, "fixed step (rk4) or initial step" },
+    { "seed", SF_KEY_ULONG, OFF(seed), 0, 0, 0, 0, 0, "20230101", "1", NULL, "random seed" },
+    { "cof", SF_KEY_ENUM, OFF(cof), 0, 0, 0, 0, 0, "field", "", SF_KEY_CHOICES("uniform", "variable", "field"), "COF model" },
     /* random-field grid */
-    { "nx", K_SIZE, OFF(nx), 0, 1, 1e6, 0, 0, "64", "1", NULL, "grid points along x" },
-    { "ny", K_SIZE, OFF(ny), 0, 1, 1e6, 0, 0, "64", "1", NULL, "grid points along y" },
-    { "dx", K_DOUBLE, OFF(dx), 0, 0, INF, 1, 0, "0.025", "m", NULL, "grid spacing along x" },
-    { "dy", K_DOUBLE, OFF(dy), 0, 0, INF, 1, 0, "0.025", "m", NULL, "grid spacing along y" },
-    { "pad_cap", K_DOUBLE, OFF(pad_cap), 0, 1, 1e6, 0, 0, "16", "1", NULL, "max embedding period / minimal period" },
-    { "eig_tol", K_DOUBLE, OFF(eig_tol), 0, 0, 1, 0, 0, "1e-12", "1", NULL, "accept lambda_min >= -eig_tol lambda_max" },
-    { "no_padding", K_BOOL, OFF(no_padding), 0, 0, 0, 0, 0, "false", "", NULL, "minimal embedding only" },
-    { "fftw_planner", K_ENUM, OFF(fftw_planner), 0, 0, 0, 0, 0, "estimate", "", CHOICES("estimate", "measure"), "sampling FFT plan: estimate (same bits in every process) or measure (timed, faster on large grids; see SLIPFIELD_FFTW_WISDOM)" },
-    { "precorrect", K_BOOL, OFF(precorrect), 0, 0, 0, 0, 0, "false", "", NULL, "pre-correct the Gaussian correlation so the lognormal field has Eq. 2" },
-    { "strip_halfwidth", K_DOUBLE, OFF(strip_halfwidth), 0, 0, INF, 0, 0, "0.5", "m", NULL, "lateral excursion |y| the COF strip covers beyond R (0: the spring-excursion bound); a run that leaves it fails" },
-    { "cof_generator", K_ENUM, OFF(cof_generator), 0, 0, 0, 0, 0, "auto", "", CHOICES("auto", "circulant", "tiles"), "belt COF field generator: circulant strip over [0, T], tiles generated on demand in a window that follows the disc, or auto (circulant unless its strip exceeds 2^21 points; slipfield run --explain says which)" },
-    { "samples", K_SIZE, OFF(samples), 0, 1, 1e9, 0, 0, "1000", "1", NULL, "number of samples or realisations" },
+    { "nx", SF_KEY_SIZE, OFF(nx), 0, 1, 1e6, 0, 0, "64", "1", NULL, "grid points along x" },
+    { "ny", SF_KEY_SIZE, OFF(ny), 0, 1, 1e6, 0, 0, "64", "1", NULL, "grid points along y" },
+    { "dx", SF_KEY_DOUBLE, OFF(dx), 0, 0, INF, 1, 0, "0.025", "m", NULL, "grid spacing along x" },
+    { "dy", SF_KEY_DOUBLE, OFF(dy), 0, 0, INF, 1, 0, "0.025", "m", NULL, "grid spacing along y" },
+    { "pad_cap", SF_KEY_DOUBLE, OFF(pad_cap), 0, 1, 1e6, 0, 0, "16", "1", NULL, "max embedding period / minimal period" },
+    { "eig_tol", SF_KEY_DOUBLE, OFF(eig_tol), 0, 0, 1, 0, 0, "1e-12", "1", NULL, "accept lambda_min >= -eig_tol lambda_max" },
+    { "no_padding", SF_KEY_BOOL, OFF(no_padding), 0, 0, 0, 0, 0, "false", "", NULL, "minimal embedding only" },
+    { "fftw_planner", SF_KEY_ENUM, OFF(fftw_planner), 0, 0, 0, 0, 0, "estimate", "", SF_KEY_CHOICES("estimate", "measure"), "sampling FFT plan: estimate (same bits in every process) or measure (timed, faster on large grids; see SLIPFIELD_FFTW_WISDOM)" },
+    { "precorrect", SF_KEY_BOOL, OFF(precorrect), 0, 0, 0, 0, 0, "false", "", NULL, "pre-correct the Gaussian correlation so the lognormal field has Eq. 2" },
+    { "strip_halfwidth", SF_KEY_DOUBLE, OFF(strip_halfwidth), 0, 0, INF, 0, 0, "0.5", "m", NULL, "lateral excursion |y| the COF strip covers beyond R (0: the spring-excursion bound); a run that leaves it fails" },
+    { "cof_generator", SF_KEY_ENUM, OFF(cof_generator), 0, 0, 0, 0, 0, "auto", "", SF_KEY_CHOICES("auto", "circulant", "tiles"), "belt COF field generator: circulant strip over [0, T], tiles generated on demand in a window that follows the disc, or auto (circulant unless its strip exceeds 2^21 points; slipfield run --explain says which)" },
+    { "samples", SF_KEY_SIZE, OFF(samples), 0, 1, 1e9, 0, 0, "1000", "1", NULL, "number of samples or realisations" },
     /* contact */
-    { "layout", K_ENUM, OFF(layout), 0, 0, 0, 0, 0, "polar", "", CHOICES("polar", "cartesian"), "disc quadrature layout" },
-    { "cells", K_SIZE, OFF(cells), 0, 0, 1e5, 0, 0, "0", "1", NULL, "quadrature resolution (rings or cells per diameter); 0: the plan chooses from qoi_tol and l/R (numplan.h)" },
-    { "u", K_DOUBLE, OFF(u), 0, -INF, INF, 0, 0, "-0.2", "m/s", NULL, "relative velocity of the centre, x" },
-    { "v", K_DOUBLE, OFF(v), 0, -INF, INF, 0, 0, "0", "m/s", NULL, "relative velocity of the centre, y" },
-    { "w", K_DOUBLE, OFF(w), 0, -INF, INF, 0, 0, "0", "rad/s", NULL, "spin" },
-    { "ntheta", K_SIZE, OFF(ntheta), 0, 1, 1e5, 0, 0, "37", "1", NULL, "limit-surface theta samples" },
-    { "npsi", K_SIZE, OFF(npsi), 0, 1, 1e5, 0, 0, "72", "1", NULL, "limit-surface psi samples" },
+    { "layout", SF_KEY_ENUM, OFF(layout), 0, 0, 0, 0, 0, "polar", "", SF_KEY_CHOICES("polar", "cartesian"), "disc quadrature layout" },
+    { "cells", SF_KEY_SIZE, OFF(cells), 0, 0, 1e5, 0, 0, "0", "1", NULL, "quadrature resolution (rings or cells per diameter); 0: the plan chooses from qoi_tol and l/R (numplan.h)" },
+    { "u", SF_KEY_DOUBLE, OFF(u), 0, -INF, INF, 0, 0, "-0.2", "m/s", NULL, "relative velocity of the centre, x" },
+    { "v", SF_KEY_DOUBLE, OFF(v), 0, -INF, INF, 0, 0, "0", "m/s", NULL, "relative velocity of the centre, y" },
+    { "w", SF_KEY_DOUBLE, OFF(w), 0, -INF, INF, 0, 0, "0", "rad/s", NULL, "spin" },
+    { "ntheta", SF_KEY_SIZE, OFF(ntheta), 0, 1, 1e5, 0, 0, "37", "1", NULL, "limit-surface theta samples" },
+    { "npsi", SF_KEY_SIZE, OFF(npsi), 0, 1, 1e5, 0, 0, "72", "1", NULL, "limit-surface psi samples" },
     /* dynamics */
-    { "integrator", K_ENUM, OFF(integrator), 0, 0, 0, 0, 0, "adaptive", "", CHOICES("adaptive", "rk4", "rk8pd", "rkck"), "time stepper: adaptive = rk8pd for a closed-form wrench, rkck for a quadrature one; rk4 at fixed dt" },
-    { "dof", K_ENUM, OFF(dof), 0, 0, 0, 0, 0, "3", "", CHOICES("1", "3"), "degrees of freedom: 1 (Eqs. 3-4, uniform COF) or 3 (x, y, phi; Eq. 5)" },
-    { "rtol", K_DOUBLE, OFF(rtol), 0, 0, 1, 0, 1, "0", "1", NULL, "adaptive stepper relative tolerance; 0: the plan chooses from qoi_tol (numplan.h)" },
-    { "qoi_tol", K_DOUBLE, OFF(qoi_tol), 0, 0, 1, 1, 1, "1e-3", "1", NULL, "relative error wanted in a realisation's PV_x, PV_F and stick fraction: the plan sets cells, rtol and the stepper from it (numplan.h)" },
-    { "t_skip", K_DOUBLE, OFF(t_skip), 0, 0, INF, 0, 0, "10", "s", NULL, "transient discarded before QoIs" },
-    { "x0", K_DOUBLE, OFF(x0), 0, -INF, INF, 0, 0, "0", "m", NULL, "initial x of the disc centre (ground frame)" },
-    { "y0", K_DOUBLE, OFF(y0), 0, -INF, INF, 0, 0, "0", "m", NULL, "initial y of the disc centre" },
-    { "phi0", K_DOUBLE, OFF(phi0), 0, -INF, INF, 0, 0, "0", "rad", NULL, "initial rotation angle" },
-    { "vx0", K_DOUBLE, OFF(vx0), 0, -INF, INF, 0, 0, "0", "m/s", NULL, "initial x velocity (ground frame; v_b with vy0 = w0 = 0 inside the stick set starts in stick)" },
-    { "vy0", K_DOUBLE, OFF(vy0), 0, -INF, INF, 0, 0, "0", "m/s", NULL, "initial y velocity (3-DOF only)" },
-    { "w0", K_DOUBLE, OFF(w0), 0, -INF, INF, 0, 0, "0", "rad/s", NULL, "initial spin (3-DOF only)" },
-    { "velocity_jump", K_BOOL, OFF(velocity_jump), 0, 0, 0, 0, 0, "true", "", NULL, "apply Eqs. 12 and 14" },
-    { "exact_section", K_BOOL, OFF(exact_section), 0, 0, 0, 0, 0, "false", "", NULL, "stick test on the exact T = 0 section" },
-    { "history", K_BOOL, OFF(history), 0, 0, 0, 0, 0, "true", "", NULL, "keep the time history" },
-    { "shortcuts", K_BOOL, OFF(shortcuts), 0, 0, 0, 0, 0, "true", "", NULL, "false: compute in full where the plan would take a shortcut" },
-    /* the check */
-    { "check", K_STRING, OFF(check), sizeof(((sf_scene *)0)->check), 0, 0, 0, 0, "", "", NULL, "check to run (cases)" },
-    { "tolerance", K_DOUBLE, OFF(tolerance), 0, 0, INF, 0, 0, "0", "", NULL, "tolerance of the check (its units are the check's)" },
-    { "alpha", K_DOUBLE, OFF(alpha), 0, 0, 1, 1, 1, "1e-3", "1", NULL, "significance level of a statistical check" },
-    { "tier", K_ENUM, OFF(tier), 0, 0, 0, 0, 0, "quick", "", CHOICES("quick", "full", "paper"), "verification tier (paper: the paper's settings, run only with --tier paper)" },
-    { "vv", K_ENUM, OFF(vv), 0, 0, 0, 0, 0, "code", "", CHOICES("code", "solution", "validation"), "code verification, solution verification or validation" },
-    { "tags", K_STRING, OFF(tags), sizeof(((sf_scene *)0)->tags), 0, 0, 0, 0, "", "", NULL, "comma-separated tags" },
-    { "pin_seed", K_BOOL, OFF(pin_seed), 0, 0, 0, 0, 0, "false", "", NULL, "a deterministic check of one pinned realisation: verify --seed leaves this case's seed alone" },
-    { "power_alt", K_STRING, OFF(power_alt), sizeof(((sf_scene *)0)->power_alt), 0, 0, 0, 0, "", "", NULL, "alternative a statistical case's power is measured against: KEY*FACTOR or KEY+DELTA (generator only)" },
-    { "sweep", K_LIST, OFF(sweep), 0, -INF, INF, 0, 0, "", "", NULL, "list of values a check sweeps over" },
-    { "sweep_param", K_STRING, OFF(sweep_param), sizeof(((sf_scene *)0)->sweep_param), 0, 0, 0, 0, "", "", NULL, "parameter a sweep varies: a numeric key, l_over_R or mu_mean (fixed CV)" },
-    { "sweep2", K_LIST, OFF(sweep2), 0, -INF, INF, 0, 0, "", "", NULL, "second list of values" },
+    { "integrator", SF_KEY_ENUM, OFF(integrator), 0, 0, 0, 0, 0, "adaptive", "", SF_KEY_CHOICES("adaptive", "rk4", "rk8pd", "rkck"), "time stepper: adaptive = rk8pd for a closed-form wrench, rkck for a quadrature one; rk4 at fixed dt" },
+    { "dof", SF_KEY_ENUM, OFF(dof), 0, 0, 0, 0, 0, "3", "", SF_KEY_CHOICES("1", "3"), "degrees of freedom: 1 (Eqs. 3-4, uniform COF) or 3 (x, y, phi; Eq. 5)" },
+    { "rtol", SF_KEY_DOUBLE, OFF(rtol), 0, 0, 1, 0, 1, "0", "1", NULL, "adaptive stepper relative tolerance; 0: the plan chooses from qoi_tol (numplan.h)" },
+    { "qoi_tol", SF_KEY_DOUBLE, OFF(qoi_tol), 0, 0, 1, 1, 1, "1e-3", "1", NULL, "relative error wanted in a realisation's PV_x, PV_F and stick fraction: the plan sets cells, rtol and the stepper from it (numplan.h)" },
+    { "t_skip", SF_KEY_DOUBLE, OFF(t_skip), 0, 0, INF, 0, 0, "10", "s", NULL, "transient discarded before QoIs" },
+    { "x0", SF_KEY_DOUBLE, OFF(x0), 0, -INF, INF, 0, 0, "0", "m", NULL, "initial x of the disc centre (ground frame)" },
+    { "y0", SF_KEY_DOUBLE, OFF(y0), 0, -INF, INF, 0, 0, "0", "m", NULL, "initial y of the disc centre" },
+    { "phi0", SF_KEY_DOUBLE, OFF(phi0), 0, -INF, INF, 0, 0, "0", "rad", NULL, "initial rotation angle" },
+    { "vx0", SF_KEY_DOUBLE, OFF(vx0), 0, -INF, INF, 0, 0, "0", "m/s", NULL, "initial x velocity (ground frame; v_b with vy0 = w0 = 0 inside the stick set starts in stick)" },
+    { "vy0", SF_KEY_DOUBLE, OFF(vy0), 0, -INF, INF, 0, 0, "0", "m/s", NULL, "initial y velocity (3-DOF only)" },
+    { "w0", SF_KEY_DOUBLE, OFF(w0), 0, -INF, INF, 0, 0, "0", "rad/s", NULL, "initial spin (3-DOF only)" },
+    { "velocity_jump", SF_KEY_BOOL, OFF(velocity_jump), 0, 0, 0, 0, 0, "true", "", NULL, "apply Eqs. 12 and 14" },
+    { "exact_section", SF_KEY_BOOL, OFF(exact_section), 0, 0, 0, 0, 0, "false", "", NULL, "stick test on the exact T = 0 section" },
+    { "history", SF_KEY_BOOL, OFF(history), 0, 0, 0, 0, 0, "true", "", NULL, "keep the time history" },
+    { "shortcuts", SF_KEY_BOOL, OFF(shortcuts), 0, 0, 0, 0, 0, "true", "", NULL, "false: compute in full where the plan would take a shortcut" },
 };
 
 #define NKEYS (sizeof keys / sizeof keys[0])
 _Static_assert(sizeof keys / sizeof keys[0] <= SF_SCENE_MAX_KEYS, "key table too large");
 
 /* An enum key's names as "a|b|c" (help text, error messages). */
-static const char *choices_text(const key_t_ *k, char *buf, size_t n)
+static const char *choices_text(const sf_key *k, char *buf, size_t n)
 {
     size_t used = 0;
     buf[0] = '\0';
@@ -110,22 +79,22 @@ static const char *choices_text(const key_t_ *k, char *buf, size_t n)
     return buf;
 }
 
-static const key_t_ *find_key(const char *name, size_t len)
+static const sf_key *find_key(const sf_keytab *t, const char *name, size_t len)
 {
-    for (size_t i = 0; i < NKEYS; i++)
-        if (strlen(keys[i].name) == len && strncmp(keys[i].name, name, len) == 0)
-            return &keys[i];
+    for (size_t i = 0; i < t->n; i++)
+        if (strlen(t->keys[i].name) == len && strncmp(t->keys[i].name, name, len) == 0)
+            return &t->keys[i];
     return NULL;
 }
 
-static int in_range(const key_t_ *k, double x)
+static int in_range(const sf_key *k, double x)
 {
     if (k->lo_open ? !(x > k->lo) : !(x >= k->lo)) return 0;
     if (k->hi_open ? !(x < k->hi) : !(x <= k->hi)) return 0;
     return 1;
 }
 
-static void range_text(const key_t_ *k, char *buf, size_t n)
+static void range_text(const sf_key *k, char *buf, size_t n)
 {
     char lo[32] = "", hi[32] = "";
     if (isfinite(k->lo)) snprintf(lo, sizeof lo, "%s %g", k->lo_open ? ">" : ">=", k->lo);
@@ -150,15 +119,62 @@ static int parse_double(const char *s, size_t len, double *out)
     return 1;
 }
 
-/* Assign the value text [v, v+len) to key k of scene s. */
-static int assign(sf_scene *s, const key_t_ *k, const char *v, size_t len,
+/* A list "a, b, c" of finite numbers (at most SF_LIST_MAX). */
+static int assign_list(sf_list *l, const sf_key *k, const char *v, size_t len,
+                       const char *file, int line, char *err, size_t errlen)
+{
+    l->n = 0;
+    size_t i = 0;
+    while (i < len) {
+        size_t j = i;
+        while (j < len && v[j] != ',') j++;
+        size_t a = i, b = j;
+        while (a < b && isspace((unsigned char)v[a])) a++;
+        while (b > a && isspace((unsigned char)v[b - 1])) b--;
+        double x;
+        if (!parse_double(v + a, b - a, &x))
+            return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key '%s': item %zu is not a finite number",
+                          file, line, k->name, l->n + 1);
+        if (l->n == SF_LIST_MAX)
+            return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key '%s': more than %d values",
+                          file, line, k->name, SF_LIST_MAX);
+        l->v[l->n++] = x;
+        i = j + 1;
+        if (j < len && j + 1 == len)
+            return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key '%s': trailing comma", file, line, k->name);
+    }
+    return SF_SUCCESS;
+}
+
+/* A whole number for an unsigned long key. */
+static int assign_ulong(unsigned long *out, const sf_key *k, const char *v, size_t len,
+                        const char *file, int line, char *err, size_t errlen)
+{
+    /* seeds: parsed exactly as an integer, never through a double */
+    char buf[32];
+    if (len >= sizeof buf)
+        return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key '%s': value too long", file, line, k->name);
+    memcpy(buf, v, len);
+    buf[len] = '\0';
+    errno = 0;
+    char *end;
+    unsigned long u = strtoul(buf, &end, 10);
+    if (*end || end == buf || errno == ERANGE || !isdigit((unsigned char)buf[0]))
+        return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key '%s': expected a non-negative whole number, got '%s'",
+                      file, line, k->name, buf);
+    *out = u;
+    return SF_SUCCESS;
+}
+
+/* Assign the value text [v, v+len) to key k of the struct at obj. */
+static int assign(void *obj, const sf_key *k, const char *v, size_t len,
                   const char *file, int line, char *err, size_t errlen)
 {
-    char *base = (char *)s + k->off;
+    char *base = (char *)obj + k->off;
     char rng[80];
     range_text(k, rng, sizeof rng);
     switch (k->type) {
-    case K_DOUBLE: {
+    case SF_KEY_DOUBLE: {
         double x;
         if (!parse_double(v, len, &x))
             return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key '%s': expected a finite number, got '%.*s'",
@@ -169,7 +185,7 @@ static int assign(sf_scene *s, const key_t_ *k, const char *v, size_t len,
         *(double *)base = x;
         return SF_SUCCESS;
     }
-    case K_SIZE: {
+    case SF_KEY_SIZE: {
         double x;
         int ok = parse_double(v, len, &x) && x == floor(x);
         if (!ok || x < 0)
@@ -181,23 +197,9 @@ static int assign(sf_scene *s, const key_t_ *k, const char *v, size_t len,
         *(size_t *)base = (size_t)x;
         return SF_SUCCESS;
     }
-    case K_ULONG: {
-        /* seeds: parsed exactly as an integer, never through a double */
-        char buf[32];
-        if (len >= sizeof buf)
-            return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key '%s': value too long", file, line, k->name);
-        memcpy(buf, v, len);
-        buf[len] = '\0';
-        errno = 0;
-        char *end;
-        unsigned long u = strtoul(buf, &end, 10);
-        if (*end || end == buf || errno == ERANGE || !isdigit((unsigned char)buf[0]))
-            return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key '%s': expected a non-negative whole number, got '%s'",
-                          file, line, k->name, buf);
-        *(unsigned long *)base = u;
-        return SF_SUCCESS;
-    }
-    case K_BOOL: {
+    case SF_KEY_ULONG:
+        return assign_ulong((unsigned long *)base, k, v, len, file, line, err, errlen);
+    case SF_KEY_BOOL: {
         static const char *t[] = { "true", "yes", "on", "1" }, *f[] = { "false", "no", "off", "0" };
         for (int i = 0; i < 4; i++) {
             if (strlen(t[i]) == len && strncmp(v, t[i], len) == 0) { *(int *)base = 1; return SF_SUCCESS; }
@@ -206,7 +208,7 @@ static int assign(sf_scene *s, const key_t_ *k, const char *v, size_t len,
         return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key '%s': expected true or false, got '%.*s'",
                       file, line, k->name, (int)(len > 40 ? 40 : len), v);
     }
-    case K_ENUM: {
+    case SF_KEY_ENUM: {
         for (int idx = 0; k->choices[idx]; idx++)
             if (strlen(k->choices[idx]) == len && strncmp(k->choices[idx], v, len) == 0) {
                 *(int *)base = idx;
@@ -216,7 +218,7 @@ static int assign(sf_scene *s, const key_t_ *k, const char *v, size_t len,
         return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key '%s': expected one of %s, got '%.*s'",
                       file, line, k->name, choices_text(k, names, sizeof names), (int)(len > 40 ? 40 : len), v);
     }
-    case K_STRING: {
+    case SF_KEY_STRING: {
         if (len >= k->size)
             return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key '%s': value longer than %zu characters",
                           file, line, k->name, k->size - 1);
@@ -230,47 +232,73 @@ static int assign(sf_scene *s, const key_t_ *k, const char *v, size_t len,
         base[len] = '\0';
         return SF_SUCCESS;
     }
-    case K_LIST: {
-        sf_list *l = (sf_list *)base;
-        l->n = 0;
-        size_t i = 0;
-        while (i < len) {
-            size_t j = i;
-            while (j < len && v[j] != ',') j++;
-            size_t a = i, b = j;
-            while (a < b && isspace((unsigned char)v[a])) a++;
-            while (b > a && isspace((unsigned char)v[b - 1])) b--;
-            double x;
-            if (!parse_double(v + a, b - a, &x))
-                return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key '%s': item %zu is not a finite number",
-                              file, line, k->name, l->n + 1);
-            if (l->n == SF_LIST_MAX)
-                return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key '%s': more than %d values",
-                              file, line, k->name, SF_LIST_MAX);
-            l->v[l->n++] = x;
-            i = j + 1;
-            if (j < len && j + 1 == len)
-                return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key '%s': trailing comma", file, line, k->name);
-        }
-        return SF_SUCCESS;
-    }
+    case SF_KEY_LIST:
+        return assign_list((sf_list *)base, k, v, len, file, line, err, errlen);
     }
     return SF_EPARSE;
+}
+
+void sf_keys_default(const sf_keytab *t)
+{
+    char err[256];
+    for (size_t i = 0; i < t->n; i++) {
+        int rc = assign(t->obj, &t->keys[i], t->keys[i].def, strlen(t->keys[i].def), "<defaults>", 0, err, sizeof err);
+        (void)rc; /* the tables' defaults are covered by a unit test */
+    }
+    memset(t->set, 0, t->n);
+}
+
+sf_keytab sf_scene_keytab(const sf_scene *s)
+{
+    return (sf_keytab){ keys, NKEYS, (void *)s, (unsigned char *)s->set };
 }
 
 void sf_scene_default(sf_scene *s)
 {
     memset(s, 0, sizeof *s);
-    char err[256];
-    for (size_t i = 0; i < NKEYS; i++) {
-        int rc = assign(s, &keys[i], keys[i].def, strlen(keys[i].def), "<defaults>", 0, err, sizeof err);
-        (void)rc; /* the table's defaults are covered by a unit test */
-    }
-    memset(s->set, 0, sizeof s->set);
+    sf_keytab t = sf_scene_keytab(s);
+    sf_keys_default(&t);
 }
 
-int sf_scene_parse(sf_scene *s, const char *text, const char *file,
-                   int first_line, char *err, size_t errlen)
+/* One `key = value` line q[0..ql) (comment and blanks stripped) against
+ * the tables t[0..nt). */
+static int parse_line(const sf_keytab *t, size_t nt, const char *q, size_t ql, const char *file, int line,
+                      char *err, size_t errlen)
+{
+    for (size_t i = 0; i < ql; i++)
+        if (q[i] == '\0' || (!isprint((unsigned char)q[i]) && q[i] != '\t'))
+            return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: non-printable character in scene line", file, line);
+    const char *eq = memchr(q, '=', ql);
+    if (!eq)
+        return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: expected 'key = value', got '%.*s'",
+                      file, line, (int)(ql > 40 ? 40 : ql), q);
+    size_t kl = (size_t)(eq - q);
+    while (kl > 0 && isspace((unsigned char)q[kl - 1])) kl--;
+    if (kl == 0)
+        return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: missing key before '='", file, line);
+    const sf_key *k = NULL;
+    const sf_keytab *tab = t;
+    for (; tab < t + nt && !(k = find_key(tab, q, kl)); tab++)
+        ;
+    if (!k)
+        return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: unknown key '%.*s' (see 'slipfield help scene')",
+                      file, line, (int)(kl > 40 ? 40 : kl), q);
+    size_t idx = (size_t)(k - tab->keys);
+    if (tab->set[idx])
+        return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key '%s': set twice", file, line, k->name);
+    const char *v = eq + 1;
+    size_t vl = (size_t)(q + ql - v);
+    while (vl > 0 && isspace((unsigned char)*v)) { v++; vl--; }
+    if (vl == 0)
+        return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key '%s': missing value", file, line, k->name);
+    int rc = assign(tab->obj, k, v, vl, file, line, err, errlen);
+    if (!rc)
+        tab->set[idx] = 1;
+    return rc;
+}
+
+int sf_keys_parse(const sf_keytab *t, size_t nt, const char *text, const char *file,
+                  int first_line, char *err, size_t errlen)
 {
     int line = first_line;
     const char *p = text;
@@ -284,35 +312,9 @@ int sf_scene_parse(sf_scene *s, const char *text, const char *file,
         while (a < b && isspace((unsigned char)p[a])) a++;
         while (b > a && isspace((unsigned char)p[b - 1])) b--;
         if (a < b) {
-            const char *q = p + a;
-            size_t ql = b - a;
-            for (size_t i = 0; i < ql; i++)
-                if (q[i] == '\0' || (!isprint((unsigned char)q[i]) && q[i] != '\t'))
-                    return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: non-printable character in scene line", file, line);
-            const char *eq = memchr(q, '=', ql);
-            if (!eq)
-                return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: expected 'key = value', got '%.*s'",
-                              file, line, (int)(ql > 40 ? 40 : ql), q);
-            size_t kl = (size_t)(eq - q);
-            while (kl > 0 && isspace((unsigned char)q[kl - 1])) kl--;
-            if (kl == 0)
-                return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: missing key before '='", file, line);
-            const key_t_ *k = find_key(q, kl);
-            if (!k)
-                return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: unknown key '%.*s' (see 'slipfield help scene')",
-                              file, line, (int)(kl > 40 ? 40 : kl), q);
-            size_t idx = (size_t)(k - keys);
-            if (s->set[idx])
-                return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key '%s': set twice", file, line, k->name);
-            const char *v = eq + 1;
-            size_t vl = (size_t)(q + ql - v);
-            while (vl > 0 && isspace((unsigned char)*v)) { v++; vl--; }
-            if (vl == 0)
-                return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key '%s': missing value", file, line, k->name);
-            int rc = assign(s, k, v, vl, file, line, err, errlen);
+            int rc = parse_line(t, nt, p + a, b - a, file, line, err, errlen);
             if (rc)
                 return rc;
-            s->set[idx] = 1;
         }
         if (!eol)
             break;
@@ -320,6 +322,13 @@ int sf_scene_parse(sf_scene *s, const char *text, const char *file,
         line++;
     }
     return SF_SUCCESS;
+}
+
+int sf_scene_parse(sf_scene *s, const char *text, const char *file,
+                   int first_line, char *err, size_t errlen)
+{
+    sf_keytab t = sf_scene_keytab(s);
+    return sf_keys_parse(&t, 1, text, file, first_line, err, errlen);
 }
 
 int sf_read_text(const char *path, const char *what, char **text, size_t *len, char *err, size_t errlen)
@@ -368,16 +377,22 @@ int sf_scene_read_file(sf_scene *s, const char *path, char *err, size_t errlen)
     return rc;
 }
 
-int sf_scene_was_set(const sf_scene *s, const char *key)
+int sf_keys_was_set(const sf_keytab *t, const char *key)
 {
-    const key_t_ *k = find_key(key, strlen(key));
-    return k ? s->set[k - keys] : 0;
+    const sf_key *k = find_key(t, key, strlen(key));
+    return k ? t->set[k - t->keys] : 0;
 }
 
-const char *sf_scene_enum_name(const char *key, int value)
+int sf_scene_was_set(const sf_scene *s, const char *key)
 {
-    const key_t_ *k = find_key(key, strlen(key));
-    if (!k || k->type != K_ENUM || value < 0)
+    sf_keytab t = sf_scene_keytab(s);
+    return sf_keys_was_set(&t, key);
+}
+
+const char *sf_keys_enum_name(const sf_keytab *t, const char *key, int value)
+{
+    const sf_key *k = find_key(t, key, strlen(key));
+    if (!k || k->type != SF_KEY_ENUM || value < 0)
         return "?";
     for (int i = 0; k->choices[i]; i++)
         if (i == value)
@@ -385,17 +400,28 @@ const char *sf_scene_enum_name(const char *key, int value)
     return "?";
 }
 
-static void write_value(const sf_scene *s, const key_t_ *k, FILE *out)
+const char *sf_scene_enum_name(const char *key, int value)
 {
-    const char *base = (const char *)s + k->off;
+    sf_keytab t = { keys, NKEYS, NULL, NULL };
+    return sf_keys_enum_name(&t, key, value);
+}
+
+static void write_value(const void *obj, const sf_key *k, FILE *out)
+{
+    const char *base = (const char *)obj + k->off;
     switch (k->type) {
-    case K_DOUBLE: fprintf(out, "%.17g", *(const double *)base); break;
-    case K_SIZE: fprintf(out, "%zu", *(const size_t *)base); break;
-    case K_ULONG: fprintf(out, "%lu", *(const unsigned long *)base); break;
-    case K_BOOL: fputs(*(const int *)base ? "true" : "false", out); break;
-    case K_ENUM: fputs(sf_scene_enum_name(k->name, *(const int *)base), out); break;
-    case K_STRING: fputs(base, out); break;
-    case K_LIST: {
+    case SF_KEY_DOUBLE: fprintf(out, "%.17g", *(const double *)base); break;
+    case SF_KEY_SIZE: fprintf(out, "%zu", *(const size_t *)base); break;
+    case SF_KEY_ULONG: fprintf(out, "%lu", *(const unsigned long *)base); break;
+    case SF_KEY_BOOL: fputs(*(const int *)base ? "true" : "false", out); break;
+    case SF_KEY_ENUM: {
+        int v = *(const int *)base, i = 0;
+        while (k->choices[i] && i < v) i++;
+        fputs(v >= 0 && k->choices[i] ? k->choices[i] : "?", out);
+        break;
+    }
+    case SF_KEY_STRING: fputs(base, out); break;
+    case SF_KEY_LIST: {
         const sf_list *l = (const sf_list *)base;
         for (size_t i = 0; i < l->n; i++)
             fprintf(out, "%s%.17g", i ? ", " : "", l->v[i]);
@@ -404,13 +430,19 @@ static void write_value(const sf_scene *s, const key_t_ *k, FILE *out)
     }
 }
 
-void sf_scene_write(const sf_scene *s, FILE *out)
+void sf_keys_write(const sf_keytab *t, FILE *out)
 {
-    for (size_t i = 0; i < NKEYS; i++) {
-        fprintf(out, "%s = ", keys[i].name);
-        write_value(s, &keys[i], out);
+    for (size_t i = 0; i < t->n; i++) {
+        fprintf(out, "%s = ", t->keys[i].name);
+        write_value(t->obj, &t->keys[i], out);
         fputc('\n', out);
     }
+}
+
+void sf_scene_write(const sf_scene *s, FILE *out)
+{
+    sf_keytab t = sf_scene_keytab(s);
+    sf_keys_write(&t, out);
 }
 
 const char *sf_scene_key_unit(const char *key)
@@ -425,18 +457,25 @@ const char *sf_scene_key_unit(const char *key)
     return NULL;
 }
 
-void sf_scene_print_keys(FILE *out)
+void sf_keys_print(const sf_keytab *t, size_t nt, FILE *out)
 {
     fprintf(out, "%-14s %-7s %-10s %-24s %s\n", "key", "unit", "default", "range/choices", "meaning");
-    for (size_t i = 0; i < NKEYS; i++) {
-        char rng[80];
-        if (keys[i].type == K_ENUM)
-            choices_text(&keys[i], rng, sizeof rng);
-        else if (keys[i].type == K_DOUBLE || keys[i].type == K_SIZE)
-            range_text(&keys[i], rng, sizeof rng);
-        else
-            rng[0] = '\0';
-        fprintf(out, "%-14s %-7s %-10s %-24s %s\n", keys[i].name, keys[i].unit,
-                keys[i].def, rng, keys[i].help);
-    }
+    for (const sf_keytab *tab = t; tab < t + nt; tab++)
+        for (size_t i = 0; i < tab->n; i++) {
+            const sf_key *k = &tab->keys[i];
+            char rng[80];
+            if (k->type == SF_KEY_ENUM)
+                choices_text(k, rng, sizeof rng);
+            else if (k->type == SF_KEY_DOUBLE || k->type == SF_KEY_SIZE)
+                range_text(k, rng, sizeof rng);
+            else
+                rng[0] = '\0';
+            fprintf(out, "%-14s %-7s %-10s %-24s %s\n", k->name, k->unit, k->def, rng, k->help);
+        }
+}
+
+void sf_scene_print_keys(FILE *out)
+{
+    sf_keytab t = { keys, NKEYS, NULL, NULL };
+    sf_keys_print(&t, 1, out);
 }

@@ -3,8 +3,13 @@
  * strict: unknown or duplicate keys, missing values, NaN/Inf and
  * out-of-range values are errors naming file, line and key.
  *
- * One table (scene.c) describes every key: type, unit, default, range and
- * a one-line help; `slipfield help scene` prints it.
+ * One table (scene.c) describes every solver key: type, unit, default,
+ * range and a one-line help.  The format and its parser are generic (a
+ * key table per struct, sf_keytab below): the verification layer declares
+ * the keys of a case (check, tolerance, ...) in its own table and parses
+ * a case's scene block with both tables at once, so the solver knows
+ * nothing of checks and there is still one format with one parser.
+ * `slipfield help scene` prints both tables.
  */
 #ifndef SF_SCENE_H
 #define SF_SCENE_H
@@ -20,8 +25,6 @@ typedef struct {
     double v[SF_LIST_MAX];
 } sf_list;
 
-enum { SF_TIER_QUICK = 0, SF_TIER_FULL = 1, SF_TIER_PAPER = 2 };
-enum { SF_VV_CODE = 0, SF_VV_SOLUTION = 1, SF_VV_VALIDATION = 2 };
 enum { SF_INTEG_ADAPTIVE = 0, SF_INTEG_RK4 = 1, SF_INTEG_RK8PD = 2, SF_INTEG_RKCK = 3 };
 enum { SF_DOF_1 = 0, SF_DOF_3 = 1 };
 enum { SF_COFGEN_AUTO = 0, SF_COFGEN_CIRCULANT = 1, SF_COFGEN_TILES = 2 };   /* `cof_generator` */   /* values of the `dof` key ("1", "3") */
@@ -52,22 +55,66 @@ typedef struct {
     double x0, y0, phi0, vx0, vy0, w0;   /* initial state (ground frame, SI): default rest at the origin */
     int velocity_jump, exact_section, history;
     int shortcuts;           /* 0: the plan computes in full (cases verifying its shortcuts) */
-    /* the check a case runs */
-    char check[64];
-    double tolerance, alpha;
-    int tier, vv;
-    char tags[128];
-    /* the moderate alternative a statistical case's power is measured
-     * against (`slipfield verify --alternative scene`): KEY*FACTOR or
-     * KEY+DELTA, applied to the data generator's scene only */
-    char power_alt[48];
-    int pin_seed;            /* 1: a deterministic check of one pinned realisation
-                                (`verify --seed` leaves this case's seed alone) */
-    sf_list sweep, sweep2;
-    char sweep_param[32];    /* the scene key (or l_over_R) a sweep varies */
     /* which keys the file set (index into the key table) */
     unsigned char set[SF_SCENE_MAX_KEYS];
 } sf_scene;
+
+/* ---- the `key = value` format: one parser, a key table per layer ---- */
+
+typedef enum { SF_KEY_DOUBLE, SF_KEY_SIZE, SF_KEY_ULONG, SF_KEY_BOOL, SF_KEY_ENUM, SF_KEY_STRING, SF_KEY_LIST } sf_key_type;
+
+/* One key of a struct.  lo/hi bounds (DOUBLE, SIZE, LIST items: not
+ * checked for LIST) are inclusive unless the *_open flag is set. */
+typedef struct {
+    const char *name;
+    sf_key_type type;
+    size_t off;                 /* offsetof the field in its struct */
+    size_t size;                /* STRING: buffer size */
+    double lo, hi;
+    int lo_open, hi_open;
+    const char *def;            /* default as text, parsed by the same code */
+    const char *unit;           /* "1": dimensionless; "": a switch or a name */
+    const char *const *choices; /* ENUM: names in value order, NULL-terminated */
+    const char *help;
+} sf_key;
+
+/* An enum key's names, in value order: at file scope a static array
+ * (C11 6.5.2.5), so sf_keys_enum_name() can return them as they are. */
+#define SF_KEY_CHOICES(...) ((const char *const[]){ __VA_ARGS__, NULL })
+
+/* A key table bound to one struct: keys[0..n) index obj; set[i] says
+ * key i was in the text (n flags).  obj and set may be NULL for the
+ * functions that only read the table (sf_keys_print, sf_keys_enum_name). */
+typedef struct {
+    const sf_key *keys;
+    size_t n;
+    void *obj;
+    unsigned char *set;
+} sf_keytab;
+
+/* Every key of t to its default; no key marked set. */
+void sf_keys_default(const sf_keytab *t);
+/* Parse `text` (NUL-terminated) against the tables t[0..nt): a key is
+ * looked up in each in turn; an unknown or repeated key, a missing or bad
+ * value are errors "file:line: ..." (lines counted from first_line).
+ * Returns SF_SUCCESS or SF_EPARSE with the message in err. */
+int sf_keys_parse(const sf_keytab *t, size_t nt, const char *text, const char *file,
+                  int first_line, char *err, size_t errlen);
+/* Whether the text set the key (unknown names -> 0). */
+int sf_keys_was_set(const sf_keytab *t, const char *key);
+/* The name of an ENUM key's value; "?" for an unknown key or value. */
+const char *sf_keys_enum_name(const sf_keytab *t, const char *key, int value);
+/* The struct as `key = value` lines, every key of the table. */
+void sf_keys_write(const sf_keytab *t, FILE *out);
+/* The tables t[0..nt) as one listing under one header line (name, unit,
+ * default, range or choices, meaning). */
+void sf_keys_print(const sf_keytab *t, size_t nt, FILE *out);
+
+/* ---- scenes ---- */
+
+/* The scene's key table bound to *s (const is cast away: parse only into
+ * a scene you own). */
+sf_keytab sf_scene_keytab(const sf_scene *s);
 
 /* Table 1 defaults. */
 void sf_scene_default(sf_scene *s);
@@ -93,7 +140,8 @@ int sf_scene_was_set(const sf_scene *s, const char *key);
 /* Write the effective scene as `key = value` lines (all keys). */
 void sf_scene_write(const sf_scene *s, FILE *out);
 
-/* Print the key table (name, unit, default, range, help). */
+/* Print the scene's key table (name, unit, default, range, help); the
+ * case keys are verification's (sf_case_print_keys). */
 void sf_scene_print_keys(FILE *out);
 
 /* The unit of a key as the key table has it ("m/s", "1" for a

@@ -223,31 +223,43 @@ static void stick_on_exact_section(void **state)
     sf_cof_free(cof);
 }
 
+/* A key table of the test's own (the scene's has no string or list key;
+ * verification/case.c declares some the same way). */
+typedef struct { char name[16]; sf_list xs; unsigned char set[2]; } own_keys;
+static const sf_key own_table[] = {
+    { "name", SF_KEY_STRING, offsetof(own_keys, name), sizeof(((own_keys *)0)->name), 0, 0, 0, 0, "", "", NULL, "a name" },
+    { "xs", SF_KEY_LIST, offsetof(own_keys, xs), 0, 0, 0, 0, 0, "", "", NULL, "a list" },
+};
+
 /* the parser's length and count limits, enum names, and writing a list */
 static void scene_parse_limits(void **state)
 {
     (void)state;
     sf_scene s;
     sf_scene_default(&s);
+    own_keys o;
+    memset(&o, 0, sizeof o);
+    sf_keytab tabs[2] = { sf_scene_keytab(&s), { own_table, 2, &o, o.set } };
+    sf_keys_default(&tabs[1]);
     char err[256] = "", text[4096];
     /* a seed is an integer of at most 31 characters */
     assert_int_equal(sf_scene_parse(&s, "seed = 1234567890123456789012345678901234567890\n", "t", 1, err, sizeof err),
                      SF_EPARSE);
     assert_non_null(strstr(err, "too long"));
     /* a string key longer than its buffer */
-    int n = snprintf(text, sizeof text, "check = ");
-    for (int i = 0; i < 300; i++)
+    int n = snprintf(text, sizeof text, "name = ");
+    for (int i = 0; i < 30; i++)
         text[n++] = 'a';
     text[n++] = '\n';
     text[n] = '\0';
-    assert_int_equal(sf_scene_parse(&s, text, "t", 1, err, sizeof err), SF_EPARSE);
+    assert_int_equal(sf_keys_parse(tabs, 2, text, "t", 1, err, sizeof err), SF_EPARSE);
     assert_non_null(strstr(err, "longer than"));
     /* a list of more than SF_LIST_MAX values */
-    n = snprintf(text, sizeof text, "sweep = 1");
+    n = snprintf(text, sizeof text, "xs = 1");
     for (int i = 0; i < SF_LIST_MAX; i++)
         n += snprintf(text + n, sizeof text - (size_t)n, ", %d", i + 2);
     snprintf(text + n, sizeof text - (size_t)n, "\n");
-    assert_int_equal(sf_scene_parse(&s, text, "t", 1, err, sizeof err), SF_EPARSE);
+    assert_int_equal(sf_keys_parse(tabs, 2, text, "t", 1, err, sizeof err), SF_EPARSE);
     assert_non_null(strstr(err, "more than"));
     /* enum names: known, out of range, not an enum, unknown key */
     assert_string_equal(sf_scene_enum_name("layout", 1), "cartesian");
@@ -256,14 +268,24 @@ static void scene_parse_limits(void **state)
     assert_string_equal(sf_scene_enum_name("no_such_key", 0), "?");
     /* a list written back as "a, b, c" */
     sf_scene_default(&s);
-    assert_int_equal(sf_scene_parse(&s, "sweep = 0.5, 2, 8\n", "t", 1, err, sizeof err), SF_SUCCESS);
+    sf_keys_default(&tabs[1]);
+    assert_int_equal(sf_keys_parse(tabs, 2, "sweep = 1\n", "t", 1, err, sizeof err), SF_EPARSE);
+    assert_non_null(strstr(err, "t:1: unknown key 'sweep'"));   /* a case's key, not the solver's */
+    assert_int_equal(sf_keys_parse(tabs, 2, "l = 0.2\nxs = 0.5, 2, 8\nname = a_b\n", "t", 1, err, sizeof err), SF_SUCCESS);
+    assert_int_equal(sf_keys_was_set(&tabs[1], "xs"), 1);
+    assert_int_equal(sf_scene_was_set(&s, "l"), 1);
+    assert_int_equal(sf_keys_parse(tabs, 2, "xs = 1\n", "t", 7, err, sizeof err), SF_EPARSE);
+    assert_non_null(strstr(err, "t:7: key 'xs': set twice"));
     char *buf = NULL;
     size_t len = 0;
     FILE *f = open_memstream(&buf, &len);
     assert_non_null(f);
+    sf_keys_write(&tabs[1], f);
     sf_scene_write(&s, f);
     fclose(f);
-    assert_non_null(strstr(buf, "sweep = 0.5, 2, 8"));
+    assert_non_null(strstr(buf, "xs = 0.5, 2, 8"));
+    assert_non_null(strstr(buf, "name = a_b"));
+    assert_non_null(strstr(buf, "layout = polar"));
     free(buf);
 }
 

@@ -124,7 +124,7 @@ static int run_case(const fam_case *fc, long k, int *hit)
         print_error("%s\n", err);
         fail();
     }
-    const sf_check_def *d = sf_check_find(c.scene.check);
+    const sf_check_def *d = sf_check_find(c.spec.check);
     assert_non_null(d);
     sf_result *r = sf_result_alloc();
     sf_poison_set(k);

@@ -8,10 +8,14 @@
 #include <string.h>
 #include <sys/stat.h>
 
+/* A case's scene block: the solver's keys and the case's (check,
+ * sweep, ...), one parser. */
 static int parse(sf_scene *s, const char *text, char *err)
 {
+    sf_case_spec v;
     sf_scene_default(s);
-    return sf_scene_parse(s, text, "t.scene", 1, err, 256);
+    sf_case_spec_default(&v);
+    return sf_case_scene_parse(s, &v, text, "t.scene", 1, err, 256);
 }
 
 static void scene_defaults_are_table1(void **state)
@@ -30,27 +34,40 @@ static void scene_defaults_are_table1(void **state)
     assert_close(s.g, 9.81, 0);
     assert_close(s.T, 100, 0);
     assert_close(s.eps_lambda, 1e-3, 0);
-    assert_int_equal(s.tier, SF_TIER_QUICK);
     assert_int_equal(sf_scene_was_set(&s, "l"), 0);
+    sf_case_spec v;
+    sf_case_spec_default(&v);
+    assert_int_equal(v.tier, SF_TIER_QUICK);
+    assert_int_equal(v.vv, SF_VV_CODE);
+    assert_close(v.alpha, 1e-3, 0);
 }
 
 static void scene_good_input(void **state)
 {
     (void)state;
     sf_scene s;
+    sf_case_spec v;
     char err[256];
-    assert_int_equal(parse(&s, "# comment\n  l = 0.25   # trailing\n\nnx=7\ncof = uniform\n"
+    sf_scene_default(&s);
+    sf_case_spec_default(&v);
+    /* a case's scene block: the solver's keys and the case's, one parser */
+    assert_int_equal(sf_case_scene_parse(&s, &v, "# comment\n  l = 0.25   # trailing\n\nnx=7\ncof = uniform\n"
                                "no_padding = yes\nsweep = 1, 2.5 ,3e-2\nseed = 18446744073709551615\n"
-                               "check = field_exact_covariance\n", err), SF_SUCCESS);
+                               "check = field_exact_covariance\n", "t.scene", 1, err, sizeof err), SF_SUCCESS);
     assert_close(s.l, 0.25, 0);
     assert_int_equal(s.nx, 7);
     assert_int_equal(s.cof, 0);
     assert_int_equal(s.no_padding, 1);
-    assert_int_equal(s.sweep.n, 3);
-    assert_close(s.sweep.v[2], 0.03, 1e-15);
+    assert_int_equal(v.sweep.n, 3);
+    assert_close(v.sweep.v[2], 0.03, 1e-15);
     assert_true(s.seed == 18446744073709551615UL);
-    assert_string_equal(s.check, "field_exact_covariance");
+    assert_string_equal(v.check, "field_exact_covariance");
     assert_int_equal(sf_scene_was_set(&s, "l"), 1);
+    assert_int_equal(sf_scene_was_set(&s, "check"), 0);   /* not a solver key */
+    /* the solver alone knows nothing of checks */
+    sf_scene_default(&s);
+    assert_int_equal(sf_scene_parse(&s, "check = field_exact_covariance\n", "t.scene", 1, err, 256), SF_EPARSE);
+    assert_non_null(strstr(err, "t.scene:1: unknown key 'check'"));
 }
 
 static void expect_error(const char *text, const char *fragment)

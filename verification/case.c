@@ -3,7 +3,9 @@
 #include "sf_error.h"
 
 #include <errno.h>
+#include <math.h>
 #include <stdarg.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -55,6 +57,35 @@ static int make_id(sf_case *c, const char *path, char *err, size_t errlen)
     return SF_SUCCESS;
 }
 
+/* The scene block: the scene's keys and the case's, then what a case
+ * must state (a known check, a tolerance or alpha, a valid power_alt). */
+static int parse_scene(sf_case *c, const char *path, char *err, size_t errlen)
+{
+    sf_scene_default(&c->scene);
+    sf_case_spec_default(&c->spec);
+    int rc = sf_case_scene_parse(&c->scene, &c->spec, c->scene_text, path, c->scene_line, err, errlen);
+    if (rc)
+        return rc;
+    sf_keytab vt = sf_case_spec_keytab(&c->spec);
+    if (!sf_keys_was_set(&vt, "check"))
+        return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: the scene block has no 'check = NAME'", path, c->scene_line);
+    if (!sf_check_find(c->spec.check))
+        return sf_seterr(err, errlen, SF_EPARSE, "%s: key 'check': unknown check '%s' (see 'slipfield verify --checks')",
+                    path, c->spec.check);
+    if (c->spec.power_alt[0]) {
+        sf_alt a;
+        char e2[128];
+        if (sf_alt_parse(c->spec.power_alt, &a, e2, sizeof e2))
+            return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key 'power_alt': %s", path, c->scene_line, e2);
+        if (!sf_keys_was_set(&vt, "alpha"))
+            return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: 'power_alt' names the alternative of a statistical "
+                        "check: the scene must set 'alpha'", path, c->scene_line);
+    }
+    if (!sf_keys_was_set(&vt, "tolerance") && !sf_keys_was_set(&vt, "alpha"))
+        return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: the scene states neither 'tolerance' nor 'alpha'", path, c->scene_line);
+    return SF_SUCCESS;
+}
+
 /* The parse proper, on a NUL-terminated copy buf of n bytes (freed here). */
 static int parse_buf(sf_case *c, const char *path, char *buf, size_t n, char *err, size_t errlen);
 
@@ -94,7 +125,6 @@ int sf_case_read(sf_case *c, const char *path, char *err, size_t errlen)
 
 static int parse_buf(sf_case *c, const char *path, char *buf, size_t n, char *err, size_t errlen)
 {
-    int rc;
     /* Walk lines: title, the single ```scene fence. */
     const char *p = buf, *open = NULL, *body = NULL, *close_ = NULL, *after = NULL;
     const char *title = NULL, *title_end = NULL, *after_title = buf;
@@ -152,27 +182,7 @@ static int parse_buf(sf_case *c, const char *path, char *buf, size_t n, char *er
     c->scene_line = open_line + 1;
     free(buf);
 
-    sf_scene_default(&c->scene);
-    rc = sf_scene_parse(&c->scene, c->scene_text, path, c->scene_line, err, errlen);
-    if (rc)
-        return rc;
-    if (!sf_scene_was_set(&c->scene, "check"))
-        return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: the scene block has no 'check = NAME'", path, c->scene_line);
-    if (!sf_check_find(c->scene.check))
-        return sf_seterr(err, errlen, SF_EPARSE, "%s: key 'check': unknown check '%s' (see 'slipfield verify --checks')",
-                    path, c->scene.check);
-    if (c->scene.power_alt[0]) {
-        sf_alt a;
-        char e2[128];
-        if (sf_alt_parse(c->scene.power_alt, &a, e2, sizeof e2))
-            return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: key 'power_alt': %s", path, c->scene_line, e2);
-        if (!sf_scene_was_set(&c->scene, "alpha"))
-            return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: 'power_alt' names the alternative of a statistical "
-                        "check: the scene must set 'alpha'", path, c->scene_line);
-    }
-    if (!sf_scene_was_set(&c->scene, "tolerance") && !sf_scene_was_set(&c->scene, "alpha"))
-        return sf_seterr(err, errlen, SF_EPARSE, "%s:%d: the scene states neither 'tolerance' nor 'alpha'", path, c->scene_line);
-    return SF_SUCCESS;
+    return parse_scene(c, path, err, errlen);
 }
 
 void sf_case_free(sf_case *c)
@@ -194,10 +204,61 @@ gsl_rng *sf_case_rng(const sf_case *c)
     return r;
 }
 
-/* ---- power alternatives ---- */
+/* ---- the case's keys: same format and parser as the scene's ---- */
 
-#include <math.h>
-#include <stddef.h>
+#define OFF(f) offsetof(sf_case_spec, f)
+#define STR(f) offsetof(sf_case_spec, f), sizeof(((sf_case_spec *)0)->f)
+#define INF HUGE_VAL
+
+static const sf_key spec_keys[] = {
+    { "check", SF_KEY_STRING, STR(check), 0, 0, 0, 0, "", "", NULL, "check to run (cases)" },
+    { "tolerance", SF_KEY_DOUBLE, OFF(tolerance), 0, 0, INF, 0, 0, "0", "", NULL, "tolerance of the check (its units are the check's)" },
+    { "alpha", SF_KEY_DOUBLE, OFF(alpha), 0, 0, 1, 1, 1, "1e-3", "1", NULL, "significance level of a statistical check" },
+    { "tier", SF_KEY_ENUM, OFF(tier), 0, 0, 0, 0, 0, "quick", "", SF_KEY_CHOICES("quick", "full", "paper"), "verification tier (paper: the paper's settings, run only with --tier paper)" },
+    { "vv", SF_KEY_ENUM, OFF(vv), 0, 0, 0, 0, 0, "code", "", SF_KEY_CHOICES("code", "solution", "validation"), "code verification, solution verification or validation" },
+    { "tags", SF_KEY_STRING, STR(tags), 0, 0, 0, 0, "", "", NULL, "comma-separated tags" },
+    { "pin_seed", SF_KEY_BOOL, OFF(pin_seed), 0, 0, 0, 0, 0, "false", "", NULL, "a deterministic check of one pinned realisation: verify --seed leaves this case's seed alone" },
+    { "power_alt", SF_KEY_STRING, STR(power_alt), 0, 0, 0, 0, "", "", NULL, "alternative a statistical case's power is measured against: KEY*FACTOR or KEY+DELTA (generator only)" },
+    { "sweep", SF_KEY_LIST, OFF(sweep), 0, -INF, INF, 0, 0, "", "", NULL, "list of values a check sweeps over" },
+    { "sweep_param", SF_KEY_STRING, STR(sweep_param), 0, 0, 0, 0, "", "", NULL, "parameter a sweep varies: a numeric key, l_over_R or mu_mean (fixed CV)" },
+    { "sweep2", SF_KEY_LIST, OFF(sweep2), 0, -INF, INF, 0, 0, "", "", NULL, "second list of values" },
+};
+#define NSPEC (sizeof spec_keys / sizeof spec_keys[0])
+_Static_assert(NSPEC <= SF_CASE_SPEC_MAX_KEYS, "case key table too large");
+
+sf_keytab sf_case_spec_keytab(const sf_case_spec *v)
+{
+    return (sf_keytab){ spec_keys, NSPEC, (void *)v, (unsigned char *)v->set };
+}
+
+void sf_case_spec_default(sf_case_spec *v)
+{
+    memset(v, 0, sizeof *v);
+    sf_keytab t = sf_case_spec_keytab(v);
+    sf_keys_default(&t);
+}
+
+int sf_case_scene_parse(sf_scene *s, sf_case_spec *v, const char *text, const char *file,
+                        int first_line, char *err, size_t errlen)
+{
+    sf_keytab t[2] = { sf_scene_keytab(s), sf_case_spec_keytab(v) };
+    return sf_keys_parse(t, 2, text, file, first_line, err, errlen);
+}
+
+const char *sf_case_enum_name(const char *key, int value)
+{
+    sf_keytab t = { spec_keys, NSPEC, NULL, NULL };
+    return sf_keys_enum_name(&t, key, value);
+}
+
+void sf_case_print_keys(FILE *out)
+{
+    sf_scene s = { 0 };   /* only its table is read */
+    sf_keytab t[2] = { sf_scene_keytab(&s), { spec_keys, NSPEC, NULL, NULL } };
+    sf_keys_print(t, 2, out);
+}
+
+/* ---- power alternatives ---- */
 
 static const struct { const char *name; size_t off; } alt_keys[] = {
     { "mu_std", offsetof(sf_scene, mu_std) },

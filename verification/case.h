@@ -10,7 +10,46 @@
 #define SF_CASE_H
 
 #include "scene.h"
+#include <stdio.h>
 #include <gsl/gsl_rng.h>
+
+enum { SF_TIER_QUICK = 0, SF_TIER_FULL = 1, SF_TIER_PAPER = 2 };
+enum { SF_VV_CODE = 0, SF_VV_SOLUTION = 1, SF_VV_VALIDATION = 2 };
+
+#define SF_CASE_SPEC_MAX_KEYS 16
+
+/* What a case checks and how: the keys of a case's scene block that the
+ * solver does not read.  They share the scene's file format and parser
+ * (scene.h: sf_keytab); their table is in case.c. */
+typedef struct {
+    char check[64];          /* the check a case runs (registry.h) */
+    double tolerance, alpha;
+    int tier, vv;            /* SF_TIER_*, SF_VV_* */
+    char tags[128];
+    /* the moderate alternative a statistical case's power is measured
+     * against (`slipfield verify --alternative scene`): KEY*FACTOR or
+     * KEY+DELTA, applied to the data generator's scene only */
+    char power_alt[48];
+    int pin_seed;            /* 1: a deterministic check of one pinned realisation
+                                (`verify --seed` leaves this case's seed alone) */
+    sf_list sweep, sweep2;
+    char sweep_param[32];    /* the scene key (or l_over_R) a sweep varies */
+    /* which keys the block set (index into the table) */
+    unsigned char set[SF_CASE_SPEC_MAX_KEYS];
+} sf_case_spec;
+
+/* The case keys' table bound to *v (const cast away as sf_scene_keytab). */
+sf_keytab sf_case_spec_keytab(const sf_case_spec *v);
+/* Defaults: no check, tolerance 0, alpha 1e-3, tier quick, vv code. */
+void sf_case_spec_default(sf_case_spec *v);
+/* Parse a case's scene block: the scene's keys into *s, the case's into
+ * *v (both should hold defaults); one parser, file:line messages. */
+int sf_case_scene_parse(sf_scene *s, sf_case_spec *v, const char *text, const char *file,
+                        int first_line, char *err, size_t errlen);
+/* The name of a case key's enum value ("tier", "vv"); "?" if unknown. */
+const char *sf_case_enum_name(const char *key, int value);
+/* `slipfield help scene`: the scene's keys, then the case's. */
+void sf_case_print_keys(FILE *out);
 
 typedef struct {
     char id[128];          /* family/name: [a-z0-9_-] only */
@@ -21,7 +60,8 @@ typedef struct {
     char *prose_after;     /* Markdown after it */
     char *scene_text;      /* the block's text, as written */
     int scene_line;        /* line number of the block's first line */
-    sf_scene scene;
+    sf_scene scene;        /* what the solver reads */
+    sf_case_spec spec;     /* what the check reads besides: check, tolerance, ... */
     /* Power runs (issue 13): the alternative the DATA GENERATOR draws
      * under ("" for the null: the normal run).  Set by `slipfield verify
      * --alternative`; the checks' generator helpers (checks/common.h:

@@ -127,8 +127,8 @@ static void write_header(FILE *f, const sf_case *c, const sf_outcome *o)
 {
     fprintf(f, "# %s\n\n", c->title);
     fprintf(f, "- Case: `%s` (`%s`)\n", c->id, c->path);
-    fprintf(f, "- Kind: %s; tier: %s; check: `%s`\n", vv_name(c->scene.vv),
-            sf_scene_enum_name("tier", c->scene.tier), c->scene.check);
+    fprintf(f, "- Kind: %s; tier: %s; check: `%s`\n", vv_name(c->spec.vv),
+            sf_case_enum_name("tier", c->spec.tier), c->spec.check);
     fprintf(f, "- Verdict: **%s**\n", sf_verdict_name(o->verdict));
     fprintf(f, "- Run time: %.3f s\n", o->seconds);
     write_rerun(f, c);

@@ -189,7 +189,7 @@ static json_t *case_json(const sf_outcome *o, const sf_result *r)
     json_object_set_new(j, "path", jstr(o->path));
     json_object_set_new(j, "check", jstr(o->check));
     json_object_set_new(j, "vv", json_string(vv_key(o->vv)));
-    json_object_set_new(j, "tier", json_string(sf_scene_enum_name("tier", o->tier)));
+    json_object_set_new(j, "tier", json_string(sf_case_enum_name("tier", o->tier)));
     json_object_set_new(j, "verdict", json_string(verdict_word(o->verdict)));
     json_object_set_new(j, "message", jstr(o->key));
     json_object_set_new(j, "seed", json_integer((json_int_t)o->seed));

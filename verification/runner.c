@@ -10,6 +10,7 @@
 #include "result.h"
 #include "results.h"
 #include "montecarlo.h"
+#include "options.h"
 #include "sf_error.h"
 
 #include <errno.h>
@@ -95,10 +96,10 @@ static void fill_outcome(sf_outcome *o, const sf_case *c)
     snprintf(o->family, sizeof o->family, "%s", c->family);
     snprintf(o->path, sizeof o->path, "%s", c->path);
     snprintf(o->title, sizeof o->title, "%s", c->title);
-    o->tier = c->scene.tier;
-    o->vv = c->scene.vv;
+    o->tier = c->spec.tier;
+    o->vv = c->spec.vv;
     o->seed = c->scene.seed;
-    snprintf(o->check, sizeof o->check, "%s", c->scene.check);
+    snprintf(o->check, sizeof o->check, "%s", c->spec.check);
     o->margin = NAN;
 }
 
@@ -113,7 +114,7 @@ static void run_child(const sf_case *c, const char *root, int fd, unsigned timeo
     alarm(timeout);
     sf_outcome o;
     fill_outcome(&o, c);
-    const sf_check_def *d = sf_check_find(c->scene.check);
+    const sf_check_def *d = sf_check_find(c->spec.check);
     sf_result *r = sf_result_alloc();
     if (c->alternative[0])
         sf_note(r, "**Power run:** the data generator draws under the alternative `%s` (the oracle does not): "
@@ -199,88 +200,145 @@ static void finish_job(const job *j, int status, const sf_case *cases, sf_outcom
     fflush(stdout);
 }
 
-int sf_verify_main(int argc, char **argv)
+/* ---- sf_verify_main in steps: options, cases, reports folder, runs,
+ * summaries, exit status ---- */
+
+/* What `slipfield verify` was asked to do. */
+typedef struct {
+    const char *root;
+    int tier;                  /* --tier: 0 quick, 1 full (quick and full), 2 paper */
+    int jobs, list, have_seed;
+    unsigned timeout;
+    unsigned long seed;
+    char seed_note[64];
+    const char *tags, *baseline_path, *alternative;
+    const char *only[16];
+    int nonly;
+} verify_opts;
+
+static int opt_checks(const char *cmd, const char *v, void *dst)
 {
-    const char *root = "reports";
-    int tier_full = 0, jobs = 1, list = 0, have_seed = 0;
-    unsigned timeout = 900;
-    unsigned long seed = 0;
-    char seed_note[64] = "fixed (per case)";
-    const char *tags = NULL, *only[16], *baseline_path = NULL, *alternative = NULL;
-    int nonly = 0;
-    int i = 1;
-    for (; i < argc && argv[i][0] == '-'; i++) {
-        const char *a = argv[i];
-        const char *v = i + 1 < argc ? argv[i + 1] : NULL;
-        if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
-            usage(stdout);
-            return SF_EXIT_OK;
-        } else if (!strcmp(a, "--checks")) {
-            const sf_check_def *d;
-            for (size_t k = 0; (d = sf_check_at(k)); k++)
-                printf("%-36s %s\n", d->name, d->summary);
-            return SF_EXIT_OK;
-        } else if (!strcmp(a, "--list")) {
-            list = 1;
-        } else if (!strcmp(a, "--baseline") && v) {
-            baseline_path = v;
-            i++;
-        } else if (!strcmp(a, "--tags") && v) {
-            tags = v;
-            i++;
-        } else if (!strcmp(a, "--only") && v) {
-            if (nonly == 16) { fprintf(stderr, "slipfield verify: at most 16 --only\n"); return SF_EXIT_USAGE; }
-            only[nonly++] = v;
-            i++;
-        } else if (!strcmp(a, "--tier") && v) {
-            if (!strcmp(v, "full")) tier_full = 1;
-            else if (!strcmp(v, "quick")) tier_full = 0;
-            else if (!strcmp(v, "paper")) tier_full = 2;
-            else { fprintf(stderr, "slipfield verify: --tier takes quick, full or paper, not '%s'\n", v); return SF_EXIT_USAGE; }
-            i++;
-        } else if (!strcmp(a, "--reports") && v) {
-            root = v;
-            i++;
-        } else if (!strcmp(a, "--jobs") && v) {
-            jobs = atoi(v);
-            if (jobs < 1 || jobs > 64) { fprintf(stderr, "slipfield verify: --jobs takes 1..64\n"); return SF_EXIT_USAGE; }
-            i++;
-        } else if (!strcmp(a, "--timeout") && v) {
-            timeout = (unsigned)atoi(v);
-            if (timeout < 1) { fprintf(stderr, "slipfield verify: --timeout takes seconds >= 1\n"); return SF_EXIT_USAGE; }
-            i++;
-        } else if (!strcmp(a, "--alternative") && v) {
-            sf_alt alt;
-            char e2[160];
-            if (strcmp(v, "scene") && sf_alt_parse(v, &alt, e2, sizeof e2)) {
-                fprintf(stderr, "slipfield verify: --alternative: %s\n", e2);
-                return 2;
-            }
-            alternative = v;
-            i++;
-        } else if (!strcmp(a, "--seed") && v) {
-            have_seed = 1;
-            if (!strcmp(v, "random")) {
-                seed = (unsigned long)time(NULL) ^ ((unsigned long)getpid() << 16);
-            } else {
-                char *end;
-                seed = strtoul(v, &end, 10);
-                if (*end || !*v) { fprintf(stderr, "slipfield verify: --seed takes a number or 'random'\n"); return SF_EXIT_USAGE; }
-            }
-            snprintf(seed_note, sizeof seed_note, "override %lu", seed);
-            i++;
-        } else {
-            fprintf(stderr, "slipfield verify: unknown option or missing value: %s\n", a);
-            usage(stderr);
-            return SF_EXIT_USAGE;
-        }
-    }
-    size_t n = (size_t)(argc - i);
-    if (n == 0) {
-        fprintf(stderr, "slipfield verify: no case files given\n");
-        usage(stderr);
+    (void)cmd, (void)v, (void)dst;
+    const sf_check_def *d;
+    for (size_t k = 0; (d = sf_check_at(k)); k++)
+        printf("%-36s %s\n", d->name, d->summary);
+    return SF_EXIT_OK;
+}
+
+static int opt_only(const char *cmd, const char *v, void *dst)
+{
+    verify_opts *o = dst;
+    if (o->nonly == 16) { fprintf(stderr, "slipfield %s: at most 16 --only\n", cmd); return SF_EXIT_USAGE; }
+    o->only[o->nonly++] = v;
+    return SF_EXIT_OK;
+}
+
+static int opt_tier(const char *cmd, const char *v, void *dst)
+{
+    int *tier = dst;
+    if (!strcmp(v, "full")) *tier = 1;
+    else if (!strcmp(v, "quick")) *tier = 0;
+    else if (!strcmp(v, "paper")) *tier = 2;
+    else { fprintf(stderr, "slipfield %s: --tier takes quick, full or paper, not '%s'\n", cmd, v); return SF_EXIT_USAGE; }
+    return SF_EXIT_OK;
+}
+
+static int opt_jobs(const char *cmd, const char *v, void *dst)
+{
+    int *jobs = dst;
+    *jobs = atoi(v);
+    if (*jobs < 1 || *jobs > 64) { fprintf(stderr, "slipfield %s: --jobs takes 1..64\n", cmd); return SF_EXIT_USAGE; }
+    return SF_EXIT_OK;
+}
+
+static int opt_timeout(const char *cmd, const char *v, void *dst)
+{
+    unsigned *timeout = dst;
+    *timeout = (unsigned)atoi(v);
+    if (*timeout < 1) { fprintf(stderr, "slipfield %s: --timeout takes seconds >= 1\n", cmd); return SF_EXIT_USAGE; }
+    return SF_EXIT_OK;
+}
+
+static int opt_alternative(const char *cmd, const char *v, void *dst)
+{
+    sf_alt alt;
+    char e2[160];
+    if (strcmp(v, "scene") && sf_alt_parse(v, &alt, e2, sizeof e2)) {
+        fprintf(stderr, "slipfield %s: --alternative: %s\n", cmd, e2);
         return SF_EXIT_USAGE;
     }
+    *(const char **)dst = v;
+    return SF_EXIT_OK;
+}
+
+static int opt_seed(const char *cmd, const char *v, void *dst)
+{
+    verify_opts *o = dst;
+    o->have_seed = 1;
+    if (!strcmp(v, "random")) {
+        o->seed = (unsigned long)time(NULL) ^ ((unsigned long)getpid() << 16);
+    } else {
+        char *end;
+        o->seed = strtoul(v, &end, 10);
+        if (*end || !*v) { fprintf(stderr, "slipfield %s: --seed takes a number or 'random'\n", cmd); return SF_EXIT_USAGE; }
+    }
+    snprintf(o->seed_note, sizeof o->seed_note, "override %lu", o->seed);
+    return SF_EXIT_OK;
+}
+
+/* Options, then the case files (files has room for argc entries). */
+static int parse_options(int argc, char **argv, verify_opts *o, const char **files, size_t *n)
+{
+    *o = (verify_opts){ .root = "reports", .jobs = 1, .timeout = 900, .seed_note = "fixed (per case)" };
+    const sf_opt opts[] = {
+        { "--checks", SF_OPT_ACTION, NULL, 0, 0, opt_checks },
+        { "--list", SF_OPT_FLAG, &o->list, 0, 0, NULL },
+        { "--baseline", SF_OPT_STRING, &o->baseline_path, 0, 0, NULL },
+        { "--tags", SF_OPT_STRING, &o->tags, 0, 0, NULL },
+        { "--only", SF_OPT_FN, o, 0, 0, opt_only },
+        { "--tier", SF_OPT_FN, &o->tier, 0, 0, opt_tier },
+        { "--reports", SF_OPT_STRING, &o->root, 0, 0, NULL },
+        { "--jobs", SF_OPT_FN, &o->jobs, 0, 0, opt_jobs },
+        { "--timeout", SF_OPT_FN, &o->timeout, 0, 0, opt_timeout },
+        { "--alternative", SF_OPT_FN, &o->alternative, 0, 0, opt_alternative },
+        { "--seed", SF_OPT_FN, o, 0, 0, opt_seed },
+    };
+    sf_optspec sp = { "verify", opts, sizeof opts / sizeof opts[0], usage, 1, 0, NULL, "no case files given" };
+    return sf_opt_parse(&sp, argc, argv, files, n);
+}
+
+static void free_cases(sf_case *cases, size_t n)
+{
+    for (size_t k = 0; k < n; k++) sf_case_free(&cases[k]);
+    free(cases);
+}
+
+/* Is a read case selected by --tags and --only? */
+static int wanted(const verify_opts *o, const sf_case *c)
+{
+    int want = !o->tags || tags_match(c->spec.tags, o->tags);
+    if (o->nonly) {
+        int any = 0;
+        for (int q = 0; q < o->nonly; q++)
+            any |= strstr(c->id, o->only[q]) != NULL;
+        want &= any;
+    }
+    return want;
+}
+
+/* paper-tier cases (the paper's T = 100 s, 100 realisations: ~30 min)
+   run only with --tier paper, which runs nothing else */
+static int other_tier(const verify_opts *o, const sf_case *c)
+{
+    int tier = c->spec.tier;
+    return o->tier == 2 ? tier != SF_TIER_PAPER : (tier == SF_TIER_PAPER || (tier == SF_TIER_FULL && !o->tier));
+}
+
+/* Read the case files, keep the selected ones (seed override and power
+ * alternative applied), sorted by id.  Returns an exit status. */
+static int select_cases(const verify_opts *o, const char **files, size_t n, sf_case **out, size_t *nkept,
+                        size_t *nskipped)
+{
     sf_case *cases = calloc(n, sizeof *cases);
     if (!cases)
         return SF_EXIT_INTERNAL;
@@ -288,43 +346,33 @@ int sf_verify_main(int argc, char **argv)
     int bad = 0;
     for (size_t k = 0; k < n; k++) {
         char err[512];
-        if (sf_case_read(&cases[kept], argv[i + (int)k], err, sizeof err) != SF_SUCCESS) {
+        sf_case *c = &cases[kept];
+        if (sf_case_read(c, files[k], err, sizeof err) != SF_SUCCESS) {
             fprintf(stderr, "slipfield verify: %s\n", err);
-            sf_case_free(&cases[kept]);
+            sf_case_free(c);
             bad = 1;
             continue;
         }
-        int want = !tags || tags_match(cases[kept].scene.tags, tags);
-        if (nonly) {
-            int any = 0;
-            for (int q = 0; q < nonly; q++)
-                any |= strstr(cases[kept].id, only[q]) != NULL;
-            want &= any;
-        }
-        if (!want) {
-            sf_case_free(&cases[kept]);
+        if (!wanted(o, c)) {
+            sf_case_free(c);
             continue;
         }
-        /* paper-tier cases (the paper's T = 100 s, 100 realisations: ~30 min)
-           run only with --tier paper, which runs nothing else */
-        int tier = cases[kept].scene.tier;
-        if (tier_full == 2 ? tier != SF_TIER_PAPER : (tier == SF_TIER_PAPER || (tier == SF_TIER_FULL && !tier_full))) {
-            sf_case_free(&cases[kept]);
+        if (other_tier(o, c)) {
+            sf_case_free(c);
             skipped++;
             continue;
         }
         /* a pinned case checks one realisation deterministically: a fresh
            seed would change the problem, not draw a fresh sample of a test */
-        if (have_seed && !cases[kept].scene.pin_seed)
-            cases[kept].scene.seed = mix_seed(seed, cases[kept].id);
-        if (alternative)
-            snprintf(cases[kept].alternative, sizeof cases[kept].alternative, "%s",
-                     strcmp(alternative, "scene") ? alternative : cases[kept].scene.power_alt);
+        if (o->have_seed && !c->spec.pin_seed)
+            c->scene.seed = mix_seed(o->seed, c->id);
+        if (o->alternative)
+            snprintf(c->alternative, sizeof c->alternative, "%s",
+                     strcmp(o->alternative, "scene") ? o->alternative : c->spec.power_alt);
         kept++;
     }
     if (bad) {
-        for (size_t k = 0; k < kept; k++) sf_case_free(&cases[k]);
-        free(cases);
+        free_cases(cases, kept);
         return SF_EXIT_USAGE;
     }
     qsort(cases, kept, sizeof *cases, cmp_case);
@@ -333,28 +381,25 @@ int sf_verify_main(int argc, char **argv)
             fprintf(stderr, "slipfield verify: case %s given twice\n", cases[k].id);
             return SF_EXIT_USAGE;
         }
-    if (list) {
-        for (size_t k = 0; k < kept; k++)
-        {   /* sf_scene_enum_name may share its buffer between calls: one per printf */
-            printf("%-48s tier=%-5s ", cases[k].id, sf_scene_enum_name("tier", cases[k].scene.tier));
-            printf("vv=%-10s check=%s tags=%s\n", sf_scene_enum_name("vv", cases[k].scene.vv), cases[k].scene.check,
-                   cases[k].scene.tags);
-        }
-        for (size_t k = 0; k < kept; k++) sf_case_free(&cases[k]);
-        free(cases);
-        return SF_EXIT_OK;
+    *out = cases;
+    *nkept = kept;
+    *nskipped = skipped;
+    return SF_EXIT_OK;
+}
+
+static void list_cases(const sf_case *cases, size_t n)
+{
+    for (size_t k = 0; k < n; k++) {
+        printf("%-48s tier=%-5s ", cases[k].id, sf_case_enum_name("tier", cases[k].spec.tier));
+        printf("vv=%-10s check=%s tags=%s\n", sf_case_enum_name("vv", cases[k].spec.vv), cases[k].spec.check,
+               cases[k].spec.tags);
     }
-    /* the baseline is read now: this run may be about to overwrite it */
-    sf_baseline *baseline = NULL;
-    if (baseline_path) {
-        char err[700];
-        if (sf_baseline_load(baseline_path, &baseline, err, sizeof err) != SF_SUCCESS) {
-            fprintf(stderr, "slipfield verify: %s\n", err);
-            for (size_t k = 0; k < kept; k++) sf_case_free(&cases[k]);
-            free(cases);
-            return SF_EXIT_USAGE;
-        }
-    }
+}
+
+/* Create the report folder and remove what this run will rewrite.
+ * Returns an exit status. */
+static int clear_reports(const char *root, const sf_case *cases, size_t n)
+{
     if (sf_mkdirs(root) != 0) {
         fprintf(stderr, "slipfield verify: cannot create %s: %s\n", root, strerror(errno));
         return SF_EXIT_INTERNAL;
@@ -370,7 +415,7 @@ int sf_verify_main(int argc, char **argv)
     }
     /* nor a selected case's old report: each is rewritten when (and only
      * when) this run reaches its verdict */
-    for (size_t k = 0; k < kept; k++) {
+    for (size_t k = 0; k < n; k++) {
         static const char *files[] = { "report.md", "report.html", "result.json" };
         for (int f = 0; f < 3; f++) {
             char p[1100];
@@ -378,15 +423,54 @@ int sf_verify_main(int argc, char **argv)
             unlink(p);
         }
     }
-    if (skipped)
-        printf("(%zu cases of other tiers skipped; run with TIER=full or TIER=paper)\n", skipped);
+    return SF_EXIT_OK;
+}
 
-    sf_outcome *out = calloc(kept ? kept : 1, sizeof *out);
-    job *run = calloc((size_t)jobs, sizeof *run);
-    if (!out || !run)
+/* Fork case `next` into a free slot of run[].  Returns an exit status. */
+static int spawn_case(const sf_case *cases, size_t next, const verify_opts *o, job *run, sf_outcome *out)
+{
+    int fd[2];
+    if (pipe(fd) != 0) {
+        perror("slipfield verify: pipe");
         return SF_EXIT_INTERNAL;
-    fflush(stdout);
-    double t0 = now();
+    }
+    pid_t pid = fork();
+    if (pid < 0) {
+        perror("slipfield verify: fork");
+        return SF_EXIT_INTERNAL;
+    }
+    if (pid == 0) {
+        close(fd[0]);
+        /* the parent's bookkeeping is not the child's: free it so
+           a leak check of the case process sees only its own */
+        free(run);
+        free(out);
+        run_child(&cases[next], o->root, fd[1], o->timeout);
+    }
+    close(fd[1]);
+    for (int s = 0; s < o->jobs; s++)
+        if (run[s].pid == 0) {
+            run[s] = (job){ pid, fd[0], next, now() };
+            break;
+        }
+    return SF_EXIT_OK;
+}
+
+/* CPU seconds of the children reaped since *prev (then *prev = now). */
+static double children_cpu(struct rusage *prev)
+{
+    struct rusage ru;
+    getrusage(RUSAGE_CHILDREN, &ru);
+    double cpu = (double)(ru.ru_utime.tv_sec - prev->ru_utime.tv_sec + ru.ru_stime.tv_sec - prev->ru_stime.tv_sec) +
+                 1e-6 * (double)(ru.ru_utime.tv_usec - prev->ru_utime.tv_usec + ru.ru_stime.tv_usec - prev->ru_stime.tv_usec);
+    *prev = ru;
+    return cpu;
+}
+
+/* Run the cases, o->jobs at a time, each in its own process; out[k] gets
+ * case k's outcome.  Returns an exit status. */
+static int run_cases(const sf_case *cases, size_t kept, const verify_opts *o, sf_outcome *out, job *run)
+{
     size_t next = 0, active = 0;
     /* CPU time of each case process (and of the gnuplot it ran): the
      * growth of RUSAGE_CHILDREN across the wait() that reaped it.  Unlike
@@ -395,93 +479,132 @@ int sf_verify_main(int argc, char **argv)
     struct rusage ru_prev;
     getrusage(RUSAGE_CHILDREN, &ru_prev);
     while (next < kept || active > 0) {
-        while (next < kept && active < (size_t)jobs) {
-            int fd[2];
-            if (pipe(fd) != 0) {
-                perror("slipfield verify: pipe");
+        for (; next < kept && active < (size_t)o->jobs; next++, active++)
+            if (spawn_case(cases, next, o, run, out))
                 return SF_EXIT_INTERNAL;
-            }
-            pid_t pid = fork();
-            if (pid < 0) {
-                perror("slipfield verify: fork");
-                return SF_EXIT_INTERNAL;
-            }
-            if (pid == 0) {
-                close(fd[0]);
-                /* the parent's bookkeeping is not the child's: free it so
-                   a leak check of the case process sees only its own */
-                free(run);
-                free(out);
-                run_child(&cases[next], root, fd[1], timeout);
-            }
-            close(fd[1]);
-            for (int s = 0; s < jobs; s++)
-                if (run[s].pid == 0) {
-                    run[s] = (job){ pid, fd[0], next, now() };
-                    break;
-                }
-            next++;
-            active++;
-        }
         int status;
         pid_t pid = wait(&status);
         if (pid < 0) {
             if (errno == EINTR) continue;
             break;
         }
-        struct rusage ru;
-        getrusage(RUSAGE_CHILDREN, &ru);
-        double cpu = (double)(ru.ru_utime.tv_sec - ru_prev.ru_utime.tv_sec + ru.ru_stime.tv_sec - ru_prev.ru_stime.tv_sec) +
-                     1e-6 * (double)(ru.ru_utime.tv_usec - ru_prev.ru_utime.tv_usec + ru.ru_stime.tv_usec - ru_prev.ru_stime.tv_usec);
-        ru_prev = ru;
-        for (int s = 0; s < jobs; s++)
+        double cpu = children_cpu(&ru_prev);
+        for (int s = 0; s < o->jobs; s++)
             if (run[s].pid == pid) {
-                finish_job(&run[s], status, cases, out, root);
+                finish_job(&run[s], status, cases, out, o->root);
                 out[run[s].idx].cpu_seconds = cpu;
                 run[s].pid = 0;
                 active--;
                 break;
             }
     }
+    return SF_EXIT_OK;
+}
+
+static void print_drift(const sf_drift_summary *drift, const char *baseline_path, const char *root)
+{
+    if (sf_drift_any(drift))
+        printf("drift: %zu verdict change%s (%zu to FAIL or ERROR), %zu metric%s moved, %zu run time%s grew, "
+               "%zu case%s added, %zu removed: %s/drift.html\n", drift->verdicts, drift->verdicts == 1 ? "" : "s",
+               drift->to_fail, drift->moved, drift->moved == 1 ? "" : "s", drift->slower,
+               drift->slower == 1 ? "" : "s", drift->added, drift->added == 1 ? "" : "s", drift->removed, root);
+    else
+        printf("drift: none against %s (%s/drift.html)\n", baseline_path, root);
+}
+
+/* results.json, drift page, index (md, html), JUnit, paper page; the
+ * baseline is freed.  Returns nonzero when one could not be written. */
+static int write_summaries(sf_run_meta *meta, const verify_opts *o, sf_outcome *out, size_t kept,
+                           sf_baseline *baseline)
+{
+    char err[512];
+    int rc = sf_results_write(meta, out, kept, o->baseline_path, err, sizeof err);
+    sf_drift_summary drift;
+    if (!rc && baseline) {
+        rc = sf_drift_write(baseline, o->root, &drift, err, sizeof err);
+        if (!rc)
+            meta->drift = &drift;
+    }
+    sf_baseline_free(baseline);
+    if (rc)
+        fprintf(stderr, "slipfield verify: %s\n", err);
+    int rc2 = sf_report_index(meta, out, kept, err, sizeof err);
+    if (!rc2 && (rc2 = sf_paper_report(meta, out, kept, err, sizeof err)) == 0 && o->tier == 2)
+        printf("the paper's claims: %s/paper.md, %s/paper.html\n", o->root, o->root);
+    if (rc2)
+        fprintf(stderr, "slipfield verify: %s\n", err);
+    const char *root = o->root;
+    printf("reports: %s/index.html, %s/index.md, %s/junit.xml, %s/results.json\n", root, root, root, root);
+    if (meta->drift)
+        print_drift(&drift, o->baseline_path, root);
+    meta->drift = NULL;   /* it pointed here */
+    return rc ? rc : rc2;
+}
+
+/* Run the selected cases and write every summary.  Returns the exit status. */
+static int run_and_report(const verify_opts *o, const sf_case *cases, size_t kept, size_t skipped,
+                          sf_baseline *baseline)
+{
+    if (skipped)
+        printf("(%zu cases of other tiers skipped; run with TIER=full or TIER=paper)\n", skipped);
+    sf_outcome *out = calloc(kept ? kept : 1, sizeof *out);
+    job *run = calloc((size_t)o->jobs, sizeof *run);
+    if (!out || !run)
+        return SF_EXIT_INTERNAL;
+    fflush(stdout);
+    double t0 = now();
+    if (run_cases(cases, kept, o, out, run))
+        return SF_EXIT_INTERNAL;
     size_t np = 0, nf = 0;
     for (size_t k = 0; k < kept; k++) {
         if (out[k].verdict == SF_VERDICT_PASS) np++;
         else nf++;
     }
-    sf_run_meta meta = { root, seed_note, tier_full == 2 ? "paper" : tier_full ? "full" : "quick", now() - t0, skipped, NULL };
-    char err[512];
-    int rc = sf_results_write(&meta, out, kept, baseline_path, err, sizeof err);
-    sf_drift_summary drift;
-    if (!rc && baseline) {
-        rc = sf_drift_write(baseline, root, &drift, err, sizeof err);
-        if (!rc)
-            meta.drift = &drift;
-    }
-    sf_baseline_free(baseline);
-    if (rc)
-        fprintf(stderr, "slipfield verify: %s\n", err);
-    int rc2 = sf_report_index(&meta, out, kept, err, sizeof err);
-    if (!rc2 && (rc2 = sf_paper_report(&meta, out, kept, err, sizeof err)) == 0 && tier_full == 2)
-        printf("the paper's claims: %s/paper.md, %s/paper.html\n", root, root);
-    if (rc2)
-        fprintf(stderr, "slipfield verify: %s\n", err);
-    rc = rc ? rc : rc2;
-    printf("reports: %s/index.html, %s/index.md, %s/junit.xml, %s/results.json\n", root, root, root, root);
-    if (meta.drift) {
-        if (sf_drift_any(&drift))
-            printf("drift: %zu verdict change%s (%zu to FAIL or ERROR), %zu metric%s moved, %zu run time%s grew, "
-                   "%zu case%s added, %zu removed: %s/drift.html\n", drift.verdicts, drift.verdicts == 1 ? "" : "s",
-                   drift.to_fail, drift.moved, drift.moved == 1 ? "" : "s", drift.slower,
-                   drift.slower == 1 ? "" : "s", drift.added, drift.added == 1 ? "" : "s", drift.removed, root);
-        else
-            printf("drift: none against %s (%s/drift.html)\n", baseline_path, root);
-    }
+    sf_run_meta meta = { o->root, o->seed_note, o->tier == 2 ? "paper" : o->tier ? "full" : "quick", now() - t0,
+                         skipped, NULL };
+    int rc = write_summaries(&meta, o, out, kept, baseline);
     printf("%zu passed, %zu failed\n", np, nf);
-    for (size_t k = 0; k < kept; k++) sf_case_free(&cases[k]);
-    free(cases);
     free(out);
     free(run);
     if (rc)
         return SF_EXIT_INTERNAL;
     return nf ? SF_EXIT_CHECK : SF_EXIT_OK;
+}
+
+int sf_verify_main(int argc, char **argv)
+{
+    verify_opts o;
+    const char **files = malloc((size_t)(argc > 0 ? argc : 1) * sizeof *files);
+    if (!files)
+        return SF_EXIT_INTERNAL;
+    size_t n, kept = 0, skipped = 0;
+    sf_case *cases = NULL;
+    int rc = parse_options(argc, argv, &o, files, &n);
+    if (!rc)
+        rc = select_cases(&o, files, n, &cases, &kept, &skipped);
+    free(files);
+    if (rc)
+        return rc == SF_OPT_DONE ? SF_EXIT_OK : rc;
+    if (o.list) {
+        list_cases(cases, kept);
+        free_cases(cases, kept);
+        return SF_EXIT_OK;
+    }
+    /* the baseline is read now: this run may be about to overwrite it */
+    sf_baseline *baseline = NULL;
+    if (o.baseline_path) {
+        char err[700];
+        if (sf_baseline_load(o.baseline_path, &baseline, err, sizeof err) != SF_SUCCESS) {
+            fprintf(stderr, "slipfield verify: %s\n", err);
+            free_cases(cases, kept);
+            return SF_EXIT_USAGE;
+        }
+    }
+    rc = clear_reports(o.root, cases, kept);
+    if (!rc)
+        rc = run_and_report(&o, cases, kept, skipped, baseline);   /* frees the baseline */
+    else
+        sf_baseline_free(baseline);
+    free_cases(cases, kept);
+    return rc;
 }

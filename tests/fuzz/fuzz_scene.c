@@ -1,6 +1,8 @@
-/* libFuzzer target: the scene parser on arbitrary bytes.  It must return
- * SF_SUCCESS or SF_EPARSE with a message naming the place, never crash,
- * leak or read out of bounds (ASan + UBSan). */
+/* libFuzzer target: the scene parser on arbitrary bytes, with the
+ * solver's key table and the case's (a case's scene block: every key type).
+ * It must return SF_SUCCESS or SF_EPARSE with a message naming the place,
+ * never crash, leak or read out of bounds (ASan + UBSan). */
+#include "case.h"
 #include "scene.h"
 #include "sf_error.h"
 
@@ -16,9 +18,11 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     memcpy(text, data, size);
     text[size] = '\0';
     sf_scene s;
+    sf_case_spec v;
     sf_scene_default(&s);
+    sf_case_spec_default(&v);
     char err[256];
-    int rc = sf_scene_parse(&s, text, "fuzz.scene", 1, err, sizeof err);
+    int rc = sf_case_scene_parse(&s, &v, text, "fuzz.scene", 1, err, sizeof err);
     if (rc != SF_SUCCESS && rc != SF_EPARSE)
         abort();
     if (rc == SF_EPARSE && strncmp(err, "fuzz.scene:", 11) != 0)

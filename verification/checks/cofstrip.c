@@ -334,10 +334,10 @@ static int chk_cof_strip(const sf_case *c, sf_result *r)
     snprintf(t, sizeof t, "COF nodes <= 0, not finite, or failed draws (of %zu draws of %zu nodes)", draws, vm * vn);
     sf_check_le(r, t, (double)bad, 0);
     sf_check_le(r, "max |sf_cof_eval - bilinear formula on the view's nodes| / its round-off bound [-]", id_err,
-                s->tolerance);
+                c->spec.tolerance);
 
     /* statistics: six tests share alpha (Bonferroni) */
-    double al = s->alpha / 6, stat, trp, zm, zv, zq_, zr, D;
+    double al = c->spec.alpha / 6, stat, trp, zm, zv, zq_, zr, D;
     gsl_matrix_scale(S, 1.0 / (double)N);
     double p_lrt = check_lrt_identity(S, N, &stat, &trp);
     snprintf(t, sizeof t, "LRT: Gaussianised %zu x %zu node patch (stride l/2) has Eq. 2 covariance, chi2(%zu)", a, b,

@@ -67,10 +67,10 @@ static int chk_pure_translation(const sf_case *c, sf_result *r)
     double q[3];
     sf_contact_wrench(ct, 0, 0, -s->v_b, 0, 0, s->mu_k_ratio, q);
     sf_check_rel(r, "Fx for the disc slower than the belt (u = -v_b), kinetic: Eq. 4 gives +mu_k m g [N]",
-                 q[0], s->mu_k_ratio * mu * N, s->tolerance);
-    sf_check_le(r, "max | |F| - mu N | / (mu N) over 16 slip directions", worst_mag, s->tolerance);
-    sf_check_le(r, "max |T| / (mu N R) over 16 slip directions", worst_T, s->tolerance);
-    sf_check_le(r, "max |F . u_hat + |F|| / (mu N): force opposes slip", worst_dir, s->tolerance);
+                 q[0], s->mu_k_ratio * mu * N, c->spec.tolerance);
+    sf_check_le(r, "max | |F| - mu N | / (mu N) over 16 slip directions", worst_mag, c->spec.tolerance);
+    sf_check_le(r, "max |T| / (mu N R) over 16 slip directions", worst_T, c->spec.tolerance);
+    sf_check_le(r, "max |F . u_hat + |F|| / (mu N): force opposes slip", worst_dir, c->spec.tolerance);
     sf_note(r, "%s layout, %zu cells (%zu quadrature points).", layout_name(s), s->cells, sf_contact_ncells(ct));
     sf_plot *p = sf_result_plot(r, "force_magnitude", "Friction force in pure translation vs slip direction",
                                 "slip direction [rad]", "|F| / (mu N) [-]");
@@ -93,9 +93,9 @@ static int chk_pure_spin(const sf_case *c, sf_result *r)
     double N = s->m * s->g, mu = s->mu_mean, q[3], q2[3];
     sf_contact_wrench(ct, 0, 0, 0, 0, 1.5, 1.0, q);
     sf_contact_wrench(ct, 0, 0, 0, 0, -0.3, 1.0, q2);
-    sf_check_rel(r, "T for spin w = +1.5 rad/s: -(2/3) mu N R [N m]", q[2], -2.0 / 3.0 * mu * N * s->R, s->tolerance);
-    sf_check_rel(r, "T for spin w = -0.3 rad/s: +(2/3) mu N R [N m]", q2[2], 2.0 / 3.0 * mu * N * s->R, s->tolerance);
-    sf_check_le(r, "|F| / (mu N) in pure spin", hypot(q[0], q[1]) / (mu * N), s->tolerance);
+    sf_check_rel(r, "T for spin w = +1.5 rad/s: -(2/3) mu N R [N m]", q[2], -2.0 / 3.0 * mu * N * s->R, c->spec.tolerance);
+    sf_check_rel(r, "T for spin w = -0.3 rad/s: +(2/3) mu N R [N m]", q2[2], 2.0 / 3.0 * mu * N * s->R, c->spec.tolerance);
+    sf_check_le(r, "|F| / (mu N) in pure spin", hypot(q[0], q[1]) / (mu * N), c->spec.tolerance);
     sf_note(r, "%s layout, %zu cells.", layout_name(s), s->cells);
     double w[2] = { -0.3, 1.5 }, t[2] = { q2[2] / (mu * N * s->R), q[2] / (mu * N * s->R) };
     double ex[2] = { 2.0 / 3.0, -2.0 / 3.0 };
@@ -183,15 +183,14 @@ static void plot_ft(sf_result *r, const char *stem, const char *title, size_t K,
 /* Closed forms (elliptic integrals) vs the adaptive integral. */
 static int chk_closed_form_oracle(const sf_case *c, sf_result *r)
 {
-    const sf_scene *s = &c->scene;
-    size_t K = s->sweep.n;
+    size_t K = c->spec.sweep.n;
     if (!K)
         return SF_EINVAL;
     double *e = check_alloc(K * sizeof *e), *f1 = check_alloc(K * sizeof *f1), *t1 = check_alloc(K * sizeof *t1);
     double *f2 = check_alloc(K * sizeof *f2), *t2 = check_alloc(K * sizeof *t2);
     double worst = 0;
     for (size_t k = 0; k < K; k++) {
-        e[k] = s->sweep.v[k];
+        e[k] = c->spec.sweep.v[k];
         sf_contensou(e[k], &f1[k], &t1[k]);
         cf_oracle(e[k], &f2[k], &t2[k]);
         double d = sf_max(fabs(f1[k] - f2[k]), fabs(t1[k] - t2[k]));
@@ -199,7 +198,7 @@ static int chk_closed_form_oracle(const sf_case *c, sf_result *r)
         sf_note(r, "eps = %-8g f: closed %.15f adaptive %.15f | t: closed %.15f adaptive %.15f", e[k],
                 f1[k], f2[k], t1[k], t2[k]);
     }
-    sf_check_le(r, "max |closed form - adaptive 2-D integral| over the eps sweep (f and t)", worst, s->tolerance);
+    sf_check_le(r, "max |closed form - adaptive 2-D integral| over the eps sweep (f and t)", worst, c->spec.tolerance);
     double f0, t0, fi, ti, f1e, t1e;
     sf_contensou(0, &f0, &t0);
     sf_contensou(1, &f1e, &t1e);
@@ -220,7 +219,7 @@ static int chk_closed_form_oracle(const sf_case *c, sf_result *r)
 static int chk_contensou_sweep(const sf_case *c, sf_result *r)
 {
     const sf_scene *s = &c->scene;
-    size_t K = s->sweep.n;
+    size_t K = c->spec.sweep.n;
     if (!K)
         return SF_EINVAL;
     sf_cof *cof;
@@ -232,7 +231,7 @@ static int chk_contensou_sweep(const sf_case *c, sf_result *r)
     double *fe = check_alloc(K * sizeof *fe), *te = check_alloc(K * sizeof *te);
     double worst = 0, worst_e = 0, worst_dir = 0;
     for (size_t k = 0; k < K; k++) {
-        e[k] = s->sweep.v[k];
+        e[k] = c->spec.sweep.v[k];
         double U = e[k] * w * s->R, q[3];
         /* slip at 30 degrees to exercise both components */
         double ux = U * cos(M_PI / 6), uy = U * sin(M_PI / 6);
@@ -250,8 +249,8 @@ static int chk_contensou_sweep(const sf_case *c, sf_result *r)
     }
     char t[160];
     snprintf(t, sizeof t, "max |quadrature - closed form| in f and t (worst at eps = %g)", worst_e);
-    sf_check_le(r, t, worst, s->tolerance);
-    sf_check_le(r, "force antiparallel to the centre slip, torque opposing the spin", worst_dir, s->tolerance);
+    sf_check_le(r, t, worst, c->spec.tolerance);
+    sf_check_le(r, "force antiparallel to the centre slip, torque opposing the spin", worst_dir, c->spec.tolerance);
     sf_note(r, "%s layout, %zu cells; spin w = %g rad/s, slip at 30 degrees to x.", layout_name(s), s->cells, w);
     plot_ft(r, "contensou_quadrature", "Combined sliding and spin: quadrature vs closed form", K, e, fe, te,
             "quadrature", fq, tq);
@@ -267,7 +266,7 @@ static int chk_contensou_sweep(const sf_case *c, sf_result *r)
 static int chk_convergence(const sf_case *c, sf_result *r)
 {
     const sf_scene *s = &c->scene;
-    size_t K = s->sweep.n;
+    size_t K = c->spec.sweep.n;
     if (K < 3)
         return SF_EINVAL;
     double eps2[2] = { 0.5, 2.0 }, order[2];
@@ -278,10 +277,10 @@ static int chk_convergence(const sf_case *c, sf_result *r)
         err[a] = check_alloc(K * sizeof(double));
     for (size_t k = 0; k < K; k++) {
         sf_cof *cof;
-        sf_contact *ct = uniform_contact(s, (size_t)s->sweep.v[k], &cof);
+        sf_contact *ct = uniform_contact(s, (size_t)c->spec.sweep.v[k], &cof);
         if (!ct)
             return SF_EINVAL;
-        x[k] = s->sweep.v[k];
+        x[k] = c->spec.sweep.v[k];
         pts[k] = (double)sf_contact_ncells(ct);
         for (int a = 0; a < 2; a++) {
             double fe, te, q[3];
@@ -328,7 +327,7 @@ static int chk_convergence(const sf_case *c, sf_result *r)
                              : "pole inside: error at the finest resolution (round-off floor)",
                         err[a][K - 1], floor_err);
         else
-            sf_check_ge(r, name[a], order[a], s->tolerance);
+            sf_check_ge(r, name[a], order[a], c->spec.tolerance);
     }
     sf_check_le(r, "error at the finest resolution, pole outside", err[1][K - 1], 1e-3);
     sf_plot *p = sf_result_plot(r, "convergence", "Quadrature error vs resolution (uniform COF)",
@@ -339,7 +338,7 @@ static int chk_convergence(const sf_case *c, sf_result *r)
     sf_plot_series(p, "pole outside (eps = 2)", SF_STYLE_LINESPOINTS, K, x, err[1]);
     double *ref = check_alloc(K * sizeof *ref);
     for (size_t k = 0; k < K; k++)
-        ref[k] = err[0][0] * pow(x[k] / x[0], -s->tolerance);
+        ref[k] = err[0][0] * pow(x[k] / x[0], -c->spec.tolerance);
     sf_plot_series(p, "slope of the accepted order", SF_STYLE_LINES, K, x, ref);
     free(ref); free(x); free(lx); free(ly); free(pts); free(err[0]); free(err[1]);
     return SF_SUCCESS;
@@ -373,14 +372,14 @@ static int chk_central_symmetry(const sf_case *c, sf_result *r)
         sf_contact_free(ct);
         sf_cof_free(cof);
     }
-    sf_check_le(r, "max |Q(d) + Q(-d)| / (mu N) over random fields and directions", worst, s->tolerance);
+    sf_check_le(r, "max |Q(d) + Q(-d)| / (mu N) over random fields and directions", worst, c->spec.tolerance);
     sf_note(r, "%zu direction pairs over 4 lognormal realisations (l = %g m, grid %zu x %zu).", tested, s->l,
             df.gs.nx, df.gs.ny);
     double x[2] = { 0, 1 }, y[2] = { worst > 0 ? worst : 1e-17, worst > 0 ? worst : 1e-17 };
     sf_plot *p = sf_result_plot(r, "symmetry", "Central symmetry residual", "(single value) [-]", "max residual [-]");
     sf_plot_log(p, 0, 1);
     sf_plot_series(p, "measured", SF_STYLE_LINESPOINTS, 2, x, y);
-    sf_plot_hline(p, "tolerance", s->tolerance > 0 ? s->tolerance : 1e-16);
+    sf_plot_hline(p, "tolerance", c->spec.tolerance > 0 ? c->spec.tolerance : 1e-16);
     check_disc_field_free(&df);
     gsl_rng_free(rng);
     return SF_SUCCESS;
@@ -450,8 +449,8 @@ static int chk_wrench_statistics(const sf_case *c, sf_result *r)
     m4 /= (double)N;
     double zm = (m - mean_ex) / sqrt(var / (double)N);
     double zv = (var - var_ex) / sqrt(sf_max(m4 - var * var, 1e-300) / (double)N);
-    sf_check_pvalue(r, "mean |F| = mu_mean N (z test)", sf_z_pvalue(zm), s->alpha / 2, N);
-    sf_check_pvalue(r, "var |F| = N^2 sigma^2 int rho_H p ds (z test, sample kurtosis)", sf_z_pvalue(zv), s->alpha / 2, N);
+    sf_check_pvalue(r, "mean |F| = mu_mean N (z test)", sf_z_pvalue(zm), c->spec.alpha / 2, N);
+    sf_check_pvalue(r, "var |F| = N^2 sigma^2 int rho_H p ds (z test, sample kurtosis)", sf_z_pvalue(zv), c->spec.alpha / 2, N);
     sf_note(r, "Exact: mean %.6g N, std %.6g N (variance factor of the disc average %.5g with the distorted "
                "correlation, %.5g with the Gaussian one). Sample: mean %.6g N, std %.6g N over %zu realisations. "
                "Grid spacing %.4g m (l/%g); bilinear interpolation lowers the variance between nodes by a "
@@ -513,7 +512,7 @@ static void interp_exact(double H, double l, size_t s, double *mse, double *var_
 static int chk_interpolation(const sf_case *c, sf_result *r)
 {
     const sf_scene *s = &c->scene;
-    size_t K = s->sweep.n, N = s->samples, m = s->nx;
+    size_t K = c->spec.sweep.n, N = s->samples, m = s->nx;
     if (K < 2)
         return SF_EINVAL;
     sf_field *f;
@@ -530,7 +529,7 @@ static int chk_interpolation(const sf_case *c, sf_result *r)
     for (size_t q = 0; q < N; q++) {
         check_field_sample(c, f, rng, g, m * m);
         for (size_t k = 0; k < K; k++) {
-            size_t st = (size_t)s->sweep.v[k], mc = (m - 1) / st + 1;
+            size_t st = (size_t)c->spec.sweep.v[k], mc = (m - 1) / st + 1;
             double *cg = check_alloc(mc * mc * sizeof *cg);
             for (size_t j = 0; j < mc; j++)
                 for (size_t i = 0; i < mc; i++)
@@ -553,7 +552,7 @@ static int chk_interpolation(const sf_case *c, sf_result *r)
     sf_result_data(r, "mean-square interpolation error per field and spacing", N * K, per);
     double worstp = 1;
     for (size_t k = 0; k < K; k++) {
-        size_t st = (size_t)s->sweep.v[k];
+        size_t st = (size_t)c->spec.sweep.v[k];
         h[k] = s->dx * (double)st;
         interp_exact(h[k], s->l, st, &ex[k], &vm[k]);
         mean[k] = gsl_stats_mean(per + k, K, N);
@@ -569,8 +568,8 @@ static int chk_interpolation(const sf_case *c, sf_result *r)
     }
     gsl_fit_linear(lx, 1, ly, 1, K, &c0, &c1, &c00, &c01, &c11, &ss);
     sf_check_pvalue(r, "sample MSE = exact MSE from the covariance, worst z test over the spacings (Bonferroni)",
-                    sf_min(1, worstp * (double)K), s->alpha, N);
-    sf_check_abs(r, "observed order of the RMS interpolation error in H (exact: 2)", c1, 2.0, s->tolerance);
+                    sf_min(1, worstp * (double)K), c->spec.alpha, N);
+    sf_check_abs(r, "observed order of the RMS interpolation error in H (exact: 2)", c1, 2.0, c->spec.tolerance);
     sf_note(r, "| H [m] | H/l | exact RMS error | sample RMS error | interpolant variance at cell centre |\n|---|---|---|---|---|");
     for (size_t k = 0; k < K; k++)
         sf_note(r, "| %.4g | %.3g | %.3e | %.3e | %.5f |", h[k], h[k] / s->l, sqrt(ex[k]), sqrt(mean[k]), vm[k]);

@@ -57,7 +57,7 @@ static int chk_cycle(const sf_case *c, sf_result *r)
     if (check_osc_run(s, NULL, NULL, 0, &res, check_hist_row, &h, r))
         return SF_EFAIL;
     size_t worst;
-    double te = transition_error(&res, &cf, &worst), tol = s->tolerance;
+    double te = transition_error(&res, &cf, &worst), tol = c->spec.tolerance;
     double stick = 0;
     for (size_t i = 0; i < res.ncycles; i++)
         stick += res.cycle_stick[i];
@@ -108,7 +108,7 @@ static int chk_cycle(const sf_case *c, sf_result *r)
 static int chk_eps_order(const sf_case *c, sf_result *r)
 {
     const sf_scene *s0 = &c->scene;
-    size_t K = s0->sweep.n;
+    size_t K = c->spec.sweep.n;
     if (K < 3)
         return SF_EINVAL;
     double *e = check_alloc(K * sizeof *e), *dp = check_alloc(K * sizeof *dp), *ds = check_alloc(K * sizeof *ds);
@@ -116,7 +116,7 @@ static int chk_eps_order(const sf_case *c, sf_result *r)
     sf_note(r, "| eps_lambda | PV_x - ideal [m] | predicted | slip - ideal [s] | predicted |\n|---|---|---|---|---|");
     for (size_t k = 0; k < K; k++) {
         sf_scene s = *s0;
-        s.eps_lambda = s0->sweep.v[k];
+        s.eps_lambda = c->spec.sweep.v[k];
         sf_cycle1d cf, ideal;
         if (sf_cycle1d_init(&cf, &s, s.eps_lambda) || sf_cycle1d_init(&ideal, &s, 0))
             return SF_EINVAL;
@@ -139,8 +139,8 @@ static int chk_eps_order(const sf_case *c, sf_result *r)
         sf_osc_result_free(&res);
     }
     double op = fit_order(e, dp, K), os = fit_order(e, ds, K);
-    sf_check_abs(r, "observed order of the PV_x deviation in eps_lambda", op, 1, s0->tolerance);
-    sf_check_abs(r, "observed order of the slip-duration deviation in eps_lambda", os, 1, s0->tolerance);
+    sf_check_abs(r, "observed order of the PV_x deviation in eps_lambda", op, 1, c->spec.tolerance);
+    sf_check_abs(r, "observed order of the slip-duration deviation in eps_lambda", os, 1, c->spec.tolerance);
     sf_check_le(r, "max relative gap between each deviation and the corrected closed form's prediction",
                 worst_pred, 1e-3);
     sf_plot *p = sf_result_plot(r, "eps_order", "Deviation from the ideal cycle vs the threshold",
@@ -158,7 +158,7 @@ static int chk_eps_order(const sf_case *c, sf_result *r)
 static int chk_step_order(const sf_case *c, sf_result *r)
 {
     const sf_scene *s0 = &c->scene;
-    size_t K = s0->sweep.n;
+    size_t K = c->spec.sweep.n;
     if (K < 3)
         return SF_EINVAL;
     int rk4 = s0->integrator == SF_INTEG_RK4;
@@ -170,14 +170,14 @@ static int chk_step_order(const sf_case *c, sf_result *r)
     for (size_t k = 0; k < K; k++) {
         sf_scene s = *s0;
         if (rk4)
-            s.dt = s0->sweep.v[k];
+            s.dt = c->spec.sweep.v[k];
         else
-            s.rtol = s0->sweep.v[k];
+            s.rtol = c->spec.sweep.v[k];
         sf_osc_result res;
         if (check_osc_run(&s, NULL, NULL, 0, &res, NULL, NULL, r))
             return SF_EFAIL;
         size_t w;
-        h[k] = s0->sweep.v[k];
+        h[k] = c->spec.sweep.v[k];
         err[k] = transition_error(&res, &cf, &w);
         cost[k] = (double)res.steps;
         sf_note(r, "| %g | %.3e | %.3e | %lu |", h[k], err[k], res.pv_x / cf.pv_x - 1, res.steps);
@@ -185,7 +185,7 @@ static int chk_step_order(const sf_case *c, sf_result *r)
     }
     double ord = fit_order(h, err, K);
     sf_check_ge(r, rk4 ? "observed order of RK4 in dt (transition times)" : "observed order of the error in rtol",
-                ord, s0->tolerance);
+                ord, c->spec.tolerance);
     sf_note(r, "\nObserved order %.3f (least squares over the sweep). Expected: %s.\n", ord,
             rk4 ? "4 for classical RK4 (the events are located with the same stepper, so they inherit its order)"
                 : "about 1: the error control keeps the local error near rtol, and the global error follows it");
@@ -195,7 +195,7 @@ static int chk_step_order(const sf_case *c, sf_result *r)
     sf_plot_series(p, "measured", SF_STYLE_LINESPOINTS, K, h, err);
     double *ref = check_alloc(K * sizeof *ref);
     for (size_t k = 0; k < K; k++)
-        ref[k] = err[0] * pow(h[k] / h[0], s0->tolerance);
+        ref[k] = err[0] * pow(h[k] / h[0], c->spec.tolerance);
     sf_plot_series(p, "slope of the accepted order", SF_STYLE_LINES, K, h, ref);
     free(ref); free(h); free(err); free(cost);
     return SF_SUCCESS;
@@ -235,8 +235,8 @@ static int chk_3dof_reduces(const sf_case *c, sf_result *r)
     sf_check_le(r, "closed-form path: max |t_3DOF - t_1D| over transitions [s]", dtr, 0);
     sf_check_le(r, "closed-form path: max |y| [m] and |phi| [rad]", sf_max(hb.y_absmax, hb.phi_absmax), 0);
     sf_check_abs(r, "quadrature path: transitions (3-DOF vs 1-D count)", (double)q.ntrans, (double)a.ntrans, 0);
-    sf_check_le(r, "quadrature path: max |t_3DOF - t_1D| over transitions [s]", dq, s0->tolerance);
-    sf_check_le(r, "quadrature path: max |x_3DOF - x_1D| at the transitions [m]", dqx, s0->tolerance);
+    sf_check_le(r, "quadrature path: max |t_3DOF - t_1D| over transitions [s]", dq, c->spec.tolerance);
+    sf_check_le(r, "quadrature path: max |x_3DOF - x_1D| at the transitions [m]", dqx, c->spec.tolerance);
     sf_check_le(r, "quadrature path: max |y| [m]", hq.y_absmax, 1e-10);
     sf_check_le(r, "quadrature path: max |phi| [rad]", hq.phi_absmax, 1e-10);
     sf_note(r, "The closed-form path (Contensou forms with zero spin) must give the 1-D model bit for bit. The "
@@ -278,7 +278,7 @@ static int chk_energy(const sf_case *c, sf_result *r)
     if (rc)
         return SF_EFAIL;
     double scale = fabs(res.friction_work) + fabs(res.energy_change);
-    sf_check_le(r, "|E(T) - E(0) - W_friction - jumps| / (|W| + |dE|)", fabs(res.energy_residual) / scale, s->tolerance);
+    sf_check_le(r, "|E(T) - E(0) - W_friction - jumps| / (|W| + |dE|)", fabs(res.energy_residual) / scale, c->spec.tolerance);
     sf_note(r, "E(T) - E(0) = %.9g J; friction work %.9g J (stick phases in closed form, slip integrated); jumps "
                "(Eqs. 12, 14) %.3e J; residual %.3e J. The friction work is the negative of the dissipated energy "
                "in slip and positive in stick (the belt drags the disc against the spring).",

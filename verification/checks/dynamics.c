@@ -31,7 +31,7 @@
 static int chk_eps_study(const sf_case *c, sf_result *r)
 {
     const sf_scene *s0 = &c->scene;
-    size_t K = s0->sweep.n;
+    size_t K = c->spec.sweep.n;
     if (K < 3)
         return SF_EINVAL;
     sf_cof *cof = check_case_cof(c, s0, r);
@@ -51,7 +51,7 @@ static int chk_eps_study(const sf_case *c, sf_result *r)
     sf_note(r, "| 1e-05 (reference) | 0 | %.6f | %.6f | %lu |", ref.pv_x, ref.stick_fraction, ref.steps);
     for (size_t k = 0; k < K; k++) {
         sf_scene s = *s0;
-        s.eps_lambda = s0->sweep.v[k];
+        s.eps_lambda = c->spec.sweep.v[k];
         sf_osc_result res;
         if (check_osc_run(&s, NULL, cof, dt, &res, NULL, NULL, r)) {
             sf_cof_free(cof);
@@ -72,7 +72,7 @@ static int chk_eps_study(const sf_case *c, sf_result *r)
     gsl_fit_linear(lx, 1, ly, 1, K, &c0, &c1, &a, &b, &cc, &ss);
     sf_check_true(r, "Eq. 15 error falls monotonically as eps_lambda falls (the trend of Fig. 7)", mono,
                   mono ? "monotone" : "not monotone");
-    sf_check_ge(r, "observed order of the Eq. 15 error in eps_lambda", c1, s0->tolerance);
+    sf_check_ge(r, "observed order of the Eq. 15 error in eps_lambda", c1, c->spec.tolerance);
     sf_note(r, "\nSame field realisation for every run (l = %g m, CV = %g), T = %g s, reference eps_lambda = 1e-5, "
                "Eq. 15 summed over samples every %g s. Observed order %.2f: the displacement error is first order "
                "in eps (cases/deterministic/eps-first-order), and Eq. 15 squares it. The paper's Fig. 7 shows the "
@@ -284,7 +284,7 @@ static int chk_eq9_eq12(const sf_case *c, sf_result *r)
         return SF_EFAIL;
     }
     sf_check_le(r, "Eq. 9: max |lambda / eps_lambda - 1| at the slip-to-stick instants (lambda from the rows)",
-                e.lam_err, s->tolerance);
+                e.lam_err, c->spec.tolerance);
     sf_check_ge(r, "slip-to-stick instants examined", (double)e.n, 5);
     sf_check_ge(r, "Eq. 9: largest spin share |omega/omega_n| / lambda at those instants (spin matters)", e.spin_max, 0.1);
     sf_check_le(r, "Eq. 12: max over stick rows of |(vx - v_b, vy)/(omega_n R)|, |omega/omega_n| (exactly 0)",
@@ -305,7 +305,7 @@ static int chk_eq9_eq12(const sf_case *c, sf_result *r)
     sf_plot_log(p, 0, 1);
     sf_plot_series(p, "|lambda / eps_lambda - 1|", SF_STYLE_POINTS, e.n, e.t, e.lerr);
     sf_plot_series(p, "spin share |omega/omega_n| / lambda", SF_STYLE_POINTS, e.n, e.t, e.spin);
-    sf_plot_hline(p, "tolerance", s->tolerance);
+    sf_plot_hline(p, "tolerance", c->spec.tolerance);
     free(e.t); free(e.lerr); free(e.spin);
     sf_osc_result_free(&res);
     sf_cof_free(cof);
@@ -329,7 +329,7 @@ static int chk_long_run(const sf_case *c, sf_result *r)
     sf_check_le(r, "max |x| [m] (bound 2 mu_hi m g / k)", sf_max(fabs(res.x_min), fabs(res.x_max)), bound);
     sf_check_le(r, "max |y| [m] (same bound)", res.y_absmax, bound);
     sf_check_le(r, "energy residual / energy turned over", fabs(res.energy_residual) /
-                (fabs(res.friction_work) + fabs(res.energy_change)), s->tolerance);
+                (fabs(res.friction_work) + fabs(res.energy_change)), c->spec.tolerance);
     sf_check_ge(r, "complete cycles after t_skip", (double)res.ncycles, 0.8 * (s->T - s->t_skip) / 4.4);
     sf_note(r, "T = %g s: %zu cycles, %zu transitions, %lu steps, %lu wrench evaluations; x in [%.4f, %.4f] m, "
                "max |y| %.3e m. Non-finite states stop the run with an error (none).",
@@ -370,9 +370,9 @@ static int chk_baseline(const sf_case *c, sf_result *r)
             vb_err = sf_max(vb_err, fabs(hd.vx[i] - s->v_b));
     double sd_det = gsl_stats_sd(rd.cycle_pv_x, 1, rd.ncycles), sd_sto = gsl_stats_sd(rs.cycle_pv_x, 1, rs.ncycles);
     sf_check_le(r, "stick rows: max |vx - v_b| [m/s]", vb_err, 0);
-    sf_check_le(r, "deterministic: std of per-cycle PV_x [m] (a limit cycle)", sd_det, s->tolerance);
+    sf_check_le(r, "deterministic: std of per-cycle PV_x [m] (a limit cycle)", sd_det, c->spec.tolerance);
     sf_check_ge(r, "stochastic: complete cycles after t_skip (stick-slip persists)", (double)rs.ncycles, 10);
-    sf_check_ge(r, "stochastic: std of per-cycle PV_x [m] (cycles vary in time)", sd_sto, 100 * s->tolerance);
+    sf_check_ge(r, "stochastic: std of per-cycle PV_x [m] (cycles vary in time)", sd_sto, 100 * c->spec.tolerance);
     sf_note(r, "Deterministic (uniform COF %.2f): PV_x %.6f m, PV_F %.4f N, stick fraction %.4f over %zu cycles. "
                "Stochastic (one lognormal field, l = %g m, CV %.2g): PV_x %.4f +- %.4f m, PV_F %.4f +- %.4f N, "
                "stick fraction %.4f over %zu cycles; ratios PV_x %.4f, PV_F %.4f, stick fraction %.4f. The paper "
@@ -434,19 +434,19 @@ static int chk_exact_section(const sf_case *c, sf_result *r)
                 me = NAN;
             worst = sf_min(worst, m);
             on_section = sf_max(on_section, fabs(me));
-            earlier += m > s0->tolerance;
+            earlier += m > c->spec.tolerance;
             sum += m;
             n++;
         }
     sf_check_ge(r, "min circle margin at the exact-section releases [N] (>= 0 up to event tolerance)", worst,
-                -s0->tolerance);
+                -c->spec.tolerance);
     sf_check_ge(r, "releases examined", (double)n, 10);
     /* The exact section was used: the break is ON it (consistency: the
      * solver's own section, not an independent oracle) and strictly inside
      * the circle at every release (a run that ignored exact_section would
      * break on the circle: margin 0 to the event tolerance). */
     sf_check_le(r, "max |exact-section margin| at the releases [N] (the break is on the T = 0 section)", on_section,
-                s0->tolerance);
+                c->spec.tolerance);
     sf_check_ge(r, "releases strictly before the circle's (circle margin > tolerance) (all of them)", (double)earlier,
                 (double)n);
     sf_note(r, "%zu releases: the circle would still have held stick by %.3e N on average (worst %.3e N): the "
@@ -595,7 +595,7 @@ static int chk_free_disc(const sf_case *c, sf_result *r)
         reached = sf_max(reached, got);
     }
     sf_check_abs(r, "oracle eps_0 (own closed form, Brent) vs the published 0.653 (Farkas et al. 2003)", e0, 0.653, 5e-4);
-    sf_check_le(r, "max over both starts of |eps at the stop - eps_0| (3-DOF slip RHS, uniform COF)", worst, s.tolerance);
+    sf_check_le(r, "max over both starts of |eps at the stop - eps_0| (3-DOF slip RHS, uniform COF)", worst, c->spec.tolerance);
     sf_check_le(r, "|(U, w R)| at the stop / at the start (both starts ran to the stop)", reached, stop);
     sf_note(r, "Free disc, uniform COF mu_k = %g (mu_s %g x %g), R = %g m, m = %g kg (J = m R^2/2 in the solver); "
                "starts at eps = %g and %g with spin 1 rad/s, integrated (GSL rk8pd, relative error %g) until "
@@ -656,7 +656,7 @@ static int chk_variable_limit(const sf_case *c, sf_result *r)
     }
     gsl_rng_free(rng);
     sf_check_le(r, "max relative gap to the 1-D closed form at the drawn mu_s (PV_x, PV_F, stick fraction)", worst,
-                s0->tolerance);
+                c->spec.tolerance);
     sf_note(r, "%zu realisations of cof = variable (mean %g, std %g). PV_F = 2 (1 - mu_k/mu_s) mu_s m g is linear "
                "in mu_s: over realisations the ratio PV_F / PV_F,det = mu_s / mean exactly, a lognormal with the "
                "field's CV (the large-l/R limit of issue 5).", K, s0->mu_mean, s0->mu_std);

@@ -34,8 +34,9 @@ static gsl_matrix *exact_sigma(const sf_scene *s)
 }
 
 /* Plot produced vs exact correlation along both axes, and |error|. */
-static void plot_cov(sf_result *r, const sf_scene *s, const double *cov)
+static void plot_cov(sf_result *r, const sf_case *c, const double *cov)
 {
+    const sf_scene *s = &c->scene;
     size_t m = s->nx, n = s->ny;
     double *x = check_alloc(m * sizeof *x), *yc = check_alloc(m * sizeof *yc), *ye = check_alloc(m * sizeof *ye);
     double *x2 = check_alloc(n * sizeof *x2), *yc2 = check_alloc(n * sizeof *yc2);
@@ -59,8 +60,8 @@ static void plot_cov(sf_result *r, const sf_scene *s, const double *cov)
                                 "lag [m]", "|C - Sigma| [-]");
     sf_plot_log(q, 0, 1);
     sf_plot_series(q, "|C - Sigma|", SF_STYLE_LINESPOINTS, m, x, e);
-    if (s->tolerance > 0)
-        sf_plot_hline(q, "tolerance", s->tolerance);
+    if (c->spec.tolerance > 0)
+        sf_plot_hline(q, "tolerance", c->spec.tolerance);
     free(x); free(yc); free(ye); free(x2); free(yc2); free(e);
 }
 
@@ -80,10 +81,10 @@ static int chk_exact_covariance(const sf_case *c, sf_result *r)
             double e = fabs(cov[i + s->nx * j] - ref_sq_exp((double)i * s->dx, (double)j * s->dy, s->l));
             err = sf_max(err, e);
         }
-    sf_check_le(r, "max |C_produced - Sigma| over grid lags", err, s->tolerance);
+    sf_check_le(r, "max |C_produced - Sigma| over grid lags", err, c->spec.tolerance);
     sf_check_abs(r, "error reported by the plan vs recomputed here", sf_field_get_info(f)->cov_error, err,
                  1e-15 + 1e-12 * err);
-    plot_cov(r, s, cov);
+    plot_cov(r, c, cov);
     free(cov);
     sf_field_free(f);
     return SF_SUCCESS;
@@ -180,7 +181,7 @@ static int chk_eigen_direct(const sf_case *c, sf_result *r)
         err = sf_max(err, fabs(a[k] - b[k]));
         mx = sf_max(mx, fabs(b[k]));
     }
-    sf_check_le(r, "max |lambda_FFT - lambda_direct| / max |lambda|", err / mx, s->tolerance);
+    sf_check_le(r, "max |lambda_FFT - lambda_direct| / max |lambda|", err / mx, c->spec.tolerance);
     /* the spectrum, sorted, for the plot */
     double *idx = check_alloc(M * sizeof *idx);
     for (size_t k = 0; k < M; k++) {
@@ -223,10 +224,10 @@ static int chk_truncation_reported(const sf_case *c, sf_result *r)
         }
     sf_check_true(r, "the plan says it truncated (SF_ETRUNC)", rc == SF_ETRUNC && in->truncated,
                   rc == SF_ETRUNC ? "SF_ETRUNC returned" : "no truncation reported");
-    sf_check_rel(r, "reported covariance error vs direct recomputation", in->cov_error, err, s->tolerance);
+    sf_check_rel(r, "reported covariance error vs direct recomputation", in->cov_error, err, c->spec.tolerance);
     sf_check_ge(r, "true covariance error (must be visible, not round-off)", err, 1e-10);
     sf_note(r, "True max |C - Sigma| of the truncated embedding: %.6g (plan reports %.6g).\n", err, in->cov_error);
-    plot_cov(r, s, cov);
+    plot_cov(r, c, cov);
     free(lam); free(cov);
     sf_field_free(f);
     return SF_SUCCESS;
@@ -283,7 +284,7 @@ static int chk_sampled_covariance(const sf_case *c, sf_result *r)
     double dof = pd * (pd + 1) / 2;
     char t[160];
     snprintf(t, sizeof t, "whitened LRT of Cov = Sigma (p = %zu points, chi2 dof %.0f)", p, dof);
-    sf_check_pvalue(r, t, pval, s->alpha, N);
+    sf_check_pvalue(r, t, pval, c->spec.alpha, N);
     sf_note(r, "LRT statistic %.2f on %.0f degrees of freedom (mean %.0f, sd %.1f under the null); "
                "tr(S)/p = %.5f.\n", stat, dof, dof, sqrt(2 * dof), trp);
     /* plot: empirical correlation with a 3-sigma band from the per-sample spread */
@@ -350,19 +351,19 @@ static int chk_pointwise_moments(const sf_case *c, sf_result *r)
     double pm_adj = sf_min(1.0, pmin_mean * (double)p), pv_adj = sf_min(1.0, pmin_var * (double)p);
     char t[160];
     snprintf(t, sizeof t, "mean = 0 at every point (z test, Bonferroni over %zu points)", p);
-    sf_check_pvalue(r, t, pm_adj, s->alpha / 2, N);
+    sf_check_pvalue(r, t, pm_adj, c->spec.alpha / 2, N);
     snprintf(t, sizeof t, "variance = 1 at every point (chi-square, Bonferroni over %zu points)", p);
-    sf_check_pvalue(r, t, pv_adj, s->alpha / 2, N);
+    sf_check_pvalue(r, t, pv_adj, c->spec.alpha / 2, N);
     sf_note(r, "Largest |z| of a point mean: %.3f; most extreme point variance: %.4f. "
                "alpha is split equally between the two families (Bonferroni).\n", zmax, vworst);
-    double zc = gsl_cdf_ugaussian_Qinv(s->alpha / 4 / (double)p) / sqrt((double)N);
+    double zc = gsl_cdf_ugaussian_Qinv(c->spec.alpha / 4 / (double)p) / sqrt((double)N);
     sf_plot *pl = sf_result_plot(r, "moments", "Per-point sample mean and variance",
                                  "grid point index [-]", "value [-]");
     double *lo = check_alloc(p * sizeof *lo), *hi = check_alloc(p * sizeof *hi);
     for (size_t a = 0; a < p; a++) { lo[a] = -zc; hi[a] = zc; }
     sf_plot_band(pl, "mean acceptance band", p, idx, lo, hi);
-    double vlo = gsl_cdf_chisq_Pinv(s->alpha / 4 / (double)p, (double)N) / (double)N;
-    double vhi = gsl_cdf_chisq_Qinv(s->alpha / 4 / (double)p, (double)N) / (double)N;
+    double vlo = gsl_cdf_chisq_Pinv(c->spec.alpha / 4 / (double)p, (double)N) / (double)N;
+    double vhi = gsl_cdf_chisq_Qinv(c->spec.alpha / 4 / (double)p, (double)N) / (double)N;
     for (size_t a = 0; a < p; a++) { lo[a] = vlo; hi[a] = vhi; }
     sf_plot_band(pl, "variance acceptance band", p, idx, lo, hi);
     sf_plot_series(pl, "sample mean", SF_STYLE_POINTS, p, idx, mu);
@@ -417,10 +418,10 @@ static int chk_re_im_independence(const sf_case *c, sf_result *r)
     }
     char tt[160];
     snprintf(tt, sizeof tt, "corr(Re, Im) = 0 at %zu point pairs (Fisher z, Bonferroni)", T);
-    sf_check_pvalue(r, tt, sf_min(1.0, pmin * (double)T), s->alpha, N);
+    sf_check_pvalue(r, tt, sf_min(1.0, pmin * (double)T), c->spec.alpha, N);
     sf_note(r, "Largest |sample correlation| between the real and imaginary fields: %.4f "
                "(1/sqrt(N) = %.4f).\n", rmax, 1 / sqrt((double)N));
-    double zc = tanh(gsl_cdf_ugaussian_Qinv(s->alpha / 2 / (double)T) / sqrt((double)N - 3.0));
+    double zc = tanh(gsl_cdf_ugaussian_Qinv(c->spec.alpha / 2 / (double)T) / sqrt((double)N - 3.0));
     double *lo = check_alloc(T * sizeof *lo), *hi = check_alloc(T * sizeof *hi);
     for (size_t t = 0; t < T; t++) { lo[t] = -zc; hi[t] = zc; }
     sf_plot *pl = sf_result_plot(r, "re_im_correlation", "Sample correlation between real and imaginary fields",
@@ -507,11 +508,11 @@ static int chk_cholesky_agreement(const sf_case *c, sf_result *r)
     for (int b = 0; b < 3; b++) {
         char t[160];
         snprintf(t, sizeof t, "two-sample KS, embedding vs Cholesky: %s", names[b]);
-        sf_check_pvalue(r, t, pvals[b], s->alpha / 4, N);
+        sf_check_pvalue(r, t, pvals[b], c->spec.alpha / 4, N);
     }
-    sf_check_pvalue(r, "one-sample KS of the embedding's Mahalanobis norm vs chi2(p)", pvals[3], s->alpha / 4, N);
+    sf_check_pvalue(r, "one-sample KS of the embedding's Mahalanobis norm vs chi2(p)", pvals[3], c->spec.alpha / 4, N);
     sf_note(r, "Four tests share alpha = %.3g equally (Bonferroni). Both samplers draw %zu fields "
-               "on the same %zu x %zu grid.\n", s->alpha, N, m, n);
+               "on the same %zu x %zu grid.\n", c->spec.alpha, N, m, n);
     /* QQ plot of the Mahalanobis norms (both sorted by the KS tests) */
     double *qx = check_alloc(N * sizeof *qx);
     for (size_t k = 0; k < N; k++)
@@ -542,7 +543,7 @@ static int chk_cholesky_agreement(const sf_case *c, sf_result *r)
 static int padding_sweep(const sf_case *c, sf_result *r, int mode)
 {
     const sf_scene *s0 = &c->scene;
-    size_t K = s0->sweep.n;
+    size_t K = c->spec.sweep.n;
     if (K == 0)
         return SF_EINVAL;
     double *x = check_alloc(K * sizeof *x), *pad = check_alloc(K * sizeof *pad);
@@ -556,9 +557,9 @@ static int padding_sweep(const sf_case *c, sf_result *r, int mode)
         sf_scene s = *s0;
         double dom;
         if (mode == 0) {
-            s.dx = s.dy = s.l / s0->sweep.v[k];
+            s.dx = s.dy = s.l / c->spec.sweep.v[k];
         } else {
-            dom = s.l / s0->sweep.v[k];
+            dom = s.l / c->spec.sweep.v[k];
             s.dx = s.dy = dom / (double)(s.nx - 1);
         }
         dom = s.dx * (double)(s.nx - 1);
@@ -576,7 +577,7 @@ static int padding_sweep(const sf_case *c, sf_result *r, int mode)
             return rc ? rc : rc2;
         }
         const sf_field_info *in = sf_field_get_info(f), *im = sf_field_get_info(fmin_);
-        x[k] = s0->sweep.v[k];
+        x[k] = c->spec.sweep.v[k];
         ratio_dom[k] = s.l / dom;
         pad[k] = (double)in->px / (double)in->px_min;
         lmin[k] = fabs(im->lambda_min / im->lambda_max);
@@ -603,7 +604,7 @@ static int padding_sweep(const sf_case *c, sf_result *r, int mode)
     char t[160];
     snprintf(t, sizeof t, "max covariance error over plans that did not hit the cap (worst at %s = %.4g)",
              mode ? "l/domain" : "l/dx", x[worst]);
-    sf_check_le(r, t, worst_err, s0->tolerance);
+    sf_check_le(r, t, worst_err, c->spec.tolerance);
     sf_check_true(r, "every plan that hit the padding cap returned SF_ETRUNC", silent_trunc == 0,
                   silent_trunc ? "a truncation went unreported" : "all truncations reported");
     if (isfinite(first_bad)) {
@@ -621,7 +622,7 @@ static int padding_sweep(const sf_case *c, sf_result *r, int mode)
     sf_plot_log(q, 1, 1);
     sf_plot_series(q, "padding factor P/P_min", SF_STYLE_LINESPOINTS, K, x, pad);
     sf_plot_series(q, "max |C - Sigma| after padding", SF_STYLE_LINESPOINTS, K, x, cerr);
-    sf_plot_hline(q, "tolerance", s0->tolerance);
+    sf_plot_hline(q, "tolerance", c->spec.tolerance);
     free(x); free(pad); free(lmin); free(cerr); free(lmin_min); free(ratio_dom);
     (void)ncap;
     return SF_SUCCESS;
@@ -681,7 +682,7 @@ static int chk_planner_roundoff(const sf_case *c, sf_result *r)
     sf_note(r, "%zu sample pairs of a %zu x %zu grid (embedding %zu x %zu), each drawn from the same normals "
                "through an FFTW_ESTIMATE and an FFTW_MEASURE plan; largest |value| %.3g.", s->samples, s->nx, s->ny,
             in->px, in->py, amax);
-    sf_check_le(r, "max |G_measure - G_estimate| over all points and samples", dmax, s->tolerance);
+    sf_check_le(r, "max |G_measure - G_estimate| over all points and samples", dmax, c->spec.tolerance);
     sf_check_abs(r, "produced covariance, measure minus estimate plan (bits)", dcov, 0, 0);
     if (s->samples) {
         /* the last sample's first grid row (x index fastest), both plans */
@@ -698,7 +699,7 @@ static int chk_planner_roundoff(const sf_case *c, sf_result *r)
                                  "sample pair [index]", "max |difference| (floored at 1e-18) [dimensionless]");
     sf_plot_log(pl, 0, 1);
     sf_plot_series(pl, "max over the grid", SF_STYLE_POINTS, s->samples, pk, pd);
-    sf_plot_hline(pl, "tolerance", s->tolerance);
+    sf_plot_hline(pl, "tolerance", c->spec.tolerance);
     free(pk);
     free(a);
     free(ce);
@@ -793,7 +794,7 @@ static int chk_tiles_exact(const sf_case *c, sf_result *r)
             upd_max(&err, C - ref_sq_exp((double)p * s->dx, (double)q * s->dy, s->l));
             upd_max(&rep, C - sf_tiles_covariance(t, (long)p, -(long)q));
         }
-    sf_check_le(r, "max |C_produced - Eq. 2| over lags 0..2K+2 along x and y (2-D)", err, s->tolerance);
+    sf_check_le(r, "max |C_produced - Eq. 2| over lags 0..2K+2 along x and y (2-D)", err, c->spec.tolerance);
     sf_check_le(r, "covariance the generator reports vs recomputed here from its weights", rep, 1e-15);
     /* (2) fields vs the oracle */
     gsl_rng *rng = sf_case_rng(c);
@@ -851,8 +852,8 @@ static int chk_tiles_exact(const sf_case *c, sf_result *r)
                                 "lag [m]", "|C - Sigma| [-]");
     sf_plot_log(q, 0, 1);
     sf_plot_series(q, "|C - Eq. 2|", SF_STYLE_LINESPOINTS, Px, lx, ee);
-    if (s->tolerance > 0)
-        sf_plot_hline(q, "tolerance", s->tolerance);
+    if (c->spec.tolerance > 0)
+        sf_plot_hline(q, "tolerance", c->spec.tolerance);
     free(lx); free(ex); free(ee); free(ly); free(eyv);
     for (int k = 0; k < 4; k++)
         free(on.buf[k]);

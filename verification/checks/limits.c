@@ -118,7 +118,7 @@ static int chk_large_lr(const sf_case *c, sf_result *r)
         double D, pv = sf_ks_test(x, n, ratio_cdf, &m, &D);
         char t[160];
         snprintf(t, sizeof t, "KS: %s vs its exact distribution (D = %.4f), Bonferroni x3", names[q], D);
-        sf_check_pvalue(r, t, sf_min(1, 3 * pv), s->alpha, n);
+        sf_check_pvalue(r, t, sf_min(1, 3 * pv), c->spec.alpha, n);
         /* plot: empirical CDF vs exact */
         gsl_sort(x, 1, n);
         double *ecdf = check_alloc(n * sizeof *ecdf), *ex = check_alloc(n * sizeof *ex);
@@ -158,7 +158,7 @@ static int chk_large_lr(const sf_case *c, sf_result *r)
 static int chk_small_lr(const sf_case *c, sf_result *r)
 {
     const sf_scene *s0 = &c->scene;
-    size_t K = s0->sweep.n;
+    size_t K = c->spec.sweep.n;
     if (K < 4)
         return SF_EINVAL;
     double *lr = check_alloc(K * sizeof *lr), *sd[2], *mn[2], *lx = check_alloc(K * sizeof *lx), *ly = check_alloc(K * sizeof *ly);
@@ -170,13 +170,13 @@ static int chk_small_lr(const sf_case *c, sf_result *r)
     for (size_t k = 0; k < K; k++) {
         sf_scene s = *s0;
         char err[256] = "";
-        sf_sweep_set(&s, "l_over_R", s0->sweep.v[k], err, sizeof err);
+        sf_sweep_set(&s, "l_over_R", c->spec.sweep.v[k], err, sizeof err);
         sf_sweep_point pt;
         if (sf_sweep_run(&s, s0->samples, 0, NULL, 0, NULL, &pt, err, sizeof err)) {
-            sf_note(r, "**Sweep failed at l/R = %g:** %s", s0->sweep.v[k], err);
+            sf_note(r, "**Sweep failed at l/R = %g:** %s", c->spec.sweep.v[k], err);
             return SF_EFAIL;
         }
-        lr[k] = s0->sweep.v[k];
+        lr[k] = c->spec.sweep.v[k];
         for (int q = 0; q < 2; q++) {
             mn[q][k] = pt.mean[q];
             sd[q][k] = pt.std[q];
@@ -190,7 +190,7 @@ static int chk_small_lr(const sf_case *c, sf_result *r)
      * of a true trend).  Four one-sided tests, Bonferroni: alpha / 4 each. */
     const char *nm[2] = { "PV_x", "PV_F" };
     size_t n = s0->samples;
-    double a4 = s0->alpha / 4;
+    double a4 = c->spec.alpha / 4;
     for (int q = 0; q < 2; q++) {
         double F = (sd[q][K - 1] * sd[q][K - 1]) / (sd[q][0] * sd[q][0]);
         double pF = gsl_cdf_fdist_Q(F, (double)(n - 1), (double)(n - 1));

@@ -75,7 +75,7 @@ static int chk_marginal_ks(const sf_case *c, sf_result *r)
     char t[160];
     snprintf(t, sizeof t, "KS of the COF marginal vs lognormal(mean %.3g, std %.3g), CV = %.3g",
              s->mu_mean, s->mu_std, s->mu_std / s->mu_mean);
-    sf_check_pvalue(r, t, pval, s->alpha, N);
+    sf_check_pvalue(r, t, pval, c->spec.alpha, N);
     sf_note(r, "%zu fields x %zu points spaced >= 6 l apart (correlation <= exp(-36)): %zu values; KS D = %.4g.\n",
             s->samples, np, N, D);
     /* QQ plot (v is sorted by the KS test) */
@@ -112,7 +112,7 @@ static int chk_moments(const sf_case *c, sf_result *r)
     double s1 = 0, s2 = 0, mu = s->mu_mean, sd = s->mu_std;
     double *run_x = check_alloc(s->samples * sizeof *run_x), *run_m = check_alloc(s->samples * sizeof *run_m);
     double *lo = check_alloc(s->samples * sizeof *lo), *hi = check_alloc(s->samples * sizeof *hi);
-    double za = gsl_cdf_ugaussian_Qinv(s->alpha / 4);
+    double za = gsl_cdf_ugaussian_Qinv(c->spec.alpha / 4);
     for (size_t k = 0; k < s->samples; k++) {
         sf_lnfield_sample(lf, rng, NULL, h);
         for (size_t q = 0; q < np; q++) {
@@ -132,8 +132,8 @@ static int chk_moments(const sf_case *c, sf_result *r)
     double kurt = w * w * w * w + 2 * w * w * w + 3 * w * w - 3;  /* mu4 / sigma^4 */
     double zm = (mean - mu) / (sd / sqrt(Nd));
     double zv = (var - sd * sd) / sqrt((kurt - 1.0) * pow(sd, 4) / Nd);
-    sf_check_pvalue(r, "mean of the COF = target (z test, exact sampling variance)", sf_z_pvalue(zm), s->alpha / 2, N);
-    sf_check_pvalue(r, "variance of the COF = target (z test, lognormal fourth moment)", sf_z_pvalue(zv), s->alpha / 2, N);
+    sf_check_pvalue(r, "mean of the COF = target (z test, exact sampling variance)", sf_z_pvalue(zm), c->spec.alpha / 2, N);
+    sf_check_pvalue(r, "variance of the COF = target (z test, lognormal fourth moment)", sf_z_pvalue(zv), c->spec.alpha / 2, N);
     sf_note(r, "Sample mean %.6g (target %.6g), sample std %.6g (target %.6g); z = %.3f and %.3f. "
                "alpha split equally over the two tests (Bonferroni).\n", mean, mu, sqrt(var), sd, zm, zv);
     sf_plot *pl = sf_result_plot(r, "running_mean", "Running mean of the COF with its acceptance band",
@@ -153,15 +153,15 @@ static int chk_moments(const sf_case *c, sf_result *r)
 static int chk_positivity(const sf_case *c, sf_result *r)
 {
     const sf_scene *s0 = &c->scene;
-    if (s0->sweep.n == 0)
+    if (c->spec.sweep.n == 0)
         return SF_EINVAL;
     gsl_rng *rng = sf_case_rng(c);
     size_t n = s0->nx * s0->ny, bad = 0, total = 0;
     double *h = check_alloc(n * sizeof *h);
-    double *cvs = check_alloc(s0->sweep.n * sizeof *cvs), *mins = check_alloc(s0->sweep.n * sizeof *mins);
-    for (size_t k = 0; k < s0->sweep.n; k++) {
+    double *cvs = check_alloc(c->spec.sweep.n * sizeof *cvs), *mins = check_alloc(c->spec.sweep.n * sizeof *mins);
+    for (size_t k = 0; k < c->spec.sweep.n; k++) {
         sf_scene s = *s0;
-        s.mu_std = s0->sweep.v[k] * s0->mu_mean;
+        s.mu_std = c->spec.sweep.v[k] * s0->mu_mean;
         sf_lnfield *lf;
         int rc = sf_lnfield_alloc(&s, &lf);
         if (!sf_usable(rc)) { free(h); gsl_rng_free(rng); return rc; }
@@ -174,7 +174,7 @@ static int chk_positivity(const sf_case *c, sf_result *r)
                 mn = sf_min(mn, h[i]);
             }
         }
-        cvs[k] = s0->sweep.v[k];
+        cvs[k] = c->spec.sweep.v[k];
         mins[k] = mn;
         sf_note(r, "CV = %.3g: smallest COF over %zu values = %.4g.", cvs[k], s.samples * n, mn);
         sf_lnfield_free(lf);
@@ -184,7 +184,7 @@ static int chk_positivity(const sf_case *c, sf_result *r)
     sf_check_le(r, t, (double)bad, 0.0);
     sf_plot *pl = sf_result_plot(r, "minimum", "Smallest COF value found vs CV", "CV [-]", "min COF [-]");
     sf_plot_log(pl, 1, 1);
-    sf_plot_series(pl, "minimum over all samples", SF_STYLE_LINESPOINTS, s0->sweep.n, cvs, mins);
+    sf_plot_series(pl, "minimum over all samples", SF_STYLE_LINESPOINTS, c->spec.sweep.n, cvs, mins);
     free(h); free(cvs); free(mins);
     gsl_rng_free(rng);
     return SF_SUCCESS;
@@ -231,7 +231,7 @@ static int correlation_check(const sf_case *c, sf_result *r, int target)
     double *x = check_alloc((H + 1) * sizeof *x), *em = check_alloc((H + 1) * sizeof *em);
     double *ex = check_alloc((H + 1) * sizeof *ex), *rg = check_alloc((H + 1) * sizeof *rg);
     double *lo = check_alloc((H + 1) * sizeof *lo), *hi = check_alloc((H + 1) * sizeof *hi);
-    double tq = gsl_cdf_tdist_Qinv(s->alpha / 2 / (double)H, (double)N - 1);
+    double tq = gsl_cdf_tdist_Qinv(c->spec.alpha / 2 / (double)H, (double)N - 1);
     for (size_t d = 0; d <= H; d++) {
         x[d] = (double)d * s->dx;
         double rg_ = ref_sq_exp(x[d], 0, s->l);
@@ -253,7 +253,7 @@ static int correlation_check(const sf_case *c, sf_result *r, int target)
     char t[200];
     snprintf(t, sizeof t, "empirical COF correlation = distortion of the produced Gaussian covariance "
              "at %zu lags (t test, Bonferroni; worst lag %.3g m)", H, worst);
-    sf_check_pvalue(r, t, sf_min(1.0, pmin * (double)H), s->alpha, N);
+    sf_check_pvalue(r, t, sf_min(1.0, pmin * (double)H), c->spec.alpha, N);
     if (target) {
         /* The claim: pre-correction removes the Nataf distortion, up to what
          * clamping the indefinite kernel costs.  Lipschitz bound of the
@@ -265,7 +265,7 @@ static int correlation_check(const sf_case *c, sf_result *r, int target)
         double lip = s2 * exp(s2 * (1 + gi->cov_error)) / expm1(s2);
         for (int i = 0; i <= 200; i++)
             raw = sf_max(raw, i / 200.0 - ref_rho_h(par.sigma, i / 200.0));
-        sf_check_le(r, "residual |rho_H - Eq. 2| / uncorrected Nataf distortion", gap_target / raw, s->tolerance);
+        sf_check_le(r, "residual |rho_H - Eq. 2| / uncorrected Nataf distortion", gap_target / raw, c->spec.tolerance);
         sf_check_le(r, "residual |rho_H - Eq. 2| vs Lipschitz bound from the reported clamping error",
                     gap_target, lip * gi->cov_error * (1 + 1e-9) + 1e-14);
         sf_note(r, "Uncorrected distortion at this CV: %.4g; residual after pre-correction: %.4g "
@@ -340,16 +340,16 @@ static double numeric_rho_h(double mean, double std, double rho, gsl_integration
 static int chk_distortion_claim(const sf_case *c, sf_result *r)
 {
     const sf_scene *s = &c->scene;
-    if (s->sweep.n == 0)
+    if (c->spec.sweep.n == 0)
         return SF_EINVAL;
     gsl_integration_cquad_workspace *ws = gsl_integration_cquad_workspace_alloc(200);
-    size_t K = s->sweep.n;
+    size_t K = c->spec.sweep.n;
     double *cv = check_alloc(K * sizeof *cv), *md = check_alloc(K * sizeof *md), *lc = check_alloc(K * sizeof *lc);
     double worst_formula = 0, at_claim = -1;
     sf_note(r, "| CV | sigma_g | max of rho_G - rho_H | at rho_G | 1/e correlation length, lognormal / Gaussian |\n|---|---|---|---|---|");
     for (size_t k = 0; k < K; k++) {
         sf_lognormal ln;
-        double mean = s->mu_mean, std = s->sweep.v[k] * mean;
+        double mean = s->mu_mean, std = c->spec.sweep.v[k] * mean;
         if (sf_lognormal_init(&ln, mean, std)) { gsl_integration_cquad_workspace_free(ws); return SF_EINVAL; }
         double best = 0, at = 0;
         for (int i = 0; i <= 200; i++) {
@@ -365,7 +365,7 @@ static int chk_distortion_claim(const sf_case *c, sf_result *r)
         /* correlation length at 1/e: Gaussian r = l; lognormal solves rho_H(exp(-r^2/l^2)) = 1/e */
         double rg = sf_lognormal_rho_g(&ln, exp(-1.0));
         double ratio = sqrt(-log(rg));   /* r/l where the lognormal correlation is 1/e */
-        cv[k] = s->sweep.v[k];
+        cv[k] = c->spec.sweep.v[k];
         md[k] = best;
         lc[k] = ratio;
         if (fabs(cv[k] - 0.3) < 1e-12) at_claim = best;
@@ -373,7 +373,7 @@ static int chk_distortion_claim(const sf_case *c, sf_result *r)
     }
     sf_check_le(r, "solver's distortion formula vs numerical integration (max abs)", worst_formula, 1e-9);
     if (at_claim < 0) { gsl_integration_cquad_workspace_free(ws); return SF_EINVAL; }
-    sf_check_le(r, "max |rho_H - rho_G| at CV = 0.3 (the paper's 'negligible' bound)", at_claim, s->tolerance);
+    sf_check_le(r, "max |rho_H - rho_G| at CV = 0.3 (the paper's 'negligible' bound)", at_claim, c->spec.tolerance);
     sf_note(r, "\nReading: at CV = 0.2 (Table 1) the lognormal correlation is at most %.4f below the Gaussian "
                "one; at CV = 1 the gap is ~0.08 and the 1/e correlation length shrinks by a few percent. "
                "'Negligible' holds at the 1e-2 level for CV <= 0.3.\n", md[K > 1 ? 1 : 0]);
@@ -381,7 +381,7 @@ static int chk_distortion_claim(const sf_case *c, sf_result *r)
                                  "CV [-]", "max |rho_H - rho_G| [-]");
     sf_plot_log(pl, 1, 1);
     sf_plot_series(pl, "max over rho_G in [0, 1]", SF_STYLE_LINESPOINTS, K, cv, md);
-    sf_plot_hline(pl, "tolerance at CV = 0.3", s->tolerance);
+    sf_plot_hline(pl, "tolerance at CV = 0.3", c->spec.tolerance);
     free(cv); free(md); free(lc);
     gsl_integration_cquad_workspace_free(ws);
     return SF_SUCCESS;
@@ -404,14 +404,14 @@ static double mom_integrand(double z, void *p)
 static int chk_map_roundtrip(const sf_case *c, sf_result *r)
 {
     const sf_scene *s = &c->scene;
-    if (s->sweep.n == 0)
+    if (c->spec.sweep.n == 0)
         return SF_EINVAL;
     gsl_integration_cquad_workspace *ws = gsl_integration_cquad_workspace_alloc(200);
     double wm = 0, ws_ = 0, wr = 0;
-    size_t K = s->sweep.n;
+    size_t K = c->spec.sweep.n;
     double *cv = check_alloc(K * sizeof *cv), *em = check_alloc(K * sizeof *em), *es = check_alloc(K * sizeof *es);
     for (size_t k = 0; k < K; k++) {
-        double mean = s->mu_mean, std = s->sweep.v[k] * mean;
+        double mean = s->mu_mean, std = c->spec.sweep.v[k] * mean;
         sf_lognormal ln;
         if (sf_lognormal_init(&ln, mean, std)) { gsl_integration_cquad_workspace_free(ws); return SF_EINVAL; }
         double m1, m2;
@@ -422,7 +422,7 @@ static int chk_map_roundtrip(const sf_case *c, sf_result *r)
         m2 = cquad(&F, ws);
         /* E[(H - mean)^2] = var + (m1 - mean)^2 */
         double sd = sqrt(sf_max(0.0, m2 - (m1 - mean) * (m1 - mean)));
-        cv[k] = s->sweep.v[k];
+        cv[k] = c->spec.sweep.v[k];
         em[k] = fabs(m1 - mean) / mean;
         es[k] = std > 0 ? fabs(sd - std) / std : sd;
         /* not fmax: it drops NaN, and a NaN must fail the row */
@@ -432,18 +432,18 @@ static int chk_map_roundtrip(const sf_case *c, sf_result *r)
             double rho = i / 10.0;
             wr = sf_max(wr, fabs(sf_lognormal_rho_g(&ln, sf_lognormal_rho_h(&ln, rho)) - rho));
         }
-        sf_note(r, "CV = %.3g: mu_g = %.6f, sigma_g = %.6f, E[H] = %.12g, sd[H] = %.12g.", s->sweep.v[k],
+        sf_note(r, "CV = %.3g: mu_g = %.6f, sigma_g = %.6f, E[H] = %.12g, sd[H] = %.12g.", c->spec.sweep.v[k],
                 ln.mu_g, ln.sigma_g, m1, sd);
     }
-    sf_check_le(r, "max relative error of E[H] vs the target mean", wm, s->tolerance);
-    sf_check_le(r, "max relative error of sd[H] vs the target std", ws_, s->tolerance);
-    sf_check_le(r, "max |rho_G(rho_H(rho)) - rho| over rho in [-1, 1]", wr, s->tolerance);
+    sf_check_le(r, "max relative error of E[H] vs the target mean", wm, c->spec.tolerance);
+    sf_check_le(r, "max relative error of sd[H] vs the target std", ws_, c->spec.tolerance);
+    sf_check_le(r, "max |rho_G(rho_H(rho)) - rho| over rho in [-1, 1]", wr, c->spec.tolerance);
     sf_plot *pl = sf_result_plot(r, "roundtrip", "Nataf map: moments of exp(mu_g + sigma_g G) vs targets",
                                  "CV [-]", "relative error [-]");
     sf_plot_log(pl, 1, 1);
     sf_plot_series(pl, "E[H] vs target mean", SF_STYLE_LINESPOINTS, K, cv, em);
     sf_plot_series(pl, "sd[H] vs target std", SF_STYLE_LINESPOINTS, K, cv, es);
-    sf_plot_hline(pl, "tolerance", s->tolerance);
+    sf_plot_hline(pl, "tolerance", c->spec.tolerance);
     free(cv); free(em); free(es);
     gsl_integration_cquad_workspace_free(ws);
     return SF_SUCCESS;

@@ -254,7 +254,7 @@ static double fit_slope(const double *x, const double *y, size_t n)
 static int chk_mms_slip(const sf_case *c, sf_result *r)
 {
     const sf_scene *s = &c->scene;
-    if (s->dof != SF_DOF_3 || s->sweep.n < 3 || s->sweep2.n < 3 || !(s->T > 0) || !(s->tolerance > 0)) {
+    if (s->dof != SF_DOF_3 || c->spec.sweep.n < 3 || c->spec.sweep2.n < 3 || !(s->T > 0) || !(c->spec.tolerance > 0)) {
         sf_note(r, "mms_slip needs dof = 3, T > 0, tolerance > 0, sweep (steps of rk4 and rkck, >= 3) and sweep2 "
                    "(steps of rk8pd, >= 3).");
         return SF_EINVAL;
@@ -350,7 +350,7 @@ static int chk_mms_slip(const sf_case *c, sf_result *r)
     sf_plot_log(p, 1, 1);
     double floor_meas = NAN, finest_min = INFINITY;
     for (int k = 0; k < 3; k++) {
-        const sf_list *hl = steppers[k] == SF_INTEG_RK8PD ? &s->sweep2 : &s->sweep;
+        const sf_list *hl = steppers[k] == SF_INTEG_RK8PD ? &c->spec.sweep2 : &c->spec.sweep;
         sf_scene sk = *s;
         sk.integrator = steppers[k];
         sf_osc *o = NULL;
@@ -390,7 +390,7 @@ static int chk_mms_slip(const sf_case *c, sf_result *r)
                  ORDER_ABOVE);
         sf_check_le(r, qn, slope, order[k] + ORDER_ABOVE);
         snprintf(qn, sizeof qn, "%s: error at T at the finest step h = %g s [m]", names[k], hs[n - 1]);
-        sf_check_le(r, qn, es[n - 1], s->tolerance);
+        sf_check_le(r, qn, es[n - 1], c->spec.tolerance);
         int len = snprintf(line, sizeof line, "%s: errors at T [m] for h [s] =", names[k]);
         for (size_t i = 0; i < n && len > 0 && (size_t)len < sizeof line; i++)
             len += snprintf(line + len, sizeof line - (size_t)len, "%s %g: %.3e", i ? "," : "", hs[i], es[i]);
@@ -404,7 +404,7 @@ static int chk_mms_slip(const sf_case *c, sf_result *r)
     sf_plot_hline(p, "bound from the wrench difference, (T^2/2) d/m (round-off: incoherent, pessimistic)",
                   fmax(prop, 1e-17));
     sf_plot_hline(p, "measured floor: rk8pd at h = 0.025 s", fmax(floor_meas, 1e-17));
-    sf_plot_hline(p, "tolerance on the finest-step error", s->tolerance);
+    sf_plot_hline(p, "tolerance on the finest-step error", c->spec.tolerance);
     /* every point of the fits must stand well above the floor, or the
      * fitted slope is the floor's, not the stepper's */
     sf_check_ge(r, "min over steppers of finest-step error / measured floor (rk8pd at h = 0.025 s)",

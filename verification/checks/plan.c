@@ -107,8 +107,8 @@ static int boundary_point(const sf_scene *s, sf_result *r, double *dq, double *d
 static int chk_shortcut_boundary(const sf_case *c, sf_result *r)
 {
     const sf_scene *s0 = &c->scene;
-    size_t K = s0->sweep.n;
-    if (!K || !*s0->sweep_param)
+    size_t K = c->spec.sweep.n;
+    if (!K || !*c->spec.sweep_param)
         return SF_EINVAL;
     double floor_ = 100 * s0->rtol;
     double *x = check_alloc(K * sizeof *x), *dmax = check_alloc(K * sizeof *dmax);
@@ -118,11 +118,11 @@ static int chk_shortcut_boundary(const sf_case *c, sf_result *r)
                "and the shortcut the plan would take, given the COF value mu0 of the full run's field where the "
                "disc starts. delta is the largest relative deviation of that field from mu0 over the belt region the disc covered.\n\n"
                "| %s | (E/l)^2 | plan (shortcuts on) | delta | dPV_x | dPV_F | d stick fraction |\n"
-               "|---|---|---|---|---|---|---|", s0->sweep_param);
+               "|---|---|---|---|---|---|---|", c->spec.sweep_param);
     for (size_t k = 0; k < K; k++) {
         sf_scene s = *s0;
         char err[256] = "";
-        if (sf_sweep_set(&s, s0->sweep_param, s0->sweep.v[k], err, sizeof err)) {
+        if (sf_sweep_set(&s, c->spec.sweep_param, c->spec.sweep.v[k], err, sizeof err)) {
             sf_note(r, "**Bad sweep value:** %s", err);
             return SF_EINVAL;
         }
@@ -133,20 +133,20 @@ static int chk_shortcut_boundary(const sf_case *c, sf_result *r)
             return SF_EFAIL;
         n_taken += taken;
         n_full += !taken;
-        sf_note(r, "| %g | %.3g | %s | %.3g | %.3g | %.3g | %.3g |", s0->sweep.v[k], e2,
+        sf_note(r, "| %g | %.3g | %s | %.3g | %.3g | %.3g | %.3g |", c->spec.sweep.v[k], e2,
                 taken ? (s.mu_std == 0 ? "uniform (closed forms)" : "one variable") : "field", delta, dq[0], dq[1],
                 dq[2]);
-        x[k] = s0->sweep.v[k];
+        x[k] = c->spec.sweep.v[k];
         dmax[k] = sf_max(sf_max(dq[0], dq[1]), sf_max(dq[2], 1e-17));
         dl[k] = 2 * delta + floor_;
         for (int q = 0; q < NQ; q++) {
             char t[160];
-            snprintf(t, sizeof t, "%s = %g: |d%s| within 2 delta + 100 rtol", s0->sweep_param, x[k], qname[q]);
+            snprintf(t, sizeof t, "%s = %g: |d%s| within 2 delta + 100 rtol", c->spec.sweep_param, x[k], qname[q]);
             sf_check_le(r, t, dq[q], 2 * delta + floor_);
             if (taken) {
-                snprintf(t, sizeof t, "%s = %g (shortcut taken): |d%s| within the tolerance", s0->sweep_param, x[k],
+                snprintf(t, sizeof t, "%s = %g (shortcut taken): |d%s| within the tolerance", c->spec.sweep_param, x[k],
                          qname[q]);
-                sf_check_le(r, t, dq[q], s0->tolerance);
+                sf_check_le(r, t, dq[q], c->spec.tolerance);
             }
         }
     }
@@ -158,12 +158,12 @@ static int chk_shortcut_boundary(const sf_case *c, sf_result *r)
     for (size_t k = 0; k < K; k++)
         logx &= x[k] > 0;
     sf_plot *p = sf_result_plot(r, "shortcut_boundary", "Shortcut vs full computation (coupled runs)",
-                                !strcmp(s0->sweep_param, "l_over_R") ? "l/R [-]" : "mu_std [-]",
+                                !strcmp(c->spec.sweep_param, "l_over_R") ? "l/R [-]" : "mu_std [-]",
                                 "relative QoI difference [-]");
     sf_plot_log(p, logx, 1);
     sf_plot_series(p, "largest |dQ|/Q of PV_x, PV_F, stick fraction", SF_STYLE_LINESPOINTS, K, x, dmax);
     sf_plot_series(p, "bound 2 delta + 100 rtol", SF_STYLE_LINESPOINTS, K, x, dl);
-    sf_plot_hline(p, "tolerance where the shortcut is taken", s0->tolerance);
+    sf_plot_hline(p, "tolerance where the shortcut is taken", c->spec.tolerance);
     free(x);
     free(dmax);
     free(dl);
@@ -310,8 +310,8 @@ static int chk_reuse(const sf_case *c, sf_result *r)
 static int chk_qoi_tol(const sf_case *c, sf_result *r)
 {
     const sf_scene *s0 = &c->scene;
-    size_t K = s0->sweep.n, n = s0->samples;
-    if (!K || strcmp(s0->sweep_param, "l_over_R") || s0->cells || s0->rtol > 0 || !n) {
+    size_t K = c->spec.sweep.n, n = s0->samples;
+    if (!K || strcmp(c->spec.sweep_param, "l_over_R") || s0->cells || s0->rtol > 0 || !n) {
         sf_note(r, "The scene must sweep l_over_R and leave cells and rtol to the plan (unset).");
         return SF_EINVAL;
     }
@@ -326,13 +326,13 @@ static int chk_qoi_tol(const sf_case *c, sf_result *r)
     for (size_t k = 0; k < K && !rc; k++) {
         sf_scene s = *s0;
         char err[256] = "";
-        if (sf_sweep_set(&s, "l_over_R", s0->sweep.v[k], err, sizeof err)) {
+        if (sf_sweep_set(&s, "l_over_R", c->spec.sweep.v[k], err, sizeof err)) {
             sf_note(r, "**Bad sweep value:** %s", err);
             return SF_EINVAL;
         }
         sf_cof_plan *cp;
         if ((rc = sf_cof_plan_alloc(&s, &cp, err, sizeof err))) {
-            sf_note(r, "**Cannot plan the COF at l/R = %g:** %s", s0->sweep.v[k], err);
+            sf_note(r, "**Cannot plan the COF at l/R = %g:** %s", c->spec.sweep.v[k], err);
             break;
         }
         double e2 = 0, ew = 0;
@@ -374,7 +374,7 @@ static int chk_qoi_tol(const sf_case *c, sf_result *r)
         sf_cof_plan_free(cp);
         if (rc)
             break;
-        x[k] = s0->sweep.v[k];
+        x[k] = c->spec.sweep.v[k];
         ach[k] = fmax(sqrt(e2), 1e-17);
         worst[k] = fmax(ew, 1e-17);
         pred[k] = np.err_total;

@@ -159,7 +159,7 @@ static int chk_ref_trajectory(const sf_case *c, sf_result *r)
                 gap[i] = fmax(fabs(a - b), 1e-16);
             }
         }
-        double tol = s0->tolerance * (eS + eO) + 1e-11;
+        double tol = c->spec.tolerance * (eS + eO) + 1e-11;
         char name[160];
         snprintf(name, sizeof name, "max over %zu transitions |solver - oracle|, %s", K, qname[q]);
         sf_check_le(r, name, d, tol);
@@ -181,7 +181,7 @@ static int chk_ref_trajectory(const sf_case *c, sf_result *r)
 static int chk_ref_stats(const sf_case *c, sf_result *r)
 {
     const sf_scene *s0 = &c->scene;
-    size_t K = s0->samples, nl = s0->sweep.n ? s0->sweep.n : 1;
+    size_t K = s0->samples, nl = c->spec.sweep.n ? c->spec.sweep.n : 1;
     double *a[3], *b[3];
     for (int q = 0; q < 3; q++) {
         a[q] = check_alloc(K * sizeof(double));
@@ -191,8 +191,8 @@ static int chk_ref_stats(const sf_case *c, sf_result *r)
     double pmin = 1;
     for (size_t il = 0; il < nl; il++) {
         sf_scene s = *s0;
-        if (s0->sweep.n)
-            s.l = s0->sweep.v[il] * s0->R;
+        if (c->spec.sweep.n)
+            s.l = c->spec.sweep.v[il] * s0->R;
         sf_cof_plan *plan;
         char err[256];
         if (sf_cof_plan_alloc(&s, &plan, err, sizeof err)) {
@@ -288,11 +288,11 @@ static int chk_ref_stats(const sf_case *c, sf_result *r)
             }
             double D = NAN, pv = fin ? sf_ks2_test(a[q], n, b[q], n, &D) : 0;   /* KS on NaN would not end */
             snprintf(name, sizeof name, "l/R = %g: two-sample KS on %s, solver vs oracle (D = %.3g)", s.l / s.R, qn[q], D);
-            sf_check_pvalue(r, name, pv, s0->alpha, n);
+            sf_check_pvalue(r, name, pv, c->spec.alpha, n);
             pmin = sf_min(pmin, pv);
         }
     }
-    sf_note(r, "Smallest p-value %.3g (alpha %g per test).", pmin, s0->alpha);
+    sf_note(r, "Smallest p-value %.3g (alpha %g per test).", pmin, c->spec.alpha);
     for (int q = 0; q < 3; q++) {
         free(a[q]);
         free(b[q]);
@@ -418,7 +418,7 @@ static int chk_ref_energy(const sf_case *c, sf_result *r)
         return SF_EFAIL;
     }
     double e_solver = field ? fabs(b.resid - bc.resid) : 0;
-    double tol = s->tolerance * (b.e_trap + b.e_quad + e_solver) + 1e-12 * b.turnover;
+    double tol = c->spec.tolerance * (b.e_trap + b.e_quad + e_solver) + 1e-12 * b.turnover;
     int fin = isfinite(b.resid) && isfinite(tol) && (!field || isfinite(bc.resid));
     sf_check_true(r, "balance terms finite", fin, fin ? "yes" : "NaN/Inf");
     sf_check_le(r, "|E(T) - E(0) - W_oracle - jumps| [J]", fabs(b.resid), tol);
@@ -429,7 +429,7 @@ static int chk_ref_energy(const sf_case *c, sf_result *r)
                "state) is %.3g J.",
             h.n, s->T, field ? " (solver at 2 x cells)" : "", b.dE, 2 * oracle_nr(s), 8 * oracle_nr(s), b.W, b.jumps,
             b.resid, b.e_trap, oracle_nr(s), 4 * oracle_nr(s), b.e_quad, e_solver,
-            field ? "residual change from the run at the scene's cells" : "closed-form wrench", s->tolerance, b.turnover,
+            field ? "residual change from the run at the scene's cells" : "closed-form wrench", c->spec.tolerance, b.turnover,
             tol, b.own);
     double m = s->m, J = 0.5 * s->m * s->R * s->R, k = s->k;
     size_t np = 0;
@@ -456,7 +456,7 @@ static int chk_ref_energy(const sf_case *c, sf_result *r)
 static int chk_ref_eq15(const sf_case *c, sf_result *r)
 {
     const sf_scene *s0 = &c->scene;
-    if (s0->sweep.n != 2)
+    if (c->spec.sweep.n != 2)
         return SF_EINVAL;
     sf_cof *cof = check_case_cof(c, s0, r);
     if (!cof)
@@ -466,8 +466,8 @@ static int chk_ref_eq15(const sf_case *c, sf_result *r)
         sf_osc_result ra, rb;
         ref3dof_result oa, ob;
         sf_scene sa = *s0, sb = *s0;
-        sa.eps_lambda = s0->sweep.v[0];
-        sb.eps_lambda = s0->sweep.v[1];
+        sa.eps_lambda = c->spec.sweep.v[0];
+        sb.eps_lambda = c->spec.sweep.v[1];
         sa.rtol = sb.rtol = s0->rtol / (lev ? 100 : 1);
         ref3dof *o1 = NULL, *o2 = NULL;
         double dt = s0->dt / (lev ? 2 : 1);
@@ -496,14 +496,14 @@ static int chk_ref_eq15(const sf_case *c, sf_result *r)
         ref3dof_result_free(&oa); ref3dof_result_free(&ob);
         ref3dof_free(o1); ref3dof_free(o2);
     }
-    double tol = s0->tolerance * (fabs(Es[1] - Es[0]) + fabs(Eo[1] - Eo[0])) + 1e-12 * Eo[1];
+    double tol = c->spec.tolerance * (fabs(Es[1] - Es[0]) + fabs(Eo[1] - Eo[0])) + 1e-12 * Eo[1];
     int fin = isfinite(Es[1]) && isfinite(Eo[1]) && Es[1] > 0;
     sf_check_true(r, "Eq. 15 values finite and positive", fin, fin ? "yes" : "no");
     sf_check_abs(r, "Eq. 15 error, solver (sf_osc_error_eq15) vs oracle [m^2 s]", Es[1], Eo[1], tol);
     sf_note(r, "Eq. 15 of eps = %g against eps = %g over %g s: solver %.10g and %.10g (rtol %g, %g), oracle %.10g "
                "and %.10g (dt %g, %g s; %zu and %zu radial nodes) m^2 s; tolerance %g x (%.3g + %.3g) = %.3g.",
-            s0->sweep.v[0], s0->sweep.v[1], s0->T, Es[0], Es[1], s0->rtol, s0->rtol / 100, Eo[0], Eo[1], s0->dt,
-            s0->dt / 2, oracle_nr(s0), 2 * oracle_nr(s0), s0->tolerance, fabs(Es[1] - Es[0]), fabs(Eo[1] - Eo[0]), tol);
+            c->spec.sweep.v[0], c->spec.sweep.v[1], s0->T, Es[0], Es[1], s0->rtol, s0->rtol / 100, Eo[0], Eo[1], s0->dt,
+            s0->dt / 2, oracle_nr(s0), 2 * oracle_nr(s0), c->spec.tolerance, fabs(Es[1] - Es[0]), fabs(Eo[1] - Eo[0]), tol);
     sf_cof_free(cof);
     return SF_SUCCESS;
 }

@@ -44,7 +44,7 @@ static int spans_decades(size_t n, const double *v)
 static int chk_cof_plan_range(const sf_case *c, sf_result *r)
 {
     const sf_scene *s0 = &c->scene;
-    size_t K = s0->sweep.n, bad = 0, refused = 0, shortcut = 0, fields = 0;
+    size_t K = c->spec.sweep.n, bad = 0, refused = 0, shortcut = 0, fields = 0;
     if (!K)
         return SF_EINVAL;
     gsl_rng *rng = sf_case_rng(c);
@@ -56,7 +56,7 @@ static int chk_cof_plan_range(const sf_case *c, sf_result *r)
 #define PUSH(d, xv, yv) (pd[2 * K * (d) + nd[d]] = (xv), pd[2 * K * (d) + K + nd[d]] = (yv), nd[d]++)
     for (size_t k = 0; k < K; k++) {
         sf_scene s = *s0;
-        s.l = s0->sweep.v[k] * s0->R;
+        s.l = c->spec.sweep.v[k] * s0->R;
         char err[256] = "";
         sf_cof_plan *p;
         int rc = sf_cof_plan_alloc(&s, &p, err, sizeof err);
@@ -64,13 +64,13 @@ static int chk_cof_plan_range(const sf_case *c, sf_result *r)
             refused++;
             int has_reason = strstr(err, "grid points") && strstr(err, "raise l");
             bad += !has_reason;
-            sf_note(r, "| %g | refused: %s | | |", s0->sweep.v[k], err);
-            PUSH(2, s0->sweep.v[k], 0);
+            sf_note(r, "| %g | refused: %s | | |", c->spec.sweep.v[k], err);
+            PUSH(2, c->spec.sweep.v[k], 0);
             continue;
         }
         if (rc) {
             bad++;
-            sf_note(r, "| %g | **error %s** | | |", s0->sweep.v[k], sf_strerror(rc));
+            sf_note(r, "| %g | **error %s** | | |", c->spec.sweep.v[k], sf_strerror(rc));
             continue;
         }
         const sf_cof_plan_info *in = sf_cof_plan_get_info(p);
@@ -104,8 +104,8 @@ static int chk_cof_plan_range(const sf_case *c, sf_result *r)
             shortcut++;
         else
             fields++;
-        PUSH(in->shortcut ? 1 : 0, s0->sweep.v[k], mn);
-        sf_note(r, "| %g | %s | %zu x %zu | %.4g |", s0->sweep.v[k],
+        PUSH(in->shortcut ? 1 : 0, c->spec.sweep.v[k], mn);
+        sf_note(r, "| %g | %s | %zu x %zu | %.4g |", c->spec.sweep.v[k],
                 in->shortcut ? "one random variable"
                 : in->generator == SF_COFGEN_TILES ? "strip field, tiles in a sliding window"
                                                    : "strip field (circulant)",
@@ -118,7 +118,7 @@ static int chk_cof_plan_range(const sf_case *c, sf_result *r)
                   fields && shortcut && refused, fields && shortcut && refused ? "all three seen" : "one is missing");
     sf_plot *pl = sf_result_plot(r, "cof_plan_range", "COF plan over l/R: decision and smallest COF drawn",
                                  "correlation length l/R [dimensionless]", "smallest COF drawn [dimensionless]");
-    sf_plot_log(pl, spans_decades(K, s0->sweep.v), 0);
+    sf_plot_log(pl, spans_decades(K, c->spec.sweep.v), 0);
     const char *lab[3] = { "strip field", "one random variable (shortcut)", "refused with a reason (no draw; shown at 0)" };
     for (int d = 0; d < 3; d++)
         if (nd[d])
@@ -137,7 +137,7 @@ static int chk_cof_plan_range(const sf_case *c, sf_result *r)
 static int chk_near_singular(const sf_case *c, sf_result *r)
 {
     const sf_scene *s0 = &c->scene;
-    size_t K = s0->sweep.n, bad = 0;
+    size_t K = c->spec.sweep.n, bad = 0;
     if (!K)
         return SF_EINVAL;
     gsl_rng *rng = sf_case_rng(c);
@@ -149,11 +149,11 @@ static int chk_near_singular(const sf_case *c, sf_result *r)
     size_t ne[2] = { 0, 0 };
     for (size_t k = 0; k < K; k++) {
         sf_field_spec spec;
-        sf_field_spec_default(&spec, s0->nx, s0->ny, s0->dx, s0->dy, s0->sweep.v[k] * s0->dx);
+        sf_field_spec_default(&spec, s0->nx, s0->ny, s0->dx, s0->dy, c->spec.sweep.v[k] * s0->dx);
         sf_field *f;
         int rc = sf_field_alloc(&spec, &f);
         if (!sf_usable(rc)) {
-            sf_note(r, "| %g | refused: %s | | | | |", s0->sweep.v[k], sf_strerror(rc));
+            sf_note(r, "| %g | refused: %s | | | | |", c->spec.sweep.v[k], sf_strerror(rc));
             bad += rc != SF_ETOOBIG;   /* too large an embedding is a fair refusal */
             continue;
         }
@@ -175,11 +175,11 @@ static int chk_near_singular(const sf_case *c, sf_result *r)
         /* floored at 1e-17 so that an exact 0 shows on the log axis */
         {
             int d = in->truncated != 0;
-            pe[2 * K * d + ne[d]] = s0->sweep.v[k];
+            pe[2 * K * d + ne[d]] = c->spec.sweep.v[k];
             pe[2 * K * d + K + ne[d]] = isnan(in->cov_error) ? NAN : fmax(in->cov_error, 1e-17);
             ne[d]++;
         }
-        sf_note(r, "| %g | %zu x %zu | %s | %zu | %.3e | %.3g |", s0->sweep.v[k], in->px, in->py,
+        sf_note(r, "| %g | %zu x %zu | %s | %zu | %.3e | %.3g |", c->spec.sweep.v[k], in->px, in->py,
                 in->truncated ? "yes" : "no", in->n_clamped, in->cov_error, mx);
         bad += mx > 8;   /* |N(0,1)| > 8 has probability 1e-15 per value */
         free(g);
@@ -187,16 +187,16 @@ static int chk_near_singular(const sf_case *c, sf_result *r)
     }
     sf_check_le(r, "non-finite samples, wrong truncation flag, or |sample| > 8", (double)bad, 0);
     sf_check_le(r, "covariance error of the untruncated embeddings (round-off clamps only)",
-                worst_err_untruncated, s0->tolerance);
+                worst_err_untruncated, c->spec.tolerance);
     sf_plot *pl = sf_result_plot(r, "near_singular", "Circulant embedding: covariance error against l/dx",
                                  "correlation length l/dx [dimensionless]",
                                  "max covariance error (floored at 1e-17) [dimensionless]");
-    sf_plot_log(pl, spans_decades(K, s0->sweep.v), 1);
+    sf_plot_log(pl, spans_decades(K, c->spec.sweep.v), 1);
     if (ne[0])
         sf_plot_series(pl, "PSD embedding (round-off clamps only)", SF_STYLE_POINTS, ne[0], pe, pe + K);
     if (ne[1])
         sf_plot_series(pl, "truncated (error reported)", SF_STYLE_POINTS, ne[1], pe + 2 * K, pe + 3 * K);
-    sf_plot_hline(pl, "tolerance (untruncated)", s0->tolerance);
+    sf_plot_hline(pl, "tolerance (untruncated)", c->spec.tolerance);
     free(pe);
     gsl_rng_free(rng);
     return SF_SUCCESS;
@@ -298,18 +298,18 @@ static int chk_wrench_extremes(const sf_case *c, sf_result *r)
 static int chk_run(const sf_case *c, sf_result *r)
 {
     const sf_scene *s0 = &c->scene;
-    size_t K = *s0->sweep_param ? s0->sweep.n : 1;
+    size_t K = *c->spec.sweep_param ? c->spec.sweep.n : 1;
     size_t bad = 0;
     double worst_e = 0;
     /* for the plot: the stressed value, the energy residual and the
        excursion over its bound */
     double *pv = check_alloc(3 * K * sizeof *pv), *pe = pv + K, *px = pv + 2 * K;
     sf_note(r, "| %s | result | transitions | cycles | stick fraction | x range [m] | max abs y [m] | energy residual (rel.) | steps |\n"
-               "|---|---|---|---|---|---|---|---|---|", *s0->sweep_param ? s0->sweep_param : "run");
+               "|---|---|---|---|---|---|---|---|---|", *c->spec.sweep_param ? c->spec.sweep_param : "run");
     for (size_t k = 0; k < K; k++) {
         sf_scene s = *s0;
         char err[256] = "";
-        if (*s0->sweep_param && sf_sweep_set(&s, s0->sweep_param, s0->sweep.v[k], err, sizeof err)) {
+        if (*c->spec.sweep_param && sf_sweep_set(&s, c->spec.sweep_param, c->spec.sweep.v[k], err, sizeof err)) {
             free(pv);
             return SF_EINVAL;
         }
@@ -320,10 +320,10 @@ static int chk_run(const sf_case *c, sf_result *r)
         double bound = 2 * (s.mu_mean + 4 * s.mu_std) * s.m * s.g / s.k;
         double e = fabs(res.energy_residual) / sf_max(fabs(res.friction_work) + fabs(res.energy_change), 1e-300);
         int ok = rc == SF_SUCCESS && isfinite(res.x_min) && isfinite(res.x_max) &&
-                 sf_max(fabs(res.x_min), fabs(res.x_max)) <= bound && res.y_absmax <= bound && e <= s0->tolerance;
+                 sf_max(fabs(res.x_min), fabs(res.x_max)) <= bound && res.y_absmax <= bound && e <= c->spec.tolerance;
         bad += !ok;
         worst_e = sf_max(worst_e, rc ? INFINITY : e);
-        pv[k] = *s0->sweep_param ? s0->sweep.v[k] : 1.0;
+        pv[k] = *c->spec.sweep_param ? c->spec.sweep.v[k] : 1.0;
         pe[k] = rc ? NAN : fmax(e, 1e-17);
         px[k] = rc ? NAN : fmax(fmax(fabs(res.x_min), fabs(res.x_max)), res.y_absmax) / bound;
         if (K == 1 && rc == SF_SUCCESS) {
@@ -335,15 +335,15 @@ static int chk_run(const sf_case *c, sf_result *r)
             sf_plot_hline(pt, "-2 mu_hi m g / k", -bound);
         }
         sf_note(r, "| %g | %s | %zu | %zu | %.4g | [%.4g, %.4g] | %.3g | %.2e | %lu |",
-                *s0->sweep_param ? s0->sweep.v[k] : 0.0, rc ? sf_strerror(rc) : (ok ? "ok" : "**out of bounds**"),
+                *c->spec.sweep_param ? c->spec.sweep.v[k] : 0.0, rc ? sf_strerror(rc) : (ok ? "ok" : "**out of bounds**"),
                 res.ntrans, res.ncycles, res.stick_fraction, res.x_min, res.x_max, res.y_absmax, e, res.steps);
         sf_osc_result_free(&res);
     }
     sf_check_le(r, "runs that failed, went non-finite, left the bound 2 mu_hi m g / k, or broke the energy balance",
                 (double)bad, 0);
-    sf_check_le(r, "worst relative energy residual", worst_e, s0->tolerance);
+    sf_check_le(r, "worst relative energy residual", worst_e, c->spec.tolerance);
     char xl[64];
-    sweep_label(s0->sweep_param, xl, sizeof xl);
+    sweep_label(c->spec.sweep_param, xl, sizeof xl);
     sf_plot *pl = K == 1 ? NULL
                          : sf_result_plot(r, "stress_run", "Energy balance and excursion at the stressed parameter",
                                           xl, "ratio [dimensionless]");
@@ -351,7 +351,7 @@ static int chk_run(const sf_case *c, sf_result *r)
         sf_plot_log(pl, spans_decades(K, pv), 1);
         sf_plot_series(pl, "relative energy residual (floored at 1e-17)", SF_STYLE_LINESPOINTS, K, pv, pe);
         sf_plot_series(pl, "max(|x|, |y|) / (2 mu_hi m g / k)", SF_STYLE_LINESPOINTS, K, pv, px);
-        sf_plot_hline(pl, "energy tolerance", s0->tolerance);
+        sf_plot_hline(pl, "energy tolerance", c->spec.tolerance);
         sf_plot_hline(pl, "excursion bound", 1);
     }
     free(pv);

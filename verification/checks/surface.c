@@ -94,8 +94,8 @@ static int chk_uniform_shape(const sf_case *c, sf_result *r)
                 sf_max(hypot(qn[0], qn[1]), hypot(qs[0], qs[1])) / mu);
     sf_check_le(r, "equator (theta = 0): max | |F*| - mu_s |, |T*| over psi, / mu_s", eq, 1e-11);
     sf_check_le(r, "poles: max |T*(+-pi/2) -+ (2/3) mu_s|, |F*| there, / mu_s", pole, 1e-11);
-    sf_check_le(r, "axisymmetry: max |R(-psi) Q*(theta, psi) - Q*(theta, 0)| / mu_s", axi, s->tolerance);
-    sf_check_le(r, "mirror: max |T*(-theta) + T*(theta)|, |F*(-theta) - F*(theta)| / mu_s", mir, s->tolerance);
+    sf_check_le(r, "axisymmetry: max |R(-psi) Q*(theta, psi) - Q*(theta, 0)| / mu_s", axi, c->spec.tolerance);
+    sf_check_le(r, "mirror: max |T*(-theta) + T*(theta)|, |F*(-theta) - F*(theta)| / mu_s", mir, c->spec.tolerance);
     sf_note(r, "%s layout, %zu cells; %zu x %zu directions; mu_s = %g.",
             s->layout == SF_LAYOUT_POLAR ? "polar" : "cartesian", sf_contact_ncells(d.ct), nt, np, mu);
     sf_plot *p = sf_result_plot(r, "meridian", "Uniform-COF limit surface, meridian section (psi = 0)",
@@ -149,8 +149,8 @@ static int chk_contensou_theta(const sf_case *c, sf_result *r)
             n++;
         }
     }
-    sf_check_le(r, "max over (theta, psi) of |F*/mu - f(|cot theta|) (cos psi, sin psi)| (units of mu N)", ef, s->tolerance);
-    sf_check_le(r, "max over (theta, psi) of |T*/mu - sign(theta) t(|cot theta|)| (units of mu N R)", et, s->tolerance);
+    sf_check_le(r, "max over (theta, psi) of |F*/mu - f(|cot theta|) (cos psi, sin psi)| (units of mu N)", ef, c->spec.tolerance);
+    sf_check_le(r, "max over (theta, psi) of |T*/mu - sign(theta) t(|cot theta|)| (units of mu N R)", et, c->spec.tolerance);
     sf_note(r, "%s layout, %zu cells; %zu theta values strictly inside (-pi/2, pi/2) (Contensou ratio eps = |cot "
                "theta| from %.3g to %.3g) x %zu azimuths = %zu points; mu_s = %g. The oracle is the closed form "
                "of DESIGN.md sec. 5 evaluated by the check (GSL complete elliptic integrals), not sf_contensou.",
@@ -216,8 +216,8 @@ static int chk_convexity(const sf_case *c, sf_result *r)
         }
     }
     sf_check_le(r, "max over pairs of d_i . Q(d_j) - d_i . Q(d_i) (max-power principle), / mu_bar",
-                worst / mu_scale, s->tolerance);
-    sf_check_le(r, "central symmetry: max |Q(-d) + Q(d)| / mu_bar", sym / mu_scale, s->tolerance);
+                worst / mu_scale, c->spec.tolerance);
+    sf_check_le(r, "central symmetry: max |Q(-d) + Q(d)| / mu_bar", sym / mu_scale, c->spec.tolerance);
     sf_note(r, "%zu realisations (%s), %zu directions each, %zu ordered pairs. A wrong sign or a dropped term "
                "in the torque integrand breaks the principle by O(mu).",
             reals, s->cof == SF_COF_UNIFORM || s->mu_std == 0 ? "uniform COF" : "lognormal fields", n, pairs);
@@ -279,7 +279,7 @@ static int chk_equator_mean_cof(const sf_case *c, sf_result *r)
         b[k] = mc;
     }
     sf_check_le(r, "theta = 0 curve: max | |F*(0, psi)| - mu_bar | / mu_bar (exact circle)", circ, 1e-13);
-    sf_check_le(r, "max |mu_bar (polar, surface) - disc average (Cartesian, 4x cells)| / mu_bar", avg, s->tolerance);
+    sf_check_le(r, "max |mu_bar (polar, surface) - disc average (Cartesian, 4x cells)| / mu_bar", avg, c->spec.tolerance);
     sf_note(r, "%zu lognormal realisations, l = %g m, R = %g m; polar %zu rings vs Cartesian %zu cells across. "
                "The tolerance is the two quadratures' disagreement on a bilinear field, which converges at "
                "second order in the cell size.", reals, s->l, s->R, s->cells, 4 * s->cells);
@@ -304,7 +304,7 @@ static int chk_equator_mean_cof(const sf_case *c, sf_result *r)
 static int chk_section_vs_circle(const sf_case *c, sf_result *r)
 {
     const sf_scene *s = &c->scene;
-    size_t K = s->sweep.n, reals = s->samples, na = 24;
+    size_t K = c->spec.sweep.n, reals = s->samples, na = 24;
     if (!K)
         return SF_EINVAL;
     gsl_rng *rng = sf_case_rng(c);
@@ -314,7 +314,7 @@ static int chk_section_vs_circle(const sf_case *c, sf_result *r)
     sf_note(r, "| l/R | mean gap (mu_bar - rho)/mu_bar | max gap | mean max |T*(0, psi)| / mu_bar |\n|---|---|---|---|");
     for (size_t k = 0; k < K; k++) {
         sf_scene t = *s;
-        t.l = s->sweep.v[k] * s->R;
+        t.l = c->spec.sweep.v[k] * s->R;
         disc d = { 0 };
         double sum = 0, mx = 0, tsum = 0;
         for (size_t q = 0; q < reals; q++) {
@@ -339,14 +339,14 @@ static int chk_section_vs_circle(const sf_case *c, sf_result *r)
             tsum += tmax;
         }
         disc_free(&d);
-        lr[k] = s->sweep.v[k];
+        lr[k] = c->spec.sweep.v[k];
         mean_gap[k] = sum / (double)(reals * na);
         max_gap[k] = mx;
         tq[k] = tsum / (double)reals;
         sf_note(r, "| %g | %.3e | %.3e | %.3e |", lr[k], mean_gap[k], max_gap[k], tq[k]);
     }
     sf_check_le(r, "max (rho(alpha) - mu_bar) / mu_bar: exact section inside the equatorial circle", over, 1e-12);
-    sf_check_le(r, "max gap at the largest l/R (near-uniform patch)", max_gap[K - 1], s->tolerance);
+    sf_check_le(r, "max gap at the largest l/R (near-uniform patch)", max_gap[K - 1], c->spec.tolerance);
     size_t kmax = 0;
     for (size_t k = 1; k < K; k++)
         if (!(mean_gap[k] <= mean_gap[kmax]) && !isnan(mean_gap[kmax]))   /* NaN-aware argmax */
@@ -364,7 +364,7 @@ static int chk_section_vs_circle(const sf_case *c, sf_result *r)
     }
     sf_plot_series(p, "mean over directions and realisations", SF_STYLE_LINESPOINTS, K, lr, mean_gap);
     sf_plot_series(p, "max", SF_STYLE_LINESPOINTS, K, lr, max_gap);
-    sf_plot_hline(p, "tolerance at the largest l/R", s->tolerance);
+    sf_plot_hline(p, "tolerance at the largest l/R", c->spec.tolerance);
     free(lr); free(mean_gap); free(max_gap); free(tq);
     gsl_rng_free(rng);
     return SF_SUCCESS;
@@ -400,7 +400,7 @@ static double contour_error(const sf_surface *sf, size_t nth, size_t npsi, doubl
 static int chk_section_vs_full(const sf_case *c, sf_result *r)
 {
     const sf_scene *s = &c->scene;
-    size_t K = s->sweep.n, npsi = s->npsi;
+    size_t K = c->spec.sweep.n, npsi = s->npsi;
     enum { NL = 5 };
     if (!K)
         return SF_EINVAL;
@@ -414,7 +414,7 @@ static int chk_section_vs_full(const sf_case *c, sf_result *r)
             npsi, npsi, s->ntheta, 2 * s->ntheta - 1, 4 * s->ntheta - 3, 8 * s->ntheta - 7, 16 * s->ntheta - 15);
     for (size_t k = 0; k < K; k++) {
         sf_scene t = *s;
-        t.l = s->sweep.v[k] * s->R;
+        t.l = c->spec.sweep.v[k] * s->R;
         disc d = { 0 };
         if (disc_make(&t, rng, s->cells, SF_LAYOUT_POLAR, &d)) {
             disc_free(&d);
@@ -428,12 +428,12 @@ static int chk_section_vs_full(const sf_case *c, sf_result *r)
         }
         disc_free(&d);
         double order = log2(err[NL - 2][k] / err[NL - 1][k]);
-        sf_note(r, "| %g | %.3e | %.3e | %.3e | %.3e | %.3e | %.2f |", s->sweep.v[k], err[0][k], err[1][k], err[2][k],
+        sf_note(r, "| %g | %.3e | %.3e | %.3e | %.3e | %.3e | %.2f |", c->spec.sweep.v[k], err[0][k], err[1][k], err[2][k],
                 err[3][k], err[4][k], order);
         char q[160];
-        snprintf(q, sizeof q, "l/R = %g: contour error on the finest grid (ntheta = %.0f)", s->sweep.v[k], nth[NL - 1]);
-        sf_check_le(r, q, err[NL - 1][k], s->tolerance);
-        snprintf(q, sizeof q, "l/R = %g: observed order of the contour's convergence to the section", s->sweep.v[k]);
+        snprintf(q, sizeof q, "l/R = %g: contour error on the finest grid (ntheta = %.0f)", c->spec.sweep.v[k], nth[NL - 1]);
+        sf_check_le(r, q, err[NL - 1][k], c->spec.tolerance);
+        snprintf(q, sizeof q, "l/R = %g: observed order of the contour's convergence to the section", c->spec.sweep.v[k]);
         sf_check_ge(r, q, order, 1.8);
     }
     gsl_rng_free(rng);
@@ -448,10 +448,10 @@ static int chk_section_vs_full(const sf_case *c, sf_result *r)
         char lab[48];
         for (int L = 0; L < NL; L++)
             y[L] = sf_max(err[L][k], 1e-17);
-        snprintf(lab, sizeof lab, "l/R = %g", s->sweep.v[k]);
+        snprintf(lab, sizeof lab, "l/R = %g", c->spec.sweep.v[k]);
         sf_plot_series(p, lab, SF_STYLE_LINESPOINTS, NL, nth, y);
     }
-    sf_plot_hline(p, "tolerance", s->tolerance);
+    sf_plot_hline(p, "tolerance", c->spec.tolerance);
     return SF_SUCCESS;
 }
 

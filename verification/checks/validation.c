@@ -32,23 +32,23 @@ typedef struct {
 static int run_sweep(const sf_case *c, sf_result *r, sweep_run *sw)
 {
     const sf_scene *s0 = &c->scene;
-    sw->K = s0->sweep.n;
-    if (!sw->K || !*s0->sweep_param)
+    sw->K = c->spec.sweep.n;
+    if (!sw->K || !*c->spec.sweep_param)
         return SF_EINVAL;
     sw->v = check_alloc(sw->K * sizeof *sw->v);
     sw->pt = check_alloc(sw->K * sizeof *sw->pt);
     for (size_t k = 0; k < sw->K; k++) {
         sf_scene s = *s0;
         char err[256] = "";
-        sw->v[k] = s0->sweep.v[k];
-        if (sf_sweep_set(&s, s0->sweep_param, sw->v[k], err, sizeof err) ||
+        sw->v[k] = c->spec.sweep.v[k];
+        if (sf_sweep_set(&s, c->spec.sweep_param, sw->v[k], err, sizeof err) ||
             sf_sweep_run(&s, s0->samples, 0, NULL, 0, NULL, &sw->pt[k], err, sizeof err)) {
-            sf_note(r, "**Sweep failed at %s = %g:** %s", s0->sweep_param, sw->v[k], err);
+            sf_note(r, "**Sweep failed at %s = %g:** %s", c->spec.sweep_param, sw->v[k], err);
             return SF_EFAIL;
         }
     }
     sf_note(r, "| %s | det PV_x [m] | det PV_F [N] | det stick fr. | PV_x ratio | PV_F ratio | stick-fr. ratio | "
-               "with a cycle |\n|---|---|---|---|---|---|---|---|", s0->sweep_param);
+               "with a cycle |\n|---|---|---|---|---|---|---|---|", c->spec.sweep_param);
     for (size_t k = 0; k < sw->K; k++) {
         const sf_sweep_point *p = &sw->pt[k];
         sf_note(r, "| %g | %.4f | %.4f | %.4f | %.4f +- %.4f | %.4f +- %.4f | %.4f +- %.4f | %zu/%zu |", sw->v[k],
@@ -122,7 +122,7 @@ static int chk_fig10(const sf_case *c, sf_result *r)
         hi[i] = pt.mean[0] + h;
     }
     double half = 1.96 * pt.std[0] / sqrt((double)n);
-    sf_check_le(r, "95% confidence half-width of the mean PV_x ratio at N", half, s->tolerance);
+    sf_check_le(r, "95% confidence half-width of the mean PV_x ratio at N", half, c->spec.tolerance);
     sf_note(r, "Mean PV_x ratio %.4f, std %.4f over %zu realisations (l/R = %g). The paper (Fig. 10) finds the mean "
                "settled beyond 100 realisations; here the half-width at N is %.4f and the running mean enters the "
                "CLT band early. The band is around the final mean (not an independent truth), so it shows the "
@@ -152,7 +152,7 @@ static int chk_fig11(const sf_case *c, sf_result *r)
             kmax = k;
     double cv = s0->mu_std / s0->mu_mean, s2 = sw.pt[K - 1].std[1] * sw.pt[K - 1].std[1];
     sf_check_pvalue(r, "largest l/R: var of the PV_F ratio = CV^2 (chi-square, mean estimated)",
-                    sf_var_pvalue(s2, cv * cv, sw.pt[K - 1].n, 0), s0->alpha, sw.pt[K - 1].n);
+                    sf_var_pvalue(s2, cv * cv, sw.pt[K - 1].n, 0), c->spec.alpha, sw.pt[K - 1].n);
     sf_check_true(r, "the PV_F spread peaks at l/R between 0.3 and 10 (the paper: near 1)",
                   sw.v[kmax] >= 0.3 && sw.v[kmax] <= 10, "peak location in range");
     sf_note(r, "Peak of the PV_F spread at l/R = %g (std %.3f); at l/R = %g the std is %.3f (exact limit: CV = %g). "
@@ -169,7 +169,6 @@ static int chk_fig11(const sf_case *c, sf_result *r)
  * for the stochastic model than the deterministic one. */
 static int chk_fig12(const sf_case *c, sf_result *r)
 {
-    const sf_scene *s0 = &c->scene;
     sweep_run sw = { 0 };
     if (run_sweep(c, r, &sw))
         return SF_EFAIL;
@@ -197,7 +196,7 @@ static int chk_fig12(const sf_case *c, sf_result *r)
     free(w);
     sf_check_true(r, "deterministic stick fraction falls with v_b (closed form: t_stick = 2 d / v_b)", mono,
                   mono ? "monotone" : "not monotone");
-    sf_check_le(r, "u_val: standard error of the stochastic slope (the comparison must be resolved)", u, s0->tolerance);
+    sf_check_le(r, "u_val: standard error of the stochastic slope (the comparison must be resolved)", u, c->spec.tolerance);
     int agree = E + 2 * u < 0, contra = E - 2 * u > 0;
     sf_note(r, "Slopes of log stick fraction vs log v_b: deterministic %.3f (exact), stochastic %.3f +- %.3f (1 "
                "standard error). Comparison with the paper (stochastic steeper, E = slope difference < 0): "
@@ -240,12 +239,12 @@ static int chk_fig13(const sf_case *c, sf_result *r)
         valid = valid < sw.pt[k].n_valid ? valid : sw.pt[k].n_valid;
     sf_check_ge(r, "fewest realisations with a complete cycle at any mean COF", (double)valid, 0.8 * (double)s0->samples);
     sf_check_le(r, "u_val: standard error of the difference of |mean - 1| (the comparison must be resolved)",
-                hypot(se0, se1), s0->tolerance);
+                hypot(se0, se1), c->spec.tolerance);
     double p1 = 1 - gsl_cdf_ugaussian_P(z), p2 = gsl_cdf_ugaussian_P(z);
     sf_note(r, "|mean PV_F ratio - 1|: %.4f at mean COF %g, %.4f at %g; E = difference = %.4f, u_val = %.4f "
                "(z = %.2f). **Finding:** %s", d0, sw.v[0], d1, sw.v[K - 1], d0 - d1, hypot(se0, se1), z,
-            p1 < s0->alpha ? "agrees with the paper: the ratios approach 1 as the mean COF grows."
-            : p2 < s0->alpha
+            p1 < c->spec.alpha ? "agrees with the paper: the ratios approach 1 as the mean COF grows."
+            : p2 < c->spec.alpha
                 ? "differs from the paper: in our model the PV_F ratio moves *away* from 1 as the mean COF grows at "
                   "fixed CV. A likely cause is the QoI definition: our PV_F is the peak-to-valley of Fx over the "
                   "whole cycle, slip included; a larger COF means longer slip paths over the field, whose friction "
@@ -310,7 +309,7 @@ static double harmonic_share(const spectrum *sp, double period)
 static int chk_fig15(const sf_case *c, sf_result *r)
 {
     const sf_scene *s0 = &c->scene;
-    size_t K = s0->sweep.n;
+    size_t K = c->spec.sweep.n;
     if (!K)
         return SF_EINVAL;
     const double dt = 0.01;
@@ -340,7 +339,7 @@ static int chk_fig15(const sf_case *c, sf_result *r)
     for (size_t j = 0; j < K; j++) {
         sf_scene s = *s0;
         char err[128];
-        sf_sweep_set(&s, "l_over_R", s0->sweep.v[j], err, sizeof err);
+        sf_sweep_set(&s, "l_over_R", c->spec.sweep.v[j], err, sizeof err);
         spectrum sp;
         if (spectrum_of(&s, rng, dt, period, &sp, NULL, r)) {
             gsl_rng_free(rng);
@@ -351,18 +350,18 @@ static int chk_fig15(const sf_case *c, sf_result *r)
             sm += sp.p[k] * d2;
         double pr = fabs(sm / sp.var - 1);
         parseval = sf_max(parseval, pr);
-        sf_note(r, "| %g | %.4f | %.1e |", s0->sweep.v[j], harmonic_share(&sp, period), pr);
+        sf_note(r, "| %g | %.4f | %.1e |", c->spec.sweep.v[j], harmonic_share(&sp, period), pr);
         for (size_t k = 0; k < nplot && k < sp.n; k++)
             sp.p[k] = sf_max(sp.p[k], 1e-16);
         char lb[64];
-        snprintf(lb, sizeof lb, "stochastic, l/R = %g", s0->sweep.v[j]);
+        snprintf(lb, sizeof lb, "stochastic, l/R = %g", c->spec.sweep.v[j]);
         sf_plot_series(p, lb, SF_STYLE_LINES, nplot < sp.n ? nplot : sp.n, sp.f, sp.p);
         free(sp.f);
         free(sp.p);
     }
     gsl_rng_free(rng);
     sf_check_ge(r, "deterministic: share of the power at the harmonics k / period (periodic response)", share_det,
-                1 - s0->tolerance);
+                1 - c->spec.tolerance);
     sf_check_le(r, "Parseval: |sum p df / var(x) - 1| over all spectra", parseval, 1e-12);
     sf_note(r, "\nOne realisation per l/R, T = %g s, samples every %g s after t_skip = %g s. The paper's Fig. 15 "
                "shows the stochastic spectra keeping the deterministic harmonics with broadened, shifted peaks, "
@@ -379,18 +378,18 @@ static int chk_fig15(const sf_case *c, sf_result *r)
 static int chk_fig16(const sf_case *c, sf_result *r)
 {
     const sf_scene *s0 = &c->scene;
-    size_t K = s0->sweep.n;
-    if (!K || !*s0->sweep_param)
+    size_t K = c->spec.sweep.n;
+    if (!K || !*c->spec.sweep_param)
         return SF_EINVAL;
     gsl_rng *rng = sf_case_rng(c);
     double worst = 0, *px = check_alloc(4096 * sizeof *px), *py = check_alloc(4096 * sizeof *py);
     double *dx = check_alloc(K * sizeof *dx), *dy = check_alloc(K * sizeof *dy);
     size_t np = 0;
-    sf_note(r, "| %s | samples | min x [m] | max x [m] | deterministic x_e - d [m] |\n|---|---|---|---|---|", s0->sweep_param);
+    sf_note(r, "| %s | samples | min x [m] | max x [m] | deterministic x_e - d [m] |\n|---|---|---|---|---|", c->spec.sweep_param);
     for (size_t j = 0; j < K; j++) {
         sf_scene s = *s0, sd;
         char err[128];
-        sf_sweep_set(&s, s0->sweep_param, s0->sweep.v[j], err, sizeof err);
+        sf_sweep_set(&s, c->spec.sweep_param, c->spec.sweep.v[j], err, sizeof err);
         sd = s;
         sd.cof = SF_COF_UNIFORM;
         sf_cycle1d cf;
@@ -404,24 +403,24 @@ static int chk_fig16(const sf_case *c, sf_result *r)
         for (size_t i = 0; i < rd.nbif; i++)
             worst = sf_max(worst, fabs(rd.bif[i] - xc));
         for (size_t i = 0; i < rs.nbif && np < 4096; i++) {
-            px[np] = s0->sweep.v[j];
+            px[np] = c->spec.sweep.v[j];
             py[np++] = rs.bif[i];
             mn = sf_min(mn, rs.bif[i]);
             mx = sf_max(mx, rs.bif[i]);
         }
-        dx[j] = s0->sweep.v[j];
+        dx[j] = c->spec.sweep.v[j];
         dy[j] = xc;
-        sf_note(r, "| %g | %zu | %.4f | %.4f | %.6f |", s0->sweep.v[j], rs.nbif, mn, mx, xc);
+        sf_note(r, "| %g | %zu | %.4f | %.4f | %.6f |", c->spec.sweep.v[j], rs.nbif, mn, mx, xc);
         sf_osc_result_free(&rs);
         sf_osc_result_free(&rd);
     }
     gsl_rng_free(rng);
-    sf_check_le(r, "deterministic: max |x at slip-to-stick - (x_e - d)| over all values [m]", worst, s0->tolerance);
+    sf_check_le(r, "deterministic: max |x at slip-to-stick - (x_e - d)| over all values [m]", worst, c->spec.tolerance);
     sf_note(r, "\nOne stochastic realisation per value (T = %g s). The paper's Fig. 16 shows the stochastic "
                "slip-to-stick positions scattered around the deterministic branch, most widely at l/R near 1; the "
                "table gives our spread (a finding, not gated).\n", s0->T);
-    int logx = !strcmp(s0->sweep_param, "l_over_R");
-    sf_plot *p = sf_result_plot(r, "fig16", "Bifurcation diagram: x at slip-to-stick (Fig. 16)", s0->sweep_param,
+    int logx = !strcmp(c->spec.sweep_param, "l_over_R");
+    sf_plot *p = sf_result_plot(r, "fig16", "Bifurcation diagram: x at slip-to-stick (Fig. 16)", c->spec.sweep_param,
                                 "x at slip-to-stick [m]");
     sf_plot_log(p, logx, 0);
     sf_plot_series(p, "stochastic (one realisation per value)", SF_STYLE_POINTS, np, px, py);
@@ -1084,9 +1083,8 @@ static const char *exp_name(char exp)
 /* Evaluate, record and gate every claim; returns the number gated. */
 static size_t claims_judge(const sf_case *c, sf_result *r, const claim_spec *spec, const cpoint *pt, size_t K)
 {
-    const sf_scene *s = &c->scene;
-    double alpha = s->alpha;
-    int paper = s->tier == SF_TIER_PAPER;
+    double alpha = c->spec.alpha;
+    int paper = c->spec.tier == SF_TIER_PAPER;
     size_t gated = 0;
     sf_note(r, "\n| claim | statistic | ours [one-sided (1 - alpha) bounds] | verdict | expected here | power vs "
                "this estimate | verdicts: %s / %s / %s / %s / %s |\n|---|---|---|---|---|---|---|",
@@ -1115,10 +1113,10 @@ static size_t claims_judge(const sf_case *c, sf_result *r, const claim_spec *spe
             nmin = (int)pt[b].nv[D_OURS][cs->q];
         if (b < 0)
             snprintf(how, sizeof how, "%s; %s at %s = %g; n = %d", kind_how(cs->kind), qname[cs->q],
-                     *s->sweep_param ? s->sweep_param : "value", pt[a].val, nmin);
+                     *c->spec.sweep_param ? c->spec.sweep_param : "value", pt[a].val, nmin);
         else
             snprintf(how, sizeof how, "%s; %s at %s = %g vs %g; n = %d", kind_how(cs->kind), qname[cs->q],
-                     *s->sweep_param ? s->sweep_param : "value", pt[a].val, pt[b].val, nmin);
+                     *c->spec.sweep_param ? c->spec.sweep_param : "value", pt[a].val, pt[b].val, nmin);
         sf_claim(r, cs->id, cs->text, e.status, e.est, e.lo, e.hi, alpha, how, cs->note);
         sf_claim_defs(r, defs2);
         char exp = paper ? cs->expp : cs->expq;
@@ -1208,7 +1206,7 @@ static void claims_plots(sf_result *r, const cpoint *pt, size_t K, const char *f
  * Quick-tier cases always compute. */
 static const char *ckpt_path(const sf_case *c, size_t k, char *buf, size_t n)
 {
-    if (c->scene.tier != SF_TIER_PAPER)
+    if (c->spec.tier != SF_TIER_PAPER)
         return NULL;
     if (sf_mkdirs("build/paper-cache"))
         return NULL;
@@ -1225,7 +1223,7 @@ static int claims_sweep(const sf_case *c, sf_result *r, const claim_spec *spec, 
                         int logx, cpoint **out, size_t *Kout)
 {
     const sf_scene *s0 = &c->scene;
-    size_t K = s0->sweep.n;
+    size_t K = c->spec.sweep.n;
     if (!K)
         return SF_EINVAL;
     cpoint *pt = check_alloc(K * sizeof *pt);
@@ -1233,7 +1231,7 @@ static int claims_sweep(const sf_case *c, sf_result *r, const claim_spec *spec, 
     double *secs = check_alloc(K * sizeof *secs), *cpu = check_alloc(K * sizeof *cpu);
     char ck[300];
     for (size_t k = 0; k < K; k++, secs[k - 1] += now_s(), cpu[k - 1] += cpu_s())
-        if ((secs[k] = -now_s(), cpu[k] = -cpu_s(), claims_point(s0, s0->sweep_param, s0->sweep.v[k], &pt[k], r,
+        if ((secs[k] = -now_s(), cpu[k] = -cpu_s(), claims_point(s0, c->spec.sweep_param, c->spec.sweep.v[k], &pt[k], r,
                                               ckpt_path(c, k, ck, sizeof ck)))) {
             for (size_t j = 0; j <= k; j++)
                 cpoint_free(&pt[j]);
@@ -1244,7 +1242,7 @@ static int claims_sweep(const sf_case *c, sf_result *r, const claim_spec *spec, 
         }
     sf_note(r, "| %s | det PV_x [m] | det PV_F [N] | det stick fr. | PV_x ratio | PV_F ratio | stick-fr. ratio | "
                "stick [s] (det) | spread of x at slip-to-stick [m] | with a cycle | wall time [s] | CPU time [s] |\n|---|---|---|---|---|---|---|---|---|---|---|---|",
-            *s0->sweep_param ? s0->sweep_param : "value");
+            *c->spec.sweep_param ? c->spec.sweep_param : "value");
     size_t fewest = SIZE_MAX;
     for (size_t k = 0; k < K; k++) {
         const cpoint *p = &pt[k];
@@ -1370,7 +1368,7 @@ static int chk_claims_lr(const sf_case *c, sf_result *r)
     if (L->val * s->R >= 1e4) {
         double s2 = L->sd[D_OURS][Q_PVF] * L->sd[D_OURS][Q_PVF];
         sf_check_pvalue(r, "l/R at the one-variable limit: var of the PV_F ratio = CV^2 (chi-square, two-sided)",
-                        sf_var_pvalue(s2, cv * cv, L->nv[D_OURS][Q_PVF], 0), s->alpha, L->nv[D_OURS][Q_PVF]);
+                        sf_var_pvalue(s2, cv * cv, L->nv[D_OURS][Q_PVF], 0), c->spec.alpha, L->nv[D_OURS][Q_PVF]);
         sf_note(r, "At l/R = %g (one COF value per realisation) the std of the PV_F ratio is %.4f against the exact "
                    "CV = %g.", L->val, L->sd[D_OURS][Q_PVF], cv);
     }
@@ -1488,11 +1486,11 @@ static void judge_one(const sf_case *c, sf_result *r, const claim_spec *cs, doub
                       const char *how, const char *defs)
 {
     claim_eval e;
-    double alpha = c->scene.alpha;
+    double alpha = c->spec.alpha;
     decide(&e, cs, est, se, df, alpha, 0);
     sf_claim(r, cs->id, cs->text, e.status, e.est, e.lo, e.hi, alpha, how, cs->note);
     sf_claim_defs(r, defs);
-    char exp = c->scene.tier == SF_TIER_PAPER ? cs->expp : cs->expq;
+    char exp = c->spec.tier == SF_TIER_PAPER ? cs->expp : cs->expq;
     double pw = claim_power(cs, &e, alpha);
     sf_note(r, "| %s | %.4g [%.4g, %.4g] | %s | %s | %.2f |", cs->id, e.est, e.lo, e.hi, sf_claim_status_name(e.status),
             exp_name(exp), pw);
@@ -1516,7 +1514,7 @@ static const claim_spec claims_fig15[] = {
 static int chk_claims_fig15(const sf_case *c, sf_result *r)
 {
     const sf_scene *s0 = &c->scene;
-    size_t K = s0->sweep.n, N = s0->samples;
+    size_t K = c->spec.sweep.n, N = s0->samples;
     if (K != 3)
         return SF_EINVAL;   /* l/R = 0.1, 1, 10 as in the paper */
     const double dt = 0.01;
@@ -1528,7 +1526,7 @@ static int chk_claims_fig15(const sf_case *c, sf_result *r)
         return SF_EFAIL;
     double share_det = harmonic_share(&det, period);
     sf_check_ge(r, "deterministic: share of the power at the harmonics k / period (periodic response)", share_det,
-                1 - s0->tolerance);
+                1 - c->spec.tolerance);
     sf_plot *p = sf_result_plot(r, "fig15", "Fig. 15: spectra of x (realisation 0 per l/R)", "frequency [Hz]",
                                 "power spectral density [m^2/Hz]");
     sf_plot_log(p, 0, 1);
@@ -1540,7 +1538,7 @@ static int chk_claims_fig15(const sf_case *c, sf_result *r)
     for (size_t j = 0; j < K; j++) {
         sf_scene s = *s0;
         char err[128];
-        sf_sweep_set(&s, "l_over_R", s0->sweep.v[j], err, sizeof err);
+        sf_sweep_set(&s, "l_over_R", c->spec.sweep.v[j], err, sizeof err);
         for (size_t i = 0; i < N; i++) {
             spectrum sp;
             if (spectrum_of(&s, rng, dt, period, &sp, NULL, r)) {
@@ -1553,7 +1551,7 @@ static int chk_claims_fig15(const sf_case *c, sf_result *r)
                 for (size_t k = 0; k < nplot && k < sp.n; k++)
                     sp.p[k] = fmax(sp.p[k], 1e-16);
                 char lb[64];
-                snprintf(lb, sizeof lb, "stochastic, l/R = %g", s0->sweep.v[j]);
+                snprintf(lb, sizeof lb, "stochastic, l/R = %g", c->spec.sweep.v[j]);
                 sf_plot_series(p, lb, SF_STYLE_LINES, nplot < sp.n ? nplot : sp.n, sp.f, sp.p);
             }
             free(sp.f);
@@ -1571,7 +1569,7 @@ static int chk_claims_fig15(const sf_case *c, sf_result *r)
     sf_note(r, "Deterministic period %.4f s; its share of power at the harmonics %.4f.\n\n| l/R | share of the power at "
                "the deterministic harmonics, mean +- std over %zu realisations |\n|---|---|", period, share_det, N);
     for (size_t j = 0; j < K; j++)
-        sf_note(r, "| %g | %.4f +- %.4f |", s0->sweep.v[j], m[j], sdv[j]);
+        sf_note(r, "| %g | %.4f +- %.4f |", c->spec.sweep.v[j], m[j], sdv[j]);
     sf_note(r, "\n| claim | ours [one-sided (1 - alpha) bounds] | verdict | expected here | power vs this estimate "
                "|\n|---|---|---|---|---|");
     double n = (double)N, v[3];
@@ -1605,7 +1603,7 @@ static const claim_spec claims_fig3[] = {
 static int chk_fig3(const sf_case *c, sf_result *r)
 {
     const sf_scene *s0 = &c->scene;
-    size_t K = s0->sweep.n, N = s0->samples;
+    size_t K = c->spec.sweep.n, N = s0->samples;
     if (K < 2)
         return SF_EINVAL;
     const double lag = 0.05, L = 4.0;   /* [m] */
@@ -1618,10 +1616,10 @@ static int chk_fig3(const sf_case *c, sf_result *r)
     for (size_t j = 0; j < K; j++) {
         sf_scene s = *s0;
         char err[256];
-        sf_sweep_set(&s, "l_over_R", s0->sweep.v[j], err, sizeof err);
+        sf_sweep_set(&s, "l_over_R", c->spec.sweep.v[j], err, sizeof err);
         sf_cof_plan *plan;
         if (sf_cof_plan_alloc(&s, &plan, err, sizeof err)) {
-            sf_note(r, "**Cannot plan the COF at l/R = %g:** %s", s0->sweep.v[j], err);
+            sf_note(r, "**Cannot plan the COF at l/R = %g:** %s", c->spec.sweep.v[j], err);
             gsl_rng_free(rng);
             return SF_EFAIL;
         }
@@ -1645,7 +1643,7 @@ static int chk_fig3(const sf_case *c, sf_result *r)
             msi[j * N + i] = acc / (double)na;
             if (i == 0) {
                 char lb[64];
-                snprintf(lb, sizeof lb, "l/R = %g", s0->sweep.v[j]);
+                snprintf(lb, sizeof lb, "l/R = %g", c->spec.sweep.v[j]);
                 sf_plot_series(p, lb, SF_STYLE_LINES, np, xs, mu);
             }
             sf_cof_free(cof);
@@ -1660,7 +1658,7 @@ static int chk_fig3(const sf_case *c, sf_result *r)
     sf_note(r, "| l/R | mean square increment over %g m, mean +- std over %zu draws |\n|---|---|", lag, N);
     int finite = 1;
     for (size_t j = 0; j < K; j++) {
-        sf_note(r, "| %g | %.3e +- %.3e |", s0->sweep.v[j], mm[j], sv[j]);
+        sf_note(r, "| %g | %.3e +- %.3e |", c->spec.sweep.v[j], mm[j], sv[j]);
         finite &= isfinite(mm[j]) && isfinite(sv[j]);
     }
     sf_check_true(r, "every increment statistic is finite", finite, finite ? "finite" : "NaN or Inf");
@@ -1672,7 +1670,7 @@ static int chk_fig3(const sf_case *c, sf_result *r)
     double n = (double)N, va = sv[0] * sv[0] / n, vb = sv[K - 1] * sv[K - 1] / n;
     char how[200];
     snprintf(how, sizeof how, "one-sided Welch t test; mean square increment at l/R = %g minus at %g; n = %zu draws each",
-             s0->sweep.v[K - 1], s0->sweep.v[0], N);
+             c->spec.sweep.v[K - 1], c->spec.sweep.v[0], N);
     judge_one(c, r, &claims_fig3[0], mm[K - 1] - mm[0], sqrt(va + vb),
               (va + vb) * (va + vb) / ((va * va + vb * vb) / (n - 1)), how, "not a QoI of the dynamics: the field itself");
     free(xs);

@@ -1,0 +1,111 @@
+#include "options.h"
+#include "sf_error.h"   /* SF_EXIT_* */
+
+#include <errno.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+static int opt_size(const char *cmd, const char *opt, const char *v, size_t lo, size_t hi, size_t *out)
+{
+    char *end;
+    errno = 0;
+    unsigned long long x = strtoull(v, &end, 10);
+    if (!*v || *end || errno || v[0] == '-' || x < lo || x > hi) {
+        fprintf(stderr, "slipfield %s: %s takes a whole number from %zu to %zu\n", cmd, opt, lo, hi);
+        return SF_EXIT_USAGE;
+    }
+    *out = (size_t)x;
+    return SF_EXIT_OK;
+}
+
+static int opt_double(const char *cmd, const char *opt, const char *v, double *out)
+{
+    char *end;
+    double x = strtod(v, &end);
+    if (!*v || *end || !isfinite(x)) {
+        fprintf(stderr, "slipfield %s: %s takes a finite number\n", cmd, opt);
+        return SF_EXIT_USAGE;
+    }
+    *out = x;
+    return SF_EXIT_OK;
+}
+
+/* Option o with value v (NULL when none follows); *used: v was consumed.
+ * Returns SF_EXIT_OK, SF_OPT_DONE or an exit status. */
+static int take(const sf_optspec *sp, const sf_opt *o, const char *v, int *used)
+{
+    *used = 0;
+    switch (o->kind) {
+    case SF_OPT_FLAG:
+        *(int *)o->dst = 1;
+        return SF_EXIT_OK;
+    case SF_OPT_ACTION: {
+        int rc = o->fn(sp->cmd, NULL, o->dst);
+        return rc ? rc : SF_OPT_DONE;
+    }
+    default:
+        break;
+    }
+    if (!v) {
+        fprintf(stderr, "slipfield %s: unknown option or missing value: %s\n", sp->cmd, o->name);
+        sp->usage(stderr);
+        return SF_EXIT_USAGE;
+    }
+    *used = 1;
+    switch (o->kind) {
+    case SF_OPT_SIZE: return opt_size(sp->cmd, o->name, v, o->lo, o->hi, o->dst);
+    case SF_OPT_DOUBLE: return opt_double(sp->cmd, o->name, v, o->dst);
+    case SF_OPT_FN: return o->fn(sp->cmd, v, o->dst);
+    default: *(const char **)o->dst = v; return SF_EXIT_OK;
+    }
+}
+
+static const sf_opt *find_opt(const sf_optspec *sp, const char *a)
+{
+    for (size_t k = 0; k < sp->nopts; k++)
+        if (!strcmp(a, sp->opts[k].name))
+            return &sp->opts[k];
+    return NULL;
+}
+
+int sf_opt_parse(const sf_optspec *sp, int argc, char **argv, const char **pos, size_t *npos)
+{
+    *npos = 0;
+    int i = 1;
+    for (; i < argc; i++) {
+        const char *a = argv[i];
+        int is_opt = sp->options_first ? a[0] == '-' : a[0] == '-' && a[1];
+        if (sp->options_first && !is_opt)
+            break;   /* the positional arguments start here */
+        if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
+            sp->usage(stdout);
+            return SF_OPT_DONE;
+        }
+        const sf_opt *o = find_opt(sp, a);
+        if (o) {
+            int used, rc = take(sp, o, i + 1 < argc ? argv[i + 1] : NULL, &used);
+            if (rc)
+                return rc;
+            i += used;
+        } else if (is_opt) {
+            fprintf(stderr, "slipfield %s: unknown option or missing value: %s\n", sp->cmd, a);
+            sp->usage(stderr);
+            return SF_EXIT_USAGE;
+        } else if (sp->max_pos && *npos == sp->max_pos) {
+            fprintf(stderr, "slipfield %s: %s\n", sp->cmd, sp->too_many);
+            return SF_EXIT_USAGE;
+        } else {
+            pos[(*npos)++] = a;
+        }
+    }
+    for (; i < argc; i++)
+        pos[(*npos)++] = argv[i];
+    if (*npos == 0) {
+        if (sp->none)
+            fprintf(stderr, "slipfield %s: %s\n", sp->cmd, sp->none);
+        sp->usage(stderr);
+        return SF_EXIT_USAGE;
+    }
+    return SF_EXIT_OK;
+}
