@@ -90,6 +90,38 @@ double sf_numplan_err_quad(double l_over_R, size_t rings)
 
 double sf_numplan_err_time(double rtol) { return TA * sqrt(rtol); }
 
+/* ---- The cell-average model (cof_model, numplan.h).  Calibration: see
+ * below (CA_K); verified by cases/plan/cellavg-*.md against the point
+ * model on the same fine field. */
+#define CA_K 0.1
+
+double sf_numplan_err_cell(double l_over_R, double cv, size_t cells)
+{
+    (void)cells;
+    return CA_K * cv * l_over_R;
+}
+
+int sf_numplan_cell_average(const sf_scene *s, size_t *cells, double *box)
+{
+    int on;
+    if (s->cof != 2)   /* SF_COF_FIELD (cof.h; the plan does not include the COF) */
+        on = 0;
+    else if (s->cof_model == SF_COFMODEL_CELL)
+        on = 1;
+    else if (s->cof_model == SF_COFMODEL_POINT)
+        on = 0;
+    else
+        on = s->shortcuts && s->mu_std > 0 && !s->precorrect && s->cells == 0 && s->l / s->R < SF_PLAN_CELLAVG_LR;
+    if (!on)
+        return 0;
+    size_t n = s->cells > 0 ? s->cells : SF_PLAN_CELLAVG_CELLS;
+    if (cells)
+        *cells = n;
+    if (box)
+        *box = 2 * s->R / (double)n;
+    return 1;
+}
+
 int sf_numplan_make(const sf_scene *s, int quadrature, sf_numplan *p, char *err, size_t errlen)
 {
     memset(p, 0, sizeof *p);
@@ -100,8 +132,23 @@ int sf_numplan_make(const sf_scene *s, int quadrature, sf_numplan *p, char *err,
     p->quadrature = quadrature;
     p->l_over_R = s->l / s->R;
     double tq = 0.75 * s->qoi_tol, tt = 0.25 * s->qoi_tol;   /* the split (see above) */
-    /* quadrature resolution */
-    if (quadrature) {
+    p->layout = s->layout;
+    size_t ca_cells = 0;
+    double ca_box = 0;
+    if (quadrature && sf_numplan_cell_average(s, &ca_cells, &ca_box)) {
+        p->cell_average = 1;
+        p->cof_model_from = s->cof_model == SF_COFMODEL_CELL ? SF_PLAN_SCENE : SF_PLAN_CHOSEN;
+        p->layout = 1;   /* SF_LAYOUT_CARTESIAN: its cells are the boxes the field is averaged over */
+        p->cells = ca_cells;
+        p->cells_from = s->cells > 0 ? SF_PLAN_SCENE : SF_PLAN_CHOSEN;
+        p->cell_size = ca_box;
+        p->box_over_l = ca_box / s->l;
+        p->err_quad = sf_numplan_err_cell(p->l_over_R, s->mu_std / s->mu_mean, ca_cells);
+        if (p->err_quad > tq)
+            snprintf(p->warning, sizeof p->warning,
+                     "cof_model = cell_average at l/R = %.3g: predicted QoI error %.2g above the quadrature's share "
+                     "of qoi_tol (%.2g); cof_model = point resolves l", p->l_over_R, p->err_quad, tq);
+    } else if (quadrature) {
         if (s->cells > 0) {
             p->cells = s->cells;
             p->cells_from = SF_PLAN_SCENE;
@@ -157,7 +204,13 @@ void sf_numplan_explain(const sf_numplan *p, FILE *f)
     static const char *integ[] = { "adaptive", "rk4", "rk8pd", "rkck" };
     fprintf(f, "accuracy plan: qoi_tol = %g (relative error of PV_x, PV_F, stick fraction per realisation), split "
                "3/4 to the quadrature, 1/4 to the time stepping (numplan.c)\n", p->qoi_tol);
-    if (p->quadrature)
+    if (p->quadrature && p->cell_average)
+        fprintf(f, "plan: cof_model = cell_average (%s): Cartesian quadrature, cells = %zu per diameter (%s; cells of "
+                   "%.3g m = %.3g l) seeing the COF averaged over each cell (effective Gaussian field, exact "
+                   "box-averaged covariance, grid spacing %.3g m; cellavg.h), predicted QoI error %.2g\n",
+                p->cof_model_from == SF_PLAN_SCENE ? "set by the scene" : "chosen: l/R below 0.05",
+                p->cells, from(p->cells_from), p->cell_size, p->box_over_l, p->cell_size / 4, p->err_quad);
+    else if (p->quadrature)
         fprintf(f, "plan: cells = %zu (%s; cell size %.3g m at l/R = %.3g), predicted quadrature error %.2g\n",
                 p->cells, from(p->cells_from), p->cell_size, p->l_over_R, p->err_quad);
     else
