@@ -91,7 +91,7 @@ int sf_cmd_run(int argc, char **argv)
                    "mean and variance (std %.4g), on the belt strip, %zu x %zu points, spacing %.4g m (box/4), x from "
                    "%.4g m, |y| <= %.4g m; circulant embedding, one FFTW plan (FFTW_ESTIMATE) reused for every "
                    "realisation (cellavg.h)\n",
-                   s.cof_model == SF_COFMODEL_CELL ? "cell_average" : "auto: l/R below 0.05", in->box, in->box / s.l,
+                   s.cof_model == SF_COFMODEL_CELL ? "cell_average" : "auto: the plan's choice", in->box, in->box / s.l,
                    sf_cof_plan_cell_std(plan), in->nx, in->ny, in->dx, in->x0, -in->y0);
         else if (in->generator == SF_COFGEN_TILES)
             printf("COF: lognormal field generated on demand from tiles of white noise (cof_generator = %s%s): a "

@@ -39,7 +39,9 @@ enum { SF_PLAN_CHOSEN = 0, SF_PLAN_SCENE = 1 };   /* where a setting came from *
  * averaged over a cell (exact box-averaged covariance, Gaussian marginal
  * matched in mean and variance).  auto takes cell_average below
  * l/R = SF_PLAN_CELLAVG_LR for a field COF (not pre-corrected, std > 0,
- * shortcuts on, `cells` not set): there the point model needs ~3.8
+ * shortcuts on, `cells` not set) where its predicted error
+ * (sf_numplan_err_cell) is within 3/4 of qoi_tol (below l/R = 0.0125 at
+ * Table 1 and qoi_tol = 1e-3): there the point model needs ~3.8
  * (R/l)^0.71 rings (49k cells at l/R = 0.01) while the random part of the
  * wrench is only ~CV l/R of it.  numplan.c has the measurements. */
 #define SF_PLAN_CELLAVG_LR 0.05
