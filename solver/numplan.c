@@ -107,9 +107,14 @@ double sf_numplan_err_time(double rtol) { return TA * sqrt(rtol); }
  * direction's variation across a cell do.  Model: err = CA_K CV (l/R)
  * (32/cells)^2, CA_K = 0.3 (2.2e-3 / (0.2 x 0.05) = 0.22 with a margin;
  * the cells^-2 from 32 -> 64; 16 cells does better than that, so the
- * model is conservative there).  The plan takes cell averages (auto) only
- * where this is within the quadrature's share of qoi_tol: below l/R =
- * 0.0125 at CV = 0.2 and qoi_tol = 1e-3 (l/R = 0.01: 6e-4).  Nothing
+ * model is conservative there; 48 cells: 9.4e-4 against 1.3e-3 predicted;
+ * 64 cells against 72 rings: 2.9e-4).  The plan takes cell averages (auto)
+ * with the fewest cells (32 to SF_PLAN_CELLAVG_MAX_CELLS = 56) whose
+ * predicted error is within the quadrature's share of qoi_tol: at CV = 0.2
+ * and qoi_tol = 1e-3, 32 cells up to l/R = 0.0125, 52 at 0.0316, none
+ * above l/R = 0.038 (the point model then).  Grid spacing box/2 instead
+ * of box/4: 2.0e-3 at 32 cells, 1.2e-3 at 48 (vs 9.4e-4): box/4 kept.
+ * Nothing
  * finer could be compared on the same field: the point model's circulant
  * strip at l/R < 0.05 is above the embedding's cap (2^25 points) at T =
  * 20 s.  cases/plan/cellavg-vs-point.md checks achieved <= predicted. */
@@ -121,21 +126,37 @@ double sf_numplan_err_cell(double l_over_R, double cv, size_t cells)
     return CA_K * cv * l_over_R * q * q;
 }
 
+/* The cells per diameter the cell-average model needs for the
+ * quadrature's share tq of qoi_tol: err_cell(n) = tq, at least
+ * SF_PLAN_CELLAVG_CELLS; 0 when that is above SF_PLAN_CELLAVG_MAX_CELLS. */
+static size_t cell_average_cells(double l_over_R, double cv, double tq)
+{
+    double n = ceil(32 * sqrt(CA_K * cv * l_over_R / tq));
+    n = fmax(n, SF_PLAN_CELLAVG_CELLS);
+    return n <= SF_PLAN_CELLAVG_MAX_CELLS ? (size_t)n : 0;
+}
+
 int sf_numplan_cell_average(const sf_scene *s, size_t *cells, double *box)
 {
     int on;
+    size_t n = s->cells;
     if (s->cof != 2)   /* SF_COF_FIELD (cof.h; the plan does not include the COF) */
         on = 0;
     else if (s->cof_model == SF_COFMODEL_CELL)
         on = 1;
     else if (s->cof_model == SF_COFMODEL_POINT)
         on = 0;
-    else
-        on = s->shortcuts && s->mu_std > 0 && !s->precorrect && s->cells == 0 && s->l / s->R < SF_PLAN_CELLAVG_LR &&
-             sf_numplan_err_cell(s->l / s->R, s->mu_std / s->mu_mean, SF_PLAN_CELLAVG_CELLS) <= 0.75 * s->qoi_tol;
+    else {
+        on = s->shortcuts && s->mu_std > 0 && !s->precorrect && s->cells == 0 && s->l / s->R < SF_PLAN_CELLAVG_LR;
+        if (on)
+            on = (n = cell_average_cells(s->l / s->R, s->mu_std / s->mu_mean, 0.75 * s->qoi_tol)) > 0;
+    }
     if (!on)
         return 0;
-    size_t n = s->cells > 0 ? s->cells : SF_PLAN_CELLAVG_CELLS;
+    if (n == 0)   /* cell_average set, cells not: the plan chooses (the smallest count if none suffices) */
+        n = cell_average_cells(s->l / s->R, s->mu_std / s->mu_mean, 0.75 * s->qoi_tol);
+    if (n == 0)
+        n = SF_PLAN_CELLAVG_MAX_CELLS;
     if (cells)
         *cells = n;
     if (box)

@@ -34,18 +34,19 @@ enum { SF_PLAN_CHOSEN = 0, SF_PLAN_SCENE = 1 };   /* where a setting came from *
 
 /* The COF model (scene key cof_model, cellavg.h).  point: the quadrature
  * samples the field at its cells (cells resolving l).  cell_average: a
- * Cartesian quadrature of SF_PLAN_CELLAVG_CELLS cells per diameter (or
- * `cells`) whose cells see the effective field, the lognormal field
+ * Cartesian quadrature of SF_PLAN_CELLAVG_CELLS to _MAX_CELLS cells per
+ * diameter (the plan's choice from qoi_tol, or `cells`) whose cells see the effective field, the lognormal field
  * averaged over a cell (exact box-averaged covariance, Gaussian marginal
  * matched in mean and variance).  auto takes cell_average below
  * l/R = SF_PLAN_CELLAVG_LR for a field COF (not pre-corrected, std > 0,
  * shortcuts on, `cells` not set) where its predicted error
- * (sf_numplan_err_cell) is within 3/4 of qoi_tol (below l/R = 0.0125 at
- * Table 1 and qoi_tol = 1e-3): there the point model needs ~3.8
+ * (sf_numplan_err_cell) is within 3/4 of qoi_tol with at most
+ * _MAX_CELLS cells (below l/R = 0.038 at Table 1 and qoi_tol = 1e-3): there the point model needs ~3.8
  * (R/l)^0.71 rings (49k cells at l/R = 0.01) while the random part of the
  * wrench is only ~CV l/R of it.  numplan.c has the measurements. */
 #define SF_PLAN_CELLAVG_LR 0.05
 #define SF_PLAN_CELLAVG_CELLS 32
+#define SF_PLAN_CELLAVG_MAX_CELLS 56   /* memory: ~3.4e6 effective-field points at Table 1, T = 100 s */
 
 /* 1 when scene s runs the cell-average model; then *cells (cells per
  * diameter) and *box (the cell side 2R/cells [m]); 0 (point model)
