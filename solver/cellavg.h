@@ -14,7 +14,9 @@
  *          = [P(d + h) - 2 P(d) + P(d - h)] / h^2,
  * P the second antiderivative of exp(-a x^2) (a = n/l^2):
  *   P(x) = x sqrt(pi)/(2 sqrt(a)) erf(sqrt(a) x) + exp(-a x^2)/(2a)
- * (written with erfc for d >= h, where the linear parts cancel exactly).
+ * (written with erfc for d >= h, where the linear parts cancel exactly;
+ * the second difference carries ~1e-16 (l/h)^2 of round-off, nothing for
+ * the boxes the plan uses, h >= l/2).
  * The series is summed until its terms fall below 1e-17 of the first.
  *
  * The effective field (cof_model = cell_average, numplan.h) is a Gaussian
