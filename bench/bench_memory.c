@@ -146,7 +146,7 @@ int bench_belt(FILE *f, const char *dir)
         { "l/R = 1, speed plan", "l = 0.5\ncells = 12\nrtol = 1e-6\n", "circulant; 12 rings, rtol 1e-6", 0 },
         { "l/R = 0.01, speed plan", "l = 0.005\ncells = 12\nrtol = 1e-6\n", "tiles; 12 rings, rtol 1e-6", 0 },
         { "l/R = 0.03", "l = 0.015\n", "the plan's choice (auto)", 0 },
-        { "l/R = 0.03, cell averages", "l = 0.015\ncof_model = cell_average\n", "cell averages, 32 cells (forced)", 0 },
+        { "l/R = 0.03, point values", "l = 0.015\ncof_model = point\n", "tiles, point model (forced)", 0 },
         { "l/R = 0.01, point values", "l = 0.005\ncof_model = point\n", "tiles, point model (forced)", 0 },
     };
     enum { NJ = sizeof jobs / sizeof jobs[0] };
@@ -186,11 +186,11 @@ int bench_belt(FILE *f, const char *dir)
             (double)kib[1] / (double)kib[0], (double)kib[1] / 1024, cpu[1] / cpu[0], cpu[5] / cpu[4],
             (double)kib[3] / (double)kib[2], cpu[3] / cpu[2]);
     fprintf(f, "\nCell averages (issue 14, `cof_model`, solver/cellavg.h): the plan's choice at l/R = 0.01 is the "
-               "cell-average model (32 Cartesian cells of 6.25 l, the effective field at spacing box/4 by circulant "
+               "cell-average model (32 Cartesian cells of 6.25 l, the effective field at spacing box/3 by circulant "
                "embedding); against the point model it would replace (forced, %.1f s CPU) it is %.0fx faster. Ratios "
                "to l/R = 1 in this run: l/R = 0.01 (auto) %.1fx CPU (target <= 10x), peak RSS %.1f MiB (target <= 256); "
-               "l/R = 0.03 (auto: the point model, the cell average's predicted error being above qoi_tol there) "
-               "%.1fx; l/R = 0.03 with cell averages forced %.1fx.\n",
+               "l/R = 0.03 (auto: cell averages, 50 cells per diameter) %.1fx (target <= 10x); l/R = 0.03 with point "
+               "values forced %.1fx.\n",
             cpu[8], cpu[8] / cpu[1], cpu[1] / cpu[0], (double)kib[1] / 1024, cpu[6] / cpu[0], cpu[7] / cpu[0]);
     return 0;
 }

@@ -88,7 +88,7 @@ int sf_cmd_run(int argc, char **argv)
         else if (in->box > 0)
             printf("COF: cell-averaged lognormal field (cof_model = %s): the field of Eq. 2 averaged over squares of "
                    "side %.4g m (= %.3g l), a Gaussian field with the exact box-averaged covariance and the lognormal's "
-                   "mean and variance (std %.4g), on the belt strip, %zu x %zu points, spacing %.4g m (box/4), x from "
+                   "mean and variance (std %.4g), on the belt strip, %zu x %zu points, spacing %.4g m (box/3), x from "
                    "%.4g m, |y| <= %.4g m; circulant embedding, one FFTW plan (FFTW_ESTIMATE) reused for every "
                    "realisation (cellavg.h)\n",
                    s.cof_model == SF_COFMODEL_CELL ? "cell_average" : "auto: the plan's choice", in->box, in->box / s.l,

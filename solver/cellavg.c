@@ -69,6 +69,6 @@ double sf_cellavg_septerm(int t, double d, void *params)
     return c->rs[t] * sf_cellavg_box1(c, t + 1, d);
 }
 
-double sf_cellavg_grid_spacing(double h) { return h / 4; }
+double sf_cellavg_grid_spacing(double h) { return h / 3; }
 
 double sf_cellavg_support(const sf_cellavg *c) { return c->h + 9 * c->l; }

@@ -257,7 +257,7 @@ static void set_grid(sf_cof_plan_info *in, double nx, double ny, double h, doubl
 
 /* The effective field of cof_model = cell_average (cellavg.h): a
  * Gaussian field with the exact covariance of the lognormal field averaged
- * over boxes of side `box`, on the belt strip at spacing box/4, by
+ * over boxes of side `box`, on the belt strip at spacing box/3, by
  * circulant embedding of its separable-sum kernel (field.h). */
 static int plan_cell_average(sf_cof_plan *p, const sf_scene *s, double box, double B0, double W0, char *err,
                              size_t errlen)

@@ -90,7 +90,7 @@ static void effective_field(void **state)
     assert_int_equal(sf_cof_plan_alloc(&s, &p, err, sizeof err), SF_SUCCESS);
     const sf_cof_plan_info *in = sf_cof_plan_get_info(p);
     assert_close(in->box, 2 * s.R / SF_PLAN_CELLAVG_CELLS, 1e-15);
-    assert_close(in->dx, in->box / 4, 1e-15);
+    assert_close(in->dx, in->box / 3, 1e-15);
     const sf_field *f = sf_cof_plan_cell_field(p);
     assert_non_null(f);
     const sf_field_info *fi = sf_field_get_info(f);

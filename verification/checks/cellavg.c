@@ -40,7 +40,7 @@ static void qois(const sf_osc_result *res, double *q)
 
 /* ---- the oracle: Cov(mu_h(0), mu_h(dx, dy)) =
  * (1/h^4) int_{-h}^{h} int_{-h}^{h} (h - |u|)(h - |v|) Cov_mu(dx + u, dy + v) du dv,
- * Gauss-Legendre (GSL, 20 points) on pieces of at most l/4 split at the
+ * Gauss-Legendre (GSL, 20 points) on pieces of at most l/2 split at the
  * triangle's kink; Cov_mu from the oracle's own Nataf parameters. */
 typedef struct { double mean, s2, l; } oracle_par;
 
@@ -51,7 +51,7 @@ static double cov_mu(const oracle_par *o, double x, double y)
 
 static size_t nodes_1d(double h, double l, const gsl_integration_glfixed_table *gl, double *u, double *w)
 {
-    size_t pieces = (size_t)ceil(h / (l / 4)), n = 0;
+    size_t pieces = (size_t)ceil(h / (l / 2)), n = 0;
     for (int side = -1; side <= 1; side += 2)
         for (size_t p = 0; p < pieces; p++) {
             double a = h * (double)p / (double)pieces, b = h * (double)(p + 1) / (double)pieces;
@@ -95,7 +95,7 @@ static int chk_covariance(const sf_case *c, sf_result *r)
     size_t ntests = 2 * K;
     sf_note(r, "Produced covariance of the effective field (circulant embedding, `sf_field_covariance` times the "
                "variance) against the oracle (2-D Gauss-Legendre quadrature of the lognormal covariance against two "
-               "boxes' triangle weights), at lags (i d, j d), d = box/4, i in 0..12, j in {0, 1, 2, 5, 9}; marginal: "
+               "boxes' triangle weights), at lags (i d, j d), d = box/3, i in 0..12, j in {0, 1, 2, 5, 9}; marginal: "
                "%zu drawn fields, values on a sub-lattice spaced beyond the covariance's support (independent), mean "
                "(z test, variance known) and variance (chi-square, mean known), each at alpha / %zu (Bonferroni).\n\n"
                "| l/R | box/l | sd(mu_h) | max error vs oracle / var | embedding cov_error | points | mean p | "
@@ -118,7 +118,7 @@ static int chk_covariance(const sf_case *c, sf_result *r)
         const sf_field *f = sf_cof_plan_cell_field(p);
         double h = 2 * s.R / (double)s.cells, d = in->dx, sd = sf_cof_plan_cell_std(p), var = sd * sd;
         oracle_par o = { s.mu_mean, lp.sigma * lp.sigma, s.l };
-        size_t cap = 2 * 20 * ((size_t)ceil(h / (s.l / 4)) + 1);
+        size_t cap = 2 * 20 * ((size_t)ceil(h / (s.l / 2)) + 1);
         double *u = check_alloc(cap * sizeof *u), *w = check_alloc(cap * sizeof *w);
         size_t nn = nodes_1d(h, s.l, gl, u, w);
         double *cov = check_alloc(in->nx * in->ny * sizeof *cov);
@@ -232,7 +232,7 @@ static size_t box_weights(double a, double b, double x0, double dx, size_t m, si
 }
 
 /* The cell-average COF of the fine grid `fine` on the effective grid of
- * scene sc (spacing box/4, marked with its box). */
+ * scene sc (spacing box/3, marked with its box). */
 static sf_cof *box_filter(const sf_cof *fine, const sf_scene *sc, double box, sf_result *r)
 {
     size_t m, n, mc, nc;
@@ -296,7 +296,7 @@ static int chk_vs_point(const sf_case *c, sf_result *r)
     sf_note(r, "On the same fine field (point model, spacing l/8, circulant strip): the point model's polar "
                "quadrature (rings pinned per l/R) against the cell-average model (%zu Cartesian cells per diameter) "
                "fed with the exact box averages of that field's bilinear interpolant on its own grid (spacing "
-               "box/4); rtol %g for both; %zu realisations per l/R (streams sf_mc_seed(seed, i)); error: the largest "
+               "box/3); rtol %g for both; %zu realisations per l/R (streams sf_mc_seed(seed, i)); error: the largest "
                "relative difference of PV_x, PV_F and stick fraction.\n\n| l/R | box/l | point rings | predicted "
                "(plan) | achieved (RMS) | worst realisation |\n|---|---|---|---|---|---|",
             s0->cells, s0->rtol, n);
