@@ -95,7 +95,8 @@ static int chk_covariance(const sf_case *c, sf_result *r)
     size_t ntests = 2 * K;
     sf_note(r, "Produced covariance of the effective field (circulant embedding, `sf_field_covariance` times the "
                "variance) against the oracle (2-D Gauss-Legendre quadrature of the lognormal covariance against two "
-               "boxes' triangle weights), at lags (i d, j d), d = box/3, i in 0..12, j in {0, 1, 2, 5, 9}; marginal: "
+               "boxes' triangle weights), at lags (i d, j d), d = box/3, i in 0..12, j in {0, 1, 2, 5, 9}, and at the "
+               "farthest lags of the grid along x and y (13 x 5 each: a circulant period too short wraps there); marginal: "
                "%zu drawn fields, values on a sub-lattice spaced beyond the covariance's support (independent), mean "
                "(z test, variance known) and variance (chi-square, mean known), each at alpha / %zu (Bonferroni).\n\n"
                "| l/R | box/l | sd(mu_h) | max error vs oracle / var | embedding cov_error | points | mean p | "
@@ -116,6 +117,7 @@ static int chk_covariance(const sf_case *c, sf_result *r)
         }
         const sf_cof_plan_info *in = sf_cof_plan_get_info(p);
         const sf_field *f = sf_cof_plan_cell_field(p);
+        double cov_err = sf_field_get_info(f)->cov_error;   /* before the plan is freed */
         double h = 2 * s.R / (double)s.cells, d = in->dx, sd = sf_cof_plan_cell_std(p), var = sd * sd;
         oracle_par o = { s.mu_mean, lp.sigma * lp.sigma, s.l };
         size_t cap = 2 * 20 * ((size_t)ceil(h / (s.l / 2)) + 1);
@@ -124,16 +126,25 @@ static int chk_covariance(const sf_case *c, sf_result *r)
         double *cov = check_alloc(in->nx * in->ny * sizeof *cov);
         sf_field_covariance(f, cov);
         double ov = oracle_cov(&o, h, 0, 0, u, w, nn), emax = 0;
+        /* near lags, and the farthest ones along x and y (where a circulant
+         * period too short for the covariance's support wraps its tail) */
         static const int js[] = { 0, 1, 2, 5, 9 };
-        for (size_t a = 0; a < sizeof js / sizeof js[0]; a++)
-            for (int i = 0; i <= 12; i++) {
-                size_t ii = (size_t)i, jj = (size_t)js[a];
-                if (ii >= in->nx || jj >= in->ny)
-                    continue;
-                double produced = var * cov[ii + in->nx * jj];
-                double oracle = oracle_cov(&o, h, (double)i * d, (double)js[a] * d, u, w, nn);
-                emax = sf_max(emax, fabs(produced - oracle) / ov);
-            }
+        for (int far = 0; far < 3; far++)
+            for (size_t a = 0; a < sizeof js / sizeof js[0]; a++)
+                for (int i = 0; i <= 12; i++) {
+                    size_t ii = (size_t)i, jj = (size_t)js[a];
+                    if (far == 1)
+                        ii = in->nx - 1 - ii;
+                    if (far == 2) {
+                        jj = in->ny - 1 - jj;
+                        ii = (size_t)js[a];
+                    }
+                    if (ii >= in->nx || jj >= in->ny)
+                        continue;
+                    double produced = var * cov[ii + in->nx * jj];
+                    double oracle = oracle_cov(&o, h, (double)ii * d, (double)jj * d, u, w, nn);
+                    emax = sf_max(emax, fabs(produced - oracle) / ov);
+                }
         free(cov);
         free(u);
         free(w);
@@ -169,12 +180,14 @@ static int chk_covariance(const sf_case *c, sf_result *r)
         double cvh = sqrt(ov) / s.mu_mean;
         x[k] = s.l / s.R;
         eo[k] = fmax(emax, 1e-17);
-        ee[k] = fmax(sf_field_get_info(f) ? sf_field_get_info(f)->cov_error : NAN, 1e-17);
+        ee[k] = fmax(cov_err, 1e-17);
         sf_note(r, "| %g | %.3g | %.4g | %.2e | %.2e | %zu | %.3g | %.3g | %.3f |", x[k], h / s.l, sqrt(ov), emax,
                 ee[k], npt, pm, pv, 3 * cvh + cvh * cvh * cvh);
         char t[160];
         snprintf(t, sizeof t, "l/R = %g: produced covariance vs oracle, max |error| / Var(mu_h)", x[k]);
         sf_check_le(r, t, emax, s0->tolerance);
+        snprintf(t, sizeof t, "l/R = %g: embedding vs its target on every grid lag (cov_error, correlation)", x[k]);
+        sf_check_le(r, t, cov_err, s0->tolerance);
         snprintf(t, sizeof t, "l/R = %g: mean of mu_h = mubar (z test)", x[k]);
         sf_check_pvalue(r, t, pm, s0->alpha / (double)ntests, npt);
         snprintf(t, sizeof t, "l/R = %g: variance of mu_h = the box-averaged variance (chi-square)", x[k]);
