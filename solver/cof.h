@@ -218,6 +218,13 @@ int sf_cof_plan_draw(sf_cof_plan *p, gsl_rng *rng, sf_cof **out);
 /* Convenience: plan, draw one realisation, free the plan. */
 int sf_cof_from_scene(const sf_scene *s, gsl_rng *rng, sf_cof **out);
 
+/* The strip's bounds B0 and W0 [m] before the grid's margin (above:
+ * B = B0 + 2 h, W = W0 + 2 h), and the points of a strip grid of spacing
+ * h [m] over [0, T] (the accuracy plan sizes the cell-averaged strip
+ * with it). */
+void sf_cof_strip_bounds(const sf_scene *s, double *B0, double *W0);
+double sf_cof_strip_points(const sf_scene *s, double h);
+
 /* cof_generator = auto takes the tiles above this many strip points.  The
  * circulant's memory grows with v_b T / l^2 (286 MB at 1.7e6 strip points,
  * l = 0.05 m, Table 1, T = 100 s; 1.1 GB at 6.8e6, l = 0.025 m); 2^21

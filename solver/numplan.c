@@ -1,6 +1,7 @@
 #include "numplan.h"
 #include "sf_error.h"
 #include "cellavg.h"
+#include "cof.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -144,7 +145,7 @@ int sf_numplan_cell_average(const sf_scene *s, size_t *cells, double *box)
 {
     int on;
     size_t n = s->cells;
-    if (s->cof != 2)   /* SF_COF_FIELD (cof.h; the plan does not include the COF) */
+    if (s->cof != SF_COF_FIELD)
         on = 0;
     else if (s->cof_model == SF_COFMODEL_CELL)
         on = 1;
@@ -154,6 +155,11 @@ int sf_numplan_cell_average(const sf_scene *s, size_t *cells, double *box)
         on = s->shortcuts && s->mu_std > 0 && !s->precorrect && s->cells == 0 && s->l / s->R < SF_PLAN_CELLAVG_LR;
         if (on)
             on = (n = cell_average_cells(s->l / s->R, s->mu_std / s->mu_mean, 0.75 * s->qoi_tol)) > 0;
+        /* memory: the effective strip is one circulant over [0, T]; above
+         * SF_PLAN_CELLAVG_MAX_POINTS the point model's tiles (a window
+         * that follows the disc) keep memory bounded instead */
+        if (on)
+            on = sf_cof_strip_points(s, sf_cellavg_grid_spacing(2 * s->R / (double)n)) <= SF_PLAN_CELLAVG_MAX_POINTS;
     }
     if (!on)
         return 0;
@@ -255,7 +261,7 @@ void sf_numplan_explain(const sf_numplan *p, FILE *f)
                    "%.3g m = %.3g l) seeing the COF averaged over each cell (effective Gaussian field, exact "
                    "box-averaged covariance, grid spacing %.3g m; cellavg.h), predicted QoI error %.2g\n",
                 p->cof_model_from == SF_PLAN_SCENE ? "set by the scene"
-                                                    : "chosen: l/R below 0.05 and its predicted error within 3/4 qoi_tol",
+                                                    : "chosen: l/R below 0.05, predicted error within 3/4 qoi_tol, strip within 2^22 points",
                 p->cells, from(p->cells_from), p->cell_size, p->box_over_l, sf_cellavg_grid_spacing(p->cell_size), p->err_quad);
     else if (p->quadrature)
         fprintf(f, "plan: cells = %zu (%s; cell size %.3g m at l/R = %.3g), predicted quadrature error %.2g\n",

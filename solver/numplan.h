@@ -39,14 +39,20 @@ enum { SF_PLAN_CHOSEN = 0, SF_PLAN_SCENE = 1 };   /* where a setting came from *
  * averaged over a cell (exact box-averaged covariance, Gaussian marginal
  * matched in mean and variance).  auto takes cell_average below
  * l/R = SF_PLAN_CELLAVG_LR for a field COF (not pre-corrected, std > 0,
- * shortcuts on, `cells` not set) where its predicted error
+ * shortcuts on, `cells` not set, its strip at most
+ * SF_PLAN_CELLAVG_MAX_POINTS) where its predicted error
  * (sf_numplan_err_cell) is within 3/4 of qoi_tol with at most
  * _MAX_CELLS cells (below l/R = 0.038 at Table 1 and qoi_tol = 1e-3): there the point model needs ~3.8
  * (R/l)^0.71 rings (49k cells at l/R = 0.01) while the random part of the
  * wrench is only ~CV l/R of it.  numplan.c has the measurements. */
 #define SF_PLAN_CELLAVG_LR 0.05
 #define SF_PLAN_CELLAVG_CELLS 32
-#define SF_PLAN_CELLAVG_MAX_CELLS 56   /* memory: ~3.4e6 effective-field points at Table 1, T = 100 s */
+#define SF_PLAN_CELLAVG_MAX_CELLS 56   /* the error model's measured range (numplan.c) */
+/* auto takes cell averages only while their strip (one circulant over
+ * [0, T], ~64 bytes a point) has at most this many points: 2^22, ~270 MB;
+ * at Table 1, 32 cells, up to T ~ 1000 s.  Longer runs get the point
+ * model's tiles (memory set by the disc, not by v_b T). */
+#define SF_PLAN_CELLAVG_MAX_POINTS 4194304.0
 
 /* 1 when scene s runs the cell-average model; then *cells (cells per
  * diameter) and *box (the cell side 2R/cells [m]); 0 (point model)

@@ -58,6 +58,9 @@ static void plan_choice(void **state)
     assert_int_equal(sf_numplan_cell_average(&s, &n, &box), 1);
     assert_true(n > SF_PLAN_CELLAVG_CELLS && n <= SF_PLAN_CELLAVG_MAX_CELLS);
     assert_true(sf_numplan_err_cell(s.l / s.R, s.mu_std / s.mu_mean, n) <= 0.75 * s.qoi_tol);
+    s.T = 2000;   /* the effective strip over [0, T] above 2^22 points: the point model's tiles */
+    assert_int_equal(sf_numplan_cell_average(&s, NULL, NULL), 0);
+    s.T = 100;
     s.l = 0.05;   /* l/R = 0.1: point values, whatever the tolerance */
     assert_int_equal(sf_numplan_cell_average(&s, NULL, NULL), 0);
     s.l = 0.005;
