@@ -119,10 +119,12 @@ double sf_numplan_err_time(double rtol) { return TA * sqrt(rtol); }
  * (vs 9.4e-4 at box/4); box/3 gives 1.9e-3 and 9.2e-4, as box/4, with
  * 0.56x the points (a realisation at l/R = 0.03: 0.36 s CPU instead of
  * 0.52 s, 106 MB instead of 178 MB): box/3.
- * Nothing
- * finer could be compared on the same field: the point model's circulant
- * strip at l/R < 0.05 is above the embedding's cap (2^25 points) at T =
- * 20 s.  cases/plan/cellavg-vs-point.md checks achieved <= predicted. */
+ * At the switch itself (l/R = 0.038, 56 cells, against 49 rings, box/3):
+ * 6.2e-4 (7.2e-4) against 7.4e-4 predicted (cases/plan/
+ * cellavg-vs-point-boundary.md, full tier: its fine circulant strip, 3.3e6
+ * points, is about the largest the embedding takes; below l/R ~ 0.035 no
+ * fine field fits on one circulant, so none finer is compared).
+ * cases/plan/cellavg-vs-point*.md check achieved <= predicted. */
 #define CA_K 0.3
 
 double sf_numplan_err_cell(double l_over_R, double cv, size_t cells)
