@@ -31,6 +31,7 @@ int bench_dynamics(FILE *f, const char *dir);
 int bench_sweep(FILE *f, const char *dir);
 int bench_memory(FILE *f, const char *dir);
 int bench_belt(FILE *f, const char *dir);
+int bench_fig11(FILE *f, const char *dir);
 int bench_fftw(FILE *f, const char *dir);
 int bench_plan(FILE *f, const char *dir);
 int bench_realisation(FILE *f, const char *dir);

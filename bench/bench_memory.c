@@ -7,6 +7,7 @@
 #include "bench.h"
 
 #include <errno.h>
+#include <math.h>
 #include <fcntl.h>
 #include <libgen.h>
 #include <stdlib.h>
@@ -139,11 +140,14 @@ int bench_belt(FILE *f, const char *dir)
     snprintf(exe, sizeof exe, "%s/slipfield", dirname(dirname(self)));
     const job jobs[] = {
         { "l/R = 1", "l = 0.5\n", "circulant strip (auto)", 0 },
-        { "l/R = 0.01", "l = 0.005\n", "tiles, sliding window (auto)", 0 },
+        { "l/R = 0.01", "l = 0.005\n", "the plan's choice (auto: cell averages, 32 cells)", 0 },
         { "l/R = 0.1, circulant", "l = 0.05\ncof_generator = circulant\n", "circulant strip (forced)", 0 },
         { "l/R = 0.1, tiles", "l = 0.05\ncof_generator = tiles\n", "tiles, sliding window (forced)", 0 },
         { "l/R = 1, speed plan", "l = 0.5\ncells = 12\nrtol = 1e-6\n", "circulant; 12 rings, rtol 1e-6", 0 },
         { "l/R = 0.01, speed plan", "l = 0.005\ncells = 12\nrtol = 1e-6\n", "tiles; 12 rings, rtol 1e-6", 0 },
+        { "l/R = 0.03", "l = 0.015\n", "the plan's choice (auto)", 0 },
+        { "l/R = 0.03, point values", "l = 0.015\ncof_model = point\n", "tiles, point model (forced)", 0 },
+        { "l/R = 0.01, point values", "l = 0.005\ncof_model = point\n", "tiles, point model (forced)", 0 },
     };
     enum { NJ = sizeof jobs / sizeof jobs[0] };
     double tm[NJ], cpu[NJ];
@@ -165,6 +169,7 @@ int bench_belt(FILE *f, const char *dir)
         }
     }
     unlink(sum);
+    /* jobs 6..8 */
     fprintf(f, "## A belt without end: the COF at small l/R\n\n`slipfield run SCENE --summary FILE`, Table 1 "
                "(T = 100 s, 32 rings, rtol 1e-8 unless said), one realisation each, a child process: peak resident "
                "set and CPU time (user + system) from `wait4`, and wall time, of one run. The ratios use CPU time: "
@@ -174,11 +179,64 @@ int bench_belt(FILE *f, const char *dir)
         fprintf(f, "| %s | %s | %.1f | %.3f | %.3f |\n", jobs[j].name, jobs[j].what, (double)kib[j] / 1024, cpu[j],
                 tm[j]);
     fprintf(f, "\nRatios measured in this run: l/R = 0.01 against l/R = 1, peak RSS %.2fx (%.1f MiB; target <= 256 "
-               "MiB), CPU time %.1fx (target <= 10x); with the speed plan (12 rings, rtol 1e-6) %.1fx. At l/R = 0.1 "
-               "the tiles hold %.3fx the circulant's peak RSS in %.2fx its CPU time. At small l the time is the "
-               "field (about 1e8 lattice points over 20 m of belt, each a 69-tap convolution along x and along y, "
-               "SSE2) and the several times more steps a rough field takes.\n",
+               "MiB), CPU time %.1fx (target <= 10x); the tiled point model with the speed plan (12 rings, rtol 1e-6) "
+               "%.1fx. At l/R = 0.1 the tiles hold %.3fx the circulant's peak RSS in %.2fx its CPU time. With point "
+               "values at small l the time is the field (about 1e8 lattice points over 20 m of belt, each a 69-tap "
+               "convolution along x and along y, SSE2), the ~5e4 cells resolving l and the several times more steps "
+               "a rough field takes.\n",
             (double)kib[1] / (double)kib[0], (double)kib[1] / 1024, cpu[1] / cpu[0], cpu[5] / cpu[4],
             (double)kib[3] / (double)kib[2], cpu[3] / cpu[2]);
+    fprintf(f, "\nCell averages (issue 14, `cof_model`, solver/cellavg.h): the plan's choice at l/R = 0.01 is the "
+               "cell-average model (32 Cartesian cells of 6.25 l, the effective field at spacing box/3 by circulant "
+               "embedding); against the point model it would replace (forced, %.1f s CPU) it is %.0fx faster. Ratios "
+               "to l/R = 1 in this run: l/R = 0.01 (auto) %.1fx CPU (target <= 10x), peak RSS %.1f MiB (target <= 256); "
+               "l/R = 0.03 (auto: cell averages, 50 cells per diameter) %.1fx (target <= 10x); l/R = 0.03 with point "
+               "values forced %.1fx.\n",
+            cpu[8], cpu[8] / cpu[1], cpu[1] / cpu[0], (double)kib[1] / 1024, cpu[6] / cpu[0], cpu[7] / cpu[0]);
+    return 0;
+}
+
+/* The paper's Fig. 11 at its own size (11 l/R from 1e-2 to 1e3, 100
+ * realisations each, T = 100 s, 2 cores), estimated from one realisation's
+ * CPU time per l/R (a `slipfield run` child: plan + draw + run). */
+int bench_fig11(FILE *f, const char *dir)
+{
+    char self[512], exe[600];
+    ssize_t len = readlink("/proc/self/exe", self, sizeof self - 1);
+    if (len <= 0) {
+        fprintf(f, "## Fig. 11 estimate\n\nCannot locate the slipfield binary (no /proc/self/exe).\n");
+        return 1;
+    }
+    self[len] = 0;
+    snprintf(exe, sizeof exe, "%s/slipfield", dirname(dirname(self)));
+    enum { NL = 11 };
+    double cpu[NL], tm[NL], total = 0;
+    long kib[NL];
+    char scene[700], sum[700], text[128];
+    snprintf(sum, sizeof sum, "%s/fig11.summary", dir);
+    snprintf(scene, sizeof scene, "%s/fig11.scene", dir);
+    fprintf(f, "## Fig. 11 at the paper's size, estimated\n\nOne realisation per l/R (Table 1, T = 100 s, the plan's "
+               "defaults), `slipfield run` in a child: CPU time (user + system, plan and draw included) and peak RSS. "
+               "Estimate: 100 x the sum of the CPU times / 2 cores.\n\n| l/R | CPU time [s] | peak RSS [MiB] |\n"
+               "|---|---|---|\n");
+    for (int k = 0; k < NL; k++) {
+        double lr = pow(10, -2 + 0.5 * k);
+        FILE *s = fopen(scene, "w");
+        snprintf(text, sizeof text, "l = %.17g\n", lr * 0.5);
+        if (!s || fputs(text, s) < 0 || fclose(s))
+            return 1;
+        int rc = run_child_cpu(exe, scene, sum, NULL, &tm[k], &kib[k], &cpu[k]);
+        if (rc) {
+            fprintf(f, "`%s run` failed at l/R = %g (exit %d).\n", exe, lr, rc);
+            return 1;
+        }
+        total += cpu[k];
+        fprintf(f, "| %.3g | %.3f | %.1f |\n", lr, cpu[k], (double)kib[k] / 1024);
+    }
+    unlink(scene);
+    unlink(sum);
+    fprintf(f, "\nEstimated Fig. 11 (11 l/R x 100 realisations) on 2 cores: %.0f s = %.1f min (target <= 15 min); "
+               "a Monte Carlo sweep reuses each plan, so this counts the plans 100 times over.\n",
+            100 * total / 2, 100 * total / 2 / 60);
     return 0;
 }

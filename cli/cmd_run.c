@@ -85,6 +85,14 @@ int sf_cmd_run(int argc, char **argv)
                    "(cases/plan/variable-shortcut-boundary)\n",
                    in->strip_diag, s.l, (in->strip_diag / s.l) * (in->strip_diag / s.l), SF_COF_SHORTCUT_E2,
                    SF_COF_SHORTCUT_E2);
+        else if (in->box > 0)
+            printf("COF: cell-averaged lognormal field (cof_model = %s): the field of Eq. 2 averaged over squares of "
+                   "side %.4g m (= %.3g l), a Gaussian field with the exact box-averaged covariance and the lognormal's "
+                   "mean and variance (std %.4g), on the belt strip, %zu x %zu points, spacing %.4g m (box/3), x from "
+                   "%.4g m, |y| <= %.4g m; circulant embedding, one FFTW plan (FFTW_ESTIMATE) reused for every "
+                   "realisation (cellavg.h)\n",
+                   s.cof_model == SF_COFMODEL_CELL ? "cell_average" : "auto: the plan's choice", in->box, in->box / s.l,
+                   sf_cof_plan_cell_std(plan), in->nx, in->ny, in->dx, in->x0, -in->y0);
         else if (in->generator == SF_COFGEN_TILES)
             printf("COF: lognormal field generated on demand from tiles of white noise (cof_generator = %s%s): a "
                    "window of %zu x %zu points, spacing %.4g m (l/8), |y| <= %.4g m, that follows the disc along the "

@@ -1,4 +1,7 @@
 #include "cof.h"
+#include "cellavg.h"
+#include "field.h"
+#include "numplan.h"
 #include "lnfield.h"
 #include "lognormal.h"
 #include "sf_error.h"
@@ -30,6 +33,7 @@ struct sf_cof {
     double margin;             /* M [m] (sf_cof_window_margin) */
     unsigned long slides;
     size_t columns_made;
+    double box;                /* > 0: the values are cell averages over boxes of this side [m] (cellavg.h) */
 };
 
 static sf_cof *cof_new(sf_cof_kind kind)
@@ -88,6 +92,16 @@ void sf_cof_free(sf_cof *c)
     free(c->grid);
     sf_tiles_free(c->tiles);
     free(c);
+}
+
+double sf_cof_box(const sf_cof *c) { return c->box; }
+
+int sf_cof_set_box(sf_cof *c, double box)
+{
+    if (c->kind != SF_COF_FIELD || !(box >= 0) || !isfinite(box))
+        return SF_EINVAL;
+    c->box = box;
+    return SF_SUCCESS;
 }
 
 double sf_cof_max(const sf_cof *c) { return c->kind == SF_COF_FIELD ? c->mu_max : c->mu; }
@@ -225,6 +239,8 @@ struct sf_cof_plan {
     sf_lnfield *field;
     double *buf;
     double l, R;               /* tiles: correlation length, disc radius [m] */
+    sf_cellavg ca;             /* cell averages: the box-averaged covariance */
+    sf_field *cfield;          /* cell averages: its Gaussian field (circulant embedding) */
 };
 
 /* The plan's grid: nx x ny points (whole numbers), spacing h [m], x from
@@ -237,6 +253,63 @@ static void set_grid(sf_cof_plan_info *in, double nx, double ny, double h, doubl
     in->x0 = x0;
     in->y0 = -W;
     in->bound = B;
+}
+
+void sf_cof_strip_bounds(const sf_scene *s, double *B0, double *W0)
+{
+    double mu_hi = s->mu_mean + 4 * s->mu_std;
+    *B0 = s->R + 2 * mu_hi * s->m * s->g / s->k;
+    *W0 = s->strip_halfwidth > 0 ? s->strip_halfwidth + s->R : *B0;
+}
+
+double sf_cof_strip_points(const sf_scene *s, double h)
+{
+    double B0, W0;
+    sf_cof_strip_bounds(s, &B0, &W0);
+    double B = B0 + 2 * h, W = W0 + 2 * h, len = s->v_b * s->T + 2 * B;
+    return (ceil(len / h) + 1) * (ceil(2 * W / h) + 1);
+}
+
+/* The effective field of cof_model = cell_average (cellavg.h): a
+ * Gaussian field with the exact covariance of the lognormal field averaged
+ * over boxes of side `box`, on the belt strip at spacing box/3, by
+ * circulant embedding of its separable-sum kernel (field.h). */
+static int plan_cell_average(sf_cof_plan *p, const sf_scene *s, double box, double B0, double W0, char *err,
+                             size_t errlen)
+{
+    if (s->precorrect)
+        return sf_seterr(err, errlen, SF_EINVAL, "cof_model = cell_average makes the field of Eq. 2 through the "
+                                                 "Nataf map: precorrect is not supported");
+    if (!(s->mu_std > 0))
+        return sf_seterr(err, errlen, SF_EINVAL, "cof_model = cell_average needs mu_std > 0");
+    int rc = sf_cellavg_init(&p->ca, s->mu_mean, s->mu_std, s->l, box);
+    if (rc)
+        return sf_seterr(err, errlen, rc, "invalid cell-average model (l = %g m, box = %g m)", s->l, box);
+    double d = sf_cellavg_grid_spacing(box);
+    double B = B0 + 2 * d, W = W0 + 2 * d, len = s->v_b * s->T + 2 * B;
+    double nx = ceil(len / d) + 1, ny = ceil(2 * W / d) + 1;
+    p->info.strip_points = nx * ny;
+    p->info.generator = SF_COFGEN_CIRCULANT;
+    p->info.box = box;
+    if (!(nx * ny <= (double)SF_COF_MAX_POINTS))
+        return sf_seterr(err, errlen, SF_ETOOBIG,
+                         "the cell-averaged belt strip needs %.3g grid points (spacing %.3g m): above the cap of 2^24; "
+                         "lower v_b T or set strip_halfwidth", nx * ny, d);
+    set_grid(&p->info, nx, ny, d, -s->v_b * s->T - B, W, B);
+    sf_field_spec fs;
+    sf_field_spec_default(&fs, p->info.nx, p->info.ny, d, d, s->l);
+    fs.sep_terms = p->ca.nterms;
+    fs.sep_fn = sf_cellavg_septerm;
+    fs.sep_params = &p->ca;
+    fs.support = sf_cellavg_support(&p->ca);
+    fs.pad_cap = s->pad_cap;
+    fs.eig_rel_tol = s->eig_tol;
+    fs.measure = s->fftw_planner;
+    rc = sf_field_alloc(&fs, &p->cfield);
+    if (!sf_usable(rc))
+        return sf_seterr(err, errlen, rc, "cannot plan the %.0f x %.0f cell-averaged strip field", nx, ny);
+    p->buf = malloc(p->info.nx * p->info.ny * sizeof *p->buf);
+    return p->buf ? SF_SUCCESS : SF_ENOMEM;
 }
 
 int sf_cof_plan_alloc(const sf_scene *s, sf_cof_plan **out, char *err, size_t errlen)
@@ -253,16 +326,25 @@ int sf_cof_plan_alloc(const sf_scene *s, sf_cof_plan **out, char *err, size_t er
         return sf_seterr(err, errlen, rc, "invalid COF marginal (mean %g, std %g)", s->mu_mean, s->mu_std);
     }
     if (p->info.kind == SF_COF_FIELD) {
-        double h = s->l / 8;
-        double mu_hi = s->mu_mean + 4 * s->mu_std;
-        double B0 = s->R + 2 * mu_hi * s->m * s->g / s->k;
-        double W0 = s->strip_halfwidth > 0 ? s->strip_halfwidth + s->R : B0;
+        double h = s->l / 8, B0, W0;
+        sf_cof_strip_bounds(s, &B0, &W0);
         double E = hypot(s->v_b * s->T + 2 * B0, 2 * W0);   /* the strip the disc can visit */
         double B = B0 + 2 * h, W = W0 + 2 * h, len = s->v_b * s->T + 2 * B;
         p->info.strip_diag = E;
         if (s->shortcuts && ((E / s->l) * (E / s->l) <= SF_COF_SHORTCUT_E2 || s->mu_std == 0)) {
             p->info.kind = SF_COF_VARIABLE;
             p->info.shortcut = 1;
+            *out = p;
+            return SF_SUCCESS;
+        }
+        size_t ca_cells;
+        double box;
+        if (sf_numplan_cell_average(s, &ca_cells, &box)) {
+            rc = plan_cell_average(p, s, box, B0, W0, err, errlen);
+            if (rc) {
+                sf_cof_plan_free(p);
+                return rc;
+            }
             *out = p;
             return SF_SUCCESS;
         }
@@ -336,11 +418,14 @@ void sf_cof_plan_free(sf_cof_plan *p)
     if (!p)
         return;
     sf_lnfield_free(p->field);
+    sf_field_free(p->cfield);
     free(p->buf);
     free(p);
 }
 
 const sf_cof_plan_info *sf_cof_plan_get_info(const sf_cof_plan *p) { return &p->info; }
+double sf_cof_plan_cell_std(const sf_cof_plan *p) { return p->cfield ? sqrt(sf_cellavg_var(&p->ca)) : 0; }
+const struct sf_field *sf_cof_plan_cell_field(const sf_cof_plan *p) { return p->cfield; }
 
 /* A tiled realisation: its key is 64 bits from rng (two 32-bit draws);
  * the window starts over the disc at the origin. */
@@ -392,6 +477,20 @@ int sf_cof_plan_draw(sf_cof_plan *p, gsl_rng *rng, sf_cof **out)
     case SF_COF_FIELD: {
         if (p->info.generator == SF_COFGEN_TILES)
             return draw_window(p, rng, out);
+        if (p->cfield) {   /* cell averages: mubar + sd G, G of the box-averaged correlation */
+            const sf_cof_plan_info *i = &p->info;
+            sf_field_discard(p->cfield);
+            int rc = sf_field_sample(p->cfield, rng, p->buf);
+            if (rc)
+                return rc;
+            double sd = sqrt(sf_cellavg_var(&p->ca));
+            for (size_t k = 0; k < i->nx * i->ny; k++)
+                p->buf[k] = p->ca.mubar + sd * p->buf[k];
+            rc = sf_cof_alloc_grid(i->nx, i->ny, i->x0, i->y0, i->dx, i->dy, p->buf, out);
+            if (!rc)
+                (*out)->box = i->box;
+            return rc;
+        }
         sf_field_discard(sf_lnfield_gaussian(p->field));
         int rc = sf_lnfield_sample(p->field, rng, NULL, p->buf);
         if (rc)

@@ -117,6 +117,13 @@ static inline int sf_cof_view_holds(const sf_cof_view *v, double xb, double yb, 
            (yb - r - v->y0) * v->idy >= 1 && (yb + r - v->y0) * v->idy <= (double)(v->n - 2);
 }
 
+/* A gridded COF whose values are cell averages over squares of side
+ * box [m] (cof_model = cell_average, cellavg.h; sf_osc_alloc then runs the
+ * matching Cartesian quadrature): sf_cof_box() returns it, 0 for point
+ * values.  sf_cof_set_box marks a grid so (SF_EINVAL for a non-grid). */
+double sf_cof_box(const sf_cof *c);
+int sf_cof_set_box(sf_cof *c, double box);
+
 /* 1 when the disc of radius r centred at belt point (xb, yb) lies on the
  * grid (always, for a uniform COF). */
 int sf_cof_covers(const sf_cof *c, double xb, double yb, double r);
@@ -183,6 +190,7 @@ typedef struct {
     double strip_points;     /* grid points of the whole strip (field scenes) */
     int generator;           /* SF_COFGEN_CIRCULANT or SF_COFGEN_TILES (field scenes) */
     double margin;           /* tiles: M [m]; nx x ny is then the window, x0 the strip's start */
+    double box;              /* > 0: cof_model = cell_average, the cells' side [m] (cellavg.h) */
 } sf_cof_plan_info;
 
 int sf_cof_plan_alloc(const sf_scene *s, sf_cof_plan **out, char *err, size_t errlen);
@@ -193,6 +201,11 @@ void sf_cof_plan_free(sf_cof_plan *p);
 int sf_cof_plan_alloc_mt(const sf_scene *s, sf_cof_plan **out, char *err, size_t errlen);
 void sf_cof_plan_free_mt(sf_cof_plan *p);
 const sf_cof_plan_info *sf_cof_plan_get_info(const sf_cof_plan *p);
+/* cof_model = cell_average (info.box > 0): the effective field's std
+ * sqrt(Var mu_h) and its Gaussian plan (field.h: covariance, target);
+ * 0 and NULL otherwise. */
+double sf_cof_plan_cell_std(const sf_cof_plan *p);
+const struct sf_field *sf_cof_plan_cell_field(const sf_cof_plan *p);
 /* One realisation from rng (nothing is drawn for a uniform COF).  A
  * function of the rng state alone: no field is carried over between
  * draws (each costs one FFT of which the second field is discarded).
@@ -204,6 +217,13 @@ int sf_cof_plan_draw(sf_cof_plan *p, gsl_rng *rng, sf_cof **out);
 
 /* Convenience: plan, draw one realisation, free the plan. */
 int sf_cof_from_scene(const sf_scene *s, gsl_rng *rng, sf_cof **out);
+
+/* The strip's bounds B0 and W0 [m] before the grid's margin (above:
+ * B = B0 + 2 h, W = W0 + 2 h), and the points of a strip grid of spacing
+ * h [m] over [0, T] (the accuracy plan sizes the cell-averaged strip
+ * with it). */
+void sf_cof_strip_bounds(const sf_scene *s, double *B0, double *W0);
+double sf_cof_strip_points(const sf_scene *s, double h);
 
 /* cof_generator = auto takes the tiles above this many strip points.  The
  * circulant's memory grows with v_b T / l^2 (286 MB at 1.7e6 strip points,

@@ -27,12 +27,24 @@
 /* Isotropic correlation rho(r), r >= 0 in metres, rho(0) = 1. */
 typedef double (*sf_kernel_fn)(double r, void *params);
 
+/* One factor of an anisotropic correlation that is a sum of separable
+ * terms, rho(hx, hy) = sum_t f(t, hx) f(t, hy), t < sep_terms (the
+ * cell-averaged COF of cellavg.h): the factor of term t at lag d [m]. */
+typedef double (*sf_septerm_fn)(int term, double d, void *params);
+
 typedef struct {
     size_t m, n;          /* grid points along x and y (>= 1 each) */
     double dx, dy;        /* grid spacings [m] (> 0) */
     double l;             /* correlation length l [m] of Eq. 2 (> 0) */
     sf_kernel_fn kernel;  /* NULL: squared exponential exp(-r^2/l^2) */
     void *kernel_params;
+    int sep_terms;        /* > 0: rho = sum of separable terms sep_fn (kernel and l unused);
+                             the general 2-D path, its first row from 1-D tables */
+    sf_septerm_fn sep_fn;
+    void *sep_params;
+    double support;       /* > 0 (general path): rho is zero to round-off at lags beyond this [m]
+                             along either axis, so a period of m - 1 + support/dx suffices
+                             (instead of 2 (m - 1)); cov_error measures what it gives */
     double eig_rel_tol;   /* accept lambda_min >= -tol*lambda_max; 0 -> 1e-12 */
     double pad_cap;       /* max embedding period per axis as a multiple of
                              the minimal one; 0 -> 16 */

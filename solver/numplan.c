@@ -1,5 +1,7 @@
 #include "numplan.h"
 #include "sf_error.h"
+#include "cellavg.h"
+#include "cof.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -90,6 +92,90 @@ double sf_numplan_err_quad(double l_over_R, size_t rings)
 
 double sf_numplan_err_time(double rtol) { return TA * sqrt(rtol); }
 
+/* ---- The cell-average model (cof_model, numplan.h).
+ *
+ * Its error is in the random part of the wrench, which is ~CV l/R of it
+ * (the disc averages (R/l)^2 correlation areas).  Measured (2026-11-23,
+ * cases/plan/cellavg-vs-point.md: Table 1, T = 20 s, 2 realisations, the
+ * cell-average quadrature fed with the exact box averages of the same
+ * fine field vs the point model at 36 rings, rtol 1e-7), RMS (worst) of
+ * the largest relative QoI difference at l/R = 0.05 (CV = 0.2):
+ *   16 cells per diameter (box 2.5 l)   2.7e-3 (3.7e-3)
+ *   32 (box 1.25 l)                     2.2e-3 (2.5e-3); grid box/8: 2.4e-3
+ *   64 (box 0.625 l)                    5.2e-4 (5.5e-4)  (near the reference's own ~5e-4)
+ * and at l/R = 0.1, 32 cells (box 0.625 l): 2.7e-4 (3.8e-4).  The grid
+ * spacing (box/4 or box/8) does not matter; the cut cells at the rim (a
+ * box average over the whole square for a partial cell) and the slip
+ * direction's variation across a cell do.  Model: err = CA_K CV (l/R)
+ * (32/cells)^2, CA_K = 0.3 (2.2e-3 / (0.2 x 0.05) = 0.22 with a margin;
+ * the cells^-2 from 32 -> 64; 16 cells does better than that, so the
+ * model is conservative there; 48 cells: 9.4e-4 against 1.3e-3 predicted;
+ * 64 cells against 72 rings: 2.9e-4).  The plan takes cell averages (auto)
+ * with the fewest cells (32 to SF_PLAN_CELLAVG_MAX_CELLS = 56) whose
+ * predicted error is within the quadrature's share of qoi_tol: at CV = 0.2
+ * and qoi_tol = 1e-3, 32 cells up to l/R = 0.0125, 52 at 0.0316, none
+ * above l/R = 0.038 (the point model then).  The effective grid's
+ * spacing (cellavg.h): box/2 gives 2.0e-3 at 32 cells and 1.2e-3 at 48
+ * (vs 9.4e-4 at box/4); box/3 gives 1.9e-3 and 9.2e-4, as box/4, with
+ * 0.56x the points (a realisation at l/R = 0.03: 0.36 s CPU instead of
+ * 0.52 s, 106 MB instead of 178 MB): box/3.
+ * At the switch itself (l/R = 0.038, 56 cells, against 49 rings, box/3):
+ * 6.2e-4 (7.2e-4) against 7.4e-4 predicted (cases/plan/
+ * cellavg-vs-point-boundary.md, full tier: its fine circulant strip, 3.3e6
+ * points, is about the largest the embedding takes; below l/R ~ 0.035 no
+ * fine field fits on one circulant, so none finer is compared).
+ * cases/plan/cellavg-vs-point*.md check achieved <= predicted. */
+#define CA_K 0.3
+
+double sf_numplan_err_cell(double l_over_R, double cv, size_t cells)
+{
+    double q = 32.0 / (double)cells;
+    return CA_K * cv * l_over_R * q * q;
+}
+
+/* The cells per diameter the cell-average model needs for the
+ * quadrature's share tq of qoi_tol: err_cell(n) = tq, at least
+ * SF_PLAN_CELLAVG_CELLS; 0 when that is above SF_PLAN_CELLAVG_MAX_CELLS. */
+static size_t cell_average_cells(double l_over_R, double cv, double tq)
+{
+    double n = ceil(32 * sqrt(CA_K * cv * l_over_R / tq));
+    n = fmax(n, SF_PLAN_CELLAVG_CELLS);
+    return n <= SF_PLAN_CELLAVG_MAX_CELLS ? (size_t)n : 0;
+}
+
+int sf_numplan_cell_average(const sf_scene *s, size_t *cells, double *box)
+{
+    int on;
+    size_t n = s->cells;
+    if (s->cof != SF_COF_FIELD)
+        on = 0;
+    else if (s->cof_model == SF_COFMODEL_CELL)
+        on = 1;
+    else if (s->cof_model == SF_COFMODEL_POINT)
+        on = 0;
+    else {
+        on = s->shortcuts && s->mu_std > 0 && !s->precorrect && s->cells == 0 && s->l / s->R < SF_PLAN_CELLAVG_LR;
+        if (on)
+            on = (n = cell_average_cells(s->l / s->R, s->mu_std / s->mu_mean, 0.75 * s->qoi_tol)) > 0;
+        /* memory: the effective strip is one circulant over [0, T]; above
+         * SF_PLAN_CELLAVG_MAX_POINTS the point model's tiles (a window
+         * that follows the disc) keep memory bounded instead */
+        if (on)
+            on = sf_cof_strip_points(s, sf_cellavg_grid_spacing(2 * s->R / (double)n)) <= SF_PLAN_CELLAVG_MAX_POINTS;
+    }
+    if (!on)
+        return 0;
+    if (n == 0)   /* cell_average set, cells not: the plan chooses (the smallest count if none suffices) */
+        n = cell_average_cells(s->l / s->R, s->mu_std / s->mu_mean, 0.75 * s->qoi_tol);
+    if (n == 0)
+        n = SF_PLAN_CELLAVG_MAX_CELLS;
+    if (cells)
+        *cells = n;
+    if (box)
+        *box = 2 * s->R / (double)n;
+    return 1;
+}
+
 int sf_numplan_make(const sf_scene *s, int quadrature, sf_numplan *p, char *err, size_t errlen)
 {
     memset(p, 0, sizeof *p);
@@ -100,8 +186,23 @@ int sf_numplan_make(const sf_scene *s, int quadrature, sf_numplan *p, char *err,
     p->quadrature = quadrature;
     p->l_over_R = s->l / s->R;
     double tq = 0.75 * s->qoi_tol, tt = 0.25 * s->qoi_tol;   /* the split (see above) */
-    /* quadrature resolution */
-    if (quadrature) {
+    p->layout = s->layout;
+    size_t ca_cells = 0;
+    double ca_box = 0;
+    if (quadrature && sf_numplan_cell_average(s, &ca_cells, &ca_box)) {
+        p->cell_average = 1;
+        p->cof_model_from = s->cof_model == SF_COFMODEL_CELL ? SF_PLAN_SCENE : SF_PLAN_CHOSEN;
+        p->layout = 1;   /* SF_LAYOUT_CARTESIAN: its cells are the boxes the field is averaged over */
+        p->cells = ca_cells;
+        p->cells_from = s->cells > 0 ? SF_PLAN_SCENE : SF_PLAN_CHOSEN;
+        p->cell_size = ca_box;
+        p->box_over_l = ca_box / s->l;
+        p->err_quad = sf_numplan_err_cell(p->l_over_R, s->mu_std / s->mu_mean, ca_cells);
+        if (p->err_quad > tq)
+            snprintf(p->warning, sizeof p->warning,
+                     "cof_model = cell_average at l/R = %.3g: predicted QoI error %.2g above the quadrature's share "
+                     "of qoi_tol (%.2g); cof_model = point resolves l", p->l_over_R, p->err_quad, tq);
+    } else if (quadrature) {
         if (s->cells > 0) {
             p->cells = s->cells;
             p->cells_from = SF_PLAN_SCENE;
@@ -157,7 +258,14 @@ void sf_numplan_explain(const sf_numplan *p, FILE *f)
     static const char *integ[] = { "adaptive", "rk4", "rk8pd", "rkck" };
     fprintf(f, "accuracy plan: qoi_tol = %g (relative error of PV_x, PV_F, stick fraction per realisation), split "
                "3/4 to the quadrature, 1/4 to the time stepping (numplan.c)\n", p->qoi_tol);
-    if (p->quadrature)
+    if (p->quadrature && p->cell_average)
+        fprintf(f, "plan: cof_model = cell_average (%s): Cartesian quadrature, cells = %zu per diameter (%s; cells of "
+                   "%.3g m = %.3g l) seeing the COF averaged over each cell (effective Gaussian field, exact "
+                   "box-averaged covariance, grid spacing %.3g m; cellavg.h), predicted QoI error %.2g\n",
+                p->cof_model_from == SF_PLAN_SCENE ? "set by the scene"
+                                                    : "chosen: l/R below 0.05, predicted error within 3/4 qoi_tol, strip within 2^22 points",
+                p->cells, from(p->cells_from), p->cell_size, p->box_over_l, sf_cellavg_grid_spacing(p->cell_size), p->err_quad);
+    else if (p->quadrature)
         fprintf(f, "plan: cells = %zu (%s; cell size %.3g m at l/R = %.3g), predicted quadrature error %.2g\n",
                 p->cells, from(p->cells_from), p->cell_size, p->l_over_R, p->err_quad);
     else

@@ -32,6 +32,38 @@
 
 enum { SF_PLAN_CHOSEN = 0, SF_PLAN_SCENE = 1 };   /* where a setting came from */
 
+/* The COF model (scene key cof_model, cellavg.h).  point: the quadrature
+ * samples the field at its cells (cells resolving l).  cell_average: a
+ * Cartesian quadrature of SF_PLAN_CELLAVG_CELLS to _MAX_CELLS cells per
+ * diameter (the plan's choice from qoi_tol, or `cells`) whose cells see the effective field, the lognormal field
+ * averaged over a cell (exact box-averaged covariance, Gaussian marginal
+ * matched in mean and variance).  auto takes cell_average below
+ * l/R = SF_PLAN_CELLAVG_LR for a field COF (not pre-corrected, std > 0,
+ * shortcuts on, `cells` not set, its strip at most
+ * SF_PLAN_CELLAVG_MAX_POINTS) where its predicted error
+ * (sf_numplan_err_cell) is within 3/4 of qoi_tol with at most
+ * _MAX_CELLS cells (below l/R = 0.038 at Table 1 and qoi_tol = 1e-3): there the point model needs ~3.8
+ * (R/l)^0.71 rings (49k cells at l/R = 0.01) while the random part of the
+ * wrench is only ~CV l/R of it.  numplan.c has the measurements. */
+#define SF_PLAN_CELLAVG_LR 0.05
+#define SF_PLAN_CELLAVG_CELLS 32
+#define SF_PLAN_CELLAVG_MAX_CELLS 56   /* the error model's measured range (numplan.c) */
+/* auto takes cell averages only while their strip (one circulant over
+ * [0, T], ~64 bytes a point) has at most this many points: 2^22, ~270 MB;
+ * at Table 1, 32 cells, up to T ~ 1000 s.  Longer runs get the point
+ * model's tiles (memory set by the disc, not by v_b T). */
+#define SF_PLAN_CELLAVG_MAX_POINTS 4194304.0
+
+/* 1 when scene s runs the cell-average model; then *cells (cells per
+ * diameter) and *box (the cell side 2R/cells [m]); 0 (point model)
+ * otherwise.  Called by the COF plan (which draws the effective field)
+ * and by sf_numplan_make (which sets the quadrature): one rule. */
+int sf_numplan_cell_average(const sf_scene *s, size_t *cells, double *box);
+
+/* The predicted relative QoI error of the cell-average model at l/R with
+ * coefficient of variation cv and `cells` per diameter (numplan.c). */
+double sf_numplan_err_cell(double l_over_R, double cv, size_t cells);
+
 typedef struct {
     double qoi_tol;          /* requested relative QoI error [-] */
     int quadrature;          /* 1: the slip wrench is a quadrature (field COF, or shortcuts off) */
@@ -39,6 +71,10 @@ typedef struct {
     size_t cells;            /* resolution (rings or cells per diameter); 0 without quadrature */
     int cells_from;
     double cell_size;        /* typical cell size [m]: R / rings (polar), 2R / cells (Cartesian) */
+    int cell_average;        /* 1: cof_model cell_average (Cartesian cells = the boxes) */
+    int cof_model_from;
+    double box_over_l;       /* cell side / l (cell averages) [-] */
+    int layout;              /* the quadrature's layout (sf_layout): the scene's, Cartesian for cell averages */
     double err_quad;         /* predicted relative QoI error of the quadrature [-] */
     double rtol;             /* the stepper's relative tolerance [-] */
     int rtol_from;

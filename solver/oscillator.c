@@ -154,8 +154,20 @@ int sf_osc_alloc(const sf_scene *s, const sf_cof *cof, sf_osc **out, char *err, 
     }
     o->s.cells = o->plan.cells ? o->plan.cells : s->cells;
     o->s.rtol = o->plan.rtol;
+    o->s.layout = o->plan.layout;
+    /* cell averages (cellavg.h): the COF's boxes must be the quadrature's cells */
+    double box = constant ? 0 : sf_cof_box(cof);
+    if (quadrature && (o->plan.cell_average != (box > 0) ||
+                       (box > 0 && fabs(box - 2 * s->R / (double)o->s.cells) > 1e-9 * box))) {
+        int ca = o->plan.cell_average;
+        size_t nc = o->s.cells;
+        free(o);
+        return sf_seterr(err, errlen, SF_EINVAL,
+                         "the COF holds %s (box %g m) but the plan runs cof_model = %s with %zu cells per diameter",
+                         box > 0 ? "cell averages" : "point values", box, ca ? "cell_average" : "point", nc);
+    }
     if (quadrature) {
-        sf_contact_spec spec = { s->R, o->N, (sf_layout)s->layout, o->s.cells };
+        sf_contact_spec spec = { s->R, o->N, (sf_layout)o->s.layout, o->s.cells };
         int rc = sf_contact_alloc(&spec, cof, &o->ct);
         if (rc) {
             free(o);
@@ -209,7 +221,9 @@ void sf_osc_explain(const sf_osc *o, FILE *f)
     if (o->ct)
         fprintf(f, "slip wrench: %s quadrature, %zu cells, %s (Eqs. 7-8)\n",
                 s->layout == SF_LAYOUT_POLAR ? "polar" : "Cartesian", sf_contact_ncells(o->ct),
-                isnan(o->mu) ? "COF interpolated from the strip field" : "constant COF (shortcuts = false)");
+                isnan(o->mu) ? (o->plan.cell_average ? "cell-averaged COF interpolated from the effective strip field"
+                                                     : "COF interpolated from the strip field")
+                             : "constant COF (shortcuts = false)");
     else
         fprintf(f, "slip wrench: closed form (constant COF %.6g: %s), no quadrature\n", o->mu,
                 o->dof3 ? "Contensou elliptic integrals" : "Eq. 4");

@@ -27,7 +27,8 @@ typedef struct {
 
 enum { SF_INTEG_ADAPTIVE = 0, SF_INTEG_RK4 = 1, SF_INTEG_RK8PD = 2, SF_INTEG_RKCK = 3 };
 enum { SF_DOF_1 = 0, SF_DOF_3 = 1 };
-enum { SF_COFGEN_AUTO = 0, SF_COFGEN_CIRCULANT = 1, SF_COFGEN_TILES = 2 };   /* `cof_generator` */   /* values of the `dof` key ("1", "3") */
+enum { SF_COFGEN_AUTO = 0, SF_COFGEN_CIRCULANT = 1, SF_COFGEN_TILES = 2 };   /* `cof_generator` */
+enum { SF_COFMODEL_AUTO = 0, SF_COFMODEL_POINT = 1, SF_COFMODEL_CELL = 2 };   /* `cof_model` (numplan.h) */   /* values of the `dof` key ("1", "3") */
 
 typedef struct {
     /* physics (Table 1) */
@@ -41,6 +42,7 @@ typedef struct {
     int fftw_planner;        /* 0: FFTW_ESTIMATE, 1: FFTW_MEASURE (sf_field_spec.measure) */
     double strip_halfwidth;  /* belt strip half-width in y [m]; 0: automatic bound */
     int cof_generator;       /* SF_COFGEN_*: circulant strip, tiles on demand, or auto */
+    int cof_model;           /* SF_COFMODEL_*: point values, cell averages, or the plan's choice */
     size_t samples;
     /* contact */
     int layout;              /* sf_layout */

@@ -2,6 +2,7 @@
  * Contensou closed forms and the limit-surface plan. */
 #include "test_util.h"
 #include "cof.h"
+#include "numplan.h"
 #include "contact.h"
 #include "surface.h"
 #include "scene.h"
@@ -115,9 +116,17 @@ static void cof_plan(void **state)
     assert_int_equal(sf_cof_plan_alloc(&s, &p, err, sizeof err), SF_SUCCESS);
     assert_close(sf_cof_plan_get_info(p)->y0, -(0.2 + s.R + 2 * s.l / 8), 1e-15);
     sf_cof_plan_free(p);
-    s.l = 1e-3;   /* a 1e-3 m field over a 30 m strip: refused */
+    s.l = 1e-3;   /* a 1e-3 m field over a 30 m strip: point values refused */
+    s.cof_model = SF_COFMODEL_POINT;
     assert_int_equal(sf_cof_plan_alloc(&s, &p, err, sizeof err), SF_ETOOBIG);
     assert_non_null(strstr(err, "grid points"));
+    s.cof_model = SF_COFMODEL_AUTO;   /* the plan's choice there: cell averages over 32 cells (numplan.h) */
+    assert_int_equal(sf_cof_plan_alloc(&s, &p, err, sizeof err), SF_SUCCESS);
+    assert_close(sf_cof_plan_get_info(p)->box, 2 * s.R / SF_PLAN_CELLAVG_CELLS, 1e-15);
+    assert_int_equal(sf_cof_plan_draw(p, rng, &c), SF_SUCCESS);
+    assert_close(sf_cof_box(c), 2 * s.R / SF_PLAN_CELLAVG_CELLS, 1e-15);
+    sf_cof_free(c);
+    sf_cof_plan_free(p);
     s.l = 1e5;    /* a 1e5 m correlation length over a 15 m strip: one variable */
     assert_int_equal(sf_cof_plan_alloc(&s, &p, err, sizeof err), SF_SUCCESS);
     assert_int_equal(sf_cof_plan_get_info(p)->kind, SF_COF_VARIABLE);

@@ -1,0 +1,74 @@
+#include "cellavg.h"
+#include "sf_error.h"
+
+#include <math.h>
+#include <string.h>
+#include <gsl/gsl_math.h>
+
+int sf_cellavg_init(sf_cellavg *c, double mubar, double std, double l, double h)
+{
+    memset(c, 0, sizeof *c);
+    if (!(mubar > 0) || !(std >= 0) || !(l > 0) || !(h > 0) || !isfinite(mubar) || !isfinite(std) ||
+        !isfinite(l) || !isfinite(h))
+        return SF_EINVAL;
+    double cv = std / mubar;
+    c->mubar = mubar;
+    c->s2 = log1p(cv * cv);
+    c->l = l;
+    c->h = h;
+    /* sG^{2n}/n!: until a term is below 1e-17 of the first (round-off of
+     * the sum); 64 terms reach that for sG^2 up to about 6 (CV ~ 20) */
+    double t = c->s2;
+    int n = 0;
+    while (n < 64 && t > 0) {
+        c->a[n++] = t;
+        if (t < 1e-17 * c->s2)
+            break;
+        t *= c->s2 / (double)(n + 1);
+    }
+    c->nterms = n;
+    c->var = sf_cellavg_cov(c, 0, 0);
+    for (int k = 0; k < n; k++)
+        c->rs[k] = sqrt(c->a[k] * mubar * mubar / c->var);
+    return SF_SUCCESS;
+}
+
+double sf_cellavg_box1(const sf_cellavg *c, int n, double d)
+{
+    double h = c->h, a = (double)n / (c->l * c->l), sa = sqrt(a), k = 0.5 * M_SQRTPI / sa;
+    d = fabs(d);   /* B_n is even */
+    double xp = d + h, x0 = d, xm = d - h;
+    double g = (exp(-a * xp * xp) - 2 * exp(-a * x0 * x0) + exp(-a * xm * xm)) / (2 * a);
+    double lin;
+    if (d >= h)   /* x erf = x - x erfc: the linear parts' second difference is 0 */
+        lin = -k * (xp * erfc(sa * xp) - 2 * x0 * erfc(sa * x0) + xm * erfc(sa * xm));
+    else
+        lin = k * (xp * erf(sa * xp) - 2 * x0 * erf(sa * x0) + xm * erf(sa * xm));
+    return (lin + g) / (h * h);
+}
+
+double sf_cellavg_cov(const sf_cellavg *c, double dx, double dy)
+{
+    double s = 0;
+    for (int n = c->nterms; n >= 1; n--)   /* smallest terms first */
+        s += c->a[n - 1] * sf_cellavg_box1(c, n, dx) * sf_cellavg_box1(c, n, dy);
+    return c->mubar * c->mubar * s;
+}
+
+double sf_cellavg_var(const sf_cellavg *c) { return c->var; }
+
+double sf_cellavg_corr(double dx, double dy, void *params)
+{
+    const sf_cellavg *c = params;
+    return sf_cellavg_cov(c, dx, dy) / c->var;
+}
+
+double sf_cellavg_septerm(int t, double d, void *params)
+{
+    const sf_cellavg *c = params;
+    return c->rs[t] * sf_cellavg_box1(c, t + 1, d);
+}
+
+double sf_cellavg_grid_spacing(double h) { return h / 3; }
+
+double sf_cellavg_support(const sf_cellavg *c) { return c->h + 9 * c->l; }

@@ -1,0 +1,483 @@
+/* The cell-average COF model (cof_model = cell_average, solver/cellavg.h,
+ * issue 14): the plan's shortcut at small l/R against the full
+ * computation.
+ *  - cellavg_covariance: the effective field's produced covariance
+ *    against an independent oracle of the box-averaged lognormal
+ *    covariance (2-D Gauss-Legendre quadrature of Cov_mu = mubar^2
+ *    (exp(sG^2 exp(-r^2/l^2)) - 1) against the triangle weights of two
+ *    boxes: no series, no erf), and its marginal mean and variance
+ *    (statistical, independent points of drawn fields).
+ *  - cellavg_vs_point: on the SAME fine field (point model, spacing l/8),
+ *    the cell-average quadrature fed with the exact box averages of that
+ *    field against the point model's quadrature: the achieved QoI error.
+ *  - cellavg_distribution: the QoI distributions of the two models at the
+ *    switching l/R (two-sample Kolmogorov-Smirnov). */
+#include "checks.h"
+#include "common.h"
+#include "../stats.h"
+#include "cellavg.h"
+#include "cof.h"
+#include "montecarlo.h"
+#include "numplan.h"
+#include "oscillator.h"
+#include "sf_error.h"
+#include "sweep.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <gsl/gsl_integration.h>
+
+enum { NQ = 3 };
+static const char *const qname[NQ] = { "PV_x", "PV_F", "stick fraction" };
+
+static void qois(const sf_osc_result *res, double *q)
+{
+    q[0] = res->pv_x;
+    q[1] = res->pv_F;
+    q[2] = res->stick_fraction;
+}
+
+/* ---- the oracle: Cov(mu_h(0), mu_h(dx, dy)) =
+ * (1/h^4) int_{-h}^{h} int_{-h}^{h} (h - |u|)(h - |v|) Cov_mu(dx + u, dy + v) du dv,
+ * Gauss-Legendre (GSL, 20 points) on pieces of at most l/2 split at the
+ * triangle's kink; Cov_mu from the oracle's own Nataf parameters. */
+typedef struct { double mean, s2, l; } oracle_par;
+
+static double cov_mu(const oracle_par *o, double x, double y)
+{
+    return o->mean * o->mean * expm1(o->s2 * exp(-(x * x + y * y) / (o->l * o->l)));
+}
+
+static size_t nodes_1d(double h, double l, const gsl_integration_glfixed_table *gl, double *u, double *w)
+{
+    size_t pieces = (size_t)ceil(h / (l / 2)), n = 0;
+    for (int side = -1; side <= 1; side += 2)
+        for (size_t p = 0; p < pieces; p++) {
+            double a = h * (double)p / (double)pieces, b = h * (double)(p + 1) / (double)pieces;
+            for (size_t k = 0; k < gl->n; k++) {
+                double x, wk;
+                gsl_integration_glfixed_point(a, b, k, &x, &wk, gl);
+                u[n] = side * x;
+                w[n++] = wk * (h - x) / (h * h);
+            }
+        }
+    return n;
+}
+
+static double oracle_cov(const oracle_par *o, double h, double dx, double dy, const double *u, const double *w,
+                         size_t n)
+{
+    /* boxes more than 10 l apart along an axis: every value of the
+     * integrand is below mubar^2 sG^2 e^-100, zero in double precision */
+    if (fabs(dx) - h > 10 * o->l || fabs(dy) - h > 10 * o->l)
+        return 0;
+    double s = 0;
+    for (size_t j = 0; j < n; j++) {
+        double r = 0;
+        for (size_t i = 0; i < n; i++)
+            r += w[i] * cov_mu(o, dx + u[i], dy + u[j]);
+        s += w[j] * r;
+    }
+    return s;
+}
+
+static int chk_covariance(const sf_case *c, sf_result *r)
+{
+    const sf_scene *s0 = &c->scene;
+    size_t K = c->spec.sweep.n;
+    if (!K || strcmp(c->spec.sweep_param, "l_over_R") || s0->cof_model != SF_COFMODEL_CELL || !s0->cells ||
+        !s0->samples) {
+        sf_note(r, "The scene must sweep l_over_R with cof_model = cell_average, cells and samples set.");
+        return SF_EINVAL;
+    }
+    ref_ln_par lp = ref_lognormal_par(s0->mu_mean, s0->mu_std);
+    gsl_integration_glfixed_table *gl = gsl_integration_glfixed_table_alloc(20);
+    double *x = check_alloc(K * sizeof *x), *eo = check_alloc(K * sizeof *eo), *ee = check_alloc(K * sizeof *ee);
+    int rc = SF_SUCCESS;
+    size_t ntests = 2 * K;
+    sf_note(r, "Produced covariance of the effective field (circulant embedding, `sf_field_covariance` times the "
+               "variance) against the oracle (2-D Gauss-Legendre quadrature of the lognormal covariance against two "
+               "boxes' triangle weights), at lags (i d, j d), d = box/3, i in 0..12, j in {0, 1, 2, 5, 9}, and at the "
+               "farthest lags of the grid along x and y (13 x 5 each: a circulant period too short wraps there); marginal: "
+               "%zu drawn fields, values on a sub-lattice spaced beyond the covariance's support (independent), mean "
+               "(z test, variance known) and variance (chi-square, mean known), each at alpha / %zu (Bonferroni).\n\n"
+               "| l/R | box/l | sd(mu_h) | max error vs oracle / var | embedding cov_error | points | mean p | "
+               "variance p | lognormal-fit skewness |\n|---|---|---|---|---|---|---|---|---|",
+            s0->samples, ntests);
+    for (size_t k = 0; k < K && !rc; k++) {
+        sf_scene s = *s0;
+        char err[256] = "";
+        if (sf_sweep_set(&s, "l_over_R", c->spec.sweep.v[k], err, sizeof err)) {
+            sf_note(r, "**Bad sweep value:** %s", err);
+            rc = SF_EINVAL;
+            break;
+        }
+        sf_cof_plan *p;
+        if ((rc = sf_cof_plan_alloc(&s, &p, err, sizeof err))) {
+            sf_note(r, "**Cannot plan the effective field at l/R = %g:** %s", s.l / s.R, err);
+            break;
+        }
+        const sf_cof_plan_info *in = sf_cof_plan_get_info(p);
+        const sf_field *f = sf_cof_plan_cell_field(p);
+        double cov_err = sf_field_get_info(f)->cov_error;   /* before the plan is freed */
+        double h = 2 * s.R / (double)s.cells, d = in->dx, sd = sf_cof_plan_cell_std(p), var = sd * sd;
+        oracle_par o = { s.mu_mean, lp.sigma * lp.sigma, s.l };
+        size_t cap = 2 * 20 * ((size_t)ceil(h / (s.l / 2)) + 1);
+        double *u = check_alloc(cap * sizeof *u), *w = check_alloc(cap * sizeof *w);
+        size_t nn = nodes_1d(h, s.l, gl, u, w);
+        double *cov = check_alloc(in->nx * in->ny * sizeof *cov);
+        sf_field_covariance(f, cov);
+        double ov = oracle_cov(&o, h, 0, 0, u, w, nn), emax = 0;
+        /* near lags, and the farthest ones along x and y (where a circulant
+         * period too short for the covariance's support wraps its tail) */
+        static const int js[] = { 0, 1, 2, 5, 9 };
+        for (int far = 0; far < 3; far++)
+            for (size_t a = 0; a < sizeof js / sizeof js[0]; a++)
+                for (int i = 0; i <= 12; i++) {
+                    size_t ii = (size_t)i, jj = (size_t)js[a];
+                    if (far == 1)
+                        ii = in->nx - 1 - ii;
+                    if (far == 2) {
+                        jj = in->ny - 1 - jj;
+                        ii = (size_t)js[a];
+                    }
+                    if (ii >= in->nx || jj >= in->ny)
+                        continue;
+                    double produced = var * cov[ii + in->nx * jj];
+                    double oracle = oracle_cov(&o, h, (double)ii * d, (double)jj * d, u, w, nn);
+                    emax = sf_max(emax, fabs(produced - oracle) / ov);
+                }
+        free(cov);
+        free(u);
+        free(w);
+        /* the marginal: independent points (lags beyond the support) of drawn fields */
+        size_t step = (size_t)ceil((h + 9 * s.l) / d) + 1, npt = 0;
+        double sum = 0, ss = 0, cap_n = (double)s.samples * (double)(in->nx / step + 1) * (double)(in->ny / step + 1);
+        double *vals = check_alloc((size_t)cap_n * sizeof *vals);
+        for (size_t i = 0; i < s.samples && !rc; i++) {
+            gsl_rng *g = gsl_rng_alloc(gsl_rng_mt19937);
+            gsl_rng_set(g, sf_mc_seed(s.seed, i));
+            sf_cof *cof = NULL;
+            rc = sf_cof_plan_draw(p, g, &cof);
+            gsl_rng_free(g);
+            const double *mu;
+            if (!rc && !(rc = sf_cof_grid_view(cof, NULL, NULL, NULL, NULL, NULL, NULL, &mu)))
+                for (size_t jy = 0; jy < in->ny; jy += step)
+                    for (size_t ix = 0; ix < in->nx; ix += step)
+                        vals[npt++] = mu[ix + in->nx * jy];
+            sf_cof_free(cof);
+        }
+        sf_cof_plan_free(p);
+        if (rc)
+            break;
+        for (size_t i = 0; i < npt; i++)
+            sum += vals[i];
+        double mean = sum / (double)npt;
+        for (size_t i = 0; i < npt; i++)
+            ss += (vals[i] - s.mu_mean) * (vals[i] - s.mu_mean);
+        free(vals);
+        /* the oracle's variance: the model claims Var(mu_h) exactly */
+        double pm = sf_z_pvalue((mean - s.mu_mean) / sqrt(ov / (double)npt));
+        double pv = sf_var_pvalue(ss / (double)npt, ov, npt, 1);
+        double cvh = sqrt(ov) / s.mu_mean;
+        x[k] = s.l / s.R;
+        eo[k] = fmax(emax, 1e-17);
+        ee[k] = fmax(cov_err, 1e-17);
+        sf_note(r, "| %g | %.3g | %.4g | %.2e | %.2e | %zu | %.3g | %.3g | %.3f |", x[k], h / s.l, sqrt(ov), emax,
+                ee[k], npt, pm, pv, 3 * cvh + cvh * cvh * cvh);
+        char t[160];
+        snprintf(t, sizeof t, "l/R = %g: produced covariance vs oracle, max |error| / Var(mu_h)", x[k]);
+        sf_check_le(r, t, emax, c->spec.tolerance);
+        snprintf(t, sizeof t, "l/R = %g: embedding vs its target on every grid lag (cov_error, correlation)", x[k]);
+        sf_check_le(r, t, cov_err, c->spec.tolerance);
+        snprintf(t, sizeof t, "l/R = %g: mean of mu_h = mubar (z test)", x[k]);
+        sf_check_pvalue(r, t, pm, c->spec.alpha / (double)ntests, npt);
+        snprintf(t, sizeof t, "l/R = %g: variance of mu_h = the box-averaged variance (chi-square)", x[k]);
+        sf_check_pvalue(r, t, pv, c->spec.alpha / (double)ntests, npt);
+    }
+    gsl_integration_glfixed_table_free(gl);
+    if (!rc) {
+        sf_plot *pl = sf_result_plot(r, "cellavg-cov", "Effective field: produced covariance vs oracle", "l/R [-]",
+                                     "max |error| / Var(mu_h) [-]");
+        sf_plot_log(pl, 1, 1);
+        sf_plot_series(pl, "produced vs oracle quadrature", SF_STYLE_LINESPOINTS, K, x, eo);
+        sf_plot_series(pl, "embedding vs its target (cov_error)", SF_STYLE_LINESPOINTS, K, x, ee);
+        sf_plot_hline(pl, "tolerance", c->spec.tolerance);
+    }
+    free(x);
+    free(eo);
+    free(ee);
+    return rc ? SF_EFAIL : SF_SUCCESS;
+}
+
+/* ---- the exact box average of a bilinear grid: the interpolant is a sum
+ * of tensor-product hat functions, so its integral over an axis-aligned
+ * box is separable; the weight of node i along an axis is the integral
+ * of its hat over the box's interval.  Nodes off the grid are dropped and
+ * the weights renormalised (only at the strip's edge, which the disc never
+ * reaches: the strip bound B of cof.h). */
+static double hat_prim(double t)
+{
+    if (t <= -1)
+        return 0;
+    if (t <= 0)
+        return 0.5 * (t + 1) * (t + 1);
+    if (t <= 1)
+        return 1 - 0.5 * (1 - t) * (1 - t);
+    return 1;
+}
+
+/* weights of fine nodes i0.. for the interval [a, b] on a lattice x0 + i dx, m nodes */
+static size_t box_weights(double a, double b, double x0, double dx, size_t m, size_t *i0, double *w, size_t cap)
+{
+    long lo = (long)floor((a - x0) / dx) - 1, hi = (long)ceil((b - x0) / dx) + 1;
+    lo = lo < 0 ? 0 : lo;
+    hi = hi > (long)m - 1 ? (long)m - 1 : hi;
+    size_t n = 0;
+    double sum = 0;
+    for (long i = lo; i <= hi && n < cap; i++) {
+        double xi = x0 + (double)i * dx;
+        w[n] = hat_prim((b - xi) / dx) - hat_prim((a - xi) / dx);
+        sum += w[n++];
+    }
+    for (size_t k = 0; k < n; k++)
+        w[k] /= sum;
+    *i0 = (size_t)lo;
+    return n;
+}
+
+/* The cell-average COF of the fine grid `fine` on the effective grid of
+ * scene sc (spacing box/3, marked with its box). */
+static sf_cof *box_filter(const sf_cof *fine, const sf_scene *sc, double box, sf_result *r)
+{
+    size_t m, n, mc, nc;
+    double x0, y0, dx, dy;
+    const double *g;
+    sf_cof_grid_view(fine, &m, &n, &x0, &y0, &dx, &dy, &g);
+    /* the effective grid the plan would draw on */
+    char err[256] = "";
+    sf_cof_plan *cp;
+    if (sf_cof_plan_alloc(sc, &cp, err, sizeof err)) {
+        sf_note(r, "**Cannot plan the cell-average model:** %s", err);
+        return NULL;
+    }
+    sf_cof_plan_info in = *sf_cof_plan_get_info(cp);
+    sf_cof_plan_free(cp);
+    mc = in.nx;
+    nc = in.ny;
+    size_t cap = (size_t)ceil(box / fmin(dx, dy)) + 6;
+    double *wv = check_alloc(cap * sizeof *wv);
+    double *tmp = check_alloc(n * mc * sizeof *tmp), *out = check_alloc(mc * nc * sizeof *out);
+    for (size_t i = 0; i < mc; i++) {   /* along x, every fine row */
+        double c = in.x0 + (double)i * in.dx;
+        size_t i0, k = box_weights(c - box / 2, c + box / 2, x0, dx, m, &i0, wv, cap);
+        for (size_t j = 0; j < n; j++) {
+            double s = 0;
+            for (size_t q = 0; q < k; q++)
+                s += wv[q] * g[i0 + q + m * j];
+            tmp[i + mc * j] = s;
+        }
+    }
+    for (size_t j = 0; j < nc; j++) {   /* along y */
+        double c = in.y0 + (double)j * in.dy;
+        size_t j0, k = box_weights(c - box / 2, c + box / 2, y0, dy, n, &j0, wv, cap);
+        for (size_t i = 0; i < mc; i++) {
+            double s = 0;
+            for (size_t q = 0; q < k; q++)
+                s += wv[q] * tmp[i + mc * (j0 + q)];
+            out[i + mc * j] = s;
+        }
+    }
+    sf_cof *cof = NULL;
+    if (!sf_cof_alloc_grid(mc, nc, in.x0, in.y0, in.dx, in.dy, out, &cof))
+        sf_cof_set_box(cof, box);
+    free(wv);
+    free(tmp);
+    free(out);
+    return cof;
+}
+
+static int chk_vs_point(const sf_case *c, sf_result *r)
+{
+    const sf_scene *s0 = &c->scene;
+    size_t K = c->spec.sweep.n, n = s0->samples;
+    if (!K || strcmp(c->spec.sweep_param, "l_over_R") || !s0->cells || c->spec.sweep2.n != K || !(s0->rtol > 0) || !n) {
+        sf_note(r, "The scene must sweep l_over_R, set cells (cell-average cells per diameter), sweep2 (the point "
+                   "model's rings per l/R), rtol and samples.");
+        return SF_EINVAL;
+    }
+    double *x = check_alloc(K * sizeof *x), *ach = check_alloc(K * sizeof *ach);
+    double *worst = check_alloc(K * sizeof *worst), *pred = check_alloc(K * sizeof *pred);
+    sf_note(r, "On the same fine field (point model, spacing l/8, circulant strip): the point model's polar "
+               "quadrature (rings pinned per l/R) against the cell-average model (%zu Cartesian cells per diameter) "
+               "fed with the exact box averages of that field's bilinear interpolant on its own grid (spacing "
+               "box/3); rtol %g for both; %zu realisations per l/R (streams sf_mc_seed(seed, i)); error: the largest "
+               "relative difference of PV_x, PV_F and stick fraction.\n\n| l/R | box/l | point rings | predicted "
+               "(plan) | achieved (RMS) | worst realisation |\n|---|---|---|---|---|---|",
+            s0->cells, s0->rtol, n);
+    int rc = SF_SUCCESS;
+    for (size_t k = 0; k < K && !rc; k++) {
+        sf_scene sp = *s0, sc;
+        char err[256] = "";
+        if (sf_sweep_set(&sp, "l_over_R", c->spec.sweep.v[k], err, sizeof err)) {
+            sf_note(r, "**Bad sweep value:** %s", err);
+            return SF_EINVAL;
+        }
+        sc = sp;
+        sp.cof_model = SF_COFMODEL_POINT;
+        sp.cof_generator = SF_COFGEN_CIRCULANT;
+        sp.cells = (size_t)c->spec.sweep2.v[k];
+        sc.cof_model = SF_COFMODEL_CELL;
+        double box = 2 * sc.R / (double)sc.cells;
+        sf_cof_plan *cp;
+        if ((rc = sf_cof_plan_alloc(&sp, &cp, err, sizeof err))) {
+            sf_note(r, "**Cannot plan the fine field at l/R = %g:** %s", c->spec.sweep.v[k], err);
+            break;
+        }
+        double e2 = 0, ew = 0;
+        for (size_t i = 0; i < n && !rc; i++) {
+            gsl_rng *g = gsl_rng_alloc(gsl_rng_mt19937);
+            gsl_rng_set(g, sf_mc_seed(s0->seed, i));
+            sf_cof *fine = NULL, *coarse = NULL;
+            rc = sf_cof_plan_draw(cp, g, &fine);
+            gsl_rng_free(g);
+            if (!rc && !(coarse = box_filter(fine, &sc, box, r)))
+                rc = SF_EFAIL;
+            sf_osc_result a, b;
+            double qa[NQ], qb[NQ];
+            if (!rc && !(rc = check_osc_run(&sp, NULL, fine, 0, &a, NULL, NULL, r))) {
+                qois(&a, qa);
+                sf_osc_result_free(&a);
+                if (!(rc = check_osc_run(&sc, NULL, coarse, 0, &b, NULL, NULL, r))) {
+                    qois(&b, qb);
+                    sf_osc_result_free(&b);
+                    double e = 0;
+                    for (int q = 0; q < NQ; q++) {
+                        double d = fabs(qb[q] - qa[q]) / fabs(qa[q]);
+                        if (!(d <= e))
+                            e = isnan(d) ? INFINITY : d;
+                    }
+                    e2 += e * e / (double)n;
+                    ew = sf_max(ew, e);
+                }
+            }
+            sf_cof_free(fine);
+            sf_cof_free(coarse);
+        }
+        sf_cof_plan_free(cp);
+        if (rc)
+            break;
+        x[k] = c->spec.sweep.v[k];
+        ach[k] = fmax(sqrt(e2), 1e-17);
+        worst[k] = fmax(ew, 1e-17);
+        pred[k] = sf_numplan_err_cell(x[k], sc.mu_std / sc.mu_mean, sc.cells);
+        sf_note(r, "| %g | %.3g | %zu | %.2g | %.2g | %.2g |", x[k], box / sc.l, sp.cells, pred[k], ach[k], worst[k]);
+        char t[160];
+        snprintf(t, sizeof t, "l/R = %g: RMS QoI difference (cell averages vs point values, same field) / predicted", x[k]);
+        sf_check_le(r, t, ach[k] / pred[k], c->spec.tolerance);
+    }
+    if (!rc) {
+        sf_plot *p = sf_result_plot(r, "cellavg-vs-point", "Cell-average model vs point model, same fine field",
+                                    "l/R [-]", "relative QoI difference [-]");
+        sf_plot_log(p, 1, 1);
+        sf_plot_series(p, "achieved (RMS over realisations)", SF_STYLE_LINESPOINTS, K, x, ach);
+        sf_plot_series(p, "worst realisation", SF_STYLE_POINTS, K, x, worst);
+        sf_plot_series(p, "predicted by the plan", SF_STYLE_LINESPOINTS, K, x, pred);
+        sf_plot_hline(p, "qoi_tol = 1e-3 (default)", 1e-3);
+    }
+    free(x);
+    free(ach);
+    free(worst);
+    free(pred);
+    return rc ? SF_EFAIL : SF_SUCCESS;
+}
+
+/* ---- the QoI distributions of the two models (independent fields) */
+static int chk_distribution(const sf_case *c, sf_result *r)
+{
+    const sf_scene *s0 = &c->scene;
+    size_t n = s0->samples;
+    if (n < 8 || !s0->cells || c->spec.sweep.n != 1 || !(s0->rtol > 0)) {
+        sf_note(r, "The scene must set samples >= 8, cells (cell-average), rtol and sweep = (the point model's rings).");
+        return SF_EINVAL;
+    }
+    double *q[2][NQ];
+    for (int m = 0; m < 2; m++)
+        for (int k = 0; k < NQ; k++)
+            q[m][k] = check_alloc(n * sizeof(double));
+    int rc = SF_SUCCESS;
+    for (int m = 0; m < 2 && !rc; m++) {
+        sf_scene s = *s0;
+        s.cof_model = m ? SF_COFMODEL_CELL : SF_COFMODEL_POINT;
+        if (!m)
+            s.cells = (size_t)c->spec.sweep.v[0];
+        char err[256] = "";
+        sf_cof_plan *cp;
+        if ((rc = sf_cof_plan_alloc(&s, &cp, err, sizeof err))) {
+            sf_note(r, "**Cannot plan the COF:** %s", err);
+            break;
+        }
+        for (size_t i = 0; i < n && !rc; i++) {
+            gsl_rng *g = gsl_rng_alloc(gsl_rng_mt19937);
+            gsl_rng_set(g, sf_mc_seed(s0->seed + (unsigned long)m, i));   /* independent streams per model */
+            sf_cof *cof = NULL;
+            rc = sf_cof_plan_draw(cp, g, &cof);
+            gsl_rng_free(g);
+            sf_osc_result a;
+            if (!rc && !(rc = check_osc_run(&s, NULL, cof, 0, &a, NULL, NULL, r))) {
+                double v[NQ];
+                qois(&a, v);
+                for (int k = 0; k < NQ; k++)
+                    q[m][k][i] = v[k];
+                sf_osc_result_free(&a);
+            }
+            sf_cof_free(cof);
+        }
+        sf_cof_plan_free(cp);
+    }
+    if (!rc) {
+        sf_note(r, "%zu realisations per model at l/R = %g (independent streams), point model at %g rings, cell-average "
+                   "model at %zu cells per diameter; two-sample KS per QoI at alpha / 3 (Bonferroni); z: the difference of "
+                   "the means over its Monte Carlo standard error (information).\n\n| QoI | mean (point) | mean (cell "
+                   "average) | z | KS D | p |\n|---|---|---|---|---|---|",
+                n, s0->l / s0->R, c->spec.sweep.v[0], s0->cells);
+        for (int k = 0; k < NQ; k++) {
+            double m0 = 0, m1 = 0, v0 = 0, v1 = 0, D;
+            for (size_t i = 0; i < n; i++) {
+                m0 += q[0][k][i] / (double)n;
+                m1 += q[1][k][i] / (double)n;
+            }
+            for (size_t i = 0; i < n; i++) {
+                v0 += (q[0][k][i] - m0) * (q[0][k][i] - m0) / (double)(n - 1);
+                v1 += (q[1][k][i] - m1) * (q[1][k][i] - m1) / (double)(n - 1);
+            }
+            double pv = sf_ks2_test(q[0][k], n, q[1][k], n, &D);
+            sf_note(r, "| %s | %.5g | %.5g | %.2f | %.3f | %.3g |", qname[k], m0, m1, (m1 - m0) / sqrt((v0 + v1) / (double)n),
+                    D, pv);
+            char t[96];
+            snprintf(t, sizeof t, "%s: same distribution (two-sample KS)", qname[k]);
+            sf_check_pvalue(r, t, pv, c->spec.alpha / NQ, n);
+        }
+        double idx[2] = { 0, 1 };
+        sf_plot *p = sf_result_plot(r, "cellavg-dist", "QoI means, point vs cell-average model", "model (0: point, 1: "
+                                    "cell average) [-]", "stick fraction [-]");
+        double mm[2] = { 0, 0 };
+        for (size_t i = 0; i < n; i++) {
+            mm[0] += q[0][2][i] / (double)n;
+            mm[1] += q[1][2][i] / (double)n;
+        }
+        sf_plot_series(p, "mean stick fraction", SF_STYLE_LINESPOINTS, 2, idx, mm);
+    }
+    for (int m = 0; m < 2; m++)
+        for (int k = 0; k < NQ; k++)
+            free(q[m][k]);
+    return rc ? SF_EFAIL : SF_SUCCESS;
+}
+
+const sf_check_def sf_checks_cellavg[] = {
+    { "cellavg_covariance", chk_covariance, "cell-averaged COF: produced covariance vs oracle quadrature, marginal moments" },
+    { "cellavg_vs_point", chk_vs_point, "cell-average quadrature vs point quadrature on the same fine field" },
+    { "cellavg_distribution", chk_distribution, "QoI distributions of the cell-average and point models (KS)" },
+    { NULL, NULL, NULL },
+};
