@@ -60,7 +60,9 @@ static void claim_row(FILE *f, const sf_claim_row *c, const char *link)
     if (isfinite(c->alpha))
         fprintf(f, "; alpha = %.3g", c->alpha);
     fputs(" | ", f);
-    cell(f, c->note);
+    /* a contradicted claim always says why (or that nobody has said yet) */
+    cell(f, *c->note ? c->note : c->status == SF_CLAIM_CONTRADICTED ? "**no explanation recorded**: not expected "
+                                                                       "at this tier; see the case report" : "");
     fputs(" | ", f);
     cell(f, *c->defs ? c->defs : "—");
     fputs(" |\n", f);
@@ -110,10 +112,14 @@ int sf_paper_write_tsv(const char *dir, const sf_result *r)
     return fclose(f) == 0 ? 0 : -1;
 }
 
+_Static_assert(sizeof(((sf_claim_row *)0)->id) + sizeof(((sf_claim_row *)0)->text) + sizeof(((sf_claim_row *)0)->how) +
+                   sizeof(((sf_claim_row *)0)->note) + sizeof(((sf_claim_row *)0)->defs) + 5 * 32 < 4096,
+               "a claims.tsv line must fit read_tsv's buffer");
+
 /* The claims of one case from its claims.tsv (NULL, 0 when none). */
 static sf_claim_row *read_tsv(const char *root, const char *id, size_t *n)
 {
-    char path[1200], line[2048];
+    char path[1200], line[4096];   /* one claim: the fields of sf_claim_row and five numbers */
     snprintf(path, sizeof path, "%s/%s/claims.tsv", root, id);
     *n = 0;
     FILE *f = fopen(path, "r");
