@@ -259,7 +259,7 @@ int sf_paper_report(const sf_run_meta *meta, const sf_outcome *o, size_t n, char
                    "against the margin the text names. The QoI definitions the paper leaves open (DESIGN.md sec. 3) "
                    "are ours by default: rest start, t_skip = 10 s (paper tier), cycles from stick onset to stick "
                    "onset, stick fraction over complete cycles; the last column gives the verdict under the "
-                   "alternatives.\n\n", meta->tier_name, meta->seed_note);
+                   "alternatives (each claim's sensitivity to those definitions).\n\n", meta->tier_name, meta->seed_note);
         fprintf(f, "## Protocol, and where it departs from the paper's\n\n"
                    "- Paper tier (`make verify TIER=paper`): T = 100 s, 100 realisations per point, eps_lambda = 1e-3, "
                    "the grids of Sec. 3 (l/R 0.1 .. 1000, v_b 0.1 .. 0.6 m/s, mean COF 0.2 .. 1 at CV = 0.2), Fig. 15 "
@@ -301,8 +301,10 @@ int sf_paper_report(const sf_run_meta *meta, const sf_outcome *o, size_t n, char
                                "Ours: t_skip as in the case, cycles from stick onset to stick onset, stick fraction "
                                "over complete cycles. Alternatives evaluated on the same runs: t_skip = 0, "
                                "t_skip = T/3, cycles cut at slip onset (from the history rows), stick fraction over "
-                               "the window [t_skip, T], and the spread over all cycles pooled across realisations "
-                               "(the paper's ergodicity remark, Sec. 3.2) instead of over per-realisation means.\n\n| case | claim | ours | under the alternatives |\n"
+                               "the window [t_skip, T], the spread over all cycles pooled across realisations "
+                               "(the paper's ergodicity remark, Sec. 3.2) instead of over per-realisation means, and "
+                               "the \"time duration of stick state\" of Figs. 11-13 (c) read as the stick duration per "
+                               "cycle instead of the stick fraction.\n\n| case | claim | ours | under the alternatives |\n"
                                "|---|---|---|---|\n");
                     head = 1;
                 }

@@ -477,9 +477,14 @@ static double now_s(void)
  * realisations", Sec. 3.2): means as ours, std^2 = the variance of the
  * per-realisation means + the mean within-realisation variance of the
  * per-cycle values (its tests use the realisation count as n). */
-enum { D_OURS, D_TSKIP0, D_TSKIP_LATE, D_SLIPCUT, D_WINSF, D_POOLED, ND };
+/* D_PERCYCLE: the paper's "time duration of stick state" (Figs. 11-13
+ * (c)) read as the stick duration per cycle instead of the stick fraction:
+ * Q_SF is then the ratio of the per-cycle stick durations, Q_SFABS the
+ * stochastic duration itself [s]; the rest as ours.  It is derived from
+ * ours (Q_TSTK), so the realisations' layout holds the first ND_RAW. */
+enum { D_OURS, D_TSKIP0, D_TSKIP_LATE, D_SLIPCUT, D_WINSF, D_POOLED, ND_RAW, D_PERCYCLE = ND_RAW, ND };
 static const char *const dshort[ND] = { "ours", "t_skip 0", "t_skip T/3", "slip-onset cut", "window stick fraction",
-                                        "cycles pooled" };
+                                        "cycles pooled", "stick duration per cycle" };
 /* QoIs per realisation and definition: ratios to the deterministic
  * reference for PVX, PVF, SF; SFABS = stochastic stick fraction itself;
  * TSTK = mean stick duration per cycle [s]; BIFSD, BIFMEAN = spread and
@@ -488,10 +493,10 @@ enum { Q_PVX, Q_PVF, Q_SF, Q_SFABS, Q_TSTK, Q_BIFSD, Q_BIFMEAN, Q_BIFN, NQ };
 static const char *const qname[NQ] = { "PV_x ratio", "PV_F ratio", "stick-fraction ratio", "stick fraction",
                                        "stick duration [s]", "spread of x at slip-to-stick [m]",
                                        "mean x at slip-to-stick [m]", "slip-to-stick count" };
-/* after the ND x NQ block: the within-realisation variances of the
+/* after the ND_RAW x NQ block: the within-realisation variances of the
  * per-cycle PV_x, PV_F and stick fraction (ours), for D_POOLED */
 #define NW 3
-#define NOUT (ND * NQ + NW)
+#define NOUT (ND_RAW * NQ + NW)
 
 /* The extremum of x between two history rows where vx changes sign: the
  * cubic Hermite interpolant of (x, vx) at both ends, its stationary point
@@ -591,7 +596,7 @@ static void raw_qoi(const sf_osc_result *res, const check_hist *h, double T, dou
                         v3[j] += (c3[j] - mu3[j]) * (c3[j] - mu3[j]) / (double)(m - 1);
                 }
             for (int j = 0; j < 3; j++)
-                out[ND * NQ + j] = v3[j];
+                out[ND_RAW * NQ + j] = v3[j];
         }
     }
     /* cycles cut at slip onset, from the history rows: cycle j runs from
@@ -823,18 +828,21 @@ static int claims_point(const sf_scene *s0, const char *param, double val, cpoin
             return SF_EFAIL;
     }
     for (size_t i = 0; i < pt->n; i++) {
-        for (int dd = 0; dd < ND; dd++)
+        for (int dd = 0; dd < ND_RAW; dd++)
             for (int q = Q_PVX; q <= Q_SF; q++)
                 pt->raw[i * NOUT + dd * NQ + q] /= pt->det[dd * NQ + q];
         for (int j = 0; j < NW; j++)   /* variances: over the reference squared (Q_PVX, Q_PVF, Q_SF = 0, 1, 2) */
-            pt->raw[i * NOUT + ND * NQ + j] /= pt->det[D_OURS * NQ + j] * pt->det[D_OURS * NQ + j];
+            pt->raw[i * NOUT + ND_RAW * NQ + j] /= pt->det[D_OURS * NQ + j] * pt->det[D_OURS * NQ + j];
     }
     double *v = check_alloc(pt->n * sizeof *v);
     for (int dd = 0; dd < ND; dd++)
         for (int q = 0; q < NQ; q++) {
             size_t m = 0;
             for (size_t i = 0; i < pt->n; i++) {
-                double x = pt->raw[i * NOUT + dd * NQ + q];
+                /* D_PERCYCLE: ours, but the stick duration per cycle for the stick QoIs */
+                const double *o = pt->raw + i * NOUT + (dd == D_PERCYCLE ? D_OURS : dd) * NQ;
+                double x = dd != D_PERCYCLE || (q != Q_SF && q != Q_SFABS) ? o[q]
+                         : q == Q_SF ? o[Q_TSTK] / pt->det[D_OURS * NQ + Q_TSTK] : o[Q_TSTK];
                 if (isfinite(x))
                     v[m++] = x;
             }
@@ -845,7 +853,7 @@ static int claims_point(const sf_scene *s0, const char *param, double val, cpoin
     for (int j = 0; j < NW; j++) {   /* pooled spread: between + mean within */
         size_t m = 0;
         for (size_t i = 0; i < pt->n; i++) {
-            double x = pt->raw[i * NOUT + ND * NQ + j];
+            double x = pt->raw[i * NOUT + ND_RAW * NQ + j];
             if (isfinite(x))
                 v[m++] = x;
         }
@@ -979,7 +987,7 @@ static int claim_eval_at(const claim_spec *c, const cpoint *pt, size_t K, int dd
          * from the per-realisation mean, spread and count */
         double W = 0, Bs = 0, gm = 0, ntot = 0, dfw = 0, dfb = -1;
         for (size_t i = 0; i < A->n; i++) {
-            const double *o = A->raw + i * NOUT + dd * NQ;
+            const double *o = A->raw + i * NOUT + (dd < ND_RAW ? dd : D_OURS) * NQ;
             if (!(o[Q_BIFN] > 1) || !isfinite(o[Q_BIFSD]))
                 continue;
             gm += o[Q_BIFN] * o[Q_BIFMEAN];
@@ -987,7 +995,7 @@ static int claim_eval_at(const claim_spec *c, const cpoint *pt, size_t K, int dd
         }
         gm /= ntot;
         for (size_t i = 0; i < A->n; i++) {
-            const double *o = A->raw + i * NOUT + dd * NQ;
+            const double *o = A->raw + i * NOUT + (dd < ND_RAW ? dd : D_OURS) * NQ;
             if (!(o[Q_BIFN] > 1) || !isfinite(o[Q_BIFSD]))
                 continue;
             W += (o[Q_BIFN] - 1) * o[Q_BIFSD] * o[Q_BIFSD];
@@ -1090,8 +1098,8 @@ static size_t claims_judge(const sf_case *c, sf_result *r, const claim_spec *spe
     int paper = s->tier == SF_TIER_PAPER;
     size_t gated = 0;
     sf_note(r, "\n| claim | statistic | ours [one-sided (1 - alpha) bounds] | verdict | expected here | power vs "
-               "this estimate | verdicts: %s / %s / %s / %s / %s |\n|---|---|---|---|---|---|---|",
-            dshort[1], dshort[2], dshort[3], dshort[4], dshort[5]);
+               "this estimate | verdicts: %s / %s / %s / %s / %s / %s |\n|---|---|---|---|---|---|---|",
+            dshort[1], dshort[2], dshort[3], dshort[4], dshort[5], dshort[6]);
     for (const claim_spec *cs = spec; cs->id; cs++) {
         claim_eval e, ed;
         if (!claim_eval_at(cs, pt, K, D_OURS, alpha, &e))
@@ -1109,7 +1117,8 @@ static size_t claims_judge(const sf_case *c, sf_result *r, const claim_spec *spe
         }
         char defs2[460];
         snprintf(defs2, sizeof defs2, "%s%.400s", dep ? "DEPENDS ON THE DEFINITION: " : "same verdict under all: ",
-                 dep ? defs : "t_skip 0, t_skip T/3, slip-onset cut, window stick fraction, cycles pooled");
+                 dep ? defs : "t_skip 0, t_skip T/3, slip-onset cut, window stick fraction, cycles pooled, stick "
+                              "duration per cycle");
         int a = pick(pt, K, cs->a), b = pick(pt, K, cs->b);
         int nmin = (int)pt[a].nv[D_OURS][cs->q];
         if (b >= 0 && (int)pt[b].nv[D_OURS][cs->q] < nmin)
