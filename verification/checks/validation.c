@@ -1774,8 +1774,8 @@ static int chk_fig3(const sf_case *c, sf_result *r)
  * Sec. 3 rests on for that axis is the 1-D stick-slip cycle of Eqs. 3-4,
  * whose stick duration, slip amplitude and friction range scale with mu:
  * written in closed form from the equations (ref_cycle, checks/common.c;
- * it shares no code with solver/cycle1d.c), and checked on the deterministic runs
- * at each mean COF.  The stochastic model has an exact statement about
+ * it shares no code with solver/cycle1d.c), and checked on the
+ * deterministic runs at each mean COF.  The stochastic model has an exact statement about
  * the mean COF in the long-correlation limit: there every realisation is
  * that cycle at its own mu_s, a lognormal with the scene's mean and CV,
  * so the mean of each QoI over realisations is an integral of the closed
@@ -1882,9 +1882,12 @@ static void ref_expect(const sf_scene *s, double mean, double std, int q, double
     gsl_function F = { mc_integrand, &a };
     gsl_integration_workspace *w = gsl_integration_workspace_alloc(200);
     double e1, e2, err;
-    gsl_integration_qag(&F, -8, 8, 0, 1e-12, 200, GSL_INTEG_GAUSS61, w, &e1, &err);
+    /* a quadrature that misses its tolerance gives NaN: the rows fail */
+    if (gsl_integration_qag(&F, -8, 8, 0, 1e-12, 200, GSL_INTEG_GAUSS61, w, &e1, &err))
+        e1 = NAN;
     a.pw = 2;
-    gsl_integration_qag(&F, -8, 8, 0, 1e-12, 200, GSL_INTEG_GAUSS61, w, &e2, &err);
+    if (gsl_integration_qag(&F, -8, 8, 0, 1e-12, 200, GSL_INTEG_GAUSS61, w, &e2, &err))
+        e2 = NAN;
     gsl_integration_workspace_free(w);
     *m1 = e1;
     *sd = sqrt(fmax(0, e2 - e1 * e1));
