@@ -1361,7 +1361,8 @@ static const claim_spec claims_lr[] = {
       "Exact in the one-variable limit: PV_x = 2 sqrt(d^2 + (v_r/omega)^2) with d proportional to mu_s passes the COF's "
       "CV with the weight d^2 / (d^2 + (v_r/omega)^2) = 0.67 (Table 1): the std of the ratio over the lognormal mu_s is "
       "0.135 (the quadrature of quick-mean-cof's oracle), not 0.2; only PV_F, linear in mu_s, has std CV. Quick tier "
-      "(l/R = 1e6, N = 1000): contradicted, gated; paper tier (l/R = 1000, N = 100): 0.15 [0.13, 0.18], not decidable." },
+      "(l/R = 1e6, N = 1000): contradicted, gated; paper tier (l/R = 1000, N = 100): 0.151 [0.118, 0.193], not "
+      "decidable, at the default seed; 0.116 [0.096, 0.139], contradicted, at seed 424242." },
     { "fig11-large-std-F", "l/R > 100: the std of the PV_F ratio tends to CV = 0.2 (read: within 0.2 +- 20%)", K_SD_EQ,
       Q_PVF, ">=100", NULL, 0.16, 0.24, 0, 'C', 'U',
       "Exact behind it: PV_F = 2 (1 - mu_k/mu_s) mu_s m g with one mu_s per realisation, so the ratio is mu_s/mean: "
@@ -1374,14 +1375,16 @@ static const claim_spec claims_lr[] = {
       "Read as the stick duration per cycle (2 d / v_b, proportional to mu_s) the claim holds: std CV = 0.2 exactly "
       "(0.195 in the quick tier's table). Quick tier: contradicted, gated against 'confirmed' (0.143 sits 4.7 standard "
       "errors below the margin at N = 1000: 'contradicted' comes up with power 0.95 only, and fresh seeds 8008 and 8014 "
-      "missed it); paper tier (l/R = 1000, N = 100): not decidable." },
+      "missed it); paper tier (l/R = 1000, N = 100): not decidable at the default seed (0.149), contradicted at seed "
+      "424242 (0.123 [0.105, 0.146])." },
     { "fig11-large-mean-x", "l/R > 100: the mean PV_x ratio is slightly lower than one", K_MEAN, Q_PVX, ">=100", NULL, 1, 0,
       -1, 'U', 'U', "With one mu_s per realisation the 1-D cycle's amplitude is convex in mu_s: its mean is above 1." },
     { "fig11-large-mean-F", "l/R > 100: the mean PV_F ratio is slightly lower than one", K_MEAN, Q_PVF, ">=100", NULL, 1, 0,
       -1, 'U', 'U', "Exact: the PV_F ratio is mu_s / mean, whose mean is 1; no N can confirm 'lower than one'." },
     { "fig11-mid-sf-bends", "l/R between 0.1 and 10: the mean stick-duration ratio bends downward from one (at l/R = 1)",
       K_MEAN, Q_SF, "=1", NULL, 1, 0, -1, 'U', 'U',
-      "Paper tier (T = 100 s): 0.986 [0.957, 1.014], no bend beyond the bounds. The quick tier (T = 20 s from rest, "
+      "Paper tier (T = 100 s): 0.986 [0.957, 1.014] at the default seed (not decidable), 0.966 [0.937, 0.996] at "
+      "seed 424242 (confirmed): a bend of a few percent, at the edge of N = 100. The quick tier (T = 20 s from rest, "
       "3-4 cycles per realisation) finds about 1.15, above one: our explanation is the short window, dominated by the "
       "first cycles after the transient, whose stick phases on a field are longer (a stick threshold from the upper "
       "tail holds the disc longer); the verdict moves with the window (last column)." },
@@ -1487,7 +1490,8 @@ static const claim_spec claims_vb[] = {
       "Ours rises by 27% [24%, 30%] (a drop of -0.27, paper tier): as fig12-mean-F-falls." },
     { "fig12-drop-sf", "The mean stick duration drops by around 40% at v_b = 0.6 against 0.1 (read: the ratio to the "
       "deterministic model, a drop in [30%, 50%])", K_DROP_EQ, Q_SF, ">=0.6", "<=0.1", 0.3, 0.5, 0, 'x', 'U',
-      "Ours: the stick-fraction ratio falls by 23% [15%, 30%] (1.01 to 0.78, paper tier): the direction the paper "
+      "Ours: the stick-fraction ratio falls by 23% [15%, 29.9%] (1.01 to 0.78, paper tier, default seed: "
+      "contradicted; 25% [18%, 31%] at seed 424242: not decidable): the direction the paper "
       "names (the stochasticity exacerbates the fall: fig12-mean-sf-falls, confirmed) but less than 30-50%. The size "
       "depends on what 'stick duration' is: as a fraction of the cycle (ours) it falls 23%; per cycle (the table: "
       "3.36 s against 3.27 s deterministic at 0.1, 0.70 s against 0.55 s at 0.6) the ratio rises from 1.03 to 1.28; "
