@@ -9,7 +9,13 @@
 # candidate runs once with --seed 1 and once with --seed 2, and a case
 # whose results table or findings differ between the two draws random
 # numbers that reach its verdict (reports/false-alarm/random-cases.txt).
-# CASES='...' limits the candidates.  Writes reports/false-alarm/report.md
+# CASES='...' limits the candidates.  Run i uses --seed SEED0 + i
+# (SEED0=N in the environment; default: from the clock, so each study
+# draws fresh seeds) and the report lists, per case, the seeds that failed
+# (a failure is reproducible with `slipfield verify --seed S CASE`), a
+# one-sided 95% Clopper-Pearson upper bound on the failure rate, and
+# P(X >= failures) for X ~ Binomial(runs, alpha): below 0.05 the case fails
+# more often than its alpha allows.  Writes reports/false-alarm/report.md
 # and a gnuplot plot.  Many more failures than alpha N means a flaky (or
 # wrong) check; mutants (make mutants) and make power show it is not
 # toothless.
@@ -18,6 +24,7 @@ N=${1:-20}
 TIER=${2:-quick}
 JOBS=${3:-2}
 BIN=${SLIPFIELD:-build/slipfield}   # a copy keeps a long study safe from rebuilds
+SEED0=${SEED0:-$(( $(date +%s) % 1000000 * 1000 ))}
 sf_name=fa; . "$(dirname "$0")/common.sh"
 out=reports/false-alarm
 mkdir -p "$out"
@@ -43,22 +50,50 @@ for f in $cand; do
 done
 i=0
 while [ $i -lt "$N" ]; do
-    "$BIN" verify --seed random --jobs "$JOBS" --reports "$tmp/r" $cases > "$tmp/run$i.log" 2>&1 || true
+    seed=$((SEED0 + i + 1))
+    "$BIN" verify --seed $seed --jobs "$JOBS" --reports "$tmp/r" $cases > "$tmp/run$i.log" 2>&1 || true
+    echo "$seed" > "$tmp/seed$i"
+    # every failing row (gate) of every case in this run, for the per-gate table
+    for f in $cases; do
+        id=$(echo "$f" | sed 's|^cases/||; s|\.md$||')
+        [ -f "$tmp/r/$id/report.md" ] || continue
+        grep -F '| **no** |' "$tmp/r/$id/report.md" | awk -F' \\| ' -v s="$seed" -v c="$id" '{ q = $1; sub(/^\| /, "", q); gsub(/, n = [0-9]+/, "", q); gsub(/ \(n = [0-9]+\)/, "", q); print s "\t" c "\t" q }' >> "$tmp/failrows.tsv" || true
+    done
     i=$((i + 1))
     [ -t 2 ] && printf '\rfalse-alarm: %d/%d runs' "$i" "$N" >&2
 done
 [ -t 2 ] && echo >&2
 # per case: failures over N, nominal alpha from the scene
 {
-    echo "case	alpha	failures	runs"
+    echo "case	alpha	failures	runs	failing_seeds"
     for f in $cases; do
         id=$(echo "$f" | sed 's|^cases/||; s|\.md$||')
         a=$(scene_val "$f" alpha)
         [ -n "$a" ] || a=-
-        k=$(cat "$tmp"/run*.log | grep -E "^(FAIL|ERROR) +$id " | wc -l)
-        echo "$id	$a	$k	$N"
+        k=0; fs=""
+        i=0
+        while [ $i -lt "$N" ]; do
+            if grep -qE "^(FAIL|ERROR) +$id " "$tmp/run$i.log"; then
+                k=$((k + 1)); fs="$fs$(cat "$tmp/seed$i") "
+            fi
+            i=$((i + 1))
+        done
+        echo "$id	$a	$k	$N	${fs:--}"
     done
 } > "$out/rates.tsv"
+# one-sided 95% Clopper-Pearson upper bound on the rate (k failures in n:
+# the p with P(X <= k; n, p) = 0.05, by bisection) and the binomial tail
+# P(X >= k; n, alpha) (below 0.05: more failures than alpha allows)
+binom='function lcdf(k, n, p,   j, s, t) { s = 0; for (j = 0; j <= k; j++) { t = lgam(n + 1) - lgam(j + 1) - lgam(n - j + 1);
+           if (p > 0) t += j * log(p); else if (j > 0) continue; if (p < 1) t += (n - j) * log(1 - p); else if (n > j) continue; s += exp(t) } return s }
+       function lgam(x,   r) { r = 0; while (x < 8) { r -= log(x); x++ } return r + (x - 0.5) * log(x) - x + 0.918938533204673 + 1 / (12 * x) - 1 / (360 * x * x * x) }
+       function utail(k, n, p,   j, s) { s = 0; for (j = k; j <= n; j++) s += exp(lgam(n + 1) - lgam(j + 1) - lgam(n - j + 1) + j * log(p) + (n - j) * log(1 - p)); return s }
+       function upper(k, n,   lo, hi, m, i) { if (k >= n) return 1; lo = 0; hi = 1; for (i = 0; i < 60; i++) { m = (lo + hi) / 2; if (lcdf(k, n, m) > 0.05) lo = m; else hi = m } return hi }'
+awk -F'\t' -v OFS='\t' "$binom"'
+     NR == 1 { print $0, "upper95", "p_tail"; next }
+     { u = upper($3, $4); t = ($2 == "-" || $3 == 0) ? "-" : sprintf("%.3g", utail($3, $4, $2));
+       print $0, sprintf("%.3g", u), t }' "$out/rates.tsv" > "$tmp/rates2.tsv"
+mv "$tmp/rates2.tsv" "$out/rates.tsv"
 awk -F'\t' 'NR > 1 && $2 != "-" { n++; f += $3; ea += $2 * $4; r += $4 }
      NR > 1 && $2 == "-" { m++; g += $3; rr += $4 }
      END { printf "%d statistical cases (alpha) x %d runs: %d failures, expected at most %.2f (sum of alpha x runs)\n", n, r / (n ? n : 1), f, ea;
@@ -88,9 +123,29 @@ GP
     echo
     cat "$out/summary.txt"
     echo
-    echo "| case | alpha | failures | runs |"
-    echo "|---|---|---|---|"
-    awk -F'\t' 'NR > 1 { printf "| %s | %s | %s | %s |\n", $1, $2, $3, $4 }' "$out/rates.tsv"
+    echo "Seeds: run i used \`--seed $((SEED0 + 1))\` .. \`--seed $((SEED0 + N))\` (SEED0 = $SEED0). Upper 95%: one-sided"
+    echo "Clopper-Pearson bound on the failure rate; P(X >= k): the chance of at least this many failures if"
+    echo "the case failed at exactly its alpha (below 0.05: it fails more often than its alpha allows)."
+    echo
+    echo "| case | seeds | failures | alpha | upper 95% bound on the rate | P(X >= k) at alpha | failing seeds |"
+    echo "|---|---|---|---|---|---|---|"
+    awk -F'\t' 'NR > 1 { printf "| %s | %s | %s | %s | %s | %s | %s |\n", $1, $4, $3, $2, $6, $7, $5 }' "$out/rates.tsv"
+    echo
+    echo "A claims case gates several claims, each at its alpha (not corrected: each claim is its own"
+    echo "question), so its case-level rate may reach alpha times its gates. Per gate (the failing rows,"
+    echo "each compared with the case's alpha):"
+    echo
+    echo "| case | gate (row) | failures | runs | alpha | P(X >= k) at alpha | seeds |"
+    echo "|---|---|---|---|---|---|---|"
+    if [ -s "$tmp/failrows.tsv" ]; then
+        awk -F'\t' -v OFS='\t' 'NR == FNR { if (FNR > 1) a[$1] = $2; next }
+             { k = $2 SUBSEP $3; n[k]++; sd[k] = sd[k] $1 " " } END { for (k in n) { split(k, p, SUBSEP); print p[1], p[2], n[k], a[p[1]], sd[k] } }' \
+            "$out/rates.tsv" "$tmp/failrows.tsv" | sort | awk -F'\t' -v N="$N" "$binom"'
+             { t = ($4 == "-" || $4 == "") ? "-" : sprintf("%.3g", utail($3, N, $4));
+               printf "| %s | %s | %d | %d | %s | %s | %s |\n", $1, $2, $3, N, $4, t, $5 }'
+    else
+        echo "| (none) | | 0 | $N | | | |"
+    fi
     echo
     echo "![false-alarm rates](false_alarm.png)"
 } > "$out/report.md.tmp"

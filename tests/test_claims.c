@@ -80,11 +80,49 @@ static void claims_tsv_reach_the_index(void **state)
     assert_int_equal(system(cmd), 0);
 }
 
+/* A contradicted claim always carries a reason in the tables: its note,
+ * however long (a note of 700 characters survives claims.tsv whole), or a
+ * flag that none was recorded. */
+static void contradicted_claims_say_why(void **state)
+{
+    (void)state;
+    char root[] = "/tmp/sf-claims-XXXXXX";
+    assert_non_null(mkdtemp(root));
+    char dir[128];
+    snprintf(dir, sizeof dir, "%s/validation/y", root);
+    assert_int_equal(sf_mkdirs(dir), 0);
+    char longnote[701];
+    for (int i = 0; i < 700; i++)
+        longnote[i] = (char)('a' + i % 26);
+    longnote[699] = 'Z';
+    longnote[700] = '\0';
+    sf_result *r = sf_result_alloc();
+    sf_claim(r, "silent", "no note", SF_CLAIM_CONTRADICTED, 2, 1.9, 2.1, 0.01, "t", NULL);
+    sf_claim(r, "verbose", "long note", SF_CLAIM_CONTRADICTED, 2, 1.9, 2.1, 0.01, "t", longnote);
+    assert_int_equal(sf_paper_write_tsv(dir, r), 0);
+    sf_outcome o;
+    memset(&o, 0, sizeof o);
+    snprintf(o.id, sizeof o.id, "validation/y");
+    char *md = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&md, &len);
+    sf_paper_index_section(f, root, &o, 1, 0);
+    fclose(f);
+    assert_non_null(strstr(md, "no explanation recorded"));
+    assert_non_null(strstr(md, longnote));
+    free(md);
+    sf_result_free(r);
+    char cmd[200];
+    snprintf(cmd, sizeof cmd, "rm -rf %s", root);
+    assert_int_equal(system(cmd), 0);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(claim_records_and_nan_is_undecided),
         cmocka_unit_test(claims_tsv_reach_the_index),
+        cmocka_unit_test(contradicted_claims_say_why),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

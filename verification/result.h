@@ -69,7 +69,7 @@ int sf_result_gate_nonfinite(sf_result *r);
  * fail) with rows of its own. */
 enum { SF_CLAIM_CONFIRMED = 0, SF_CLAIM_CONTRADICTED = 1, SF_CLAIM_UNDECIDED = 2 };
 typedef struct {
-    char id[48], text[320], how[200], note[400];
+    char id[48], text[320], how[200], note[800];
     char defs[400];   /* the verdict under other QoI definitions (sf_claim_defs) */
     int status;
     double measured, ci_lo, ci_hi, alpha;

@@ -311,3 +311,35 @@ sf_cof *check_case_cof(const sf_case *c, const sf_scene *s, sf_result *r)
     sf_cof_plan_free(p);
     return cof;
 }
+
+/* The limit cycle of the 1-D model at static COF mu (Eqs. 3-4 with Eq. 1's
+ * mu_k = r mu, Eq. 14's jump and Eq. 12's threshold).  Slip (u = v - v_b
+ * < 0) is free harmonic motion about the kinetic equilibrium x_e = r mu N
+ * / k at omega = sqrt(k/m).  It starts at the break point x_s = mu N / k
+ * (where the spring force reaches the static limit) with the disc speed
+ * v_r = v_b - eps omega R (Eq. 14 puts the relative speed at eps omega R)
+ * and ends when the speed returns to v_r (Eq. 12's threshold): energy
+ * conservation on the arc puts that at the mirror point x_e - d, d = x_s
+ * - x_e, with the amplitude A = sqrt(d^2 + (v_r/omega)^2) and the phase
+ * swept pi + 2 atan(v_r / (omega d)).  Stick carries the disc from x_e -
+ * d to x_s at v_b: 2 d / v_b.  The friction force is k x in stick (the
+ * disc does not accelerate) and r mu N in slip, so its range is from
+ * k (x_e - d) at stick onset to k x_s at the break: 2 k d.  0 or -1 when
+ * there is no cycle (d <= 0 or v_r <= 0). */
+int ref_cycle(const sf_scene *s, double mu, ref_cycle1d *c)
+{
+    double N = s->m * s->g;
+    c->omega = sqrt(s->k / s->m);
+    c->xs = mu * N / s->k;
+    c->xe = s->mu_k_ratio * mu * N / s->k;
+    c->d = c->xs - c->xe;
+    c->vr = s->v_b - s->eps_lambda * c->omega * s->R;
+    if (!(c->d > 0) || !(c->vr > 0))
+        return -1;
+    c->t_stick = 2 * c->d / s->v_b;
+    c->t_slip = (M_PI + 2 * atan2(c->vr, c->omega * c->d)) / c->omega;
+    c->pv_x = 2 * sqrt(c->d * c->d + (c->vr / c->omega) * (c->vr / c->omega));
+    c->pv_F = 2 * s->k * c->d;
+    c->sf = c->t_stick / (c->t_stick + c->t_slip);
+    return 0;
+}

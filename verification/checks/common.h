@@ -20,6 +20,17 @@ double ref_sq_exp(double hx, double hy, double l);
  * about 1e-16 eps^4 relative error, so keep eps below ~100. */
 void ref_contensou(double eps, double *f, double *t);
 
+typedef struct {
+    double xs, xe, d, omega, vr;        /* [m], [m], [m], [1/s], [m/s] */
+    double t_stick, t_slip, pv_x, pv_F; /* [s], [s], [m], [N] */
+    double sf;                          /* stick fraction [-] */
+} ref_cycle1d;
+
+/* The oracle's 1-D limit cycle at static COF mu (Eqs. 3-4, 1, 12, 14),
+ * written from the equations, sharing no code with solver/cycle1d.c: see
+ * common.c for the derivation.  0, or -1 when there is no cycle. */
+int ref_cycle(const sf_scene *s, double mu, ref_cycle1d *c);
+
 /* Power runs (issue 13): the scene the DATA GENERATOR draws from -- the
  * case's scene with the alternative of `slipfield verify --alternative`
  * applied (unchanged in a normal run).  Oracles use c->scene, never this. */

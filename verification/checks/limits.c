@@ -7,8 +7,6 @@
 #include "common.h"
 #include "../stats.h"
 #include "cof.h"
-#include "cycle1d.h"
-#include "lognormal.h"
 #include "sweep.h"
 #include "sf_error.h"
 
@@ -21,23 +19,31 @@
 #include <gsl/gsl_cdf.h>
 #include <gsl/gsl_sort.h>
 
-/* A QoI ratio as a function of the drawn mu_s, from the closed form. */
+/* A QoI ratio as a function of the drawn mu_s, from the closed form.
+ * Both halves of the oracle are the checks' own (common.h): the lognormal
+ * parameters from the target mean and std (ref_lognormal_par, not
+ * solver/lognormal.c, which draws the realisations: a defect there must
+ * not move the oracle with it) and the cycle (ref_cycle, not
+ * solver/cycle1d.c). */
 typedef struct {
     const sf_scene *s;
     int q;               /* SF_SWEEP_PVX, PVF or SF */
-    sf_lognormal ln;
+    ref_ln_par ln;
     double det;          /* the closed-form value at mu_mean */
 } qmap;
 
 static double qoi_at(const qmap *m, double mu)
 {
-    sf_scene t = *m->s;
-    t.mu_mean = mu;
-    sf_cycle1d c;
-    if (sf_cycle1d_init(&c, &t, t.eps_lambda))
+    ref_cycle1d c;
+    if (ref_cycle(m->s, mu, &c))
         return NAN;
-    double v = m->q == SF_SWEEP_PVX ? c.pv_x : (m->q == SF_SWEEP_PVF ? c.pv_F : c.stick_fraction);
+    double v = m->q == SF_SWEEP_PVX ? c.pv_x : (m->q == SF_SWEEP_PVF ? c.pv_F : c.sf);
     return v / m->det;
+}
+
+static double ln_cdf(const qmap *m, double mu)
+{
+    return gsl_cdf_lognormal_P(mu, m->ln.mu, m->ln.sigma);
 }
 
 typedef struct { const qmap *m; double target; } inv_par;
@@ -59,9 +65,9 @@ static double ratio_cdf(double r, void *params)
     while (isnan(qoi_at(m, hi)))
         hi /= 1.5;
     if (r <= qoi_at(m, lo))
-        return sf_lognormal_cdf(&m->ln, lo);
+        return ln_cdf(m, lo);
     if (r >= qoi_at(m, hi))
-        return sf_lognormal_cdf(&m->ln, hi);
+        return ln_cdf(m, hi);
     inv_par ip = { m, r };
     gsl_function F = { inv_f, &ip };
     gsl_root_fsolver *rs = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
@@ -73,7 +79,7 @@ static double ratio_cdf(double r, void *params)
     }
     double mu = gsl_root_fsolver_root(rs);
     gsl_root_fsolver_free(rs);
-    return sf_lognormal_cdf(&m->ln, mu);
+    return ln_cdf(m, mu);
 }
 
 /* Large l/R: KS tests of the three ratio samples against their exact
@@ -103,12 +109,11 @@ static int chk_large_lr(const sf_case *c, sf_result *r)
     const char *names[3] = { "PV_x ratio", "PV_F ratio", "stick-fraction ratio" };
     size_t n = pt.n;
     double *x = check_alloc(n * sizeof *x);
-    sf_cycle1d cd;
-    sf_cycle1d_init(&cd, s, s->eps_lambda);
-    double detv[3] = { cd.pv_x, cd.pv_F, cd.stick_fraction };
+    ref_cycle1d cd;
+    ref_cycle(s, s->mu_mean, &cd);
+    double detv[3] = { cd.pv_x, cd.pv_F, cd.sf };
     for (int q = 0; q < 3; q++) {
-        qmap m = { .s = s, .q = q, .det = detv[q] };
-        sf_lognormal_init(&m.ln, s->mu_mean, s->mu_std);
+        qmap m = { .s = s, .q = q, .det = detv[q], .ln = ref_lognormal_par(s->mu_mean, s->mu_std) };
         for (size_t i = 0; i < n; i++)   /* the ratios as the sweep reports them */
             x[i] = pt.ratio[3 * i + q];
         char dq[128];
