@@ -296,7 +296,8 @@ SF_VERSION := $(shell sed -n 's/^\#define SF_VERSION "\(.*\)"/\1/p' verification
 SO_MAJOR := $(firstword $(subst ., ,$(SF_VERSION)))
 SONAME := libslipfield.so.$(SO_MAJOR)
 SHLIB := libslipfield.so.$(SF_VERSION)
-PUBLIC_HEADERS := $(sort $(wildcard solver/*.h))
+# (sf_alloc.h is internal: the allocation wrappers of solver/*.c)
+PUBLIC_HEADERS := $(filter-out solver/sf_alloc.h,$(sort $(wildcard solver/*.h)))
 LIB_PKGS := gsl fftw3
 LIB_LIBS = $(shell pkg-config --libs $(LIB_PKGS) 2>/dev/null || echo -lgsl -lgslcblas -lfftw3) -lm -fopenmp
 
