@@ -26,6 +26,7 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
+#include <gsl/gsl_math.h>
 #include <gsl/gsl_rng.h>
 
 /* ---- COF */
@@ -503,6 +504,37 @@ static void wrench_fallback_on_field(void **state)
     sf_cof_free(grid);
 }
 
+/* A COF that jumps by 20x across the disc turns the section's force far
+ * from the direction psi of the slip: the bracket around alpha is widened
+ * until it holds the root, and the root's force points along alpha. */
+static void surface_skewed_section(void **state)
+{
+    (void)state;
+    double g[201 * 2];   /* mu = 0.001 for x < 0.2, 1 above (a step over 5 mm) */
+    for (int i = 0; i < 201; i++)
+        g[i] = g[i + 201] = -0.5 + 0.005 * i < 0.2 ? 0.001 : 1.0;
+    sf_cof *c;
+    assert_int_equal(sf_cof_alloc_grid(201, 2, -0.5, -1, 0.005, 2, g, &c), SF_SUCCESS);
+    sf_contact_spec sp = { 0.5, 9.81, SF_LAYOUT_POLAR, 12 };
+    sf_contact *ct;
+    assert_int_equal(sf_contact_alloc(&sp, c, &ct), SF_SUCCESS);
+    sf_surface *s;
+    assert_int_equal(sf_surface_alloc(ct, 0, 0, &s), SF_SUCCESS);
+    int widened = 0;
+    for (int i = 0; i < 16; i++) {
+        double alpha = -3.0 + 0.4 * i, rho, psi, th, q[3];
+        assert_int_equal(sf_surface_section_radius(s, alpha, &rho, &psi), SF_SUCCESS);
+        assert_int_equal(sf_surface_section(s, psi, &th, q), SF_SUCCESS);
+        assert_close(remainder(atan2(q[1], q[0]) - alpha, 2 * M_PI), 0, 1e-9);
+        assert_close(hypot(q[0], q[1]), rho, 1e-12);
+        widened += fabs(remainder(psi - alpha, 2 * M_PI)) > 0.05;
+    }
+    assert_true(widened > 0);   /* some psi lies outside the first bracket */
+    sf_surface_free(s);
+    sf_contact_free(ct);
+    sf_cof_free(c);
+}
+
 static void surface_zero_cof(void **state)
 {
     (void)state;
@@ -628,6 +660,58 @@ static void osc_rows_no_jump(void **state)
     sf_cof_free(u);
 }
 
+/* A constant COF without quadrature: the exact T = 0 section is the
+ * circle of radius mu N, so exact_section gives the same bits; Eq. 15
+ * needs samples; explain names a field's interpolation. */
+static void osc_closed_form_section(void **state)
+{
+    (void)state;
+    sf_scene s;
+    sf_scene_default(&s);
+    s.cof = SF_COF_UNIFORM;
+    s.dof = SF_DOF_3;
+    s.T = 20;
+    s.t_skip = 2;
+    sf_cof *u;
+    assert_int_equal(sf_cof_alloc_uniform(s.mu_mean, &u), SF_SUCCESS);
+    sf_osc_result r[2];
+    for (int e = 0; e < 2; e++) {
+        s.exact_section = e;
+        sf_osc *o;
+        assert_int_equal(sf_osc_alloc(&s, u, &o, NULL, 0), SF_SUCCESS);
+        assert_int_equal(sf_osc_run(o, NULL, NULL, 0, &r[e], NULL, 0), SF_SUCCESS);
+        sf_osc_free(o);
+    }
+    assert_true(r[0].ncycles > 0);
+    assert_memory_equal(&r[0].pv_x, &r[1].pv_x, sizeof r[0].pv_x);
+    assert_memory_equal(&r[0].stick_fraction, &r[1].stick_fraction, sizeof r[0].stick_fraction);
+    assert_true(isnan(sf_osc_error_eq15(&r[0], &r[1])));   /* no samples (sample_dt 0) */
+    sf_osc_result_free(&r[0]);
+    sf_osc_result_free(&r[1]);
+    sf_cof_free(u);
+    /* a field: the quadrature interpolates the strip's COF */
+    sf_scene_default(&s);
+    s.T = 5;
+    s.l = 0.5;
+    s.strip_halfwidth = 0.05;
+    s.cells = 6;
+    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+    sf_cof *cof;
+    assert_int_equal(sf_cof_from_scene(&s, rng, &cof), SF_SUCCESS);
+    sf_osc *o;
+    assert_int_equal(sf_osc_alloc(&s, cof, &o, NULL, 0), SF_SUCCESS);
+    char *text = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&text, &len);
+    sf_osc_explain(o, f);
+    fclose(f);
+    assert_non_null(strstr(text, "COF interpolated from the strip field"));
+    free(text);
+    sf_osc_free(o);
+    sf_cof_free(cof);
+    gsl_rng_free(rng);
+}
+
 /* RK4 on a tiled window: a fixed dt above the window's step cap is cut
  * to the cap (no look-up off the window). */
 static void rk4_window_cap(void **state)
@@ -712,11 +796,20 @@ static void checkpoint_refusals(void **state)
     fclose(f);
     assert_int_equal(sf_mc_run(&sp, &ops, NULL, out, NULL, err, sizeof err), SF_EINVAL);
     assert_non_null(strstr(err, "not a slipfield checkpoint"));
-    f = fopen(ck, "w");
-    fputs("# slipfield checkpoint v1 n=4 nout=2 key=abd\n", f);
+    f = fopen(ck, "w");   /* empty */
     fclose(f);
     assert_int_equal(sf_mc_run(&sp, &ops, NULL, out, NULL, err, sizeof err), SF_EINVAL);
-    assert_non_null(strstr(err, "other work"));
+    assert_non_null(strstr(err, "not a slipfield checkpoint"));
+    const char *other[] = { "# slipfield checkpoint v1 n=4 nout=2 key=abd\n",
+                            "# slipfield checkpoint v1 n=5 nout=2 key=abc\n",
+                            "# slipfield checkpoint v1 n=4 nout=3 key=abc\n" };
+    for (int i = 0; i < 3; i++) {   /* another key, size or output count */
+        f = fopen(ck, "w");
+        fputs(other[i], f);
+        fclose(f);
+        assert_int_equal(sf_mc_run(&sp, &ops, NULL, out, NULL, err, sizeof err), SF_EINVAL);
+        assert_non_null(strstr(err, "other work"));
+    }
     unlink(ck);
     /* the checkpoint cannot replace a directory */
     assert_int_equal(mkdir(ck, 0700), 0);
@@ -743,6 +836,14 @@ static void sweep_no_cycle(void **state)
     assert_int_equal(sf_sweep_run(&s, 2, 1, NULL, 0, NULL, &pt, err, sizeof err), SF_EINVAL);
     assert_non_null(strstr(err, "no complete cycle"));
     sf_sweep_point_free(&pt);
+}
+
+static void seterr_zero_length(void **state)
+{
+    (void)state;
+    char err[8] = "keep";
+    assert_int_equal(sf_seterr(err, 0, SF_EIO, "%s", "overwritten"), SF_EIO);   /* n = 0: nothing written */
+    assert_string_equal(err, "keep");
 }
 
 static void numplan_edges(void **state)
@@ -809,13 +910,16 @@ int main(void)
         cmocka_unit_test(tiles_refusals),
         cmocka_unit_test(contact_refusals),
         cmocka_unit_test(wrench_fallback_on_field),
+        cmocka_unit_test(surface_skewed_section),
         cmocka_unit_test(surface_zero_cof),
         cmocka_unit_test(osc_edges),
         cmocka_unit_test(osc_rows_no_jump),
+        cmocka_unit_test(osc_closed_form_section),
         cmocka_unit_test(rk4_window_cap),
         cmocka_unit_test(cycle1d_edges),
         cmocka_unit_test(checkpoint_refusals),
         cmocka_unit_test(sweep_no_cycle),
+        cmocka_unit_test(seterr_zero_length),
         cmocka_unit_test(numplan_edges),
         cmocka_unit_test(periodogram_edges),
     };
