@@ -19,6 +19,6 @@ SLIPFIELD_FFTW_WISDOM="$tmp/w.wis" $VG build/slipfield field "$tmp/s.scene" --sa
 $VG build/slipfield sweep "$tmp/s.scene" --param l_over_R --values 1,1000000 --realisations 2 --threads 1 --out "$tmp/w.tsv"
 # the allocation-failure walks (tests/test_faults.c, solver with the fault
 # hooks): no leak and no uninitialised read on any ENOMEM path
-CMOCKA_MESSAGE_OUTPUT=STDOUT $VG build/rel/tests/test_faults > "$tmp/faults.log" ||
+CMOCKA_MESSAGE_OUTPUT=STDOUT $VG build/rel/tests/test_faults > "$tmp/faults.log" 2>&1 ||
     { cat "$tmp/faults.log"; exit 1; }
 echo "valgrind: clean"
