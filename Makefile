@@ -117,9 +117,22 @@ $(BUILD)/rel/%.o: %.c | $(GEN_HDRS)
 	@mkdir -p $(dir $@)
 	$(CC) $(BASE_CFLAGS) $(call incs,$<) $(OPT) $(PKG_CFLAGS) $(HTML_CFLAGS) $(CMOCKA_CFLAGS) -MMD -MP -c $< -o $@
 
+# the sanitised build is test-only: its solver carries the allocation
+# fault hooks (solver/sf_alloc.h; disarmed unless tests/test_faults.c arms them)
 $(BUILD)/san/%.o: %.c | $(GEN_HDRS)
 	@mkdir -p $(dir $@)
-	$(CC) $(BASE_CFLAGS) $(call incs,$<) -O1 -g $(SAN) $(PKG_CFLAGS) $(HTML_CFLAGS) $(CMOCKA_CFLAGS) -MMD -MP -c $< -o $@
+	$(CC) $(BASE_CFLAGS) $(call incs,$<) -O1 -g $(SAN) -DSF_FAULT_INJECTION $(PKG_CFLAGS) $(HTML_CFLAGS) $(CMOCKA_CFLAGS) -MMD -MP -c $< -o $@
+
+# solver/ again with the fault hooks, optimised as the library, for the
+# plain build of tests/test_faults.c only (the library that is installed
+# and runs the cases has none: sf_alloc.h compiles them to malloc)
+$(BUILD)/fi/%.o: %.c | $(GEN_HDRS)
+	@mkdir -p $(dir $@)
+	$(CC) $(BASE_CFLAGS) $(call incs,$<) $(OPT) -DSF_FAULT_INJECTION $(PKG_CFLAGS) -MMD -MP -c $< -o $@
+
+$(BUILD)/fi/libslipfield.a: $(call objs,fi,$(SOLVER_SRC))
+	@rm -f $@
+	ar rcs $@ $^
 
 $(BUILD)/libslipfield.a: $(SOLVER_OBJ)
 	@rm -f $@
@@ -145,6 +158,9 @@ $(BUILD)/rel/tests/%: $(BUILD)/rel/tests/%.o $(BUILD)/libsfverify.a $(BUILD)/lib
 
 $(BUILD)/san/tests/%: $(BUILD)/san/tests/%.o $(BUILD)/san/libsfverify.a $(BUILD)/san/libslipfield.a
 	$(CC) -g $(SAN) $^ -o $@ $(CMOCKA_LIBS) $(HTML_LIBS) $(PKG_LIBS)
+
+$(BUILD)/rel/tests/test_faults: $(BUILD)/rel/tests/test_faults.o $(BUILD)/libsfverify.a $(BUILD)/fi/libslipfield.a
+	$(CC) $(OPT) $^ -o $@ $(CMOCKA_LIBS) $(HTML_LIBS) $(PKG_LIBS)
 
 # SUNDIALS CVODE is a benchmark-only peer: compiled in when its header is
 # there ($(BUILD)/gen/bench_config.h records the choice, so installing it
@@ -206,12 +222,15 @@ bench: all
 
 # ---- make coverage ---------------------------------------------------------
 # solver/ compiled again with --coverage (-O0: branch counts map to the
-# source) in $(BUILD)/cov/; the unit tests and the CLI link it in place of
+# source) in $(BUILD)/cov/, with the allocation fault hooks (sf_alloc.h:
+# tests/test_faults.c walks the ENOMEM paths) and one copy of the wrench
+# (-DSF_NO_CLONES: the same source without the per-ISA target_clones, of
+# which a machine runs one); the unit tests and the CLI link it in place of
 # the optimised library; scripts/coverage.sh runs the unit tests, the CLI
 # scripts of make test and the quick tier with them, then lcov/genhtml
 # write reports/coverage/ and the floor in tests/coverage-floor.txt is
 # enforced.  lcov is installed (Debian) only for this target.
-COV_FLAGS := -O0 -g --coverage
+COV_FLAGS := -O0 -g --coverage -DSF_NO_CLONES -DSF_FAULT_INJECTION
 $(BUILD)/cov/%.o: %.c | $(GEN_HDRS)
 	@mkdir -p $(dir $@)
 	$(CC) $(BASE_CFLAGS) $(call incs,$<) $(COV_FLAGS) $(PKG_CFLAGS) -MMD -MP -c $< -o $@
@@ -248,6 +267,7 @@ fuzz: all
 
 valgrind: all
 	@sh scripts/deps.sh valgrind
+	@$(MAKE) --no-print-directory $(BUILD)/rel/tests/test_faults
 	@sh scripts/valgrind.sh
 
 catalogue: all
@@ -276,7 +296,8 @@ SF_VERSION := $(shell sed -n 's/^\#define SF_VERSION "\(.*\)"/\1/p' verification
 SO_MAJOR := $(firstword $(subst ., ,$(SF_VERSION)))
 SONAME := libslipfield.so.$(SO_MAJOR)
 SHLIB := libslipfield.so.$(SF_VERSION)
-PUBLIC_HEADERS := $(sort $(wildcard solver/*.h))
+# (sf_alloc.h is internal: the allocation wrappers of solver/*.c)
+PUBLIC_HEADERS := $(filter-out solver/sf_alloc.h,$(sort $(wildcard solver/*.h)))
 LIB_PKGS := gsl fftw3
 LIB_LIBS = $(shell pkg-config --libs $(LIB_PKGS) 2>/dev/null || echo -lgsl -lgslcblas -lfftw3) -lm -fopenmp
 

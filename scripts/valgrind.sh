@@ -1,6 +1,7 @@
 #!/bin/sh
 # make valgrind: a few quick cases (one per solver part; the runner's
-# forked case processes are followed) and the CLI under memcheck; any
+# forked case processes are followed), the CLI and the allocation-failure
+# unit test under memcheck; any
 # memory error or definite leak fails.
 set -eu
 sf_name=vg
@@ -16,4 +17,8 @@ $VG build/slipfield run "$tmp/s.scene" --explain > /dev/null
 printf 'fftw_planner = measure\nnx = 32\nny = 32\n' >> "$tmp/s.scene"
 SLIPFIELD_FFTW_WISDOM="$tmp/w.wis" $VG build/slipfield field "$tmp/s.scene" --samples 1 --out "$tmp/f.tsv"
 $VG build/slipfield sweep "$tmp/s.scene" --param l_over_R --values 1,1000000 --realisations 2 --threads 1 --out "$tmp/w.tsv"
+# the allocation-failure walks (tests/test_faults.c, solver with the fault
+# hooks): no leak and no uninitialised read on any ENOMEM path
+CMOCKA_MESSAGE_OUTPUT=STDOUT $VG build/rel/tests/test_faults > "$tmp/faults.log" 2>&1 ||
+    { cat "$tmp/faults.log"; exit 1; }
 echo "valgrind: clean"

@@ -4,6 +4,7 @@
 #include "numplan.h"
 #include "lnfield.h"
 #include "lognormal.h"
+#include "sf_alloc.h"
 #include "sf_error.h"
 #include "tiles.h"
 
@@ -38,7 +39,7 @@ struct sf_cof {
 
 static sf_cof *cof_new(sf_cof_kind kind)
 {
-    sf_cof *c = calloc(1, sizeof *c);
+    sf_cof *c = sf_calloc(1, sizeof *c);
     if (c)
         c->kind = kind;
     return c;
@@ -66,7 +67,7 @@ int sf_cof_alloc_grid(size_t m, size_t n, double x0, double y0,
     sf_cof *c = cof_new(SF_COF_FIELD);
     if (!c)
         return SF_ENOMEM;
-    c->grid = malloc(m * n * sizeof *c->grid);
+    c->grid = sf_malloc(m * n * sizeof *c->grid);
     if (!c->grid) {
         free(c);
         return SF_ENOMEM;
@@ -308,14 +309,14 @@ static int plan_cell_average(sf_cof_plan *p, const sf_scene *s, double box, doub
     rc = sf_field_alloc(&fs, &p->cfield);
     if (!sf_usable(rc))
         return sf_seterr(err, errlen, rc, "cannot plan the %.0f x %.0f cell-averaged strip field", nx, ny);
-    p->buf = malloc(p->info.nx * p->info.ny * sizeof *p->buf);
+    p->buf = sf_malloc(p->info.nx * p->info.ny * sizeof *p->buf);
     return p->buf ? SF_SUCCESS : SF_ENOMEM;
 }
 
 int sf_cof_plan_alloc(const sf_scene *s, sf_cof_plan **out, char *err, size_t errlen)
 {
     *out = NULL;
-    sf_cof_plan *p = calloc(1, sizeof *p);
+    sf_cof_plan *p = sf_calloc(1, sizeof *p);
     if (!p)
         return SF_ENOMEM;
     p->info.kind = (sf_cof_kind)s->cof;
@@ -403,7 +404,7 @@ int sf_cof_plan_alloc(const sf_scene *s, sf_cof_plan **out, char *err, size_t er
             free(p);
             return sf_seterr(err, errlen, rc, "cannot plan the %g x %g strip field", nx, ny);
         }
-        p->buf = malloc(p->info.nx * p->info.ny * sizeof *p->buf);
+        p->buf = sf_malloc(p->info.nx * p->info.ny * sizeof *p->buf);
         if (!p->buf) {
             sf_cof_plan_free(p);
             return SF_ENOMEM;
@@ -447,7 +448,7 @@ static int draw_window(const sf_cof_plan *p, gsl_rng *rng, sf_cof **out)
     c->slack_r = (size_t)ceil(in->margin / in->dx);
     sf_tiles_spec ts = { in->ny, in->dx, in->dy, p->l, 0, 0 };
     int rc = sf_tiles_alloc(&ts, &c->tiles);
-    if (!rc && !(c->grid = malloc(c->m * c->n * sizeof *c->grid)))
+    if (!rc && !(c->grid = sf_malloc(c->m * c->n * sizeof *c->grid)))
         rc = SF_ENOMEM;
     if (!rc) {
         sf_tiles_set_key(c->tiles, key);

@@ -69,18 +69,24 @@ void sf_cof_count_outside(const sf_cof *c, unsigned long n);
  * loop use these), written for a loop calling them to vectorise: selects,
  * no branches; int indices into the grid (gathers); the clamp flag a
  * double (an int among the doubles keeps GCC 12 from vectorising).
- * Bilinear at grid coordinates (sx, sy) in [0, m-1] x [0, n-1]. */
-static inline double sf_cof_view_at(const sf_cof_view *v, double sx, double sy)
+ * sf_cof_view_cell: bilinear in grid cell (i, j) at grid coordinates
+ * (sx, sy); sf_cof_view_at: at (sx, sy) in [0, m-1] x [0, n-1]. */
+static inline double sf_cof_view_cell(const sf_cof_view *v, int i, int j, double sx, double sy)
 {
-    int i = (int)sx, j = (int)sy;
-    i = i < v->m - 2 ? i : v->m - 2;   /* the last node: the last cell at t = 1 */
-    j = j < v->n - 2 ? j : v->n - 2;
     double tx = sx - (double)i, ty = sy - (double)j;
     int k0 = i + v->m * j, k1 = k0 + 1, k2 = k0 + v->m, k3 = k2 + 1;
     const double *g = v->grid;
     double a = g[k0] + tx * (g[k1] - g[k0]);
     double b = g[k2] + tx * (g[k3] - g[k2]);
     return a + ty * (b - a);
+}
+
+static inline double sf_cof_view_at(const sf_cof_view *v, double sx, double sy)
+{
+    int i = (int)sx, j = (int)sy;
+    i = i < v->m - 2 ? i : v->m - 2;   /* the last node: the last cell at t = 1 */
+    j = j < v->n - 2 ? j : v->n - 2;
+    return sf_cof_view_cell(v, i, j, sx, sy);
 }
 
 /* Grid coordinates of belt point xb (resp. yb) [-]. */
@@ -102,10 +108,14 @@ static inline double sf_cof_view_eval(const sf_cof_view *v, double xb, double yb
 }
 
 /* The same for a point known to lie on the grid (sf_cof_view_holds):
- * no clamping, the same bits as sf_cof_view_eval there. */
+ * no clamping, the same bits as sf_cof_view_eval there.  Nor the last-node
+ * clamp of sf_cof_view_at: the spare cell of sf_cof_view_holds keeps the
+ * grid coordinates below m - 1 and n - 1, where (int) already gives a
+ * cell index <= m - 2, n - 2 (the same cell, so the same bits). */
 static inline double sf_cof_view_eval_on(const sf_cof_view *v, double xb, double yb)
 {
-    return sf_cof_view_at(v, sf_cof_view_gx(v, xb), sf_cof_view_gy(v, yb));
+    double sx = sf_cof_view_gx(v, xb), sy = sf_cof_view_gy(v, yb);
+    return sf_cof_view_cell(v, (int)sx, (int)sy, sx, sy);
 }
 
 /* 1 when every point within r (per axis) of (xb, yb) lies on the grid

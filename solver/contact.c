@@ -1,4 +1,5 @@
 #include "contact.h"
+#include "sf_alloc.h"
 #include "sf_error.h"
 
 #include <limits.h>
@@ -24,6 +25,16 @@ struct sf_contact {
  * (IEEE operations lane by lane; -std=c11 keeps a * b + c uncontracted). */
 #define SF_LANES 8
 
+/* One copy of sf_contact_wrench per vector width, chosen at load time.
+ * -DSF_NO_CLONES (the coverage build only, Makefile COV_FLAGS): the same
+ * source compiled once, so that gcov does not count the two copies this
+ * machine never runs as uncovered. */
+#ifdef SF_NO_CLONES
+#define SF_WRENCH_CLONES
+#else
+#define SF_WRENCH_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
+#endif
+
 /* Polar layout: Gauss-Legendre radii (exact for the polynomial radial
  * moments, so uniform translation and pure spin are exact), equal sectors
  * per ring, as many as keep the cells near-square, staggered by half a
@@ -32,11 +43,11 @@ static int layout_polar(sf_contact *c)
 {
     size_t nr = c->spec.cells;
     double R = c->spec.R;
-    gsl_integration_glfixed_table *gl = gsl_integration_glfixed_table_alloc(nr);
+    gsl_integration_glfixed_table *gl = SF_FALLIBLE(gsl_integration_glfixed_table_alloc(nr));
     if (!gl)
         return SF_ENOMEM;
-    size_t *ns = malloc(nr * sizeof *ns), total = 0;
-    double *r = malloc(nr * sizeof *r), *w = malloc(nr * sizeof *w);
+    size_t *ns = sf_malloc(nr * sizeof *ns), total = 0;
+    double *r = sf_malloc(nr * sizeof *r), *w = sf_malloc(nr * sizeof *w);
     if (!ns || !r || !w) {
         free(ns); free(r); free(w);
         gsl_integration_glfixed_table_free(gl);
@@ -49,9 +60,9 @@ static int layout_polar(sf_contact *c)
         total += ns[j];
     }
     gsl_integration_glfixed_table_free(gl);
-    c->rx = malloc(total * sizeof *c->rx);
-    c->ry = malloc(total * sizeof *c->ry);
-    c->wt = malloc(total * sizeof *c->wt);
+    c->rx = sf_malloc(total * sizeof *c->rx);
+    c->ry = sf_malloc(total * sizeof *c->ry);
+    c->wt = sf_malloc(total * sizeof *c->wt);
     if (!c->rx || !c->ry || !c->wt) {
         free(ns); free(r); free(w);
         return SF_ENOMEM;
@@ -79,9 +90,9 @@ static int layout_cartesian(sf_contact *c)
 {
     size_t nc = c->spec.cells, cap = nc * nc;
     double R = c->spec.R, h = 2 * R / (double)nc;
-    c->rx = malloc(cap * sizeof *c->rx);
-    c->ry = malloc(cap * sizeof *c->ry);
-    c->wt = malloc(cap * sizeof *c->wt);
+    c->rx = sf_malloc(cap * sizeof *c->rx);
+    c->ry = sf_malloc(cap * sizeof *c->ry);
+    c->wt = sf_malloc(cap * sizeof *c->wt);
     if (!c->rx || !c->ry || !c->wt)
         return SF_ENOMEM;
     const int S = 16;
@@ -135,7 +146,7 @@ int sf_contact_alloc(const sf_contact_spec *spec, const sf_cof *cof, sf_contact 
         !isfinite(spec->normal_force) || spec->cells < 1 || spec->cells > 100000 ||
         (spec->layout != SF_LAYOUT_POLAR && spec->layout != SF_LAYOUT_CARTESIAN))
         return SF_EINVAL;
-    sf_contact *c = calloc(1, sizeof *c);
+    sf_contact *c = sf_calloc(1, sizeof *c);
     if (!c)
         return SF_ENOMEM;
     c->spec = *spec;
@@ -200,36 +211,69 @@ static void wrench_hypot(const sf_contact *c, double xb, double yb, double u, do
  * wrench_hypot (see sf_contact_wrench). */
 #define SF_TINY2 0x1p-960
 
-enum { MU_CONST, MU_ON_GRID, MU_CLAMPED };   /* how a cell finds its COF */
-
-/* One cell's contribution at scaled speeds (us, vs, ws) into lane k: the
- * COF look-up inlined; *s2min tracks the smallest scaled squared slip
- * speed (a cell at rest gives 1/0 here: the call is then redone, see
- * sf_contact_wrench). */
-__attribute__((always_inline)) static inline void cell(int mode, const sf_cof_view *v, double mu0, double xb, double yb, double us, double vs,
-                        double ws, double rx, double ry, double wt, size_t k, double *fx, double *fy, double *tq,
-                        double *s2min, double *out)
+/* One cell's contribution at scaled speeds (us, vs, ws) with COF mu into
+ * lane k; *s2min tracks the smallest scaled squared slip speed (a cell at
+ * rest gives 1/0 here: the call is then redone, see sf_contact_wrench). */
+__attribute__((always_inline)) static inline void cell_sum(double mu, double us, double vs, double ws, double rx,
+                                                           double ry, double wt, size_t k, double *fx, double *fy,
+                                                           double *tq, double *s2min)
 {
-    double ax = us - ws * ry, ay = vs + ws * rx, s2 = ax * ax + ay * ay, cl = 0;
-    double mu = mode == MU_CONST     ? mu0
-                : mode == MU_ON_GRID ? sf_cof_view_eval_on(v, xb + rx, yb + ry)
-                                     : sf_cof_view_eval(v, xb + rx, yb + ry, &cl);
+    double ax = us - ws * ry, ay = vs + ws * rx, s2 = ax * ax + ay * ay;
     double r = 1 / sqrt(s2), a = wt * mu, dx = ax * r, dy = ay * r;
     fx[k] -= a * dx;
     fy[k] -= a * dy;
     tq[k] -= a * (rx * dy - ry * dx);
     s2min[k] = s2 < s2min[k] ? s2 : s2min[k];
-    if (mode == MU_CLAMPED)   /* (x + 0.0 is not x for x = -0: the compiler keeps what it is given) */
-        out[k] += cl;
+}
+
+/* The cell kernels, one per way a cell finds its COF, chosen once per call
+ * outside the loop (wrench_lanes is inlined with a constant kernel, so
+ * each copy of the loop holds one kernel inlined and no test of the mode:
+ * no dead arms per copy).  *out counts clamped look-ups (cell_clamped). */
+typedef void cell_fn(const sf_cof_view *v, double mu0, double xb, double yb, double us, double vs, double ws,
+                     double rx, double ry, double wt, size_t k, double *fx, double *fy, double *tq, double *s2min,
+                     double *out);
+
+/* a uniform COF mu0 */
+__attribute__((always_inline)) static inline void cell_const(const sf_cof_view *v, double mu0, double xb, double yb,
+                                                             double us, double vs, double ws, double rx, double ry,
+                                                             double wt, size_t k, double *fx, double *fy, double *tq,
+                                                             double *s2min, double *out)
+{
+    (void)v, (void)xb, (void)yb, (void)out;
+    cell_sum(mu0, us, vs, ws, rx, ry, wt, k, fx, fy, tq, s2min);
+}
+
+/* a grid that holds the whole disc (sf_cof_view_holds): no clamp */
+__attribute__((always_inline)) static inline void cell_on_grid(const sf_cof_view *v, double mu0, double xb, double yb,
+                                                               double us, double vs, double ws, double rx, double ry,
+                                                               double wt, size_t k, double *fx, double *fy,
+                                                               double *tq, double *s2min, double *out)
+{
+    (void)mu0, (void)out;
+    cell_sum(sf_cof_view_eval_on(v, xb + rx, yb + ry), us, vs, ws, rx, ry, wt, k, fx, fy, tq, s2min);
+}
+
+/* a grid the disc may leave: clamped look-ups, counted */
+__attribute__((always_inline)) static inline void cell_clamped(const sf_cof_view *v, double mu0, double xb, double yb,
+                                                               double us, double vs, double ws, double rx, double ry,
+                                                               double wt, size_t k, double *fx, double *fy,
+                                                               double *tq, double *s2min, double *out)
+{
+    (void)mu0;
+    double cl = 0, mu = sf_cof_view_eval(v, xb + rx, yb + ry, &cl);
+    cell_sum(mu, us, vs, ws, rx, ry, wt, k, fx, fy, tq, s2min);
+    out[k] += cl;   /* (x + 0.0 is not x for x = -0: the other kernels leave out alone) */
 }
 
 /* The fast cell loop: cell i into lane i mod SF_LANES, whole blocks
  * vectorised (-fopt-info-vec), the tail cell by cell; lanes summed in a
  * fixed order.  Returns the smallest scaled squared slip speed; *outside
- * counts the clamped look-ups (MU_CLAMPED). */
-__attribute__((always_inline)) static inline double wrench_lanes(const sf_contact *c, int mode, const sf_cof_view *cv,
-                                                                 double mu0, double xb, double yb, double us,
-                                                                 double vs, double ws, double acc[3], double *outside)
+ * counts the clamped look-ups (cell_clamped). */
+__attribute__((always_inline)) static inline double wrench_lanes(const sf_contact *c, cell_fn *cell,
+                                                                 const sf_cof_view *cv, double mu0, double xb,
+                                                                 double yb, double us, double vs, double ws,
+                                                                 double acc[3], double *outside)
 {
     double fx[SF_LANES] = { 0 }, fy[SF_LANES] = { 0 }, tq[SF_LANES] = { 0 }, out[SF_LANES] = { 0 };
     double s2min[SF_LANES] = { INFINITY, INFINITY, INFINITY, INFINITY, INFINITY, INFINITY, INFINITY, INFINITY };
@@ -239,10 +283,10 @@ __attribute__((always_inline)) static inline double wrench_lanes(const sf_contac
     for (; b + SF_LANES <= n; b += SF_LANES) {
 #pragma omp simd
         for (size_t k = 0; k < SF_LANES; k++)
-            cell(mode, &v, mu0, xb, yb, us, vs, ws, prx[b + k], pry[b + k], pwt[b + k], k, fx, fy, tq, s2min, out);
+            cell(&v, mu0, xb, yb, us, vs, ws, prx[b + k], pry[b + k], pwt[b + k], k, fx, fy, tq, s2min, out);
     }
     for (size_t k = 0; b + k < n; k++)
-        cell(mode, &v, mu0, xb, yb, us, vs, ws, prx[b + k], pry[b + k], pwt[b + k], k, fx, fy, tq, s2min, out);
+        cell(&v, mu0, xb, yb, us, vs, ws, prx[b + k], pry[b + k], pwt[b + k], k, fx, fy, tq, s2min, out);
     double m = INFINITY, no = 0;
     acc[0] = acc[1] = acc[2] = 0;
     for (size_t k = 0; k < SF_LANES; k++) {   /* fixed order */
@@ -273,7 +317,7 @@ __attribute__((always_inline)) static inline double wrench_lanes(const sf_contac
  * hypot (wrench_hypot: a cell on the pole adds nothing).  A subnormal ws
  * (|w| R below 2^-1021 of the largest speed) perturbs ax, ay by at most
  * 2^-1074 R, far below the 2^-480 they are trusted from. */
-__attribute__((target_clones("avx512f", "avx2", "default")))
+SF_WRENCH_CLONES
 int sf_contact_wrench(const sf_contact *c, double xb, double yb,
                       double u, double v, double w, double ratio, double out[3])
 {
@@ -295,11 +339,11 @@ int sf_contact_wrench(const sf_contact *c, double xb, double yb,
         if (!field && sf_cof_get_kind(c->cof) == SF_COF_FIELD)   /* a field without a grid view: cell by cell */
             s2min = 0;
         else if (!field)
-            s2min = wrench_lanes(c, MU_CONST, &cv, mu0, xb, yb, us, vs, ws, acc, &outside);
+            s2min = wrench_lanes(c, cell_const, &cv, mu0, xb, yb, us, vs, ws, acc, &outside);
         else if (sf_cof_view_holds(&cv, xb, yb, c->spec.R))   /* the common case: no clamp */
-            s2min = wrench_lanes(c, MU_ON_GRID, &cv, mu0, xb, yb, us, vs, ws, acc, &outside);
+            s2min = wrench_lanes(c, cell_on_grid, &cv, mu0, xb, yb, us, vs, ws, acc, &outside);
         else
-            s2min = wrench_lanes(c, MU_CLAMPED, &cv, mu0, xb, yb, us, vs, ws, acc, &outside);
+            s2min = wrench_lanes(c, cell_clamped, &cv, mu0, xb, yb, us, vs, ws, acc, &outside);
         if (!(s2min >= SF_TINY2))   /* near the pole, or no grid view */
             wrench_hypot(c, xb, yb, u, v, w, acc);   /* counts its own clamped look-ups */
         else if (outside > 0)

@@ -8,6 +8,7 @@
  * fields whenever Lambda >= 0.
  */
 #include "field.h"
+#include "sf_alloc.h"
 #include "sf_error.h"
 
 #include <math.h>
@@ -91,10 +92,14 @@ static size_t min_period(size_t m)
 /* 1-D eigenvalues of the squared-exponential circulant of period P. */
 static int eig_1d(size_t P, double d, double l, double *lam)
 {
-    fftw_complex *buf = fftw_alloc_complex(P);
+    fftw_complex *buf = SF_FALLIBLE(fftw_alloc_complex(P));
     if (!buf)
         return SF_ENOMEM;
-    fftw_plan p = fftw_plan_dft_1d((int)P, buf, buf, FFTW_FORWARD, FFTW_ESTIMATE);
+    fftw_plan p = SF_FALLIBLE(fftw_plan_dft_1d((int)P, buf, buf, FFTW_FORWARD, FFTW_ESTIMATE));
+    if (!p) {
+        fftw_free(buf);
+        return SF_ENOMEM;
+    }
     for (size_t j = 0; j < P; j++) {
         size_t jj = j < P - j ? j : P - j;
         buf[j] = sq_exp((double)jj * d, l);
@@ -142,7 +147,7 @@ static int pad_axis(const sf_field_spec *s, size_t m, double d,
     size_t P = nice_size(pmin);
     *hit_cap = 0;
     for (;;) {
-        double *lam = malloc(P * sizeof *lam);
+        double *lam = sf_malloc(P * sizeof *lam);
         if (!lam)
             return SF_ENOMEM;
         int rc = eig_1d(P, d, s->l, lam);
@@ -188,7 +193,7 @@ static int build_separable(sf_field *f)
     f->info.separable = 1;
     f->info.truncated = capx || capy;
     f->M = px * py;
-    f->lam = malloc(f->M * sizeof *f->lam);
+    f->lam = sf_malloc(f->M * sizeof *f->lam);
     if (!f->lam)
         return SF_ENOMEM;
     for (size_t j = 0; j < py; j++)
@@ -207,8 +212,8 @@ static int sep_tables(sf_field *f, size_t px, size_t py)
     size_t T = (size_t)s->sep_terms;
     free(f->tx);
     free(f->ty);
-    f->tx = malloc(T * px * sizeof *f->tx);
-    f->ty = malloc(T * py * sizeof *f->ty);
+    f->tx = sf_malloc(T * px * sizeof *f->tx);
+    f->ty = sf_malloc(T * py * sizeof *f->ty);
     if (!f->tx || !f->ty)
         return SF_ENOMEM;
     for (size_t t = 0; t < T; t++) {
@@ -245,10 +250,14 @@ static int eig_2d(sf_field *f, size_t px, size_t py, double *lam)
         if (rc)
             return rc;
     }
-    fftw_complex *buf = fftw_alloc_complex(M);
+    fftw_complex *buf = SF_FALLIBLE(fftw_alloc_complex(M));
     if (!buf)
         return SF_ENOMEM;
-    fftw_plan p = fftw_plan_dft_2d((int)py, (int)px, buf, buf, FFTW_FORWARD, FFTW_ESTIMATE);
+    fftw_plan p = SF_FALLIBLE(fftw_plan_dft_2d((int)py, (int)px, buf, buf, FFTW_FORWARD, FFTW_ESTIMATE));
+    if (!p) {
+        fftw_free(buf);
+        return SF_ENOMEM;
+    }
     for (size_t j = 0; j < py; j++)
         for (size_t i = 0; i < px; i++)
             buf[i + px * j] = first_row_at(f, px, py, i, j);
@@ -289,7 +298,7 @@ static int build_general(sf_field *f)
         if (px > s->max_points / py)
             return SF_ETOOBIG;
         free(f->lam);
-        f->lam = malloc(px * py * sizeof *f->lam);
+        f->lam = sf_malloc(px * py * sizeof *f->lam);
         if (!f->lam)
             return SF_ENOMEM;
         int rc = eig_2d(f, px, py, f->lam);
@@ -328,9 +337,9 @@ static int finish_plan(sf_field *f)
 {
     const sf_field_spec *s = &f->spec;
     size_t px = f->info.px, py = f->info.py, M = f->M;
-    f->amp = malloc(M * sizeof *f->amp);
-    f->cov = malloc(s->m * s->n * sizeof *f->cov);
-    f->work = fftw_alloc_complex(M);
+    f->amp = sf_malloc(M * sizeof *f->amp);
+    f->cov = sf_malloc(s->m * s->n * sizeof *f->cov);
+    f->work = SF_FALLIBLE(fftw_alloc_complex(M));
     if (!f->amp || !f->cov || !f->work)
         return SF_ENOMEM;
     double mn, mx, invM = 1.0 / (double)M;
@@ -345,7 +354,7 @@ static int finish_plan(sf_field *f)
         f->work[k] = l;
     }
     f->info.n_clamped = nc;
-    fftw_plan p = fftw_plan_dft_2d((int)py, (int)px, f->work, f->work, FFTW_BACKWARD, FFTW_ESTIMATE);
+    fftw_plan p = SF_FALLIBLE(fftw_plan_dft_2d((int)py, (int)px, f->work, f->work, FFTW_BACKWARD, FFTW_ESTIMATE));
     if (!p)
         return SF_ENOMEM;
     fftw_execute(p);
@@ -358,8 +367,8 @@ static int finish_plan(sf_field *f)
     double *ttx = NULL, *tty = NULL;
     size_t T = s->sep_terms > 0 ? (size_t)s->sep_terms : 0;
     if (T) {
-        ttx = malloc(T * s->m * sizeof *ttx);
-        tty = malloc(T * s->n * sizeof *tty);
+        ttx = sf_malloc(T * s->m * sizeof *ttx);
+        tty = sf_malloc(T * s->n * sizeof *tty);
         if (!ttx || !tty) {
             free(ttx);
             free(tty);
@@ -406,7 +415,7 @@ int sf_field_alloc(const sf_field_spec *spec, sf_field **out)
     *out = NULL;
     if (!spec || !spec_valid(spec))
         return SF_EINVAL;
-    sf_field *f = calloc(1, sizeof *f);
+    sf_field *f = sf_calloc(1, sizeof *f);
     if (!f)
         return SF_ENOMEM;
     f->spec = *spec;
@@ -416,7 +425,7 @@ int sf_field_alloc(const sf_field_spec *spec, sf_field **out)
     if (!rc)
         rc = finish_plan(f);
     if (!rc) {
-        f->kept = malloc(spec->m * spec->n * sizeof *f->kept);
+        f->kept = sf_malloc(spec->m * spec->n * sizeof *f->kept);
         if (!f->kept)
             rc = SF_ENOMEM;
     }
@@ -424,8 +433,8 @@ int sf_field_alloc(const sf_field_spec *spec, sf_field **out)
         /* FFTW_ESTIMATE: the same plan in every process (DESIGN sec. 8).
          * FFTW_MEASURE overwrites work while timing: nothing in it is
          * needed any more (finish_plan has extracted the covariance). */
-        f->plan = fftw_plan_dft_2d((int)f->info.py, (int)f->info.px, f->work, f->work, FFTW_FORWARD,
-                                   spec->measure ? FFTW_MEASURE : FFTW_ESTIMATE);
+        f->plan = SF_FALLIBLE(fftw_plan_dft_2d((int)f->info.py, (int)f->info.px, f->work, f->work, FFTW_FORWARD,
+                                               spec->measure ? FFTW_MEASURE : FFTW_ESTIMATE));
         if (!f->plan)
             rc = SF_ENOMEM;
     }

@@ -1,4 +1,5 @@
 #include "lnfield.h"
+#include "sf_alloc.h"
 #include "sf_error.h"
 
 #include <math.h>
@@ -33,7 +34,7 @@ void sf_field_spec_from_scene(const sf_scene *s, sf_field_spec *spec)
 int sf_lnfield_alloc(const sf_scene *s, sf_lnfield **out)
 {
     *out = NULL;
-    sf_lnfield *f = calloc(1, sizeof *f);
+    sf_lnfield *f = sf_calloc(1, sizeof *f);
     if (!f)
         return SF_ENOMEM;
     int rc = sf_lognormal_init(&f->ln, s->mu_mean, s->mu_std);
@@ -54,7 +55,7 @@ int sf_lnfield_alloc(const sf_scene *s, sf_lnfield **out)
         return rc;
     }
     f->n = s->nx * s->ny;
-    f->tmp = malloc(f->n * sizeof *f->tmp);
+    f->tmp = sf_malloc(f->n * sizeof *f->tmp);
     if (!f->tmp) {
         sf_lnfield_free(f);
         return SF_ENOMEM;

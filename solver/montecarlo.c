@@ -1,4 +1,5 @@
 #include "montecarlo.h"
+#include "sf_alloc.h"
 #include "sf_error.h"
 
 #include <stdint.h>
@@ -60,7 +61,7 @@ static int ck_read(const sf_mc_spec *s, double *out, unsigned char *done, size_t
                          "%s: checkpoint of other work (scene, size or seed differ): remove it or drop --resume",
                          s->checkpoint);
     }
-    double *v = malloc((s->nout ? s->nout : 1) * sizeof *v);
+    double *v = sf_malloc((s->nout ? s->nout : 1) * sizeof *v);
     while (v && (len = getline(&line, &cap, f)) > 0) {
         if (line[len - 1] != '\n')
             break;               /* torn last line: redo it */
@@ -118,9 +119,9 @@ static int gather(const sf_mc_spec *s, double *out, int rc)
     size_t mine = 0;
     for (size_t i = (size_t)rank; i < s->n; i += (size_t)size)
         mine++;
-    double *send = malloc((mine ? mine : 1) * s->nout * sizeof *send);
-    double *recv = malloc((s->n ? s->n : 1) * s->nout * sizeof *recv);
-    int *cnt = malloc((size_t)size * sizeof *cnt), *dsp = malloc((size_t)size * sizeof *dsp);
+    double *send = sf_malloc((mine ? mine : 1) * s->nout * sizeof *send);
+    double *recv = sf_malloc((s->n ? s->n : 1) * s->nout * sizeof *recv);
+    int *cnt = sf_malloc((size_t)size * sizeof *cnt), *dsp = sf_malloc((size_t)size * sizeof *dsp);
     if (!send || !recv || !cnt || !dsp) {
         free(send); free(recv); free(cnt); free(dsp);
         return SF_ENOMEM;
@@ -239,7 +240,7 @@ static void realise_all(mc_loop *L, const sf_mc_ops *ops, void *ctx)
 #pragma omp parallel num_threads(nt)
     {
         void *ws = ops->ws_alloc ? ops->ws_alloc(ctx) : ctx;
-        gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+        gsl_rng *rng = SF_FALLIBLE(gsl_rng_alloc(gsl_rng_mt19937));
         int ready = rng && (ws || !ops->ws_alloc);
         if (!ready) {
 #pragma omp critical(sf_mc)
@@ -273,8 +274,8 @@ int sf_mc_run(const sf_mc_spec *s0, const sf_mc_ops *ops, void *ctx, double *out
     int size, rank = sf_mc_rank(&size);
     char ckpath[4200];
     rank_spec(s, rank, size, ckpath, sizeof ckpath);
-    unsigned char *done = calloc(s->n ? s->n : 1, 1);
-    unsigned char *theirs = calloc(s->n ? s->n : 1, 1);
+    unsigned char *done = sf_calloc(s->n ? s->n : 1, 1);
+    unsigned char *theirs = sf_calloc(s->n ? s->n : 1, 1);
     if (!done || !theirs) {
         free(done);
         free(theirs);

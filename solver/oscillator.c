@@ -2,6 +2,7 @@
 #include "contact.h"
 #include "numplan.h"
 #include "surface.h"
+#include "sf_alloc.h"
 #include "sf_error.h"
 
 #include <float.h>
@@ -133,7 +134,7 @@ int sf_osc_alloc(const sf_scene *s, const sf_cof *cof, sf_osc **out, char *err, 
         return sf_seterr(err, errlen, SF_EINVAL, "dof = 1 needs a spatially constant COF (cof = uniform or variable)");
     if (s->dof == SF_DOF_1 && (s->y0 != 0 || s->phi0 != 0 || s->vy0 != 0 || s->w0 != 0))
         return sf_seterr(err, errlen, SF_EINVAL, "dof = 1 moves along x only: y0, phi0, vy0 and w0 must be 0");
-    sf_osc *o = calloc(1, sizeof *o);
+    sf_osc *o = sf_calloc(1, sizeof *o);
     if (!o)
         return SF_ENOMEM;
     o->s = *s;
@@ -179,8 +180,8 @@ int sf_osc_alloc(const sf_scene *s, const sf_cof *cof, sf_osc **out, char *err, 
                                     : o->plan.integrator == SF_INTEG_RKCK ? gsl_odeiv2_step_rkck
                                                                           : gsl_odeiv2_step_rk8pd;
     o->sys = (gsl_odeiv2_system){ rhs, NULL, NSTATE, o };
-    o->step = gsl_odeiv2_step_alloc(T, NSTATE);
-    o->bstep = gsl_odeiv2_step_alloc(T, NSTATE);
+    o->step = SF_FALLIBLE(gsl_odeiv2_step_alloc(T, NSTATE));
+    o->bstep = SF_FALLIBLE(gsl_odeiv2_step_alloc(T, NSTATE));
     /* error control in the problem's own scales: a displacement x_s =
      * mu m g / k, its speed x_s omega_n, angles x_s / R, energy mu m g x_s;
      * an absolute tolerance in SI units would be meaningless for a stick
@@ -189,9 +190,9 @@ int sf_osc_alloc(const sf_scene *s, const sf_cof *cof, sf_osc **out, char *err, 
     double sc[NSTATE] = { xs, xs, xs / s->R, xs * o->wn, xs * o->wn, xs * o->wn / s->R,
                           (s->mu_mean + s->mu_std) * o->N * xs };
     memcpy(o->sc, sc, sizeof sc);
-    o->con = gsl_odeiv2_control_scaled_new(o->s.rtol, o->s.rtol, 1.0, 0.0, sc, NSTATE);
-    o->ev = gsl_odeiv2_evolve_alloc(NSTATE);
-    o->root = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
+    o->con = SF_FALLIBLE(gsl_odeiv2_control_scaled_new(o->s.rtol, o->s.rtol, 1.0, 0.0, sc, NSTATE));
+    o->ev = SF_FALLIBLE(gsl_odeiv2_evolve_alloc(NSTATE));
+    o->root = SF_FALLIBLE(gsl_root_fsolver_alloc(gsl_root_fsolver_brent));
     if (!o->step || !o->bstep || !o->con || !o->ev || !o->root) {
         sf_osc_free(o);
         return SF_ENOMEM;
@@ -428,7 +429,7 @@ static int grow(size_t n, size_t *cap, size_t sz, void **arrs[], size_t na)
         return 0;
     size_t c = *cap ? 2 * *cap : 64;
     for (size_t i = 0; i < na; i++) {
-        void *q = realloc(*arrs[i], c * sz);
+        void *q = sf_realloc(*arrs[i], c * sz);
         if (!q)
             return -1;
         *arrs[i] = q;
@@ -643,7 +644,7 @@ static int run_start(run_state *r, double sample_dt)
     if (sample_dt > 0) {
         res->sample_dt = sample_dt;
         res->nsamples = (size_t)floor(s->T / sample_dt) + 1;
-        res->x_samples = calloc(res->nsamples, sizeof *res->x_samples);
+        res->x_samples = sf_calloc(res->nsamples, sizeof *res->x_samples);
         if (!res->x_samples)
             return SF_ENOMEM;
     }

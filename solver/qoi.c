@@ -1,4 +1,5 @@
 #include "qoi.h"
+#include "sf_alloc.h"
 #include "sf_error.h"
 
 #include <complex.h>
@@ -9,8 +10,8 @@ int sf_periodogram(const double *x, size_t n, double dt, double *f, double *p)
 {
     if (n < 2 || !(dt > 0))
         return SF_EINVAL;
-    double *in = fftw_malloc(n * sizeof *in);
-    fftw_complex *out = fftw_malloc((n / 2 + 1) * sizeof *out);
+    double *in = SF_FALLIBLE(fftw_malloc(n * sizeof *in));
+    fftw_complex *out = SF_FALLIBLE(fftw_malloc((n / 2 + 1) * sizeof *out));
     if (!in || !out) {
         fftw_free(in);
         fftw_free(out);
@@ -18,7 +19,12 @@ int sf_periodogram(const double *x, size_t n, double dt, double *f, double *p)
     }
     fftw_plan pl;
 #pragma omp critical(sf_fftw_plan)
-    pl = fftw_plan_dft_r2c_1d((int)n, in, out, FFTW_ESTIMATE);
+    pl = SF_FALLIBLE(fftw_plan_dft_r2c_1d((int)n, in, out, FFTW_ESTIMATE));
+    if (!pl) {
+        fftw_free(in);
+        fftw_free(out);
+        return SF_ENOMEM;
+    }
     double mean = 0;
     for (size_t i = 0; i < n; i++)
         mean += x[i];

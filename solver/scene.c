@@ -1,4 +1,5 @@
 #include "scene.h"
+#include "sf_alloc.h"
 #include "sf_error.h"
 
 #include <ctype.h>
@@ -340,7 +341,7 @@ int sf_read_text(const char *path, const char *what, char **text, size_t *len, c
     if (!f)
         return sf_seterr(err, errlen, SF_EIO, "%s: cannot open: %s", path, strerror(errno));
     size_t cap = 1u << 20, n;
-    char *buf = malloc(cap + 1);
+    char *buf = sf_malloc(cap + 1);
     if (!buf) {
         fclose(f);
         return SF_ENOMEM;

@@ -1,4 +1,5 @@
 #include "surface.h"
+#include "sf_alloc.h"
 #include "sf_error.h"
 
 #include <math.h>
@@ -17,13 +18,13 @@ struct sf_surface {
 int sf_surface_alloc(const sf_contact *c, double xb, double yb, sf_surface **out)
 {
     *out = NULL;
-    sf_surface *s = calloc(1, sizeof *s);
+    sf_surface *s = sf_calloc(1, sizeof *s);
     if (!s)
         return SF_ENOMEM;
     s->n = sf_contact_ncells(c);
-    s->px = malloc(s->n * sizeof *s->px);
-    s->py = malloc(s->n * sizeof *s->py);
-    s->a = malloc(s->n * sizeof *s->a);
+    s->px = sf_malloc(s->n * sizeof *s->px);
+    s->py = sf_malloc(s->n * sizeof *s->py);
+    s->a = sf_malloc(s->n * sizeof *s->a);
     if (!s->px || !s->py || !s->a) {
         sf_surface_free(s);
         return SF_ENOMEM;
@@ -83,7 +84,7 @@ void sf_surface_point(const sf_surface *s, double theta, double psi, double q[3]
     q[2] = t;
 }
 
-typedef struct { const sf_surface *s; double psi; double alpha; } root_par;
+typedef struct { const sf_surface *s; double psi; double alpha; int rc; } root_par;   /* rc: a failed section (alpha_gap) */
 
 static double torque_at(double theta, void *p)
 {
@@ -96,7 +97,8 @@ static double torque_at(double theta, void *p)
 /* Brent on [lo, hi] (a sign change is required). */
 static int brent(gsl_function *F, double lo, double hi, double tol, double *x)
 {
-    gsl_root_fsolver *rs = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
+    gsl_root_fsolver *rs = SF_FALLIBLE(gsl_root_fsolver_alloc(gsl_root_fsolver_brent));
+    *x = NAN;   /* no root: the callers' results are NaN, never uninitialised */
     if (!rs)
         return SF_ENOMEM;
     if (gsl_root_fsolver_set(rs, F, lo, hi)) {
@@ -115,7 +117,7 @@ static int brent(gsl_function *F, double lo, double hi, double tol, double *x)
 
 int sf_surface_section(const sf_surface *s, double psi, double *theta, double q[3])
 {
-    root_par p = { s, psi, 0 };
+    root_par p = { s, psi, 0, 0 };
     gsl_function F = { torque_at, &p };
     /* T*(-pi/2) = -sum a |p| < 0 < T*(pi/2) whenever mu_bar > 0 */
     double lo = -M_PI / 2, hi = M_PI / 2;
@@ -137,16 +139,19 @@ static double wrap(double a)
 /* Force direction of the section point at psi, minus the target alpha. */
 static double alpha_gap(double psi, void *p)
 {
-    const root_par *r = p;
+    root_par *r = p;
     double th, q[3];
-    sf_surface_section(r->s, psi, &th, q);
+    int rc = sf_surface_section(r->s, psi, &th, q);
+    if (rc == SF_ENOMEM)   /* the caller returns it (a failure to compute, not a property of the surface) */
+        r->rc = rc;
     return wrap(atan2(q[1], q[0]) - r->alpha);
 }
 
 int sf_surface_section_radius(const sf_surface *s, double alpha, double *rho, double *psi_out)
 {
-    root_par p = { s, 0, alpha };
+    root_par p = { s, 0, alpha, 0 };
     gsl_function F = { alpha_gap, &p };
+    *rho = NAN;
     if (s->mu_bar <= 0) {
         *rho = 0;
         if (psi_out)
@@ -161,6 +166,8 @@ int sf_surface_section_radius(const sf_surface *s, double alpha, double *rho, do
         hi = alpha + h;
         glo = alpha_gap(lo, &p);
         ghi = alpha_gap(hi, &p);
+        if (p.rc)
+            return p.rc;
         if (glo <= 0 && ghi >= 0)
             break;
         h *= 2;
@@ -176,7 +183,7 @@ int sf_surface_section_radius(const sf_surface *s, double alpha, double *rho, do
     *rho = hypot(q[0], q[1]);
     if (psi_out)
         *psi_out = psi;
-    return rc ? rc : rc2;
+    return p.rc ? p.rc : rc ? rc : rc2;
 }
 
 int sf_contact_stick_margin(const sf_contact *c, double xb, double yb,
@@ -191,8 +198,10 @@ int sf_contact_stick_margin(const sf_contact *c, double xb, double yb,
     }
     sf_surface *s;
     int rc = sf_surface_alloc(c, xb, yb, &s);
-    if (rc)
+    if (rc) {
+        *margin = NAN;   /* never uninitialised (oscillator.c's stick_margin does not look at rc) */
         return rc;
+    }
     double rho;
     rc = sf_surface_section_radius(s, F > 0 ? atan2(Fy, Fx) : 0, &rho, NULL);
     *margin = rho * N - F;

@@ -2,6 +2,7 @@
 #include "cof.h"
 #include "montecarlo.h"
 #include "oscillator.h"
+#include "sf_alloc.h"
 #include "sf_error.h"
 
 #include <math.h>
@@ -37,7 +38,7 @@ typedef struct {
 static void *ws_alloc(void *ctx)
 {
     const ws_t *c = ctx;
-    ws_t *w = malloc(sizeof *w);
+    ws_t *w = sf_malloc(sizeof *w);
     if (!w)
         return NULL;
     *w = *c;
@@ -87,7 +88,7 @@ int sf_sweep_run(const sf_scene *s, size_t n, int threads, const char *checkpoin
     d.cof = SF_COF_UNIFORM;
     sf_cof *u;
     sf_osc *o;
-    sf_osc_result r;
+    sf_osc_result r = { 0 };   /* freed also when the run fails */
     int rc = sf_cof_alloc_uniform(s->mu_mean, &u);
     if (rc)
         return rc;
@@ -96,8 +97,10 @@ int sf_sweep_run(const sf_scene *s, size_t n, int threads, const char *checkpoin
         rc = sf_osc_run(o, NULL, NULL, 0, &r, err, errlen);
     sf_osc_free(o);
     sf_cof_free(u);
-    if (rc)
+    if (rc) {
+        sf_osc_result_free(&r);
         return rc;
+    }
     out->det[SF_SWEEP_PVX] = r.pv_x;
     out->det[SF_SWEEP_PVF] = r.pv_F;
     out->det[SF_SWEEP_SF] = r.stick_fraction;
@@ -106,7 +109,7 @@ int sf_sweep_run(const sf_scene *s, size_t n, int threads, const char *checkpoin
         return sf_seterr(err, errlen, SF_EINVAL, "the deterministic reference has no complete cycle after t_skip: raise T");
     }
     out->n = n;
-    out->ratio = calloc(n * SF_SWEEP_NQ, sizeof *out->ratio);
+    out->ratio = sf_calloc(n * SF_SWEEP_NQ, sizeof *out->ratio);
     if (!out->ratio)
         return SF_ENOMEM;
     ws_t ctx = { s, out->det, NULL };
@@ -114,7 +117,7 @@ int sf_sweep_run(const sf_scene *s, size_t n, int threads, const char *checkpoin
     /* the checkpoint's identity: the effective scene as text (no padding bytes) */
     char *text = NULL;
     size_t len = 0;
-    FILE *m = open_memstream(&text, &len);
+    FILE *m = SF_FALLIBLE(open_memstream(&text, &len));
     if (!m)
         return SF_ENOMEM;
     sf_scene_write(s, m);
@@ -125,7 +128,7 @@ int sf_sweep_run(const sf_scene *s, size_t n, int threads, const char *checkpoin
     rc = sf_mc_run(&spec, &ops, &ctx, out->ratio, &out->from_checkpoint, err, errlen);
     if (rc)
         return rc;
-    double *v = malloc(n * sizeof *v);
+    double *v = sf_malloc(n * sizeof *v);
     if (!v)
         return SF_ENOMEM;
     for (int q = 0; q < SF_SWEEP_NQ; q++) {

@@ -1,4 +1,5 @@
 #include "tiles.h"
+#include "sf_alloc.h"
 #include "sf_error.h"
 
 #include <math.h>
@@ -65,8 +66,8 @@ static int kernel(double h, double l, double trunc, size_t *K, double **w, doubl
     if (!(span >= 0) || span > 1e6)
         return SF_EINVAL;
     size_t k = (size_t)span, n = 2 * k + 1;
-    *w = malloc(n * sizeof **w);
-    *cov = calloc(n, sizeof **cov);
+    *w = sf_malloc(n * sizeof **w);
+    *cov = sf_calloc(n, sizeof **cov);
     if (!*w || !*cov)
         return SF_ENOMEM;
     double s2 = 0;
@@ -91,7 +92,7 @@ int sf_tiles_alloc(const sf_tiles_spec *spec, sf_tiles **out)
     if (!spec || spec->ny < 1 || !(spec->dx > 0) || !(spec->dy > 0) || !(spec->l > 0) || !isfinite(spec->l) ||
         !(spec->trunc >= 0))
         return SF_EINVAL;
-    sf_tiles *t = calloc(1, sizeof *t);
+    sf_tiles *t = sf_calloc(1, sizeof *t);
     if (!t)
         return SF_ENOMEM;
     double trunc = spec->trunc > 0 ? spec->trunc : 6.0;
@@ -102,12 +103,12 @@ int sf_tiles_alloc(const sf_tiles_spec *spec, sf_tiles **out)
     t->tw = spec->tile_cols ? spec->tile_cols : 64;
     t->nyp = (t->ny + 15) / 16 * 16;
     t->nr = t->nyp + 2 * t->ky;
-    t->rng = gsl_rng_alloc(sf_rng_splitmix64);
-    t->acc = malloc((size_t)FILL_BLOCK * 16 * sizeof *t->acc);
+    t->rng = SF_FALLIBLE(gsl_rng_alloc(sf_rng_splitmix64));
+    t->acc = sf_malloc((size_t)FILL_BLOCK * 16 * sizeof *t->acc);
     if (!rc && (!t->rng || !t->acc))
         rc = SF_ENOMEM;
     for (int s = 0; s < NSLOT && !rc; s++)
-        if (!(t->slot[s] = malloc(t->tw * t->nr * sizeof *t->slot[s])))
+        if (!(t->slot[s] = sf_malloc(t->tw * t->nr * sizeof *t->slot[s])))
             rc = SF_ENOMEM;
     if (rc) {
         sf_tiles_free(t);
@@ -226,7 +227,7 @@ static int fill_block(sf_tiles *t, long i0, size_t m, double *out, size_t ld)
 {
     size_t ny = t->ny, nyp = t->nyp, kx = t->kx, ky = t->ky, ncol = m + 2 * kx;
     if (ncol * nyp > t->ycap) {
-        double *b = realloc(t->ybuf, ncol * nyp * sizeof *b);
+        double *b = sf_realloc(t->ybuf, ncol * nyp * sizeof *b);
         if (!b)
             return SF_ENOMEM;
         t->ybuf = b;

@@ -1,0 +1,535 @@
+/* Unit tests: allocation failure, SQLite style (solver/sf_alloc.h).  This
+ * program links a solver built with -DSF_FAULT_INJECTION (Makefile: the
+ * plain test links build/fi/, the sanitised one build/san/, make coverage
+ * build/cov/).  For each public call that allocates, the walk fails its
+ * k-th allocation, k = 0, 1, 2, ..., until a run sees no failure, and
+ * checks at every k that the call returns SF_ENOMEM and hands out no
+ * object (the out pointer is NULL); the sanitised build and valgrind
+ * (scripts/valgrind.sh) check that nothing leaks on any of these paths.
+ * The run without a failure must give the result of a run with injection
+ * off (same bits), so a recovered failure cannot leave stale state. */
+/* the fault hooks (sf_alloc.h): declared only for a fault-injection build */
+#define SF_FAULT_INJECTION 1
+#include "test_util.h"
+#include "cof.h"
+#include "contact.h"
+#include "field.h"
+#include "lnfield.h"
+#include "montecarlo.h"
+#include "oscillator.h"
+#include "qoi.h"
+#include "scene.h"
+#include "sf_alloc.h"
+#include "sf_error.h"
+#include "surface.h"
+#include "sweep.h"
+#include "tiles.h"
+
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+#include <gsl/gsl_rng.h>
+
+/* One attempt of a call: returns its code; on failure it has checked that
+ * nothing escaped, on success it has checked the result and freed it. */
+typedef int attempt_fn(void *ctx);
+
+/* Fail allocation k = 0, 1, ... of f(ctx) until a run completes without a
+ * failure; every failed run must return SF_ENOMEM (or `also`, a code the
+ * call documents for a failed allocation deeper down; 0: none).  Returns
+ * the number of allocations the call makes. */
+static long walk(const char *what, attempt_fn *f, void *ctx, int ok, int also)
+{
+    for (long k = 0;; k++) {
+        sf_fault_arm(k);
+        int rc = f(ctx);
+        int fired = sf_fault_fired();
+        long n = sf_fault_count();
+        sf_fault_arm(-1);
+        if (!fired) {
+            if (rc != ok) {
+                print_error("%s: %ld allocations, no failure injected, returned %d (expected %d)\n", what, n, rc, ok);
+                fail();
+            }
+            print_message("%s: %ld allocation-failure paths walked\n", what, k);
+            return k;
+        }
+        if (rc != SF_ENOMEM && !(also && rc == also)) {
+            print_error("%s: allocation %ld of %ld failed, returned %d (%s), expected SF_ENOMEM\n", what, k, n, rc,
+                        sf_strerror(rc));
+            fail();
+        }
+    }
+}
+
+static void scene_small(sf_scene *s)
+{
+    sf_scene_default(s);
+    s->T = 6;
+    s->t_skip = 1;
+    s->l = 0.25;
+    s->strip_halfwidth = 0.05;
+    s->cells = 6;
+    s->rtol = 1e-6;
+}
+
+/* ---- COF */
+
+static int cof_uniform(void *ctx)
+{
+    (void)ctx;
+    sf_cof *c = (sf_cof *)1;
+    int rc = sf_cof_alloc_uniform(0.3, &c);
+    if (rc) {
+        assert_null(c);
+        return rc;
+    }
+    assert_close(sf_cof_eval(c, 1, 2), 0.3, 0);
+    sf_cof_free(c);
+    return rc;
+}
+
+static int cof_grid(void *ctx)
+{
+    (void)ctx;
+    double g[6] = { 0.1, 0.2, 0.3, 0.4, 0.5, 0.6 };
+    sf_cof *c = (sf_cof *)1;
+    int rc = sf_cof_alloc_grid(3, 2, 0, 0, 1, 1, g, &c);
+    if (rc) {
+        assert_null(c);
+        return rc;
+    }
+    assert_close(sf_cof_eval(c, 1, 1), 0.5, 1e-15);
+    sf_cof_free(c);
+    return rc;
+}
+
+static void cof_allocs(void **state)
+{
+    (void)state;
+    assert_int_equal(walk("sf_cof_alloc_uniform", cof_uniform, NULL, SF_SUCCESS, 0), 1);
+    assert_int_equal(walk("sf_cof_alloc_grid", cof_grid, NULL, SF_SUCCESS, 0), 2);
+}
+
+/* A plan and one draw from it; the draw's first values recorded in ref
+ * (the run without a failure must give the same). */
+typedef struct {
+    sf_scene s;
+    double ref[4];
+    int have_ref;
+} plan_ctx;
+
+static int plan_and_draw(void *ctx)
+{
+    plan_ctx *c = ctx;
+    sf_cof_plan *p = (sf_cof_plan *)1;
+    char err[256] = "";
+    int rc = sf_cof_plan_alloc(&c->s, &p, err, sizeof err);
+    if (rc) {
+        assert_null(p);
+        return rc;
+    }
+    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+    gsl_rng_set(rng, 7);
+    sf_cof *cof = (sf_cof *)1;
+    rc = sf_cof_plan_draw(p, rng, &cof);
+    gsl_rng_free(rng);
+    sf_cof_plan_free(p);
+    if (rc) {
+        assert_null(cof);
+        return rc;
+    }
+    double v[4] = { sf_cof_eval(cof, 0, 0), sf_cof_eval(cof, -0.3, 0.01), sf_cof_eval(cof, -1.1, -0.02),
+                    sf_cof_max(cof) };
+    if (c->have_ref)
+        assert_memory_equal(v, c->ref, sizeof v);
+    memcpy(c->ref, v, sizeof v);
+    c->have_ref = 1;
+    sf_cof_free(cof);
+    return rc;
+}
+
+static void cof_plans(void **state)
+{
+    (void)state;
+    plan_ctx c = { 0 };
+    scene_small(&c.s);
+    c.s.cof_generator = SF_COFGEN_CIRCULANT;
+    assert_int_equal(plan_and_draw(&c), SF_SUCCESS);   /* the reference: injection off */
+    assert_true(walk("plan + draw (circulant strip)", plan_and_draw, &c, SF_SUCCESS, 0) > 10);
+    memset(&c, 0, sizeof c);
+    scene_small(&c.s);
+    c.s.cof_generator = SF_COFGEN_TILES;
+    assert_int_equal(plan_and_draw(&c), SF_SUCCESS);
+    assert_true(walk("plan + draw (tiled window)", plan_and_draw, &c, SF_SUCCESS, 0) > 5);
+    memset(&c, 0, sizeof c);
+    scene_small(&c.s);
+    c.s.precorrect = 1;   /* the general (non-separable) embedding */
+    c.s.cof_generator = SF_COFGEN_CIRCULANT;
+    assert_int_equal(plan_and_draw(&c), SF_SUCCESS);
+    assert_true(walk("plan + draw (pre-corrected, general embedding)", plan_and_draw, &c, SF_SUCCESS, 0) > 5);
+    memset(&c, 0, sizeof c);
+    scene_small(&c.s);
+    c.s.cof = SF_COF_VARIABLE;
+    assert_int_equal(plan_and_draw(&c), SF_SUCCESS);
+    assert_int_equal(walk("plan + draw (variable)", plan_and_draw, &c, SF_SUCCESS, 0), 2);
+}
+
+static int from_scene(void *ctx)
+{
+    sf_cof *cof = (sf_cof *)1;
+    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+    int rc = sf_cof_from_scene(ctx, rng, &cof);
+    gsl_rng_free(rng);
+    if (rc)
+        assert_null(cof);
+    sf_cof_free(cof);
+    return rc;
+}
+
+/* A window that slides asks for a larger column buffer (tiles.c) */
+static int window_slide(void *ctx)
+{
+    sf_cof_plan *p;
+    int rc = sf_cof_plan_alloc(ctx, &p, NULL, 0);
+    if (rc)
+        return rc;
+    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+    sf_cof *cof;
+    rc = sf_cof_plan_draw(p, rng, &cof);
+    gsl_rng_free(rng);
+    sf_cof_plan_free(p);
+    if (rc)
+        return rc;
+    double mu = sf_cof_eval(cof, -0.4, 0);
+    rc = sf_cof_follow(cof, -60, -59);   /* far: the whole window made again */
+    if (!rc) {
+        assert_int_equal(sf_cof_follow(cof, -0.6, 0.6), SF_SUCCESS);
+        assert_close(sf_cof_eval(cof, -0.4, 0), mu, 1e-14);
+    }
+    sf_cof_free(cof);
+    return rc;
+}
+
+static void cof_more(void **state)
+{
+    (void)state;
+    sf_scene s;
+    scene_small(&s);
+    s.cof_generator = SF_COFGEN_CIRCULANT;
+    walk("sf_cof_from_scene", from_scene, &s, SF_SUCCESS, 0);
+    s.cof_generator = SF_COFGEN_TILES;
+    s.T = 400;   /* a strip of 80 m: the window follows */
+    walk("tiled window slides", window_slide, &s, SF_SUCCESS, 0);
+}
+
+/* ---- fields, tiles */
+
+static double exp_kernel(double r, void *p)
+{
+    (void)p;
+    return exp(-r / 0.3);
+}
+
+static int field(void *ctx)
+{
+    const sf_field_spec *sp = ctx;
+    sf_field *f = (sf_field *)1;
+    int rc = sf_field_alloc(sp, &f);
+    if (!sf_usable(rc)) {
+        assert_null(f);
+        return rc;
+    }
+    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+    double *v = malloc(sp->m * sp->n * sizeof *v);
+    assert_int_equal(sf_field_sample(f, rng, v), SF_SUCCESS);
+    free(v);
+    gsl_rng_free(rng);
+    sf_field_free(f);
+    return rc;
+}
+
+static int lnfield(void *ctx)
+{
+    sf_lnfield *f = (sf_lnfield *)1;
+    int rc = sf_lnfield_alloc(ctx, &f);
+    if (!sf_usable(rc)) {
+        assert_null(f);
+        return rc;
+    }
+    sf_lnfield_free(f);
+    return rc;
+}
+
+static int tiles(void *ctx)
+{
+    (void)ctx;
+    sf_tiles_spec sp = { 21, 0.02, 0.02, 0.1, 0, 16 };
+    sf_tiles *t = (sf_tiles *)1;
+    int rc = sf_tiles_alloc(&sp, &t);
+    if (rc) {
+        assert_null(t);
+        return rc;
+    }
+    sf_tiles_set_key(t, 42);
+    double *g = malloc(300 * 21 * sizeof *g);
+    rc = sf_tiles_fill(t, -20, 300, g, 300);   /* grows the column buffer */
+    free(g);
+    sf_tiles_free(t);
+    return rc;
+}
+
+static void fields(void **state)
+{
+    (void)state;
+    sf_field_spec sp;
+    sf_field_spec_default(&sp, 24, 16, 0.05, 0.05, 0.2);
+    assert_true(walk("sf_field_alloc (separable)", field, &sp, SF_SUCCESS, 0) > 5);
+    sp.kernel = exp_kernel;
+    walk("sf_field_alloc (general kernel)", field, &sp, SF_SUCCESS, 0);
+    sf_field_spec_default(&sp, 64, 8, 0.05, 0.05, 1.0);
+    sp.pad_cap = 1.5;   /* truncated: SF_ETRUNC, usable */
+    walk("sf_field_alloc (padding cap)", field, &sp, SF_ETRUNC, 0);
+    sf_scene s;
+    scene_small(&s);
+    s.nx = 16;
+    s.ny = 12;
+    s.dx = s.dy = 0.05;
+    walk("sf_lnfield_alloc", lnfield, &s, SF_SUCCESS, 0);
+    walk("sf_tiles_alloc + fill", tiles, NULL, SF_SUCCESS, 0);
+}
+
+/* ---- contact, surface */
+
+typedef struct {
+    sf_contact_spec spec;
+    sf_cof *cof;
+} contact_ctx;
+
+static int contact(void *ctx)
+{
+    contact_ctx *c = ctx;
+    sf_contact *ct = (sf_contact *)1;
+    int rc = sf_contact_alloc(&c->spec, c->cof, &ct);
+    if (rc) {
+        assert_null(ct);
+        return rc;
+    }
+    double q[3];
+    assert_int_equal(sf_contact_wrench(ct, 0, 0, 0.1, 0, 0, 1, q), SF_SUCCESS);
+    sf_contact_free(ct);
+    return rc;
+}
+
+static int surface(void *ctx)
+{
+    contact_ctx *c = ctx;
+    sf_contact *ct;
+    int rc = sf_contact_alloc(&c->spec, c->cof, &ct);
+    if (rc)
+        return rc;
+    sf_surface *s = (sf_surface *)1;
+    rc = sf_surface_alloc(ct, 0, 0, &s);
+    if (rc) {
+        assert_null(s);
+    } else {
+        double rho, psi;
+        rc = sf_surface_section_radius(s, 0.3, &rho, &psi);   /* Brent: a GSL solver */
+        sf_surface_free(s);
+    }
+    double m;
+    if (!rc)
+        rc = sf_contact_stick_margin(ct, 0, 0, 1, 2, 1, &m);
+    sf_contact_free(ct);
+    return rc;
+}
+
+static void contacts(void **state)
+{
+    (void)state;
+    contact_ctx c = { { 0.5, 9.81, SF_LAYOUT_POLAR, 6 }, NULL };
+    assert_int_equal(sf_cof_alloc_uniform(0.3, &c.cof), SF_SUCCESS);
+    assert_int_equal(walk("sf_contact_alloc (polar)", contact, &c, SF_SUCCESS, 0), 8);
+    c.spec.layout = SF_LAYOUT_CARTESIAN;
+    assert_int_equal(walk("sf_contact_alloc (Cartesian)", contact, &c, SF_SUCCESS, 0), 4);
+    c.spec.layout = SF_LAYOUT_POLAR;
+    walk("sf_surface_alloc, section, stick margin", surface, &c, SF_SUCCESS, 0);
+    sf_cof_free(c.cof);
+}
+
+/* ---- the oscillator, Monte Carlo, sweep */
+
+typedef struct {
+    sf_scene s;
+    double ref[3];
+    int have_ref;
+} osc_ctx;
+
+static int osc(void *ctx)
+{
+    osc_ctx *c = ctx;
+    sf_cof *cof;
+    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+    gsl_rng_set(rng, 3);
+    int rc = sf_cof_from_scene(&c->s, rng, &cof);
+    gsl_rng_free(rng);
+    if (rc)
+        return rc;
+    sf_osc *o = (sf_osc *)1;
+    char err[256] = "";
+    rc = sf_osc_alloc(&c->s, cof, &o, err, sizeof err);
+    if (rc) {
+        assert_null(o);
+        sf_cof_free(cof);
+        return rc;
+    }
+    sf_osc_result r;
+    rc = sf_osc_run(o, NULL, NULL, 0.05, &r, err, sizeof err);
+    if (!rc) {
+        double v[3] = { r.pv_x, r.pv_F, (double)r.ntrans };
+        if (c->have_ref)
+            assert_memory_equal(v, c->ref, sizeof v);
+        memcpy(c->ref, v, sizeof v);
+        c->have_ref = 1;
+    }
+    sf_osc_result_free(&r);   /* also after a failed run */
+    sf_osc_free(o);
+    sf_cof_free(cof);
+    return rc;
+}
+
+static void oscillator(void **state)
+{
+    (void)state;
+    osc_ctx c = { 0 };
+    scene_small(&c.s);
+    c.s.T = 150;   /* > 64 transitions: the result arrays grow */
+    c.s.t_skip = 0;
+    c.s.cof = SF_COF_UNIFORM;
+    assert_int_equal(osc(&c), SF_SUCCESS);
+    assert_true(c.ref[2] > 64);
+    assert_true(walk("oscillator, 1-D closed form", osc, &c, SF_SUCCESS, 0) > 10);
+    memset(&c, 0, sizeof c);
+    scene_small(&c.s);
+    c.s.dof = SF_DOF_3;
+    c.s.cof_generator = SF_COFGEN_CIRCULANT;
+    assert_int_equal(osc(&c), SF_SUCCESS);
+    assert_true(walk("oscillator, 3-DOF on a field", osc, &c, SF_SUCCESS, 0) > 20);
+    memset(&c, 0, sizeof c);
+    scene_small(&c.s);
+    c.s.dof = SF_DOF_3;
+    c.s.cof_generator = SF_COFGEN_TILES;
+    assert_int_equal(osc(&c), SF_SUCCESS);
+    walk("oscillator, 3-DOF on a tiled window", osc, &c, SF_SUCCESS, 0);
+}
+
+static void *ws_alloc(void *ctx)
+{
+    (void)ctx;
+    return sf_malloc(16);   /* a workspace that can fail like the solver's */
+}
+
+static int realise(void *ws, size_t i, gsl_rng *rng, double *out)
+{
+    (void)ws;
+    out[0] = (double)i + gsl_rng_uniform(rng);
+    return SF_SUCCESS;
+}
+
+static int mc(void *ctx)
+{
+    double out[5];
+    sf_mc_ops ops = { ws_alloc, free, realise };
+    sf_mc_spec sp = { 5, 1, 11, 1, ctx, 0, 0x5f, NULL };
+    int rc = sf_mc_run(&sp, &ops, NULL, out, NULL, NULL, 0);
+    if (!rc)
+        assert_true(out[4] >= 4 && out[4] < 5);
+    return rc;
+}
+
+static void montecarlo(void **state)
+{
+    (void)state;
+    char ck[64];
+    snprintf(ck, sizeof ck, "/tmp/sf-faults-%ld.ck", (long)getpid());
+    walk("sf_mc_run", mc, NULL, SF_SUCCESS, 0);
+    walk("sf_mc_run, checkpoint", mc, ck, SF_SUCCESS, 0);
+    unlink(ck);
+}
+
+static int sweep(void *ctx)
+{
+    sf_sweep_point pt;
+    char err[256] = "";
+    int rc = sf_sweep_run(ctx, 2, 1, NULL, 0, NULL, &pt, err, sizeof err);
+    if (!rc)
+        assert_int_equal(pt.n_valid, 2);
+    else if (rc != SF_ENOMEM)
+        print_message("sweep: %s\n", err);
+    sf_sweep_point_free(&pt);
+    return rc;
+}
+
+static void sweeps(void **state)
+{
+    (void)state;
+    sf_scene s;
+    scene_small(&s);
+    s.T = 20;
+    s.t_skip = 2;
+    s.cof_generator = SF_COFGEN_CIRCULANT;
+    assert_true(walk("sf_sweep_run", sweep, &s, SF_SUCCESS, 0) > 20);
+}
+
+/* ---- the periodogram, text files */
+
+static int periodogram(void *ctx)
+{
+    (void)ctx;
+    double x[16], f[9], p[9];
+    for (int i = 0; i < 16; i++)
+        x[i] = sin(i);
+    return sf_periodogram(x, 16, 0.1, f, p);
+}
+
+static int read_text(void *ctx)
+{
+    char *t = (char *)1;
+    size_t n;
+    int rc = sf_read_text(ctx, "scene", &t, &n, NULL, 0);
+    if (rc)
+        assert_null(t);
+    free(t);
+    return rc;
+}
+
+static void misc(void **state)
+{
+    (void)state;
+    assert_int_equal(walk("sf_periodogram", periodogram, NULL, SF_SUCCESS, 0), 3);
+    char path[64];
+    snprintf(path, sizeof path, "/tmp/sf-faults-%ld.scene", (long)getpid());
+    FILE *f = fopen(path, "w");
+    assert_non_null(f);
+    fputs("T = 3\n", f);
+    fclose(f);
+    assert_int_equal(walk("sf_read_text", read_text, path, SF_SUCCESS, 0), 1);
+    unlink(path);
+}
+
+int main(void)
+{
+    sf_init();
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(cof_allocs),
+        cmocka_unit_test(cof_plans),
+        cmocka_unit_test(cof_more),
+        cmocka_unit_test(fields),
+        cmocka_unit_test(contacts),
+        cmocka_unit_test(oscillator),
+        cmocka_unit_test(montecarlo),
+        cmocka_unit_test(sweeps),
+        cmocka_unit_test(misc),
+    };
+    return cmocka_run_group_tests_name("faults", tests, NULL, NULL);
+}
