@@ -26,9 +26,9 @@ typedef struct {
 } sf_list;
 
 enum { SF_INTEG_ADAPTIVE = 0, SF_INTEG_RK4 = 1, SF_INTEG_RK8PD = 2, SF_INTEG_RKCK = 3 };
-enum { SF_DOF_1 = 0, SF_DOF_3 = 1 };
+enum { SF_DOF_1 = 0, SF_DOF_3 = 1 };   /* values of the `dof` key ("1", "3") */
 enum { SF_COFGEN_AUTO = 0, SF_COFGEN_CIRCULANT = 1, SF_COFGEN_TILES = 2 };   /* `cof_generator` */
-enum { SF_COFMODEL_AUTO = 0, SF_COFMODEL_POINT = 1, SF_COFMODEL_CELL = 2 };   /* `cof_model` (numplan.h) */   /* values of the `dof` key ("1", "3") */
+enum { SF_COFMODEL_AUTO = 0, SF_COFMODEL_POINT = 1, SF_COFMODEL_CELL = 2 };   /* `cof_model` (numplan.h) */
 
 typedef struct {
     /* physics (Table 1) */

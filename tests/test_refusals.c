@@ -82,6 +82,7 @@ static void plan_refusals(void **state)
     /* the whole strip over 2^24 points: refused before anything is made */
     sf_scene_default(&s);
     s.cof_generator = SF_COFGEN_CIRCULANT;
+    s.cof_model = SF_COFMODEL_POINT;   /* auto would average over cells here (l/R = 0.01) */
     s.l = 0.005;
     assert_int_equal(sf_cof_plan_alloc(&s, &p, err, sizeof err), SF_ETOOBIG);
     assert_null(p);
@@ -90,6 +91,7 @@ static void plan_refusals(void **state)
      * field's cap of 2^25: refused by the embedding, named as such */
     sf_scene_default(&s);
     s.cof_generator = SF_COFGEN_CIRCULANT;
+    s.cof_model = SF_COFMODEL_POINT;
     s.l = 0.02;
     s.strip_halfwidth = 0.05;
     s.T = 350;
