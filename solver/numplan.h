@@ -42,12 +42,13 @@ enum { SF_PLAN_CHOSEN = 0, SF_PLAN_SCENE = 1 };   /* where a setting came from *
  * shortcuts on, `cells` not set, its strip at most
  * SF_PLAN_CELLAVG_MAX_POINTS) where its predicted error
  * (sf_numplan_err_cell) is within 3/4 of qoi_tol with at most
- * _MAX_CELLS cells (below l/R = 0.038 at Table 1 and qoi_tol = 1e-3): there the point model needs ~3.8
+ * _MAX_CELLS cells (below l/R = 0.044 at Table 1 and qoi_tol = 1e-3, 59
+ * or 60 cells per diameter): there the point model needs ~3.8
  * (R/l)^0.71 rings (49k cells at l/R = 0.01) while the random part of the
  * wrench is only ~CV l/R of it.  numplan.c has the measurements. */
 #define SF_PLAN_CELLAVG_LR 0.05
 #define SF_PLAN_CELLAVG_CELLS 32
-#define SF_PLAN_CELLAVG_MAX_CELLS 56   /* the error model's measured range (numplan.c) */
+#define SF_PLAN_CELLAVG_MAX_CELLS 60   /* within the error model's measured range, 16..82 (numplan.c) */
 /* auto takes cell averages only while their strip (one circulant over
  * [0, T], ~64 bytes a point) has at most this many points: 2^22, ~270 MB;
  * at Table 1, 32 cells, up to T ~ 1000 s.  Longer runs get the point

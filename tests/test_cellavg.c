@@ -50,9 +50,12 @@ static void plan_choice(void **state)
     sf_scene_default(&s);
     size_t n = 0;
     double box = 0;
-    s.l = 0.005;   /* l/R = 0.01: cell averages, 32 cells */
+    s.l = 0.005;   /* l/R = 0.01: cell averages, the fewest cells whose predicted error is within 3/4 qoi_tol */
     assert_int_equal(sf_numplan_cell_average(&s, &n, &box), 1);
-    assert_int_equal(n, SF_PLAN_CELLAVG_CELLS);
+    assert_true(n >= SF_PLAN_CELLAVG_CELLS && n <= SF_PLAN_CELLAVG_MAX_CELLS);
+    assert_true(sf_numplan_err_cell(s.l / s.R, s.mu_std / s.mu_mean, n) <= 0.75 * s.qoi_tol);
+    assert_true(n == SF_PLAN_CELLAVG_CELLS ||
+                sf_numplan_err_cell(s.l / s.R, s.mu_std / s.mu_mean, n - 1) > 0.75 * s.qoi_tol);
     assert_close(box, 2 * s.R / (double)n, 1e-15);
     s.l = 0.0158;   /* l/R = 0.0316: more cells */
     assert_int_equal(sf_numplan_cell_average(&s, &n, &box), 1);
@@ -92,7 +95,9 @@ static void effective_field(void **state)
     char err[256] = "";
     assert_int_equal(sf_cof_plan_alloc(&s, &p, err, sizeof err), SF_SUCCESS);
     const sf_cof_plan_info *in = sf_cof_plan_get_info(p);
-    assert_close(in->box, 2 * s.R / SF_PLAN_CELLAVG_CELLS, 1e-15);
+    size_t nc = 0;
+    assert_int_equal(sf_numplan_cell_average(&s, &nc, NULL), 1);   /* the plan's cells per diameter */
+    assert_close(in->box, 2 * s.R / (double)nc, 1e-15);
     assert_close(in->dx, in->box / 3, 1e-15);
     const sf_field *f = sf_cof_plan_cell_field(p);
     assert_non_null(f);

@@ -120,11 +120,14 @@ static void cof_plan(void **state)
     s.cof_model = SF_COFMODEL_POINT;
     assert_int_equal(sf_cof_plan_alloc(&s, &p, err, sizeof err), SF_ETOOBIG);
     assert_non_null(strstr(err, "grid points"));
-    s.cof_model = SF_COFMODEL_AUTO;   /* the plan's choice there: cell averages over 32 cells (numplan.h) */
+    s.cof_model = SF_COFMODEL_AUTO;   /* the plan's choice there: cell averages (numplan.h) */
+    size_t nc = 0;
+    assert_int_equal(sf_numplan_cell_average(&s, &nc, NULL), 1);
+    assert_true(nc >= SF_PLAN_CELLAVG_CELLS && nc <= SF_PLAN_CELLAVG_MAX_CELLS);
     assert_int_equal(sf_cof_plan_alloc(&s, &p, err, sizeof err), SF_SUCCESS);
-    assert_close(sf_cof_plan_get_info(p)->box, 2 * s.R / SF_PLAN_CELLAVG_CELLS, 1e-15);
+    assert_close(sf_cof_plan_get_info(p)->box, 2 * s.R / (double)nc, 1e-15);
     assert_int_equal(sf_cof_plan_draw(p, rng, &c), SF_SUCCESS);
-    assert_close(sf_cof_box(c), 2 * s.R / SF_PLAN_CELLAVG_CELLS, 1e-15);
+    assert_close(sf_cof_box(c), 2 * s.R / (double)nc, 1e-15);
     sf_cof_free(c);
     sf_cof_plan_free(p);
     s.l = 1e5;    /* a 1e5 m correlation length over a 15 m strip: one variable */

@@ -108,6 +108,10 @@ void check_hist_free(check_hist *h);
  * refused. */
 sf_cof *check_case_cof(const sf_case *c, const sf_scene *s, sf_result *r);
 
+/* This thread's CPU time [s] (CLOCK_THREAD_CPUTIME_ID): the cost of a
+ * check's own runs, for its report, whatever else the process runs. */
+double check_cpu_seconds(void);
+
 int check_osc_run(const sf_scene *s, gsl_rng *rng, const sf_cof *cof, double sample_dt, sf_osc_result *res,
                   sf_osc_row_fn row, void *ctx, sf_result *r);
 
