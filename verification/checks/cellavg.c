@@ -413,23 +413,10 @@ static int vs_point(const sf_case *c, sf_result *r, int plan)
             if (!rc && !(coarse = box_filter(fine2, &sc, box, r)))
                 rc = SF_EFAIL;
             sf_cof_free(fine2);
-            sf_osc_result a, b;
-            double qa[NQ], qb[NQ];
-            if (!rc && !(rc = check_osc_run(&sp, NULL, fine, 0, &a, NULL, NULL, r))) {
-                qois(&a, qa);
-                sf_osc_result_free(&a);
-                if (!(rc = check_osc_run(&sc, NULL, coarse, 0, &b, NULL, NULL, r))) {
-                    qois(&b, qb);
-                    sf_osc_result_free(&b);
-                    double e = 0;
-                    for (int q = 0; q < NQ; q++) {
-                        double d = fabs(qb[q] - qa[q]) / fabs(qa[q]);
-                        if (!(d <= e))
-                            e = isnan(d) ? INFINITY : d;
-                    }
-                    e2 += e * e / (double)n;
-                    ew = sf_max(ew, e);
-                }
+            double e = 0;
+            if (!rc && !(rc = check_qoi_gap(&sc, coarse, &sp, fine, &e, r))) {
+                e2 += e * e / (double)n;
+                ew = sf_max(ew, e);
             }
             sf_cof_free(fine);
             sf_cof_free(coarse);

@@ -351,3 +351,25 @@ int ref_cycle(const sf_scene *s, double mu, ref_cycle1d *c)
     c->sf = c->t_stick / (c->t_stick + c->t_slip);
     return 0;
 }
+
+int check_qoi_gap(const sf_scene *s, const sf_cof *cof, const sf_scene *sref, const sf_cof *cref, double *gap,
+                  sf_result *r)
+{
+    sf_osc_result a, b;
+    int rc = check_osc_run(sref, NULL, cref, 0, &a, NULL, NULL, r);
+    if (rc)
+        return rc;
+    double qa[3] = { a.pv_x, a.pv_F, a.stick_fraction };
+    sf_osc_result_free(&a);
+    if ((rc = check_osc_run(s, NULL, cof, 0, &b, NULL, NULL, r)))
+        return rc;
+    double qb[3] = { b.pv_x, b.pv_F, b.stick_fraction }, e = 0;
+    sf_osc_result_free(&b);
+    for (int q = 0; q < 3; q++) {
+        double d = fabs(qb[q] - qa[q]) / fabs(qa[q]);
+        if (!(d <= e))   /* NaN (no complete cycle) too: it fails the case */
+            e = isnan(d) ? INFINITY : d;
+    }
+    *gap = e;
+    return SF_SUCCESS;
+}
