@@ -8,6 +8,7 @@
 #include "scene.h"
 #include "sf_error.h"
 
+#include <limits.h>
 #include <stdlib.h>
 #include <string.h>
 #include <gsl/gsl_math.h>
@@ -225,6 +226,39 @@ static void reference_wrench(const sf_contact *c, double xb, double yb, double u
     }
 }
 
+/* The fast loop's bits, written out scalar: cell i into lane i mod 8 with
+ * the scaled speeds (u, v, w) 2^-e of sf_contact_wrench, the COF from
+ * sf_cof_eval (on the grid the same bits as the loop's inlined look-up),
+ * 1/sqrt, the lanes summed in order.  Every copy of the loop (the AVX-512
+ * one with its look-up by pairs on machines that have it, the portable one
+ * elsewhere and in the coverage build) must give exactly these bits. */
+static void lanes_wrench(const sf_contact *c, double xb, double yb, double u, double v, double w, double q[3])
+{
+    const double *rx, *ry, *wt;
+    sf_contact_cells(c, &rx, &ry, &wt);
+    int e = INT_MIN;
+    if (u != 0)
+        e = ilogb(u) + 1;
+    if (v != 0 && ilogb(v) + 1 > e)
+        e = ilogb(v) + 1;
+    if (w != 0 && ilogb(w) + ilogb(sf_contact_radius(c)) + 2 > e)
+        e = ilogb(w) + ilogb(sf_contact_radius(c)) + 2;
+    double us = ldexp(u, -e), vs = ldexp(v, -e), ws = ldexp(w, -e), f[3][8] = { { 0 } };
+    for (size_t i = 0; i < sf_contact_ncells(c); i++) {
+        double ax = us - ws * ry[i], ay = vs + ws * rx[i], s2 = ax * ax + ay * ay;
+        double r = 1 / sqrt(s2), a = wt[i] * sf_cof_eval(sf_contact_get_cof(c), xb + rx[i], yb + ry[i]);
+        double dx = ax * r, dy = ay * r;
+        f[0][i % 8] -= a * dx;
+        f[1][i % 8] -= a * dy;
+        f[2][i % 8] -= a * (rx[i] * dy - ry[i] * dx);
+    }
+    for (int k = 0; k < 3; k++) {
+        q[k] = 0;
+        for (int l = 0; l < 8; l++)
+            q[k] += f[k][l];
+    }
+}
+
 static void wrench_fast_loop(void **state)
 {
     (void)state;
@@ -246,6 +280,9 @@ static void wrench_fast_loop(void **state)
         reference_wrench(c, 0.1, -0.05, u, v, w, r);
         for (int i = 0; i < 3; i++)
             assert_close(q[i], r[i], 1e-12 * 98.1);
+        lanes_wrench(c, 0.1, -0.05, u, v, w, r);
+        for (int i = 0; i < 3; i++)
+            assert_true(q[i] == r[i]);   /* the same bits */
         const int ex[] = { -1000, -500, 500, 900 };
         for (int e = 0; e < 4; e++) {
             sf_contact_wrench(c, 0.1, -0.05, ldexp(u, ex[e]), ldexp(v, ex[e]), ldexp(w, ex[e]), 1, k);
