@@ -5,6 +5,7 @@
  * resident set comes from wait4's rusage. */
 #define _DEFAULT_SOURCE   /* wait4 */
 #include "bench.h"
+#include "numplan.h"
 
 #include <errno.h>
 #include <math.h>
@@ -140,7 +141,7 @@ int bench_belt(FILE *f, const char *dir)
     snprintf(exe, sizeof exe, "%s/slipfield", dirname(dirname(self)));
     const job jobs[] = {
         { "l/R = 1", "l = 0.5\n", "circulant strip (auto)", 0 },
-        { "l/R = 0.01", "l = 0.005\n", "the plan's choice (auto: cell averages, 32 cells)", 0 },
+        { "l/R = 0.01", "l = 0.005\n", "the plan's choice (auto: cell averages)", 0 },
         { "l/R = 0.1, circulant", "l = 0.05\ncof_generator = circulant\n", "circulant strip (forced)", 0 },
         { "l/R = 0.1, tiles", "l = 0.05\ncof_generator = tiles\n", "tiles, sliding window (forced)", 0 },
         { "l/R = 1, speed plan", "l = 0.5\ncells = 12\nrtol = 1e-6\n", "circulant; 12 rings, rtol 1e-6", 0 },
@@ -186,13 +187,27 @@ int bench_belt(FILE *f, const char *dir)
                "a rough field takes.\n",
             (double)kib[1] / (double)kib[0], (double)kib[1] / 1024, cpu[1] / cpu[0], cpu[5] / cpu[4],
             (double)kib[3] / (double)kib[2], cpu[3] / cpu[2]);
+    size_t ca_cells[2] = { 0, 0 };   /* the plan's cells per diameter at l/R = 0.01 and 0.03 (Table 1) */
+    double ca_box[2] = { 0, 0 };
+    for (int k = 0; k < 2; k++) {
+        sf_scene ps;
+        sf_numplan np;
+        char perr[160];
+        sf_scene_default(&ps);
+        ps.l = (k ? 0.03 : 0.01) * ps.R;
+        if (sf_numplan_make(&ps, 1, &np, perr, sizeof perr) == 0 && np.cell_average) {
+            ca_cells[k] = np.cells;
+            ca_box[k] = np.cell_size / ps.l;
+        }
+    }
     fprintf(f, "\nCell averages (issue 14, `cof_model`, solver/cellavg.h): the plan's choice at l/R = 0.01 is the "
-               "cell-average model (32 Cartesian cells of 6.25 l, the effective field at spacing box/3 by circulant "
-               "embedding); against the point model it would replace (forced, %.1f s CPU) it is %.0fx faster. Ratios "
-               "to l/R = 1 in this run: l/R = 0.01 (auto) %.1fx CPU (target <= 10x), peak RSS %.1f MiB (target <= 256); "
-               "l/R = 0.03 (auto: cell averages, 50 cells per diameter) %.1fx (target <= 10x); l/R = 0.03 with point "
-               "values forced %.1fx.\n",
-            cpu[8], cpu[8] / cpu[1], cpu[1] / cpu[0], (double)kib[1] / 1024, cpu[6] / cpu[0], cpu[7] / cpu[0]);
+               "cell-average model (%zu Cartesian cells per diameter, of %.2f l, the effective field at spacing box/3 by "
+               "circulant embedding); against the point model it would replace (forced, %.1f s CPU) it is %.0fx faster. "
+               "Ratios to l/R = 1 in this run: l/R = 0.01 (auto) %.1fx CPU (target <= 10x), peak RSS %.1f MiB (target "
+               "<= 256); l/R = 0.03 (auto: cell averages, %zu cells per diameter) %.1fx (target <= 10x); l/R = 0.03 "
+               "with point values forced %.1fx.\n",
+            ca_cells[0], ca_box[0], cpu[8], cpu[8] / cpu[1], cpu[1] / cpu[0], (double)kib[1] / 1024, ca_cells[1],
+            cpu[6] / cpu[0], cpu[7] / cpu[0]);
     return 0;
 }
 
