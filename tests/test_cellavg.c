@@ -110,6 +110,16 @@ static void effective_field(void **state)
     assert_int_equal(sf_osc_alloc(&s, c, &o, err, sizeof err), SF_SUCCESS);
     assert_int_equal(sf_osc_get_plan(o)->cell_average, 1);
     assert_int_equal(sf_osc_get_plan(o)->layout, SF_LAYOUT_CARTESIAN);
+    FILE *fp = tmpfile();   /* --explain names the cell-averaged COF */
+    assert_non_null(fp);
+    sf_osc_explain(o, fp);
+    rewind(fp);
+    char out[8192];
+    size_t len = fread(out, 1, sizeof out - 1, fp);
+    out[len] = '\0';
+    fclose(fp);
+    assert_non_null(strstr(out, "Cartesian quadrature"));
+    assert_non_null(strstr(out, "cell-averaged COF interpolated from the effective strip field"));
     sf_osc_free(o);
     /* ... and refuses a COF whose boxes are not its cells, or point values */
     sf_scene s2 = s;
