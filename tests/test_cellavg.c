@@ -143,7 +143,7 @@ static void effective_field(void **state)
  * huge CV keeps 64 terms, whose sum is still the point variance std^2 for
  * a box much smaller than l (the terms peak near n = sG^2 and the 64th is
  * ~1e-15 of the peak at CV = 1e4: the cap costs nothing there). */
-static void init_edges(void **state)
+static void cellavg_init_edges(void **state)
 {
     (void)state;
     sf_cellavg c;
@@ -165,7 +165,7 @@ static void init_edges(void **state)
 /* sf_cof_set_box marks a grid's values as cell averages; anything but a
  * grid, and a box that is not a finite non-negative length, is refused
  * (the COF is left as it was). */
-static void box_marks(void **state)
+static void cof_box_marks(void **state)
 {
     (void)state;
     sf_cof *c;
@@ -197,7 +197,7 @@ static void scene_cellavg(sf_scene *s)
 
 /* The cell-average plan's refusals, each before the field is made, and
  * its standard deviation (the series' Var(mu_h); 0 for a point plan). */
-static void plan_refusals(void **state)
+static void cellavg_plan_refusals(void **state)
 {
     (void)state;
     sf_scene s;
@@ -262,7 +262,7 @@ static void plan_refusals(void **state)
  * suffices (the largest, with a warning), chosen on a constant COF (not:
  * nothing to average), the out pointers optional; and what --explain
  * prints for both origins. */
-static void plan_edges(void **state)
+static void cellavg_plan_edges(void **state)
 {
     (void)state;
     sf_scene s;
@@ -316,7 +316,7 @@ static void plan_edges(void **state)
 /* The oscillator refuses point values where the plan runs cell averages
  * (the converse of effective_field's refusals), and explains a point
  * field's quadrature as such. */
-static void osc_point_values(void **state)
+static void osc_point_values_refused(void **state)
 {
     (void)state;
     sf_scene s;
@@ -353,7 +353,7 @@ static void osc_point_values(void **state)
  * the axis keeps the usual minimal period, an axis of one point has
  * period 1, and a term count without its factor function is refused
  * (it was dereferenced: the spec was accepted when l was valid). */
-static void sep_embedding(void **state)
+static void sep_sum_embedding(void **state)
 {
     (void)state;
     sf_cellavg ca;
@@ -395,12 +395,12 @@ int main(void)
         cmocka_unit_test(box_limits),
         cmocka_unit_test(plan_choice),
         cmocka_unit_test(effective_field),
-        cmocka_unit_test(init_edges),
-        cmocka_unit_test(box_marks),
-        cmocka_unit_test(plan_refusals),
-        cmocka_unit_test(plan_edges),
-        cmocka_unit_test(osc_point_values),
-        cmocka_unit_test(sep_embedding),
+        cmocka_unit_test(cellavg_init_edges),
+        cmocka_unit_test(cof_box_marks),
+        cmocka_unit_test(cellavg_plan_refusals),
+        cmocka_unit_test(cellavg_plan_edges),
+        cmocka_unit_test(osc_point_values_refused),
+        cmocka_unit_test(sep_sum_embedding),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
