@@ -405,6 +405,7 @@ static int spec_valid(const sf_field_spec *s)
     return s->m >= 1 && s->n >= 1 && isfinite(s->dx) && s->dx > 0.0
         && isfinite(s->dy) && s->dy > 0.0
         && (s->kernel || (s->sep_terms > 0 && s->sep_fn) || (isfinite(s->l) && s->l > 0.0))
+        && !(s->sep_terms > 0 && !s->sep_fn)   /* sep_terms is read before kernel and l: a term needs its factor */
         && isfinite(s->eig_rel_tol) && s->eig_rel_tol >= 0.0
         && isfinite(s->pad_cap) && s->pad_cap >= 1.0 && s->max_points >= 1
         && s->m <= s->max_points && s->n <= s->max_points;

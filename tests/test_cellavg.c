@@ -12,6 +12,7 @@
 #include "sf_error.h"
 
 #include <stdlib.h>
+#include <string.h>
 #include <gsl/gsl_math.h>
 #include <gsl/gsl_rng.h>
 
@@ -114,6 +115,16 @@ static void effective_field(void **state)
     assert_int_equal(sf_osc_alloc(&s, c, &o, err, sizeof err), SF_SUCCESS);
     assert_int_equal(sf_osc_get_plan(o)->cell_average, 1);
     assert_int_equal(sf_osc_get_plan(o)->layout, SF_LAYOUT_CARTESIAN);
+    FILE *fp = tmpfile();   /* --explain names the cell-averaged COF */
+    assert_non_null(fp);
+    sf_osc_explain(o, fp);
+    rewind(fp);
+    char out[8192];
+    size_t len = fread(out, 1, sizeof out - 1, fp);
+    out[len] = '\0';
+    fclose(fp);
+    assert_non_null(strstr(out, "Cartesian quadrature"));
+    assert_non_null(strstr(out, "cell-averaged COF interpolated from the effective strip field"));
     sf_osc_free(o);
     /* ... and refuses a COF whose boxes are not its cells, or point values */
     sf_scene s2 = s;
@@ -132,6 +143,256 @@ static void effective_field(void **state)
     gsl_rng_free(rng);
 }
 
+/* sf_cellavg_init refuses each argument that is not a positive finite
+ * number (std: non-negative); std = 0 has no series (a constant COF); a
+ * huge CV keeps 64 terms, whose sum is still the point variance std^2 for
+ * a box much smaller than l (the terms peak near n = sG^2 and the 64th is
+ * ~1e-15 of the peak at CV = 1e4: the cap costs nothing there). */
+static void cellavg_init_edges(void **state)
+{
+    (void)state;
+    sf_cellavg c;
+    assert_int_equal(sf_cellavg_init(&c, 0.5, -0.1, 0.01, 0.1), SF_EINVAL);
+    assert_int_equal(sf_cellavg_init(&c, 0.5, 0.1, 0, 0.1), SF_EINVAL);
+    assert_int_equal(sf_cellavg_init(&c, 0.5, 0.1, 0.01, 0), SF_EINVAL);
+    assert_int_equal(sf_cellavg_init(&c, INFINITY, 0.1, 0.01, 0.1), SF_EINVAL);
+    assert_int_equal(sf_cellavg_init(&c, 0.5, INFINITY, 0.01, 0.1), SF_EINVAL);
+    assert_int_equal(sf_cellavg_init(&c, 0.5, 0.1, INFINITY, 0.1), SF_EINVAL);
+    assert_int_equal(sf_cellavg_init(&c, 0.5, 0.1, 0.01, INFINITY), SF_EINVAL);
+    assert_int_equal(sf_cellavg_init(&c, 0.5, 0, 0.01, 0.1), SF_SUCCESS);
+    assert_int_equal(c.nterms, 0);
+    assert_close(sf_cellavg_var(&c), 0, 0);
+    assert_int_equal(sf_cellavg_init(&c, 1, 1e4, 0.01, 1e-8), SF_SUCCESS);
+    assert_int_equal(c.nterms, 64);
+    assert_close(sf_cellavg_var(&c), 1e8, 1e-6);
+}
+
+/* sf_cof_set_box marks a grid's values as cell averages; anything but a
+ * grid, and a box that is not a finite non-negative length, is refused
+ * (the COF is left as it was). */
+static void cof_box_marks(void **state)
+{
+    (void)state;
+    sf_cof *c;
+    assert_int_equal(sf_cof_alloc_uniform(0.5, &c), SF_SUCCESS);
+    assert_int_equal(sf_cof_set_box(c, 0.1), SF_EINVAL);
+    assert_close(sf_cof_box(c), 0, 0);
+    sf_cof_free(c);
+    double g[4] = { 0.4, 0.5, 0.6, 0.7 };
+    assert_int_equal(sf_cof_alloc_grid(2, 2, 0, 0, 1, 1, g, &c), SF_SUCCESS);
+    assert_int_equal(sf_cof_set_box(c, -0.1), SF_EINVAL);
+    assert_int_equal(sf_cof_set_box(c, NAN), SF_EINVAL);
+    assert_int_equal(sf_cof_set_box(c, INFINITY), SF_EINVAL);
+    assert_close(sf_cof_box(c), 0, 0);
+    assert_int_equal(sf_cof_set_box(c, 0.1), SF_SUCCESS);
+    assert_close(sf_cof_box(c), 0.1, 0);
+    assert_int_equal(sf_cof_set_box(c, 0), SF_SUCCESS);   /* back to point values */
+    assert_close(sf_cof_box(c), 0, 0);
+    sf_cof_free(c);
+}
+
+/* the cell-average scene of effective_field: l/R = 0.01, a short belt */
+static void scene_cellavg(sf_scene *s)
+{
+    sf_scene_default(s);
+    s->l = 0.005;
+    s->T = 5;
+    s->strip_halfwidth = 0.01;
+}
+
+/* The cell-average plan's refusals, each before the field is made, and
+ * its standard deviation (the series' Var(mu_h); 0 for a point plan). */
+static void cellavg_plan_refusals(void **state)
+{
+    (void)state;
+    sf_scene s;
+    sf_cof_plan *p = (sf_cof_plan *)1;
+    char err[256] = "";
+    /* mu_std = 0 with cell averages set and no shortcut: nothing to average */
+    scene_cellavg(&s);
+    s.cof_model = SF_COFMODEL_CELL;
+    s.mu_std = 0;
+    s.shortcuts = 0;
+    assert_int_equal(sf_cof_plan_alloc(&s, &p, err, sizeof err), SF_EINVAL);
+    assert_null(p);
+    assert_non_null(strstr(err, "mu_std > 0"));
+    /* l = 0 (the scene parser refuses it; the API must too): no series */
+    scene_cellavg(&s);
+    s.cof_model = SF_COFMODEL_CELL;
+    s.cells = 32;
+    s.l = 0;
+    assert_int_equal(sf_cof_plan_alloc(&s, &p, err, sizeof err), SF_EINVAL);
+    assert_null(p);
+    assert_non_null(strstr(err, "invalid cell-average model"));
+    /* a belt of 2 km: the effective strip over 2^24 points, refused
+     * before anything is allocated */
+    scene_cellavg(&s);
+    s.cof_model = SF_COFMODEL_CELL;
+    s.cells = 56;
+    s.T = 1e4;
+    s.strip_halfwidth = 0;
+    assert_int_equal(sf_cof_plan_alloc(&s, &p, err, sizeof err), SF_ETOOBIG);
+    assert_null(p);
+    assert_non_null(strstr(err, "cell-averaged belt strip"));
+    /* the plan's std: sqrt(Var(mu_h)) of the same series; 0 for points */
+    scene_cellavg(&s);
+    assert_int_equal(sf_cof_plan_alloc(&s, &p, err, sizeof err), SF_SUCCESS);
+    sf_cellavg ca;
+    assert_int_equal(sf_cellavg_init(&ca, s.mu_mean, s.mu_std, s.l, sf_cof_plan_get_info(p)->box), SF_SUCCESS);
+    assert_close(sf_cof_plan_cell_std(p), sqrt(sf_cellavg_var(&ca)), 0);
+    assert_true(sf_cof_plan_cell_std(p) < s.mu_std);   /* averaging lowers the variance */
+    sf_cof_plan_free(p);
+    s.cof_model = SF_COFMODEL_POINT;
+    s.l = 0.25;
+    assert_int_equal(sf_cof_plan_alloc(&s, &p, err, sizeof err), SF_SUCCESS);
+    assert_null(sf_cof_plan_cell_field(p));
+    assert_close(sf_cof_plan_cell_std(p), 0, 0);
+    sf_cof_plan_free(p);
+    /* auto generator with precorrect but nothing to pre-correct (mu_std
+     * = 0, no shortcut, so no cell averages either) on a strip over the
+     * tiles' threshold: the tiles (only the window's size is planned) */
+    scene_cellavg(&s);
+    s.precorrect = 1;
+    s.mu_std = 0;
+    s.shortcuts = 0;
+    s.strip_halfwidth = 0.5;
+    s.T = 100;
+    assert_int_equal(sf_cof_plan_alloc(&s, &p, err, sizeof err), SF_SUCCESS);
+    assert_int_equal(sf_cof_plan_get_info(p)->generator, SF_COFGEN_TILES);
+    assert_null(sf_cof_plan_cell_field(p));
+    sf_cof_plan_free(p);
+}
+
+/* The plan's cell-average branches: set explicitly where no count
+ * suffices (the largest, with a warning), chosen on a constant COF (not:
+ * nothing to average), the out pointers optional; and what --explain
+ * prints for both origins. */
+static void cellavg_plan_edges(void **state)
+{
+    (void)state;
+    sf_scene s;
+    sf_scene_default(&s);
+    s.l = 0.25;   /* l/R = 0.5: the model's error is above qoi_tol at any count */
+    s.cof_model = SF_COFMODEL_CELL;
+    size_t n = 0;
+    double box = 0;
+    assert_int_equal(sf_numplan_cell_average(&s, &n, &box), 1);
+    assert_int_equal(n, SF_PLAN_CELLAVG_MAX_CELLS);
+    assert_close(box, 2 * s.R / (double)n, 1e-15);
+    assert_int_equal(sf_numplan_cell_average(&s, NULL, NULL), 1);
+    sf_numplan pl;
+    char err[256] = "", out[4096];
+    assert_int_equal(sf_numplan_make(&s, 1, &pl, err, sizeof err), SF_SUCCESS);
+    assert_int_equal(pl.cell_average, 1);
+    assert_int_equal(pl.cof_model_from, SF_PLAN_SCENE);
+    assert_int_equal(pl.cells_from, SF_PLAN_CHOSEN);
+    assert_true(pl.err_quad > 0.75 * s.qoi_tol);
+    assert_non_null(strstr(pl.warning, "cof_model = point resolves l"));
+    FILE *f = tmpfile();
+    assert_non_null(f);
+    sf_numplan_explain(&pl, f);
+    rewind(f);
+    size_t len = fread(out, 1, sizeof out - 1, f);
+    out[len] = '\0';
+    fclose(f);
+    assert_non_null(strstr(out, "cof_model = cell_average (set by the scene)"));
+    assert_non_null(strstr(out, "cells = 56 per diameter (chosen for qoi_tol"));
+    assert_non_null(strstr(out, "plan warning: cof_model = cell_average"));
+    /* chosen by auto at l/R = 0.01, cells set by the scene (40) */
+    s.l = 0.005;
+    s.cof_model = SF_COFMODEL_AUTO;
+    assert_int_equal(sf_numplan_make(&s, 1, &pl, err, sizeof err), SF_SUCCESS);
+    assert_int_equal(pl.cof_model_from, SF_PLAN_CHOSEN);
+    assert_int_equal(pl.cells, SF_PLAN_CELLAVG_CELLS);
+    assert_string_equal(pl.warning, "");
+    f = tmpfile();
+    assert_non_null(f);
+    sf_numplan_explain(&pl, f);
+    rewind(f);
+    len = fread(out, 1, sizeof out - 1, f);
+    out[len] = '\0';
+    fclose(f);
+    assert_non_null(strstr(out, "cof_model = cell_average (chosen: l/R below 0.05"));
+    /* auto on a field without spread: point values (nothing to average) */
+    s.mu_std = 0;
+    assert_int_equal(sf_numplan_cell_average(&s, NULL, NULL), 0);
+}
+
+/* The oscillator refuses point values where the plan runs cell averages
+ * (the converse of effective_field's refusals), and explains a point
+ * field's quadrature as such. */
+static void osc_point_values_refused(void **state)
+{
+    (void)state;
+    sf_scene s;
+    sf_scene_default(&s);
+    s.l = 0.005;   /* auto: cell averages */
+    double g[21 * 21];
+    for (int i = 0; i < 21 * 21; i++)
+        g[i] = 0.5 + 0.01 * (i % 7);
+    sf_cof *c;
+    assert_int_equal(sf_cof_alloc_grid(21, 21, -1, -1, 0.1, 0.1, g, &c), SF_SUCCESS);
+    sf_osc *o = (sf_osc *)1;
+    char err[256] = "";
+    assert_int_equal(sf_osc_alloc(&s, c, &o, err, sizeof err), SF_EINVAL);
+    assert_null(o);
+    assert_non_null(strstr(err, "the COF holds point values (box 0 m) but the plan runs cof_model = cell_average"));
+    s.cof_model = SF_COFMODEL_POINT;
+    s.cells = 8;
+    assert_int_equal(sf_osc_alloc(&s, c, &o, err, sizeof err), SF_SUCCESS);
+    FILE *f = tmpfile();
+    assert_non_null(f);
+    sf_osc_explain(o, f);
+    rewind(f);
+    char out[8192];
+    size_t len = fread(out, 1, sizeof out - 1, f);
+    out[len] = '\0';
+    fclose(f);
+    assert_non_null(strstr(out, "COF interpolated from the strip field"));
+    assert_null(strstr(out, "cell-averaged"));
+    sf_osc_free(o);
+    sf_cof_free(c);
+}
+
+/* The separable-sum kernel's embedding (field.h): a support longer than
+ * the axis keeps the usual minimal period, an axis of one point has
+ * period 1, and a term count without its factor function is refused
+ * (it was dereferenced: the spec was accepted when l was valid). */
+static void sep_sum_embedding(void **state)
+{
+    (void)state;
+    sf_cellavg ca;
+    double box = 0.03125, d = box / 3;
+    assert_int_equal(sf_cellavg_init(&ca, 0.5, 0.1, 0.005, box), SF_SUCCESS);
+    sf_field_spec sp;
+    sf_field_spec_default(&sp, 10, 1, d, d, 0.005);
+    sp.sep_terms = ca.nterms;
+    sp.sep_fn = sf_cellavg_septerm;
+    sp.sep_params = &ca;
+    sp.support = sf_cellavg_support(&ca);   /* 0.076 m: 7 spacings, longer than the axis of 9 */
+    sf_field *f;
+    assert_int_equal(sf_field_alloc(&sp, &f), SF_SUCCESS);
+    const sf_field_info *fi = sf_field_get_info(f);
+    assert_int_equal(fi->px, 18);   /* 2 (m - 1): the support does not shorten it */
+    assert_int_equal(fi->py, 1);
+    assert_true(fi->cov_error < 1e-13);
+    sf_field_free(f);
+    /* a longer axis: the short-support period (2 S with S = support/d + 1) */
+    sp.m = 200;
+    assert_int_equal(sf_field_alloc(&sp, &f), SF_SUCCESS);
+    fi = sf_field_get_info(f);
+    assert_true(fi->px < 2 * 199);
+    assert_true(fi->cov_error < 1e-13);
+    sf_field_free(f);
+    sp.sep_fn = NULL;
+    f = (sf_field *)1;
+    assert_int_equal(sf_field_alloc(&sp, &f), SF_EINVAL);
+    assert_null(f);
+    sp.kernel = NULL;
+    sp.l = NAN;
+    assert_int_equal(sf_field_alloc(&sp, &f), SF_EINVAL);
+}
+
 int main(void)
 {
     sf_init();
@@ -139,6 +400,12 @@ int main(void)
         cmocka_unit_test(box_limits),
         cmocka_unit_test(plan_choice),
         cmocka_unit_test(effective_field),
+        cmocka_unit_test(cellavg_init_edges),
+        cmocka_unit_test(cof_box_marks),
+        cmocka_unit_test(cellavg_plan_refusals),
+        cmocka_unit_test(cellavg_plan_edges),
+        cmocka_unit_test(osc_point_values_refused),
+        cmocka_unit_test(sep_sum_embedding),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -11,11 +11,13 @@
 /* the fault hooks (sf_alloc.h): declared only for a fault-injection build */
 #define SF_FAULT_INJECTION 1
 #include "test_util.h"
+#include "cellavg.h"
 #include "cof.h"
 #include "contact.h"
 #include "field.h"
 #include "lnfield.h"
 #include "montecarlo.h"
+#include "numplan.h"
 #include "oscillator.h"
 #include "qoi.h"
 #include "scene.h"
@@ -70,6 +72,19 @@ static void scene_small(sf_scene *s)
     s->l = 0.25;
     s->strip_halfwidth = 0.05;
     s->cells = 6;
+    s->rtol = 1e-6;
+}
+
+/* cof_model = cell_average (cellavg.h), chosen by auto at l/R = 0.01 on
+ * a short belt and a narrow strip: the effective field's separable-sum
+ * embedding is ~1e5 points, cheap enough to plan once per allocation */
+static void scene_cellavg(sf_scene *s)
+{
+    sf_scene_default(s);
+    s->l = 0.005;
+    s->T = 2;
+    s->t_skip = 0;
+    s->strip_halfwidth = 0.01;
     s->rtol = 1e-6;
 }
 
@@ -173,6 +188,11 @@ static void cof_plans(void **state)
     c.s.cof = SF_COF_VARIABLE;
     assert_int_equal(plan_and_draw(&c), SF_SUCCESS);
     assert_int_equal(walk("plan + draw (variable)", plan_and_draw, &c, SF_SUCCESS, 0), 2);
+    memset(&c, 0, sizeof c);
+    scene_cellavg(&c.s);
+    assert_int_equal(sf_numplan_cell_average(&c.s, NULL, NULL), 1);
+    assert_int_equal(plan_and_draw(&c), SF_SUCCESS);
+    assert_true(walk("plan + draw (cell averages, separable-sum embedding)", plan_and_draw, &c, SF_SUCCESS, 0) > 10);
 }
 
 static int from_scene(void *ctx)
@@ -249,6 +269,39 @@ static int field(void *ctx)
     return rc;
 }
 
+/* A field and one sample from a fixed seed, compared with the run
+ * without a failure (a recovered failure leaves no stale table). */
+typedef struct {
+    sf_field_spec sp;
+    double ref[3];
+    int have_ref;
+} field_ctx;
+
+static int field_bits(void *ctx)
+{
+    field_ctx *c = ctx;
+    sf_field *f = (sf_field *)1;
+    int rc = sf_field_alloc(&c->sp, &f);
+    if (!sf_usable(rc)) {
+        assert_null(f);
+        return rc;
+    }
+    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+    gsl_rng_set(rng, 5);
+    size_t mn = c->sp.m * c->sp.n;
+    double *v = malloc(mn * sizeof *v);
+    assert_int_equal(sf_field_sample(f, rng, v), SF_SUCCESS);
+    double r[3] = { v[0], v[mn / 2], sf_field_get_info(f)->cov_error };
+    if (c->have_ref)
+        assert_memory_equal(r, c->ref, sizeof r);
+    memcpy(c->ref, r, sizeof r);
+    c->have_ref = 1;
+    free(v);
+    gsl_rng_free(rng);
+    sf_field_free(f);
+    return rc;
+}
+
 static int lnfield(void *ctx)
 {
     sf_lnfield *f = (sf_lnfield *)1;
@@ -290,6 +343,19 @@ static void fields(void **state)
     sf_field_spec_default(&sp, 64, 8, 0.05, 0.05, 1.0);
     sp.pad_cap = 1.5;   /* truncated: SF_ETRUNC, usable */
     walk("sf_field_alloc (padding cap)", field, &sp, SF_ETRUNC, 0);
+    /* the cell-averaged COF's kernel: a separable sum with a short support
+     * (1-D tables per period, the target at the true lags) */
+    sf_cellavg ca;
+    double box = 0.03125;   /* 32 cells on a disc of radius 0.5 m */
+    assert_int_equal(sf_cellavg_init(&ca, 0.5, 0.1, 0.005, box), SF_SUCCESS);
+    field_ctx fc = { .have_ref = 0 };
+    sf_field_spec_default(&fc.sp, 120, 40, box / 3, box / 3, 0.005);
+    fc.sp.sep_terms = ca.nterms;
+    fc.sp.sep_fn = sf_cellavg_septerm;
+    fc.sp.sep_params = &ca;
+    fc.sp.support = sf_cellavg_support(&ca);
+    assert_int_equal(field_bits(&fc), SF_SUCCESS);
+    assert_true(walk("sf_field_alloc (separable-sum kernel, short support)", field_bits, &fc, SF_SUCCESS, 0) > 5);
     sf_scene s;
     scene_small(&s);
     s.nx = 16;
@@ -421,6 +487,11 @@ static void oscillator(void **state)
     c.s.cof_generator = SF_COFGEN_TILES;
     assert_int_equal(osc(&c), SF_SUCCESS);
     walk("oscillator, 3-DOF on a tiled window", osc, &c, SF_SUCCESS, 0);
+    memset(&c, 0, sizeof c);
+    scene_cellavg(&c.s);   /* the Cartesian quadrature on cell averages */
+    assert_int_equal(sf_numplan_cell_average(&c.s, NULL, NULL), 1);
+    assert_int_equal(osc(&c), SF_SUCCESS);
+    assert_true(walk("oscillator, 3-DOF on cell averages", osc, &c, SF_SUCCESS, 0) > 20);
 }
 
 static void *ws_alloc(void *ctx)
