@@ -296,7 +296,9 @@ static void cellavg_plan_edges(void **state)
     out[len] = '\0';
     fclose(f);
     assert_non_null(strstr(out, "cof_model = cell_average (set by the scene)"));
-    assert_non_null(strstr(out, "cells = 56 per diameter (chosen for qoi_tol"));
+    char want[64];
+    snprintf(want, sizeof want, "cells = %d per diameter (chosen for qoi_tol", SF_PLAN_CELLAVG_MAX_CELLS);
+    assert_non_null(strstr(out, want));
     assert_non_null(strstr(out, "plan warning: cof_model = cell_average"));
     /* chosen by auto at l/R = 0.01, cells set by the scene (40) */
     s.l = 0.005;
