@@ -156,11 +156,8 @@ static int chk_covariance(const sf_case *c, sf_result *r)
         double sum = 0, ss = 0, cap_n = (double)s.samples * (double)(in->nx / step + 1) * (double)(in->ny / step + 1);
         double *vals = check_alloc((size_t)cap_n * sizeof *vals);
         for (size_t i = 0; i < s.samples && !rc; i++) {
-            gsl_rng *g = gsl_rng_alloc(gsl_rng_mt19937);
-            gsl_rng_set(g, sf_mc_seed(s.seed, i));
             sf_cof *cof = NULL;
-            rc = sf_cof_plan_draw(p, g, &cof);
-            gsl_rng_free(g);
+            rc = check_draw(p, s.seed, i, &cof);
             const double *mu;
             if (!rc && !(rc = sf_cof_grid_view(cof, NULL, NULL, NULL, NULL, NULL, NULL, &mu)))
                 for (size_t jy = 0; jy < in->ny; jy += step)
@@ -404,12 +401,8 @@ static int vs_point(const sf_case *c, sf_result *r, int plan)
             /* the same stream twice: one draw for the box filter (a
              * window slides along the whole strip), one for the run */
             sf_cof *fine = NULL, *fine2 = NULL, *coarse = NULL;
-            for (int d = 0; d < 2 && !rc; d++) {
-                gsl_rng *g = gsl_rng_alloc(gsl_rng_mt19937);
-                gsl_rng_set(g, sf_mc_seed(s0->seed, i));
-                rc = sf_cof_plan_draw(cp, g, d ? &fine : &fine2);
-                gsl_rng_free(g);
-            }
+            for (int d = 0; d < 2 && !rc; d++)
+                rc = check_draw(cp, s0->seed, i, d ? &fine : &fine2);
             if (!rc && !(coarse = box_filter(fine2, &sc, box, r)))
                 rc = SF_EFAIL;
             sf_cof_free(fine2);

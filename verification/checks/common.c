@@ -1,6 +1,7 @@
 #include "common.h"
 #include "../stats.h"
 #include "lnfield.h"
+#include "montecarlo.h"
 #include "sf_error.h"
 
 #include <math.h>
@@ -372,4 +373,16 @@ int check_qoi_gap(const sf_scene *s, const sf_cof *cof, const sf_scene *sref, co
     }
     *gap = e;
     return SF_SUCCESS;
+}
+
+int check_draw(sf_cof_plan *p, unsigned long seed, size_t i, sf_cof **out)
+{
+    *out = NULL;
+    gsl_rng *g = gsl_rng_alloc(gsl_rng_mt19937);
+    if (!g)
+        return SF_ENOMEM;
+    gsl_rng_set(g, sf_mc_seed(seed, i));
+    int rc = sf_cof_plan_draw(p, g, out);
+    gsl_rng_free(g);
+    return rc;
 }

@@ -119,6 +119,10 @@ int check_osc_run(const sf_scene *s, gsl_rng *rng, const sf_cof *cof, double sam
  * run (s, cof) against the reference run (sref, cref): max_q |q - q_ref| /
  * |q_ref|, +inf when either run has no complete cycle (NaN QoIs), so such
  * a realisation fails a gate instead of passing it. */
+/* Realisation i of plan p from its own stream (seed, i) (sf_mc_seed), as
+ * a Monte Carlo sweep draws it: the same field whoever asks and when. */
+int check_draw(sf_cof_plan *p, unsigned long seed, size_t i, sf_cof **out);
+
 int check_qoi_gap(const sf_scene *s, const sf_cof *cof, const sf_scene *sref, const sf_cof *cref, double *gap,
                   sf_result *r);
 

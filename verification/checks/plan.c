@@ -339,11 +339,8 @@ static int chk_qoi_tol(const sf_case *c, sf_result *r)
         sf_numplan np = { 0 };
         sf_scene ref = s;
         for (size_t i = 0; i < n && !rc; i++) {
-            gsl_rng *g = gsl_rng_alloc(gsl_rng_mt19937);
-            gsl_rng_set(g, sf_mc_seed(s.seed, i));
             sf_cof *cof = NULL;
-            rc = sf_cof_plan_draw(cp, g, &cof);
-            gsl_rng_free(g);
+            rc = check_draw(cp, s.seed, i, &cof);
             sf_osc *o = NULL;
             if (!rc && !(rc = sf_osc_alloc(&s, cof, &o, err, sizeof err))) {
                 np = *sf_osc_get_plan(o);
