@@ -58,11 +58,11 @@ int sf_cof_alloc_uniform(double mu_s, sf_cof **out)
     return SF_SUCCESS;
 }
 
-int sf_cof_alloc_grid(size_t m, size_t n, double x0, double y0,
-                      double dx, double dy, const double *mu_s, sf_cof **out)
+/* A gridded COF whose m*n values the caller writes, then grid_done. */
+static int grid_new(size_t m, size_t n, double x0, double y0, double dx, double dy, sf_cof **out)
 {
     *out = NULL;
-    if (m < 2 || n < 2 || !(dx > 0) || !(dy > 0) || !mu_s || m > INT_MAX / n)
+    if (m < 2 || n < 2 || !(dx > 0) || !(dy > 0) || m > INT_MAX / n)
         return SF_EINVAL;   /* int indices (sf_cof_view) */
     sf_cof *c = cof_new(SF_COF_FIELD);
     if (!c)
@@ -72,10 +72,6 @@ int sf_cof_alloc_grid(size_t m, size_t n, double x0, double y0,
         free(c);
         return SF_ENOMEM;
     }
-    memcpy(c->grid, mu_s, m * n * sizeof *c->grid);
-    c->mu_max = mu_s[0];
-    for (size_t i = 1; i < m * n; i++)
-        c->mu_max = fmax(c->mu_max, mu_s[i]);
     c->m = m;
     c->n = n;
     c->x0 = x0;
@@ -83,6 +79,31 @@ int sf_cof_alloc_grid(size_t m, size_t n, double x0, double y0,
     c->dx = dx;
     c->dy = dy;
     *out = c;
+    return SF_SUCCESS;
+}
+
+static void grid_done(sf_cof *c)
+{
+    double mx = c->grid[0];
+    for (size_t i = 1; i < c->m * c->n; i++) {   /* fmax's value (a NaN is skipped), without its call per point */
+        double v = c->grid[i];
+        if (v > mx || isnan(mx))
+            mx = v;
+    }
+    c->mu_max = mx;
+}
+
+int sf_cof_alloc_grid(size_t m, size_t n, double x0, double y0,
+                      double dx, double dy, const double *mu_s, sf_cof **out)
+{
+    *out = NULL;
+    if (!mu_s)
+        return SF_EINVAL;
+    int rc = grid_new(m, n, x0, y0, dx, dy, out);
+    if (rc)
+        return rc;
+    memcpy((*out)->grid, mu_s, m * n * sizeof *mu_s);
+    grid_done(*out);
     return SF_SUCCESS;
 }
 
@@ -238,7 +259,6 @@ struct sf_cof_plan {
     sf_lognormal ln;
     double mu_mean;
     sf_lnfield *field;
-    double *buf;
     double l, R;               /* tiles: correlation length, disc radius [m] */
     sf_cellavg ca;             /* cell averages: the box-averaged covariance */
     sf_field *cfield;          /* cell averages: its Gaussian field (circulant embedding) */
@@ -306,11 +326,12 @@ static int plan_cell_average(sf_cof_plan *p, const sf_scene *s, double box, doub
     fs.pad_cap = s->pad_cap;
     fs.eig_rel_tol = s->eig_tol;
     fs.measure = s->fftw_planner;
+    fs.defer_covariance = 1;   /* a run only samples: sf_cof_plan_cell_field's users measure it */
+    fs.sample_real = 1;        /* one field per draw (sf_cof_plan_draw): a real FFT, half the work */
     rc = sf_field_alloc(&fs, &p->cfield);
     if (!sf_usable(rc))
         return sf_seterr(err, errlen, rc, "cannot plan the %.0f x %.0f cell-averaged strip field", nx, ny);
-    p->buf = sf_malloc(p->info.nx * p->info.ny * sizeof *p->buf);
-    return p->buf ? SF_SUCCESS : SF_ENOMEM;
+    return SF_SUCCESS;
 }
 
 int sf_cof_plan_alloc(const sf_scene *s, sf_cof_plan **out, char *err, size_t errlen)
@@ -393,7 +414,7 @@ int sf_cof_plan_alloc(const sf_scene *s, sf_cof_plan **out, char *err, size_t er
         gs.nx = p->info.nx;
         gs.ny = p->info.ny;
         gs.dx = gs.dy = h;
-        rc = sf_lnfield_alloc(&gs, &p->field);
+        rc = sf_lnfield_alloc_sampler(&gs, &p->field);
         if (rc == SF_ETOOBIG) {   /* the embedding is over its own cap */
             free(p);
             return sf_seterr(err, errlen, SF_ETOOBIG,
@@ -403,11 +424,6 @@ int sf_cof_plan_alloc(const sf_scene *s, sf_cof_plan **out, char *err, size_t er
         if (!sf_usable(rc)) {
             free(p);
             return sf_seterr(err, errlen, rc, "cannot plan the %g x %g strip field", nx, ny);
-        }
-        p->buf = sf_malloc(p->info.nx * p->info.ny * sizeof *p->buf);
-        if (!p->buf) {
-            sf_cof_plan_free(p);
-            return SF_ENOMEM;
         }
     }
     *out = p;
@@ -420,13 +436,12 @@ void sf_cof_plan_free(sf_cof_plan *p)
         return;
     sf_lnfield_free(p->field);
     sf_field_free(p->cfield);
-    free(p->buf);
     free(p);
 }
 
 const sf_cof_plan_info *sf_cof_plan_get_info(const sf_cof_plan *p) { return &p->info; }
 double sf_cof_plan_cell_std(const sf_cof_plan *p) { return p->cfield ? sqrt(sf_cellavg_var(&p->ca)) : 0; }
-const struct sf_field *sf_cof_plan_cell_field(const sf_cof_plan *p) { return p->cfield; }
+struct sf_field *sf_cof_plan_cell_field(const sf_cof_plan *p) { return p->cfield; }
 
 /* A tiled realisation: its key is 64 bits from rng (two 32-bit draws);
  * the window starts over the disc at the origin. */
@@ -478,26 +493,27 @@ int sf_cof_plan_draw(sf_cof_plan *p, gsl_rng *rng, sf_cof **out)
     case SF_COF_FIELD: {
         if (p->info.generator == SF_COFGEN_TILES)
             return draw_window(p, rng, out);
-        if (p->cfield) {   /* cell averages: mubar + sd G, G of the box-averaged correlation */
-            const sf_cof_plan_info *i = &p->info;
-            sf_field_discard(p->cfield);
-            int rc = sf_field_sample(p->cfield, rng, p->buf);
-            if (rc)
-                return rc;
-            double sd = sqrt(sf_cellavg_var(&p->ca));
-            for (size_t k = 0; k < i->nx * i->ny; k++)
-                p->buf[k] = p->ca.mubar + sd * p->buf[k];
-            rc = sf_cof_alloc_grid(i->nx, i->ny, i->x0, i->y0, i->dx, i->dy, p->buf, out);
-            if (!rc)
-                (*out)->box = i->box;
-            return rc;
-        }
-        sf_field_discard(sf_lnfield_gaussian(p->field));
-        int rc = sf_lnfield_sample(p->field, rng, NULL, p->buf);
+        /* the strip drawn straight into the COF's grid, a function of the
+         * rng state alone (sf_field_sample_fresh) */
+        const sf_cof_plan_info *i = &p->info;
+        sf_cof *c;
+        int rc = grid_new(i->nx, i->ny, i->x0, i->y0, i->dx, i->dy, &c);
         if (rc)
             return rc;
-        const sf_cof_plan_info *i = &p->info;
-        return sf_cof_alloc_grid(i->nx, i->ny, i->x0, i->y0, i->dx, i->dy, p->buf, out);
+        rc = p->cfield ? sf_field_sample_fresh(p->cfield, rng, c->grid) : sf_lnfield_sample_fresh(p->field, rng, c->grid);
+        if (rc) {
+            sf_cof_free(c);
+            return rc;
+        }
+        if (p->cfield) {   /* cell averages: mubar + sd G, G of the box-averaged correlation */
+            double sd = sqrt(sf_cellavg_var(&p->ca));
+            for (size_t k = 0; k < i->nx * i->ny; k++)
+                c->grid[k] = p->ca.mubar + sd * c->grid[k];
+            c->box = i->box;
+        }
+        grid_done(c);
+        *out = c;
+        return SF_SUCCESS;
     }
     }
     return SF_EINVAL;

@@ -256,10 +256,11 @@ int sf_cof_plan_alloc_mt(const sf_scene *s, sf_cof_plan **out, char *err, size_t
 void sf_cof_plan_free_mt(sf_cof_plan *p);
 const sf_cof_plan_info *sf_cof_plan_get_info(const sf_cof_plan *p);
 /* cof_model = cell_average (info.box > 0): the effective field's std
- * sqrt(Var mu_h) and its Gaussian plan (field.h: covariance, target);
- * 0 and NULL otherwise. */
+ * sqrt(Var mu_h) and its Gaussian plan (field.h: covariance, target;
+ * planned with defer_covariance: sf_field_measure_covariance before
+ * reading either); 0 and NULL otherwise. */
 double sf_cof_plan_cell_std(const sf_cof_plan *p);
-const struct sf_field *sf_cof_plan_cell_field(const sf_cof_plan *p);
+struct sf_field *sf_cof_plan_cell_field(const sf_cof_plan *p);
 /* One realisation from rng (nothing is drawn for a uniform COF).  A
  * function of the rng state alone: no field is carried over between
  * draws (each costs one FFT of which the second field is discarded).

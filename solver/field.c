@@ -18,6 +18,7 @@
 #include <string.h>
 #include <complex.h>
 #include <fftw3.h>
+#include <gsl/gsl_math.h>
 #include <gsl/gsl_randist.h>
 
 struct sf_field {
@@ -25,7 +26,8 @@ struct sf_field {
     sf_field_info info;
     size_t M;
     double *lx, *ly;        /* raw 1-D eigenvalues (separable path) */
-    double *lam;            /* raw 2-D eigenvalues, before clamping */
+    double *lam;            /* raw 2-D eigenvalues, before clamping, of a general kernel
+                               (the separable paths rebuild them by rows: eig_row) */
     double *amp;            /* sqrt(max(lambda, 0)/M), length M */
     double *cov;            /* produced covariance at grid lags, m*n */
     fftw_complex *work;
@@ -34,6 +36,9 @@ struct sf_field {
     int have_kept;
     double *tx, *ty;        /* separable-sum kernel: sep_fn(t, min(i, px-i) dx) at tx[i + px t] (ty alike) */
     size_t tpx, tpy;        /* the periods the tables were made for */
+    double *sx, *sy;        /* their 1-D DFTs per term (real: each row is even): the 2-D
+                               eigenvalues are sum_t sx[kx + px t] sy[ky + py t] */
+    int cov_done;           /* cov and info.cov_error computed */
 };
 
 static double sq_exp(double r, double l)
@@ -89,8 +94,10 @@ static size_t min_period(size_t m)
     return m <= 1 ? 1 : 2 * (m - 1);
 }
 
-/* 1-D eigenvalues of the squared-exponential circulant of period P. */
-static int eig_1d(size_t P, double d, double l, double *lam)
+/* The DFTs of `rows` real even sequences of period P (rows[j + P r],
+ * j < P), into out[k + P r]: real, since each row is even.  One FFTW plan
+ * (FFTW_ESTIMATE, in place) for all rows. */
+static int dft_even_rows(size_t P, size_t rows, const double *in, double *out)
 {
     fftw_complex *buf = SF_FALLIBLE(fftw_alloc_complex(P));
     if (!buf)
@@ -100,16 +107,26 @@ static int eig_1d(size_t P, double d, double l, double *lam)
         fftw_free(buf);
         return SF_ENOMEM;
     }
-    for (size_t j = 0; j < P; j++) {
-        size_t jj = j < P - j ? j : P - j;
-        buf[j] = sq_exp((double)jj * d, l);
+    for (size_t r = 0; r < rows; r++) {
+        for (size_t j = 0; j < P; j++)
+            buf[j] = in[j + P * r];
+        fftw_execute(p);
+        for (size_t k = 0; k < P; k++)
+            out[k + P * r] = creal(buf[k]);
     }
-    fftw_execute(p);
-    for (size_t k = 0; k < P; k++)
-        lam[k] = creal(buf[k]);
     fftw_destroy_plan(p);
     fftw_free(buf);
     return SF_SUCCESS;
+}
+
+/* 1-D eigenvalues of the squared-exponential circulant of period P. */
+static int eig_1d(size_t P, double d, double l, double *lam)
+{
+    for (size_t j = 0; j < P; j++) {
+        size_t jj = j < P - j ? j : P - j;
+        lam[j] = sq_exp((double)jj * d, l);
+    }
+    return dft_even_rows(P, 1, lam, lam);
 }
 
 /* NaN-propagating max (fmax and `if (x > m)` drop a NaN, so one NaN
@@ -192,26 +209,26 @@ static int build_separable(sf_field *f)
     f->info.py = py;
     f->info.separable = 1;
     f->info.truncated = capx || capy;
-    f->M = px * py;
-    f->lam = sf_malloc(f->M * sizeof *f->lam);
-    if (!f->lam)
-        return SF_ENOMEM;
-    for (size_t j = 0; j < py; j++)
-        for (size_t i = 0; i < px; i++)
-            f->lam[i + px * j] = f->lx[i] * f->ly[j];
+    f->M = px * py;   /* the 2-D eigenvalues lx[kx] ly[ky]: eig_row */
     return SF_SUCCESS;
 }
 
 /* The separable-sum kernel's 1-D tables for periods (px, py): each
  * factor once per lag, so the M entries of the first row cost
  * sep_terms multiply-adds each (the same sum, in the same order, as
- * kernel_at). */
+ * kernel_at); and their 1-D DFTs, from which the 2-D eigenvalues follow
+ * without a 2-D FFT (the DFT of a sum of outer products is the sum of
+ * the outer products of the DFTs). */
 static int sep_tables(sf_field *f, size_t px, size_t py)
 {
     const sf_field_spec *s = &f->spec;
     size_t T = (size_t)s->sep_terms;
     free(f->tx);
     free(f->ty);
+    free(f->sx);
+    free(f->sy);
+    f->sx = f->sy = NULL;
+    f->tpx = f->tpy = 0;
     f->tx = sf_malloc(T * px * sizeof *f->tx);
     f->ty = sf_malloc(T * py * sizeof *f->ty);
     if (!f->tx || !f->ty)
@@ -224,7 +241,40 @@ static int sep_tables(sf_field *f, size_t px, size_t py)
     }
     f->tpx = px;
     f->tpy = py;
-    return SF_SUCCESS;
+    f->sx = sf_malloc(T * px * sizeof *f->sx);
+    f->sy = sf_malloc(T * py * sizeof *f->sy);
+    if (!f->sx || !f->sy)
+        return SF_ENOMEM;
+    int rc = dft_even_rows(px, T, f->tx, f->sx);
+    if (!rc)
+        rc = dft_even_rows(py, T, f->ty, f->sy);
+    /* even exactly, not to round-off: lambda(-k) = lambda(k) bit for bit,
+     * which a real sampler's Hermitian draw needs (draw_real) */
+    for (size_t t = 0; t < T; t++) {
+        for (size_t k = 1; 2 * k < px; k++)
+            f->sx[px - k + px * t] = f->sx[k + px * t];
+        for (size_t k = 1; 2 * k < py; k++)
+            f->sy[py - k + py * t] = f->sy[k + py * t];
+    }
+    return rc;
+}
+
+/* Row ky of the separable-sum embedding's 2-D eigenvalues (sep_tables):
+ * lam[kx] = sum_t sx[kx + px t] sy[ky + py t], kx < px, smallest terms
+ * first as in kernel_at.  M sep_terms multiply-adds in all, in place of a
+ * 2-D FFT of the first row (eigenvalues equal to it to round-off:
+ * tests/test_cellavg.c). */
+static void sep_eig_row(const sf_field *f, size_t ky, double *lam)
+{
+    size_t px = f->tpx, py = f->tpy, T = (size_t)f->spec.sep_terms;
+    for (size_t kx = 0; kx < px; kx++)
+        lam[kx] = 0;
+    for (size_t t = T; t-- > 0;) {
+        const double *a = f->sx + px * t;
+        double b = f->sy[ky + py * t];
+        for (size_t kx = 0; kx < px; kx++)
+            lam[kx] += a[kx] * b;
+    }
 }
 
 /* Entry (i, j) of the embedding's first row for periods (px, py). */
@@ -241,15 +291,10 @@ static double first_row_at(const sf_field *f, size_t px, size_t py, size_t i, si
     return kernel_at(s, (double)ii * s->dx, (double)jj * s->dy);
 }
 
-/* General (non-separable) kernel: 2-D first row, 2-D FFT, pad both axes. */
+/* General (non-separable) kernel: 2-D first row, 2-D FFT. */
 static int eig_2d(sf_field *f, size_t px, size_t py, double *lam)
 {
     size_t M = px * py;
-    if (f->spec.sep_terms > 0) {
-        int rc = sep_tables(f, px, py);
-        if (rc)
-            return rc;
-    }
     fftw_complex *buf = SF_FALLIBLE(fftw_alloc_complex(M));
     if (!buf)
         return SF_ENOMEM;
@@ -266,6 +311,83 @@ static int eig_2d(sf_field *f, size_t px, size_t py, double *lam)
         lam[k] = creal(buf[k]);
     fftw_destroy_plan(p);
     fftw_free(buf);
+    return SF_SUCCESS;
+}
+
+/* Row ky of the 2-D eigenvalues into row[px], before clamping: the outer
+ * product of the 1-D sets (separable kernel), from the 1-D spectra
+ * (separable-sum kernel), else a copy of f->lam's row.  No path keeps an
+ * M-sized array but the last. */
+static void eig_row(const sf_field *f, size_t ky, double *row)
+{
+    size_t px = f->info.px;
+    if (f->info.separable)
+        for (size_t kx = 0; kx < px; kx++)
+            row[kx] = f->lx[kx] * f->ly[ky];
+    else if (f->lam)
+        memcpy(row, f->lam + px * ky, px * sizeof *row);
+    else
+        sep_eig_row(f, ky, row);
+}
+
+/* The sampling amplitudes sqrt(lambda+/M) for the periods in f->info
+ * (the stored half, kx <= px/2, for a real sampler), with the
+ * eigenvalues' extremes and the count clamped at zero (the nearest PSD
+ * circulant in the Frobenius norm), row by row: no M-sized eigenvalue
+ * array on the separable paths. */
+static int amp_fill(sf_field *f)
+{
+    size_t px = f->info.px, py = f->info.py, hx = f->spec.sample_real ? px / 2 + 1 : px;
+    free(f->amp);
+    f->amp = sf_malloc(hx * py * sizeof *f->amp);
+    double *row = sf_malloc(px * sizeof *row);
+    if (!f->amp || !row) {
+        free(row);
+        return SF_ENOMEM;
+    }
+    double invM = 1.0 / ((double)px * (double)py);
+    size_t nc = 0;
+    for (size_t ky = 0; ky < py; ky++) {
+        double mn, mx;
+        eig_row(f, ky, row);
+        min_max(row, px, &mn, &mx);
+        f->info.lambda_min = ky ? nan_min(f->info.lambda_min, mn) : mn;
+        f->info.lambda_max = ky ? nan_max(f->info.lambda_max, mx) : mx;
+        for (size_t kx = 0; kx < px; kx++) {
+            double l = row[kx];
+            if (l < 0.0) { l = 0.0; nc++; }
+            if (kx < hx)
+                f->amp[kx + hx * ky] = sqrt(l * invM);
+        }
+    }
+    free(row);
+    f->info.n_clamped = nc;
+    return SF_SUCCESS;
+}
+
+/* The 2-D eigenvalues' extremes for the periods in f->info: the
+ * separable-sum kernel's from its 1-D spectra with the amplitudes
+ * (amp_fill: one pass), any other kernel's from the 2-D FFT of its first
+ * row, kept in f->lam. */
+static int eig_bounds(sf_field *f, double *mn, double *mx)
+{
+    size_t px = f->info.px, py = f->info.py;
+    if (f->spec.sep_terms > 0) {
+        int rc = sep_tables(f, px, py);
+        if (!rc)
+            rc = amp_fill(f);
+        *mn = f->info.lambda_min;
+        *mx = f->info.lambda_max;
+        return rc;
+    }
+    free(f->lam);
+    f->lam = sf_malloc(px * py * sizeof *f->lam);
+    if (!f->lam)
+        return SF_ENOMEM;
+    int rc = eig_2d(f, px, py, f->lam);
+    if (rc)
+        return rc;
+    min_max(f->lam, px * py, mn, mx);
     return SF_SUCCESS;
 }
 
@@ -297,15 +419,12 @@ static int build_general(sf_field *f)
     for (;;) {
         if (px > s->max_points / py)
             return SF_ETOOBIG;
-        free(f->lam);
-        f->lam = sf_malloc(px * py * sizeof *f->lam);
-        if (!f->lam)
-            return SF_ENOMEM;
-        int rc = eig_2d(f, px, py, f->lam);
+        double prev = mx > 0 ? -mn / mx : 0;
+        f->info.px = px;
+        f->info.py = py;
+        int rc = eig_bounds(f, &mn, &mx);
         if (rc)
             return rc;
-        double prev = mx > 0 ? -mn / mx : 0;
-        min_max(f->lam, px * py, &mn, &mx);
         if (mn >= -s->eig_rel_tol * mx || s->no_padding)
             break;
         /* An indefinite kernel (e.g. a pre-corrected Nataf correlation) has
@@ -329,34 +448,66 @@ static int build_general(sf_field *f)
     return SF_SUCCESS;
 }
 
-/* Clamp the 2-D eigenvalues at zero (the nearest PSD circulant in the
- * Frobenius norm), set the sampling amplitudes sqrt(lambda+/M), and compute
- * the covariance this produces on the grid lags by one inverse FFT (done in
- * the work array before the sampling plan exists). */
+/* The amplitudes (unless the padding loop made them for these periods)
+ * and the sampling FFT's array: M complex values, or the half spectrum a
+ * real sampler transforms in place (its real output in rows of 2 hx). */
 static int finish_plan(sf_field *f)
 {
-    const sf_field_spec *s = &f->spec;
-    size_t px = f->info.px, py = f->info.py, M = f->M;
-    f->amp = sf_malloc(M * sizeof *f->amp);
-    f->cov = sf_malloc(s->m * s->n * sizeof *f->cov);
-    f->work = SF_FALLIBLE(fftw_alloc_complex(M));
-    if (!f->amp || !f->cov || !f->work)
-        return SF_ENOMEM;
-    double mn, mx, invM = 1.0 / (double)M;
-    min_max(f->lam, M, &mn, &mx);
-    f->info.lambda_min = mn;
-    f->info.lambda_max = mx;
-    size_t nc = 0;
-    for (size_t k = 0; k < M; k++) {
-        double l = f->lam[k];
-        if (l < 0.0) { l = 0.0; nc++; }
-        f->amp[k] = sqrt(l * invM);
-        f->work[k] = l;
+    size_t px = f->info.px, py = f->info.py;
+    if (f->spec.sep_terms == 0) {   /* the separable-sum path has them from eig_bounds */
+        int rc = amp_fill(f);
+        if (rc)
+            return rc;
     }
-    f->info.n_clamped = nc;
-    fftw_plan p = SF_FALLIBLE(fftw_plan_dft_2d((int)py, (int)px, f->work, f->work, FFTW_BACKWARD, FFTW_ESTIMATE));
-    if (!p)
+    f->work = SF_FALLIBLE(fftw_alloc_complex(f->spec.sample_real ? (px / 2 + 1) * py : px * py));
+    if (!f->work)
         return SF_ENOMEM;
+    f->info.cov_error = NAN;   /* until measure_cov */
+    return SF_SUCCESS;
+}
+
+/* The plan's 2-D FFT over f->work: complex to complex with `sign`, or
+ * for a real sampler half spectrum to real, in place (the c2r direction is
+ * FFTW_BACKWARD; the eigenvalues are even, so the sign changes nothing). */
+static fftw_plan plan_2d(sf_field *f, int sign, unsigned flags)
+{
+    int px = (int)f->info.px, py = (int)f->info.py;
+    if (f->spec.sample_real)
+        return SF_FALLIBLE(fftw_plan_dft_c2r_2d(py, px, f->work, (double *)f->work, flags));
+    return SF_FALLIBLE(fftw_plan_dft_2d(py, px, f->work, f->work, sign, flags));
+}
+
+/* The real output of the last transform at embedding point (i, j). */
+static double produced(const sf_field *f, size_t i, size_t j)
+{
+    if (f->spec.sample_real)
+        return ((const double *)f->work)[i + 2 * (f->info.px / 2 + 1) * j];
+    return creal(f->work[i + f->info.px * j]);
+}
+
+/* The covariance the plan produces on the grid lags, by one inverse FFT of
+ * the clamped eigenvalues in the work array, and its largest distance to
+ * the target (info.cov_error). */
+static int measure_cov(sf_field *f)
+{
+    const sf_field_spec *s = &f->spec;
+    size_t px = f->info.px, py = f->info.py, M = f->M, hx = s->sample_real ? px / 2 + 1 : px;
+    double invM = 1.0 / (double)M;
+    double *cov = sf_malloc(s->m * s->n * sizeof *cov), *row = sf_malloc(px * sizeof *row);
+    fftw_plan p = NULL;
+    if (cov && row)
+        p = plan_2d(f, FFTW_BACKWARD, FFTW_ESTIMATE);
+    if (!p) {
+        free(cov);
+        free(row);
+        return SF_ENOMEM;
+    }
+    for (size_t ky = 0; ky < py; ky++) {   /* the clamped eigenvalues (the stored half of a real sampler) */
+        eig_row(f, ky, row);
+        for (size_t kx = 0; kx < hx; kx++)
+            f->work[kx + hx * ky] = row[kx] < 0.0 ? 0.0 : row[kx];
+    }
+    free(row);
     fftw_execute(p);
     fftw_destroy_plan(p);
     double err = 0.0;
@@ -372,6 +523,7 @@ static int finish_plan(sf_field *f)
         if (!ttx || !tty) {
             free(ttx);
             free(tty);
+            free(cov);
             return SF_ENOMEM;
         }
         for (size_t t = 0; t < T; t++) {
@@ -383,8 +535,8 @@ static int finish_plan(sf_field *f)
     }
     for (size_t j = 0; j < s->n; j++)
         for (size_t i = 0; i < s->m; i++) {
-            double v = creal(f->work[(i % px) + px * (j % py)]) * invM;
-            f->cov[i + s->m * j] = v;
+            double v = produced(f, i % px, j % py) * invM;
+            cov[i + s->m * j] = v;
             double tg = 0;
             if (T)
                 for (size_t t = T; t-- > 0;)   /* kernel_at's order: smallest terms first */
@@ -394,10 +546,18 @@ static int finish_plan(sf_field *f)
             double e = fabs(v - tg);
             err = nan_max(err, e);
         }
-    f->info.cov_error = err;
     free(ttx);
     free(tty);
+    f->cov = cov;
+    f->info.cov_error = err;
     return SF_SUCCESS;
+}
+
+int sf_field_measure_covariance(sf_field *f)
+{
+    if (!f)
+        return SF_EINVAL;
+    return f->cov ? SF_SUCCESS : measure_cov(f);
 }
 
 static int spec_valid(const sf_field_spec *s)
@@ -406,6 +566,7 @@ static int spec_valid(const sf_field_spec *s)
         && isfinite(s->dy) && s->dy > 0.0
         && (s->kernel || (s->sep_terms > 0 && s->sep_fn) || (isfinite(s->l) && s->l > 0.0))
         && !(s->sep_terms > 0 && !s->sep_fn)   /* sep_terms is read before kernel and l: a term needs its factor */
+        && !(s->sample_real && s->sep_terms <= 0)   /* exactly even eigenvalues: sep_tables */
         && isfinite(s->eig_rel_tol) && s->eig_rel_tol >= 0.0
         && isfinite(s->pad_cap) && s->pad_cap >= 1.0 && s->max_points >= 1
         && s->m <= s->max_points && s->n <= s->max_points;
@@ -425,17 +586,14 @@ int sf_field_alloc(const sf_field_spec *spec, sf_field **out)
     int rc = spec->kernel || spec->sep_terms > 0 ? build_general(f) : build_separable(f);
     if (!rc)
         rc = finish_plan(f);
-    if (!rc) {
-        f->kept = sf_malloc(spec->m * spec->n * sizeof *f->kept);
-        if (!f->kept)
-            rc = SF_ENOMEM;
-    }
+    if (!rc && !spec->defer_covariance)
+        rc = measure_cov(f);
     if (!rc) {
         /* FFTW_ESTIMATE: the same plan in every process (DESIGN sec. 8).
          * FFTW_MEASURE overwrites work while timing: nothing in it is
-         * needed any more (finish_plan has extracted the covariance). */
-        f->plan = SF_FALLIBLE(fftw_plan_dft_2d((int)f->info.py, (int)f->info.px, f->work, f->work, FFTW_FORWARD,
-                                               spec->measure ? FFTW_MEASURE : FFTW_ESTIMATE));
+         * needed any more (measure_cov has extracted the covariance, and
+         * a deferred one refills it). */
+        f->plan = plan_2d(f, FFTW_FORWARD, spec->measure ? FFTW_MEASURE : FFTW_ESTIMATE);
         if (!f->plan)
             rc = SF_ENOMEM;
     }
@@ -462,12 +620,48 @@ void sf_field_free(sf_field *f)
     free(f->kept);
     free(f->tx);
     free(f->ty);
+    free(f->sx);
+    free(f->sy);
     free(f);
 }
 
 const sf_field_info *sf_field_get_info(const sf_field *f)
 {
     return &f->info;
+}
+
+/* A real sampler's draw (Hermitian noise on the stored half spectrum,
+ * then the c2r FFT): X = sum_k sqrt(lambda_k/M) xi_k e^{2 pi i j.k/M}
+ * over the whole spectrum with xi_{-k} = conj(xi_k) is real, and with
+ * E|xi_k|^2 = 1, E xi_k^2 = 0 (xi_k = (a + ib)/sqrt 2) off the
+ * self-conjugate points (xi_k = a there) its covariance is the
+ * circulant's sum_k lambda_k/M e^{2 pi i (j - j').k/M}: exact, because
+ * the eigenvalues are exactly even (sep_tables).  The columns kx = 0 and
+ * kx = px/2 hold both k and -k: their rows ky > py/2 are the conjugates of
+ * the rows py - ky drawn before them.  M normals, one real field. */
+static void draw_real(sf_field *f, gsl_rng *rng)
+{
+    size_t px = f->info.px, py = f->info.py, hx = px / 2 + 1;
+    const double *amp = f->amp;
+    fftw_complex *w = f->work;
+    for (size_t ky = 0; ky < py; ky++) {
+        size_t my = ky ? py - ky : 0;   /* the mirror row */
+        for (size_t kx = 0; kx < hx; kx++) {
+            size_t k = kx + hx * ky;
+            int own_mirror = kx == 0 || 2 * kx == px;   /* -k is in the stored half too */
+            if (own_mirror && my == ky) {
+                w[k] = amp[k] * gsl_ran_gaussian_ziggurat(rng, 1.0);
+            } else if (own_mirror && my < ky) {
+                w[k] = conj(w[kx + hx * my]);
+            } else {
+                double a = gsl_ran_gaussian_ziggurat(rng, 1.0);
+                double b = gsl_ran_gaussian_ziggurat(rng, 1.0);
+                double c = amp[k] * M_SQRT1_2;
+                w[k] = c * a + I * (c * b);
+            }
+        }
+    }
+    fftw_execute(f->plan);
 }
 
 static void draw_and_transform(sf_field *f, gsl_rng *rng)
@@ -482,15 +676,24 @@ static void draw_and_transform(sf_field *f, gsl_rng *rng)
     fftw_execute(f->plan);
 }
 
+/* The grid's part of the last FFT: Re into re, Im into im (im may be NULL:
+ * not extracted; a real sampler has none). */
 static void extract(const sf_field *f, double *re, double *im)
 {
     size_t m = f->spec.m, n = f->spec.n, px = f->info.px;
     for (size_t j = 0; j < n; j++) {
         const fftw_complex *row = f->work + px * j;
-        double *r = re + m * j, *q = im + m * j;
-        for (size_t i = 0; i < m; i++) {
+        double *r = re + m * j;
+        if (f->spec.sample_real) {
+            memcpy(r, (const double *)f->work + 2 * (px / 2 + 1) * j, m * sizeof *r);
+            continue;
+        }
+        for (size_t i = 0; i < m; i++)
             r[i] = creal(row[i]);
-            q[i] = cimag(row[i]);
+        if (im) {
+            double *q = im + m * j;
+            for (size_t i = 0; i < m; i++)
+                q[i] = cimag(row[i]);
         }
     }
 }
@@ -502,7 +705,7 @@ void sf_field_discard(sf_field *f)
 
 int sf_field_sample_pair(sf_field *f, gsl_rng *rng, double *re, double *im)
 {
-    if (!f || !rng || !re || !im || re == im)
+    if (!f || !rng || !re || !im || re == im || f->spec.sample_real)
         return SF_EINVAL;
     draw_and_transform(f, rng);
     extract(f, re, im);
@@ -512,7 +715,7 @@ int sf_field_sample_pair(sf_field *f, gsl_rng *rng, double *re, double *im)
 
 int sf_field_sample(sf_field *f, gsl_rng *rng, double *out)
 {
-    if (!f || !rng || !out)
+    if (!f || !rng || !out || f->spec.sample_real)
         return SF_EINVAL;
     size_t mn = f->spec.m * f->spec.n;
     if (f->have_kept) {
@@ -520,15 +723,30 @@ int sf_field_sample(sf_field *f, gsl_rng *rng, double *out)
         f->have_kept = 0;
         return SF_SUCCESS;
     }
+    if (!f->kept && !(f->kept = sf_malloc(mn * sizeof *f->kept)))   /* on first use: sf_field_sample_fresh needs none */
+        return SF_ENOMEM;
     draw_and_transform(f, rng);
     extract(f, out, f->kept);
     f->have_kept = 1;
     return SF_SUCCESS;
 }
 
+int sf_field_sample_fresh(sf_field *f, gsl_rng *rng, double *out)
+{
+    if (!f || !rng || !out)
+        return SF_EINVAL;
+    if (f->spec.sample_real)
+        draw_real(f, rng);
+    else
+        draw_and_transform(f, rng);
+    extract(f, out, NULL);
+    f->have_kept = 0;
+    return SF_SUCCESS;
+}
+
 int sf_field_covariance(const sf_field *f, double *cov)
 {
-    if (!f || !cov)
+    if (!f || !cov || !f->cov)
         return SF_EINVAL;
     memcpy(cov, f->cov, f->spec.m * f->spec.n * sizeof *cov);
     return SF_SUCCESS;
@@ -553,7 +771,8 @@ int sf_field_eigenvalues(const sf_field *f, double *lambda)
 {
     if (!f || !lambda)
         return SF_EINVAL;
-    memcpy(lambda, f->lam, f->M * sizeof *lambda);
+    for (size_t ky = 0; ky < f->info.py; ky++)
+        eig_row(f, ky, lambda + f->info.px * ky);
     return SF_SUCCESS;
 }
 

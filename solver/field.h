@@ -50,6 +50,22 @@ typedef struct {
                              the minimal one; 0 -> 16 */
     size_t max_points;    /* cap on the embedding size M; 0 -> 2^25 */
     int no_padding;       /* 1: minimal embedding only (truncate if needed) */
+    int defer_covariance; /* 1: sf_field_alloc does not compute the produced
+                             covariance (an inverse FFT of the embedding and a
+                             pass over the grid, about a third of planning a
+                             large strip): info->cov_error is NaN and
+                             sf_field_covariance refuses until
+                             sf_field_measure_covariance.  For plans that only
+                             sample (the COF plan of a run); verification
+                             measures.  0: computed at planning. */
+    int sample_real;      /* 1 (separable-sum kernels): one field per FFT, from
+                             Hermitian noise by a real (c2r) FFT: half the
+                             normals and about half the transform of a pair,
+                             for plans whose draws are each a function of
+                             their stream alone (sf_field_sample_fresh only;
+                             sf_field_sample and _pair refuse).  Same
+                             covariance, exactly: the eigenvalues are made
+                             exactly even.  0: complex FFT, two fields each. */
     int measure;          /* 1: plan the sampling FFT with FFTW_MEASURE (up to ~3x
                              faster on large power-of-two embeddings, make bench);
                              the plan it times its way to, and so the last bits of
@@ -67,7 +83,8 @@ typedef struct {
     double lambda_max;      /* largest 2-D eigenvalue */
     double lambda_min;      /* smallest 2-D eigenvalue before clamping */
     double cov_error;       /* max |C_produced - Sigma| over the grid lags:
-                               exact, computed from the clamped eigenvalues */
+                               exact, computed from the clamped eigenvalues
+                               (NaN while deferred: defer_covariance) */
 } sf_field_info;
 
 typedef struct sf_field sf_field;
@@ -95,14 +112,27 @@ int sf_field_sample(sf_field *f, gsl_rng *rng, double *out);
  * rng state alone (Monte Carlo with per-realisation streams). */
 void sf_field_discard(sf_field *f);
 
+/* One field as a function of the rng state alone: the same values as
+ * sf_field_discard then sf_field_sample, without copying (or keeping) the
+ * FFT's second field; a real sampler's one field (spec.sample_real).
+ * Discards any kept field. */
+int sf_field_sample_fresh(sf_field *f, gsl_rng *rng, double *out);
+
 /* Draw both fields of one FFT at once into distinct arrays re, im of m*n.
  * Discards any kept field. */
 int sf_field_sample_pair(sf_field *f, gsl_rng *rng, double *re, double *im);
 
 /* The covariance the generator actually produces, no sampling:
  * cov[i + m*j] = Cov(G(0,0), G(i dx, j dy)), i < m, j < n.  By symmetry of
- * the embedding this also gives the lags (-i, j), (i, -j), (-i, -j). */
+ * the embedding this also gives the lags (-i, j), (i, -j), (-i, -j).
+ * SF_EINVAL for a plan whose covariance is deferred and not yet measured. */
 int sf_field_covariance(const sf_field *f, double *cov);
+
+/* Compute a deferred plan's produced covariance and info->cov_error (the
+ * same values sf_field_alloc computes without defer_covariance); nothing to
+ * do when they are there.  It plans an inverse FFT: call it where plans
+ * are made (not while another thread samples this plan).  SF_ENOMEM. */
+int sf_field_measure_covariance(sf_field *f);
 
 /* The target correlation at lag (i dx, j dy) (Sigma's entries). */
 double sf_field_target(const sf_field *f, double hx, double hy);

@@ -31,7 +31,7 @@ void sf_field_spec_from_scene(const sf_scene *s, sf_field_spec *spec)
     spec->measure = s->fftw_planner;
 }
 
-int sf_lnfield_alloc(const sf_scene *s, sf_lnfield **out)
+static int lnfield_alloc(const sf_scene *s, int defer_covariance, sf_lnfield **out)
 {
     *out = NULL;
     sf_lnfield *f = sf_calloc(1, sizeof *f);
@@ -45,6 +45,7 @@ int sf_lnfield_alloc(const sf_scene *s, sf_lnfield **out)
     f->l = s->l;
     sf_field_spec spec;
     sf_field_spec_from_scene(s, &spec);
+    spec.defer_covariance = defer_covariance;
     if (s->precorrect && s->mu_std > 0) {
         spec.kernel = precorrected;
         spec.kernel_params = f;
@@ -55,14 +56,12 @@ int sf_lnfield_alloc(const sf_scene *s, sf_lnfield **out)
         return rc;
     }
     f->n = s->nx * s->ny;
-    f->tmp = sf_malloc(f->n * sizeof *f->tmp);
-    if (!f->tmp) {
-        sf_lnfield_free(f);
-        return SF_ENOMEM;
-    }
     *out = f;
     return rc;
 }
+
+int sf_lnfield_alloc(const sf_scene *s, sf_lnfield **out) { return lnfield_alloc(s, 0, out); }
+int sf_lnfield_alloc_sampler(const sf_scene *s, sf_lnfield **out) { return lnfield_alloc(s, 1, out); }
 
 void sf_lnfield_free(sf_lnfield *f)
 {
@@ -78,11 +77,23 @@ const sf_lognormal *sf_lnfield_marginal(const sf_lnfield *f) { return &f->ln; }
 
 int sf_lnfield_sample(sf_lnfield *f, gsl_rng *rng, double *gauss, double *cof)
 {
+    if (!gauss && !f->tmp && !(f->tmp = sf_malloc(f->n * sizeof *f->tmp)))   /* on first use */
+        return SF_ENOMEM;
     double *g = gauss ? gauss : f->tmp;
     int rc = sf_field_sample(f->g, rng, g);
     if (rc)
         return rc;
     for (size_t i = 0; i < f->n; i++)
         cof[i] = sf_lognormal_map(&f->ln, g[i]);
+    return SF_SUCCESS;
+}
+
+int sf_lnfield_sample_fresh(sf_lnfield *f, gsl_rng *rng, double *cof)
+{
+    int rc = sf_field_sample_fresh(f->g, rng, cof);
+    if (rc)
+        return rc;
+    for (size_t i = 0; i < f->n; i++)   /* the Nataf map in place */
+        cof[i] = sf_lognormal_map(&f->ln, cof[i]);
     return SF_SUCCESS;
 }

@@ -20,6 +20,10 @@ void sf_field_spec_from_scene(const sf_scene *s, sf_field_spec *spec);
  * SF_SUCCESS or SF_ETRUNC (usable, truncated: sf_usable()), else an error
  * (SF_ETOOBIG: embedding over its cap) and *out = NULL. */
 int sf_lnfield_alloc(const sf_scene *s, sf_lnfield **out);
+
+/* The same, for a plan that only samples: the Gaussian plan's produced
+ * covariance is deferred (field.h, defer_covariance). */
+int sf_lnfield_alloc_sampler(const sf_scene *s, sf_lnfield **out);
 void sf_lnfield_free(sf_lnfield *f);
 
 sf_field *sf_lnfield_gaussian(sf_lnfield *f);
@@ -28,5 +32,10 @@ const sf_lognormal *sf_lnfield_marginal(const sf_lnfield *f);
 /* One realisation: the Gaussian values (optional, may be NULL) and the
  * COF values cof[nx*ny] = exp(mu_g + sigma_g G). */
 int sf_lnfield_sample(sf_lnfield *f, gsl_rng *rng, double *gauss, double *cof);
+
+/* One realisation as a function of the rng state alone (field.h:
+ * sf_field_sample_fresh): the values of sf_field_discard on the Gaussian
+ * plan then sf_lnfield_sample, with no copy of the second field. */
+int sf_lnfield_sample_fresh(sf_lnfield *f, gsl_rng *rng, double *cof);
 
 #endif

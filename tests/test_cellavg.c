@@ -100,10 +100,19 @@ static void effective_field(void **state)
     assert_int_equal(sf_numplan_cell_average(&s, &nc, NULL), 1);   /* the plan's cells per diameter */
     assert_close(in->box, 2 * s.R / (double)nc, 1e-15);
     assert_close(in->dx, in->box / 3, 1e-15);
-    const sf_field *f = sf_cof_plan_cell_field(p);
+    sf_field *f = sf_cof_plan_cell_field(p);
     assert_non_null(f);
     const sf_field_info *fi = sf_field_get_info(f);
+    assert_true(isnan(fi->cov_error));   /* deferred: a run only samples */
+    double *cv = malloc(in->nx * in->ny * sizeof *cv);
+    assert_non_null(cv);
+    assert_int_equal(sf_field_covariance(f, cv), SF_EINVAL);
+    assert_int_equal(sf_field_measure_covariance(f), SF_SUCCESS);
+    assert_int_equal(sf_field_measure_covariance(f), SF_SUCCESS);   /* once */
     assert_true(fi->cov_error < 1e-13);
+    assert_int_equal(sf_field_covariance(f, cv), SF_SUCCESS);
+    assert_close(cv[0], 1, 1e-13);
+    free(cv);
     assert_true(fi->px < 2 * (in->nx - 1));   /* the short-support period */
     assert_close(sf_field_target(f, 0, 0), 1, 1e-15);
     gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
@@ -390,6 +399,35 @@ static void sep_sum_embedding(void **state)
     fi = sf_field_get_info(f);
     assert_true(fi->px < 2 * 199);
     assert_true(fi->cov_error < 1e-13);
+    sf_field_free(f);
+    /* a 2-D grid: the eigenvalues from the 1-D spectra equal the direct
+     * 2-D DFT of the first row to round-off (relative to lambda_max) */
+    sp.m = 40;
+    sp.n = 12;
+    assert_int_equal(sf_field_alloc(&sp, &f), SF_SUCCESS);
+    fi = sf_field_get_info(f);
+    size_t px = fi->px, py = fi->py, M = px * py;
+    double *row = malloc(M * sizeof *row), *lam = malloc(M * sizeof *lam);
+    assert_non_null(row);
+    assert_non_null(lam);
+    assert_int_equal(sf_field_first_row(f, row), SF_SUCCESS);
+    assert_int_equal(sf_field_eigenvalues(f, lam), SF_SUCCESS);
+    double worst = 0;
+    for (size_t ky = 0; ky < py; ky++)
+        for (size_t kx = 0; kx < px; kx++) {
+            double d = 0;
+            for (size_t j = 0; j < py; j++)
+                for (size_t i = 0; i < px; i++)
+                    d += row[i + px * j] * cos(2 * M_PI * ((double)(i * kx % px) / (double)px +
+                                                           (double)(j * ky % py) / (double)py));
+            worst = fmax(worst, fabs(d - lam[kx + px * ky]));
+        }
+    assert_true(worst <= 1e-13 * fi->lambda_max);
+    for (size_t ky = 0; ky < py; ky++)   /* exactly even, bit for bit: the real sampler's draw needs it */
+        for (size_t kx = 0; kx < px; kx++)
+            assert_memory_equal(&lam[kx + px * ky], &lam[(px - kx) % px + px * ((py - ky) % py)], sizeof *lam);
+    free(row);
+    free(lam);
     sf_field_free(f);
     sp.sep_fn = NULL;
     f = (sf_field *)1;

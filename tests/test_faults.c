@@ -262,11 +262,11 @@ static int field(void *ctx)
     }
     gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
     double *v = malloc(sp->m * sp->n * sizeof *v);
-    assert_int_equal(sf_field_sample(f, rng, v), SF_SUCCESS);
+    int rs = sf_field_sample(f, rng, v);   /* allocates the kept field on first use */
     free(v);
     gsl_rng_free(rng);
     sf_field_free(f);
-    return rc;
+    return rs ? rs : rc;
 }
 
 /* A field and one sample from a fixed seed, compared with the run
@@ -290,7 +290,13 @@ static int field_bits(void *ctx)
     gsl_rng_set(rng, 5);
     size_t mn = c->sp.m * c->sp.n;
     double *v = malloc(mn * sizeof *v);
-    assert_int_equal(sf_field_sample(f, rng, v), SF_SUCCESS);
+    int rs = sf_field_sample(f, rng, v);   /* allocates the kept field on first use */
+    if (rs) {
+        free(v);
+        gsl_rng_free(rng);
+        sf_field_free(f);
+        return rs;
+    }
     double r[3] = { v[0], v[mn / 2], sf_field_get_info(f)->cov_error };
     if (c->have_ref)
         assert_memory_equal(r, c->ref, sizeof r);
@@ -300,6 +306,37 @@ static int field_bits(void *ctx)
     gsl_rng_free(rng);
     sf_field_free(f);
     return rc;
+}
+
+/* The same plan with its covariance deferred: sf_field_sample_fresh gives
+ * field_bits' sample, and sf_field_measure_covariance its cov_error, bit
+ * for bit (run after field_bits has set the reference). */
+static int field_deferred(void *ctx)
+{
+    field_ctx *c = ctx;
+    sf_field_spec sp = c->sp;
+    sp.defer_covariance = 1;
+    sf_field *f = (sf_field *)1;
+    int rc = sf_field_alloc(&sp, &f);
+    if (!sf_usable(rc)) {
+        assert_null(f);
+        return rc;
+    }
+    assert_true(isnan(sf_field_get_info(f)->cov_error));
+    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+    gsl_rng_set(rng, 5);
+    size_t mn = sp.m * sp.n;
+    double *v = malloc(mn * sizeof *v);
+    assert_int_equal(sf_field_sample_fresh(f, rng, v), SF_SUCCESS);
+    int rm = sf_field_measure_covariance(f);
+    if (!rm) {
+        double r[3] = { v[0], v[mn / 2], sf_field_get_info(f)->cov_error };
+        assert_memory_equal(r, c->ref, sizeof r);
+    }
+    free(v);
+    gsl_rng_free(rng);
+    sf_field_free(f);
+    return rm;
 }
 
 static int lnfield(void *ctx)
@@ -356,6 +393,7 @@ static void fields(void **state)
     fc.sp.support = sf_cellavg_support(&ca);
     assert_int_equal(field_bits(&fc), SF_SUCCESS);
     assert_true(walk("sf_field_alloc (separable-sum kernel, short support)", field_bits, &fc, SF_SUCCESS, 0) > 5);
+    assert_true(walk("sf_field_alloc (deferred covariance) + measure", field_deferred, &fc, SF_SUCCESS, 0) > 5);
     sf_scene s;
     scene_small(&s);
     s.nx = 16;

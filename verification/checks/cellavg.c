@@ -23,10 +23,15 @@
 #include "sf_error.h"
 #include "sweep.h"
 
+#include <complex.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <gsl/gsl_blas.h>
 #include <gsl/gsl_integration.h>
+#include <gsl/gsl_linalg.h>
+#include <gsl/gsl_math.h>
+#include <gsl/gsl_randist.h>
 
 enum { NQ = 3 };
 static const char *const qname[NQ] = { "PV_x", "PV_F", "stick fraction" };
@@ -82,6 +87,66 @@ static double oracle_cov(const oracle_par *o, double h, double dx, double dy, co
     return s;
 }
 
+/* Node patches of the effective field against the oracle's covariance:
+ * whitened likelihood-ratio test of Cov = Sigma (common.c). */
+enum { PATCH = 4 };
+typedef struct {
+    gsl_matrix *L;   /* Cholesky factor of the oracle's patch covariance */
+    gsl_matrix *S;   /* sum of z z^T */
+    gsl_vector *z;
+    size_t N;
+    int bad;         /* the oracle's matrix was not positive definite */
+} patch_lrt;
+typedef struct { size_t N; double stat, tr; } lrt_note;
+
+static void patch_lrt_init(patch_lrt *t, const oracle_par *o, double h, double d, const double *u,
+                           const double *w, size_t nn)
+{
+    enum { P = PATCH * PATCH };
+    double cl[PATCH][PATCH];   /* the oracle at lags (a d, b d); it is even in each */
+    for (int a = 0; a < PATCH; a++)
+        for (int b = 0; b < PATCH; b++)
+            cl[a][b] = oracle_cov(o, h, a * d, b * d, u, w, nn);
+    t->L = gsl_matrix_alloc(P, P);
+    t->S = gsl_matrix_calloc(P, P);
+    t->z = gsl_vector_alloc(P);
+    t->N = 0;
+    for (int p = 0; p < P; p++)
+        for (int q = 0; q < P; q++)
+            gsl_matrix_set(t->L, p, q, cl[abs(p % PATCH - q % PATCH)][abs(p / PATCH - q / PATCH)]);
+    t->bad = gsl_linalg_cholesky_decomp1(t->L) != 0;
+}
+
+/* Patches with corners at a lattice of stride `stride` nodes (their
+ * gaps beyond the support: independent patches). */
+static void patch_lrt_add(patch_lrt *t, const double *mu, size_t nx, size_t ny, size_t stride, double mean)
+{
+    for (size_t jy = 0; jy + PATCH <= ny; jy += stride)
+        for (size_t ix = 0; ix + PATCH <= nx; ix += stride) {
+            for (int q = 0; q < PATCH * PATCH; q++)
+                gsl_vector_set(t->z, (size_t)q, mu[ix + (size_t)(q % PATCH) + nx * (jy + (size_t)(q / PATCH))] - mean);
+            gsl_blas_dtrsv(CblasLower, CblasNoTrans, CblasNonUnit, t->L, t->z);
+            gsl_blas_dsyr(CblasLower, 1.0, t->z, t->S);
+            t->N++;
+        }
+}
+
+/* The p-value (NaN when the oracle's matrix failed or no patch was seen:
+ * the case fails), and frees the test. */
+static double patch_lrt_done(patch_lrt *t, double *stat, double *tr)
+{
+    double pv = NAN;
+    *stat = *tr = NAN;
+    if (!t->bad && t->N) {
+        gsl_matrix_scale(t->S, 1.0 / (double)t->N);
+        pv = check_lrt_identity(t->S, t->N, stat, tr);
+    }
+    gsl_matrix_free(t->L);
+    gsl_matrix_free(t->S);
+    gsl_vector_free(t->z);
+    return pv;
+}
+
 static int chk_covariance(const sf_case *c, sf_result *r)
 {
     const sf_scene *s0 = &c->scene;
@@ -95,7 +160,8 @@ static int chk_covariance(const sf_case *c, sf_result *r)
     gsl_integration_glfixed_table *gl = gsl_integration_glfixed_table_alloc(20);
     double *x = check_alloc(K * sizeof *x), *eo = check_alloc(K * sizeof *eo), *ee = check_alloc(K * sizeof *ee);
     int rc = SF_SUCCESS;
-    size_t ntests = 2 * K;
+    size_t ntests = 3 * K;
+    lrt_note *lrt_row = check_alloc(K * sizeof *lrt_row);
     sf_note(r, "Produced covariance of the effective field (circulant embedding, `sf_field_covariance` times the "
                "variance) against the oracle (2-D Gauss-Legendre quadrature of the lognormal covariance against two "
                "boxes' triangle weights), at lags (i d, j d), d = box/3, i in 0..12, j in {0, 1, 2, 5, 9}, and at the "
@@ -119,7 +185,13 @@ static int chk_covariance(const sf_case *c, sf_result *r)
             break;
         }
         const sf_cof_plan_info *in = sf_cof_plan_get_info(p);
-        const sf_field *f = sf_cof_plan_cell_field(p);
+        sf_field *f = sf_cof_plan_cell_field(p);
+        if ((rc = sf_field_measure_covariance(f))) {   /* deferred by the run's plan */
+            sf_note(r, "**Cannot measure the effective field's covariance at l/R = %g:** %s", s.l / s.R,
+                    sf_strerror(rc));
+            sf_cof_plan_free(p);
+            break;
+        }
         double cov_err = sf_field_get_info(f)->cov_error;   /* before the plan is freed */
         double h = 2 * s.R / (double)s.cells, d = in->dx, sd = sf_cof_plan_cell_std(p), var = sd * sd;
         oracle_par o = { s.mu_mean, lp.sigma * lp.sigma, s.l };
@@ -149,23 +221,28 @@ static int chk_covariance(const sf_case *c, sf_result *r)
                     emax = sf_max(emax, fabs(produced - oracle) / ov);
                 }
         free(cov);
-        free(u);
-        free(w);
         /* the marginal: independent points (lags beyond the support) of drawn fields */
         size_t step = (size_t)ceil((h + 9 * s.l) / d) + 1, npt = 0;
         double sum = 0, ss = 0, cap_n = (double)s.samples * (double)(in->nx / step + 1) * (double)(in->ny / step + 1);
         double *vals = check_alloc((size_t)cap_n * sizeof *vals);
+        patch_lrt pl;
+        patch_lrt_init(&pl, &o, h, d, u, w, nn);
+        free(u);
+        free(w);
         for (size_t i = 0; i < s.samples && !rc; i++) {
             sf_cof *cof = NULL;
             rc = check_draw(p, s.seed, i, &cof);
             const double *mu;
-            if (!rc && !(rc = sf_cof_grid_view(cof, NULL, NULL, NULL, NULL, NULL, NULL, &mu)))
+            if (!rc && !(rc = sf_cof_grid_view(cof, NULL, NULL, NULL, NULL, NULL, NULL, &mu))) {
                 for (size_t jy = 0; jy < in->ny; jy += step)
                     for (size_t ix = 0; ix < in->nx; ix += step)
                         vals[npt++] = mu[ix + in->nx * jy];
+                patch_lrt_add(&pl, mu, in->nx, in->ny, step + PATCH - 1, s.mu_mean);
+            }
             sf_cof_free(cof);
         }
         sf_cof_plan_free(p);
+        double lrt_stat, lrt_tr, plrt = patch_lrt_done(&pl, &lrt_stat, &lrt_tr);
         if (rc)
             break;
         for (size_t i = 0; i < npt; i++)
@@ -192,9 +269,21 @@ static int chk_covariance(const sf_case *c, sf_result *r)
         sf_check_pvalue(r, t, pm, c->spec.alpha / (double)ntests, npt);
         snprintf(t, sizeof t, "l/R = %g: variance of mu_h = the box-averaged variance (chi-square)", x[k]);
         sf_check_pvalue(r, t, pv, c->spec.alpha / (double)ntests, npt);
+        snprintf(t, sizeof t, "l/R = %g: covariance of %d x %d node patches = the oracle's (whitened LRT, chi2 %d dof)",
+                 x[k], PATCH, PATCH, PATCH * PATCH * (PATCH * PATCH + 1) / 2);
+        sf_check_pvalue(r, t, plrt, c->spec.alpha / (double)ntests, pl.N);
+        lrt_row[k] = (lrt_note){ pl.N, lrt_stat, lrt_tr };
     }
     gsl_integration_glfixed_table_free(gl);
     if (!rc) {
+        sf_note(r, "\nCovariance in distribution (the sampler itself: amplitudes, Hermitian noise, the real FFT): "
+                   "node patches of %d x %d at the grid spacing, patches spaced beyond the covariance's support "
+                   "(independent), mu_h - mubar whitened by the Cholesky factor of the oracle's covariance of the "
+                   "patch; S = (1/N) sum z z^T against the identity, Bartlett * N (tr S - ln det S - p) ~ chi2 "
+                   "(known mean).\n\n| l/R | patches N | LRT statistic | tr(S)/p |\n|---|---|---|---|",
+                PATCH, PATCH);
+        for (size_t k = 0; k < K; k++)
+            sf_note(r, "| %g | %zu | %.1f | %.5f |", x[k], lrt_row[k].N, lrt_row[k].stat, lrt_row[k].tr);
         sf_plot *pl = sf_result_plot(r, "cellavg-cov", "Effective field: produced covariance vs oracle", "l/R [-]",
                                      "max |error| / Var(mu_h) [-]");
         sf_plot_log(pl, 1, 1);
@@ -205,7 +294,117 @@ static int chk_covariance(const sf_case *c, sf_result *r)
     free(x);
     free(eo);
     free(ee);
+    free(lrt_row);
     return rc ? SF_EFAIL : SF_SUCCESS;
+}
+
+/* ---- the real sampler (field.h: sample_real), exactly: a draw against
+ * the sum that defines it, written here from its documented contract.
+ * Normals in row-major order over the stored half (kx <= px/2): one at
+ * a self-conjugate point, none at a point whose mirror row in the columns
+ * kx = 0 and px/2 came first (its conjugate), two (a, b) elsewhere,
+ * xi = (a + ib)/sqrt 2; the whole spectrum Hermitian, Y_k = sqrt(lambda_k /
+ * M) xi_k; X_j = sum_k Y_k exp(2 pi i (jx kx/px + jy ky/py)) by direct
+ * summation (no FFT), from the plan's eigenvalues (sf_field_eigenvalues:
+ * their FFT-vs-direct agreement is eigenvalues-fft-vs-direct's and
+ * test_cellavg's). */
+static int chk_sampler_dft(const sf_case *c, sf_result *r)
+{
+    const sf_scene *s = &c->scene;
+    if (!s->cells || !(s->mu_std > 0)) {
+        sf_note(r, "The scene must set cells and mu_std > 0.");
+        return SF_EINVAL;
+    }
+    double box = 2 * s->R / (double)s->cells;
+    sf_cellavg ca;
+    if (sf_cellavg_init(&ca, s->mu_mean, s->mu_std, s->l, box))
+        return SF_EINVAL;
+    double d = sf_cellavg_grid_spacing(box);
+    /* grids whose periods are odd and even along each axis (the columns
+     * kx = px/2 exist only for even px; self-conjugate rows ky = py/2 only
+     * for even py) */
+    static const size_t grid[][2] = { { 40, 12 }, { 37, 19 }, { 37, 12 }, { 40, 19 } };
+    enum { NG = sizeof grid / sizeof grid[0] };
+    double worst = 0, xs[NG], es[NG];
+    int rc = SF_SUCCESS, parity = 0;   /* bits: odd px, even px, odd py, even py seen */
+    sf_note(r, "Draws of the real sampler (sf_field_sample_fresh, sample_real = 1) on the effective field's kernel "
+               "(box %.4g m, spacing %.4g m) against the direct sum of their definition with the same normals.\n\n"
+               "| grid | periods px x py | max abs error | sum of |Y_k| | error / sum |\n|---|---|---|---|---|",
+            box, d);
+    for (int g = 0; g < NG && !rc; g++) {
+        sf_field_spec sp;
+        sf_field_spec_default(&sp, grid[g][0], grid[g][1], d, d, s->l);
+        sp.sep_terms = ca.nterms;
+        sp.sep_fn = sf_cellavg_septerm;
+        sp.sep_params = &ca;
+        sp.support = sf_cellavg_support(&ca);
+        sp.sample_real = 1;
+        sf_field *f;
+        if (!sf_usable(rc = sf_field_alloc(&sp, &f)))
+            break;
+        rc = SF_SUCCESS;
+        const sf_field_info *in = sf_field_get_info(f);
+        size_t px = in->px, py = in->py, M = px * py, hx = px / 2 + 1, m = sp.m, n = sp.n;
+        parity |= (px % 2 ? 1 : 2) | (py % 2 ? 4 : 8);
+        double *lam = check_alloc(M * sizeof *lam), *v = check_alloc(m * n * sizeof *v);
+        double complex *Y = check_alloc(M * sizeof *Y);
+        sf_field_eigenvalues(f, lam);
+        gsl_rng *r1 = sf_case_rng(c), *r2 = sf_case_rng(c);
+        rc = sf_field_sample_fresh(f, r1, v);
+        for (size_t ky = 0; ky < py; ky++)
+            for (size_t kx = 0; kx < hx; kx++) {
+                size_t my = (py - ky) % py;
+                int own = kx == 0 || 2 * kx == px;
+                double a = sqrt(fmax(lam[kx + px * ky], 0) / (double)M);
+                if (own && my == ky)
+                    Y[kx + px * ky] = a * gsl_ran_gaussian_ziggurat(r2, 1.0);
+                else if (!(own && my < ky)) {
+                    double re = gsl_ran_gaussian_ziggurat(r2, 1.0), im = gsl_ran_gaussian_ziggurat(r2, 1.0);
+                    Y[kx + px * ky] = a * (re + I * im) / sqrt(2.0);
+                }
+            }
+        for (size_t ky = 0; ky < py; ky++)   /* Hermitian: Y_{-k} = conj Y_k */
+            for (size_t kx = 0; kx < px; kx++) {
+                size_t mx = (px - kx) % px, my = (py - ky) % py;
+                int stored = kx < hx && !((kx == 0 || 2 * kx == px) && my < ky);
+                if (!stored)
+                    Y[kx + px * ky] = conj(Y[mx + px * my]);
+            }
+        double err = 0, ysum = 0;
+        for (size_t k = 0; k < M; k++)
+            ysum += cabs(Y[k]);
+        for (size_t j = 0; j < n && !rc; j++)
+            for (size_t i = 0; i < m; i++) {
+                double complex x = 0;
+                for (size_t ky = 0; ky < py; ky++)
+                    for (size_t kx = 0; kx < px; kx++)
+                        x += Y[kx + px * ky] * cexp(2 * M_PI * I * ((double)(i * kx % px) / (double)px +
+                                                                  (double)(j * ky % py) / (double)py));
+                err = sf_max(err, fabs(creal(x) - v[i + m * j]));
+                err = sf_max(err, fabs(cimag(x)));   /* the construction is Hermitian: a real field */
+            }
+        sf_note(r, "| %zu x %zu | %zu x %zu | %.3g | %.4g | %.3g |", m, n, px, py, err, ysum, err / ysum);
+        xs[g] = (double)g;
+        es[g] = fmax(err / ysum, 1e-18);
+        worst = sf_max(worst, err / ysum);
+        gsl_rng_free(r1);
+        gsl_rng_free(r2);
+        free(lam);
+        free(v);
+        free(Y);
+        sf_field_free(f);
+    }
+    if (rc)
+        return SF_EFAIL;
+    sf_check_le(r, "max |draw - direct sum| / sum_k |Y_k| over the grids", worst, c->spec.tolerance);
+    sf_check_abs(r, "periods odd and even along each axis (the grids cover every branch of the draw)",
+                 (double)parity, 15, 0);
+    sf_plot *pl = sf_result_plot(r, "sampler-dft", "Real sampler vs its direct sum", "grid index [-]",
+                                 "max error / sum |Y_k| [-]");
+    sf_plot_log(pl, 0, 1);
+    sf_plot_series(pl, "draw vs direct sum", SF_STYLE_LINESPOINTS, NG, xs, es);
+    sf_plot_hline(pl, "tolerance", c->spec.tolerance);
+    return SF_SUCCESS;
 }
 
 /* ---- the exact box average of a bilinear grid: the interpolant is a sum
@@ -554,5 +753,6 @@ const sf_check_def sf_checks_cellavg[] = {
     { "cellavg_plan_qoi_tol", chk_plan_qoi_tol,
       "the plan's cell-average choice for qoi_tol vs the point model at high resolution, same fine field" },
     { "cellavg_distribution", chk_distribution, "QoI distributions of the cell-average and point models (KS)" },
+    { "cellavg_sampler_dft", chk_sampler_dft, "the real sampler's draws against the direct sum that defines them" },
     { NULL, NULL, NULL },
 };
