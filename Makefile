@@ -21,6 +21,9 @@ BASELINE ?=
 
 PKGS := gsl fftw3 jansson
 GIT_REV := $(shell git rev-parse --short HEAD 2>/dev/null || echo unknown)
+# what the solver computes: a checksum of its sources (the paper tier's
+# realisation cache is keyed by it, so a solver change recomputes)
+SOLVER_SUM := $(shell cat solver/*.c solver/*.h | cksum | cut -d' ' -f1)
 WARN := -Wall -Wextra -Wpedantic -Werror
 # -fno-math-errno -fno-trapping-math: nothing reads errno after a libm
 # call nor the floating-point exception flags (no <fenv.h>); without them
@@ -107,7 +110,7 @@ $(BUILD)/rel/verification/result.o $(BUILD)/san/verification/result.o: $(BUILD)/
 .PHONY: FORCE
 FORCE:
 $(BUILD)/gen/sf_rev.h: FORCE
-	@sh scripts/gen-header.sh $@ '#define SF_GIT_REV "$(GIT_REV)"'
+	@sh scripts/gen-header.sh $@ '#define SF_GIT_REV "$(GIT_REV)"' '#define SF_SOLVER_SUM "$(SOLVER_SUM)"'
 $(BUILD)/gen/bench_config.h: FORCE
 	@sh scripts/gen-header.sh $@ '#define SF_HAVE_CVODE $(if $(CVODE_OK),1,0)'
 

@@ -217,6 +217,8 @@ int bench_contact(FILE *f, const char *dir)
     char pairs[120] = "";
     if (have_pairs())
         snprintf(pairs, sizeof pairs, ", at most **%.2f x** the bare loop by pairs", worst_pair);
+    bench_target("wrench: <= 3 ns per cell (polar, 12-32 rings), section contact", worst <= 3 && !bad,
+                 "%.2f ns per cell (%.2f of the target; %.2fx the bare loop)", worst, worst / 3, worst_ratio);
     fprintf(f, "\nWrench at 12-32 rings (polar): at most **%.2f ns per cell** (target 3 ns: %s), at most **%.2f x** the "
                "bare loop%s.%s\n", worst, worst <= 3 ? "met" : "NOT met", worst_ratio, pairs,
             bad ? " **The loops disagree: the timing is void.**" : "");

@@ -3,6 +3,7 @@
  * statement, and checks the statement (or the exact fact behind it).
  * Where we differ from the paper, the report says so. */
 #include "checks.h"
+#include "version.h"
 #include "common.h"
 #include "../stats.h"
 #include "sweep.h"
@@ -1228,16 +1229,18 @@ static void claims_plots(sf_result *r, const cpoint *pt, size_t K, const char *f
 }
 
 /* Paper-tier sweeps keep their realisations in build/paper-cache (a
- * checkpoint per point, keyed by the scene): a rerun after a change of the
- * claims' judgement re-reads them instead of spending the 30 minutes again.
- * Quick-tier cases always compute. */
+ * checkpoint per point, keyed by the scene, in a folder per checksum of
+ * the solver's sources): a rerun after a change of the claims' judgement
+ * re-reads them instead of spending the minutes again; a change of the
+ * solver computes afresh.  Quick-tier cases always compute. */
 static const char *ckpt_path(const sf_case *c, size_t k, char *buf, size_t n)
 {
     if (c->spec.tier != SF_TIER_PAPER)
         return NULL;
-    if (sf_mkdirs("build/paper-cache"))
+    snprintf(buf, n, "build/paper-cache/solver-%s", SF_SOLVER_SUM);
+    if (sf_mkdirs(buf))
         return NULL;
-    snprintf(buf, n, "build/paper-cache/");
+    snprintf(buf, n, "build/paper-cache/solver-%s/", SF_SOLVER_SUM);
     size_t j = strlen(buf);
     for (const char *p = c->id; *p && j + 16 < n; p++)
         buf[j++] = *p == '/' ? '-' : *p;
