@@ -36,8 +36,8 @@ struct sf_osc {
     gsl_odeiv2_control *con;
     gsl_odeiv2_evolve *ev;
     gsl_root_fsolver *root;  /* Brent, for event location */
-    sf_surface *stick_sf;    /* exact-section stick test: one limit surface,
-                                re-centred per stick (made on first use) */
+    sf_surface *stick_sf;    /* exact-section stick tests: one limit surface,
+                                re-centred per test (made by sf_osc_alloc) */
     unsigned long wrench_evals;
     sf_osc_source_fn src;    /* manufactured source (sf_osc_set_source), or NULL */
     void *src_ctx;
@@ -193,7 +193,8 @@ int sf_osc_alloc(const sf_scene *s, const sf_cof *cof, sf_osc **out, char *err, 
     o->con = SF_FALLIBLE(gsl_odeiv2_control_scaled_new(o->s.rtol, o->s.rtol, 1.0, 0.0, sc, NSTATE));
     o->ev = SF_FALLIBLE(gsl_odeiv2_evolve_alloc(NSTATE));
     o->root = SF_FALLIBLE(gsl_root_fsolver_alloc(gsl_root_fsolver_brent));
-    if (!o->step || !o->bstep || !o->con || !o->ev || !o->root) {
+    int surf_rc = o->ct && s->exact_section ? sf_surface_alloc(o->ct, 0, 0, &o->stick_sf) : SF_SUCCESS;
+    if (!o->step || !o->bstep || !o->con || !o->ev || !o->root || surf_rc) {
         sf_osc_free(o);
         return SF_ENOMEM;
     }
@@ -257,26 +258,32 @@ static double lambda_of(const sf_osc *o, const double *y)
 }
 
 /* Stick admissibility margin [N] of the stick wrench (k x, k y) at the
- * belt point under the disc at time t (> 0 admissible). */
+ * belt point under the disc at time t (> 0 admissible); NaN when the exact
+ * section could not be found (its root finder's failure). */
 static double stick_margin(const sf_osc *o, double t, const double *y)
 {
     const sf_scene *s = &o->s;
-    double F = s->k * hypot(y[X], y[Y]);
+    double F = s->k * hypot(y[X], y[Y]), xb = y[X] - s->v_b * t, m;
     if (!o->ct)
         return o->mu * o->N - F;
-    double m;
-    sf_contact_stick_margin(o->ct, y[X] - s->v_b * t, y[Y], s->k * y[X], s->k * y[Y], s->exact_section, &m);
-    return m;
+    /* the exact section's surface is the oscillator's workspace (re-centred
+     * here), not part of its observable state */
+    int rc = s->exact_section
+                 ? sf_surface_stick_margin(o->stick_sf, o->ct, xb, y[Y], s->k * y[X], s->k * y[Y], &m)
+                 : sf_contact_stick_margin(o->ct, xb, y[Y], s->k * y[X], s->k * y[Y], 0, &m);
+    return rc ? NAN : m;
 }
 
 /* Slip-to-stick switching function: < 0 when lambda < eps and stick is
- * admissible. Mixed units are fine: only its sign is used. */
+ * admissible. Mixed units are fine: only its sign is used.  NaN when the
+ * stick margin is (sf_osc_run fails with the time). */
 double sf_osc_g_stick(const sf_osc *o, double t, const double *y)
 {
     double c = lambda_of(o, y) - o->s.eps_lambda;
     if (c >= 0)   /* the sign is already decided: skip the (costly) margin */
         return c;
-    return fmax(c, -stick_margin(o, t, y) / o->N);
+    double m = -stick_margin(o, t, y) / o->N;
+    return isnan(m) ? NAN : fmax(c, m);   /* fmax would drop the NaN, and lambda alone would decide */
 }
 
 /* One step of the same stepper from (t0, y0) over h into yo. */
@@ -364,8 +371,6 @@ double sf_osc_stick_duration(sf_osc *o, double t0, const double *y)
     if (!s->exact_section || !o->ct)
         return tau;
     /* exact section: rho(alpha) <= mu_bar, so the exit lies in [0, tau] */
-    if (!o->stick_sf && sf_surface_alloc(o->ct, xb, yb, &o->stick_sf))
-        return tau;
     sf_surface *sf = o->stick_sf;
     sf_surface_recentre(sf, o->ct, xb, yb);
     double lo = 0, hi = tau;
@@ -748,6 +753,9 @@ static int run_slip(run_state *r)
     if (res->steps > budget)
         return sf_seterr(r->err, r->errlen, SF_EMAXITER, "step budget (2e8 steps) exhausted");
     double g1 = sf_osc_g_stick(o, r->t, y);
+    if (isnan(g1))
+        return sf_seterr(r->err, r->errlen, SF_EFAIL, "the exact T = 0 section of the limit surface was not found "
+                                                      "at t = %.9g s (the stick test)", r->t);
     int to_stick = r->armed && g1 < 0;
     double ye[NSTATE], te = r->t;
     if (to_stick) {

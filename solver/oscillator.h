@@ -165,8 +165,10 @@ void sf_osc_scales(const sf_osc *o, double sc[SF_OSC_NSTATE]);
 /* Slip-to-stick switching function: lambda - eps_lambda while that is
  * >= 0, else max(lambda - eps_lambda, -margin / (m g)) with margin the stick
  * admissibility margin [N] of the stick wrench (k x, k y) at the belt
- * point under the disc at time t.  Stick may start where it is < 0; only
- * its sign is meaningful.  The solver arms it after it has been > 0 in a
+ * point under the disc at time t (exact_section: on the oscillator's own
+ * limit surface, made by sf_osc_alloc and re-centred per call; NaN, and
+ * sf_osc_run fails, if the section's root finder does).  Stick may start
+ * where it is < 0; only its sign is meaningful.  The solver arms it after it has been > 0 in a
  * slip phase (it starts each slip phase at zero); a peer's root-finding on
  * decreasing crossings plays that role. */
 double sf_osc_g_stick(const sf_osc *o, double t, const double *y);
@@ -175,7 +177,7 @@ double sf_osc_g_stick(const sf_osc *o, double t, const double *y);
  * stays fixed, the disc moves with the belt, the break is the exit of the
  * stick wrench from the equatorial circle (closed form) or from the exact
  * T = 0 section (scene exact_section; o keeps one limit surface for it,
- * re-centred on each call: hence o is not const). */
+ * made with o and re-centred on each call: hence o is not const). */
 double sf_osc_stick_duration(sf_osc *o, double t, const double *y);
 
 /* Stick motion over dt (exact, no quadrature): x += v_b dt, and the stick

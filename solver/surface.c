@@ -13,6 +13,11 @@ struct sf_surface {
     double *px, *py;   /* cell offsets / R (dimensionless) */
     double *a;         /* mu_s(cell) x weight / N (dimensionless; sums to mu_bar) */
     double mu_bar;
+    /* Brent workspaces, made with the plan: the section's (theta at T* = 0)
+     * and the radius's around it (psi at a force direction), so that no
+     * evaluation allocates (the oscillator's stick test calls them often).
+     * Scratch, not state: reset by every gsl_root_fsolver_set. */
+    gsl_root_fsolver *inner, *outer;
 };
 
 int sf_surface_alloc(const sf_contact *c, double xb, double yb, sf_surface **out)
@@ -25,7 +30,9 @@ int sf_surface_alloc(const sf_contact *c, double xb, double yb, sf_surface **out
     s->px = sf_malloc(s->n * sizeof *s->px);
     s->py = sf_malloc(s->n * sizeof *s->py);
     s->a = sf_malloc(s->n * sizeof *s->a);
-    if (!s->px || !s->py || !s->a) {
+    s->inner = SF_FALLIBLE(gsl_root_fsolver_alloc(gsl_root_fsolver_brent));
+    s->outer = SF_FALLIBLE(gsl_root_fsolver_alloc(gsl_root_fsolver_brent));
+    if (!s->px || !s->py || !s->a || !s->inner || !s->outer) {
         sf_surface_free(s);
         return SF_ENOMEM;
     }
@@ -61,6 +68,10 @@ void sf_surface_free(sf_surface *s)
     free(s->px);
     free(s->py);
     free(s->a);
+    if (s->inner)
+        gsl_root_fsolver_free(s->inner);
+    if (s->outer)
+        gsl_root_fsolver_free(s->outer);
     free(s);
 }
 
@@ -84,7 +95,7 @@ void sf_surface_point(const sf_surface *s, double theta, double psi, double q[3]
     q[2] = t;
 }
 
-typedef struct { const sf_surface *s; double psi; double alpha; int rc; } root_par;   /* rc: a failed section (alpha_gap) */
+typedef struct { const sf_surface *s; double psi; double alpha; } root_par;
 
 static double torque_at(double theta, void *p)
 {
@@ -94,30 +105,24 @@ static double torque_at(double theta, void *p)
     return q[2];
 }
 
-/* Brent on [lo, hi] (a sign change is required). */
-static int brent(gsl_function *F, double lo, double hi, double tol, double *x)
+/* Brent on [lo, hi] (a sign change is required) with the workspace rs. */
+static int brent(gsl_root_fsolver *rs, gsl_function *F, double lo, double hi, double tol, double *x)
 {
-    gsl_root_fsolver *rs = SF_FALLIBLE(gsl_root_fsolver_alloc(gsl_root_fsolver_brent));
     *x = NAN;   /* no root: the callers' results are NaN, never uninitialised */
-    if (!rs)
-        return SF_ENOMEM;
-    if (gsl_root_fsolver_set(rs, F, lo, hi)) {
-        gsl_root_fsolver_free(rs);
+    if (gsl_root_fsolver_set(rs, F, lo, hi))
         return SF_EFAIL;
-    }
     int status = GSL_CONTINUE;
     for (int it = 0; it < 200 && status == GSL_CONTINUE; it++) {
         gsl_root_fsolver_iterate(rs);
         status = gsl_root_test_interval(gsl_root_fsolver_x_lower(rs), gsl_root_fsolver_x_upper(rs), tol, 0);
     }
     *x = gsl_root_fsolver_root(rs);
-    gsl_root_fsolver_free(rs);
     return status == GSL_SUCCESS ? SF_SUCCESS : SF_EMAXITER;
 }
 
 int sf_surface_section(const sf_surface *s, double psi, double *theta, double q[3])
 {
-    root_par p = { s, psi, 0, 0 };
+    root_par p = { s, psi, 0 };
     gsl_function F = { torque_at, &p };
     /* T*(-pi/2) = -sum a |p| < 0 < T*(pi/2) whenever mu_bar > 0 */
     double lo = -M_PI / 2, hi = M_PI / 2;
@@ -126,7 +131,7 @@ int sf_surface_section(const sf_surface *s, double psi, double *theta, double q[
         q[0] = q[1] = q[2] = 0;
         return SF_SUCCESS;
     }
-    int rc = brent(&F, lo, hi, 1e-13, theta);
+    int rc = brent(s->inner, &F, lo, hi, 1e-13, theta);
     sf_surface_point(s, *theta, psi, q);
     return rc;
 }
@@ -141,15 +146,13 @@ static double alpha_gap(double psi, void *p)
 {
     root_par *r = p;
     double th, q[3];
-    int rc = sf_surface_section(r->s, psi, &th, q);
-    if (rc == SF_ENOMEM)   /* the caller returns it (a failure to compute, not a property of the surface) */
-        r->rc = rc;
+    sf_surface_section(r->s, psi, &th, q);   /* no allocation; a root short of 1e-13 still points the force */
     return wrap(atan2(q[1], q[0]) - r->alpha);
 }
 
 int sf_surface_section_radius(const sf_surface *s, double alpha, double *rho, double *psi_out)
 {
-    root_par p = { s, 0, alpha, 0 };
+    root_par p = { s, 0, alpha };
     gsl_function F = { alpha_gap, &p };
     *rho = NAN;
     if (s->mu_bar <= 0) {
@@ -166,8 +169,6 @@ int sf_surface_section_radius(const sf_surface *s, double alpha, double *rho, do
         hi = alpha + h;
         glo = alpha_gap(lo, &p);
         ghi = alpha_gap(hi, &p);
-        if (p.rc)
-            return p.rc;
         if (glo <= 0 && ghi >= 0)
             break;
         h *= 2;
@@ -177,19 +178,33 @@ int sf_surface_section_radius(const sf_surface *s, double alpha, double *rho, do
     double psi = glo == 0 ? lo : (ghi == 0 ? hi : 0);
     int rc = SF_SUCCESS;
     if (glo != 0 && ghi != 0)
-        rc = brent(&F, lo, hi, 1e-13, &psi);
+        rc = brent(s->outer, &F, lo, hi, 1e-13, &psi);
     double th, q[3];
     int rc2 = sf_surface_section(s, psi, &th, q);
     *rho = hypot(q[0], q[1]);
     if (psi_out)
         *psi_out = psi;
-    return p.rc ? p.rc : rc ? rc : rc2;
+    return rc ? rc : rc2;
+}
+
+int sf_surface_stick_margin(sf_surface *s, const sf_contact *c, double xb, double yb, double Fx, double Fy,
+                            double *margin)
+{
+    double N = sf_contact_normal_force(c), F = hypot(Fx, Fy), rho;
+    *margin = NAN;   /* never uninitialised */
+    if (!isfinite(F))
+        return SF_EINVAL;
+    sf_surface_recentre(s, c, xb, yb);
+    int rc = sf_surface_section_radius(s, F > 0 ? atan2(Fy, Fx) : 0, &rho, NULL);
+    *margin = rho * N - F;
+    return rc;
 }
 
 int sf_contact_stick_margin(const sf_contact *c, double xb, double yb,
                             double Fx, double Fy, int exact, double *margin)
 {
     double N = sf_contact_normal_force(c), F = hypot(Fx, Fy);
+    *margin = NAN;
     if (!isfinite(F))
         return SF_EINVAL;
     if (!exact) {
@@ -198,13 +213,9 @@ int sf_contact_stick_margin(const sf_contact *c, double xb, double yb,
     }
     sf_surface *s;
     int rc = sf_surface_alloc(c, xb, yb, &s);
-    if (rc) {
-        *margin = NAN;   /* never uninitialised (oscillator.c's stick_margin does not look at rc) */
+    if (rc)
         return rc;
-    }
-    double rho;
-    rc = sf_surface_section_radius(s, F > 0 ? atan2(Fy, Fx) : 0, &rho, NULL);
-    *margin = rho * N - F;
+    rc = sf_surface_stick_margin(s, c, xb, yb, Fx, Fy, margin);
     sf_surface_free(s);
     return rc;
 }

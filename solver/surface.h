@@ -57,4 +57,11 @@ int sf_surface_section_radius(const sf_surface *s, double alpha, double *rho, do
 int sf_contact_stick_margin(const sf_contact *c, double xb, double yb,
                             double Fx, double Fy, int exact, double *margin);
 
+/* The exact (T = 0 section) margin on a surface the caller keeps, re-centred
+ * at (xb, yb) of c (no allocation: the oscillator's stick test, many calls
+ * a run).  *margin is NaN when it cannot be computed (SF_EINVAL: F not
+ * finite); SF_EMAXITER from the section's root finder. */
+int sf_surface_stick_margin(sf_surface *s, const sf_contact *c, double xb, double yb, double Fx, double Fy,
+                            double *margin);
+
 #endif

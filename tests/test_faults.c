@@ -520,6 +520,13 @@ static void oscillator(void **state)
     assert_int_equal(osc(&c), SF_SUCCESS);
     assert_true(walk("oscillator, 3-DOF on a field", osc, &c, SF_SUCCESS, 0) > 20);
     memset(&c, 0, sizeof c);
+    scene_small(&c.s);   /* the exact T = 0 section: its surface is made with the oscillator */
+    c.s.dof = SF_DOF_3;
+    c.s.cof_generator = SF_COFGEN_CIRCULANT;
+    c.s.exact_section = 1;
+    assert_int_equal(osc(&c), SF_SUCCESS);
+    assert_true(walk("oscillator, 3-DOF on a field, exact section", osc, &c, SF_SUCCESS, 0) > 20);
+    memset(&c, 0, sizeof c);
     scene_small(&c.s);
     c.s.dof = SF_DOF_3;
     c.s.cof_generator = SF_COFGEN_TILES;
