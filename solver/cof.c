@@ -448,6 +448,8 @@ struct sf_field *sf_cof_plan_cell_field(const sf_cof_plan *p) { return p->cfield
 static int draw_window(const sf_cof_plan *p, gsl_rng *rng, sf_cof **out)
 {
     const sf_cof_plan_info *in = &p->info;
+    if (!rng)
+        return SF_EINVAL;
     uint64_t key = (uint64_t)gsl_rng_get(rng) << 32;
     key ^= (uint64_t)gsl_rng_get(rng);
     sf_cof *c = cof_new(SF_COF_FIELD);
@@ -485,6 +487,8 @@ int sf_cof_plan_draw(sf_cof_plan *p, gsl_rng *rng, sf_cof **out)
     case SF_COF_UNIFORM:
         return sf_cof_alloc_uniform(p->mu_mean, out);
     case SF_COF_VARIABLE: {
+        if (!rng)
+            return SF_EINVAL;
         int rc = sf_cof_alloc_uniform(sf_lognormal_map(&p->ln, gsl_ran_gaussian_ziggurat(rng, 1.0)), out);
         if (*out)
             (*out)->kind = SF_COF_VARIABLE;

@@ -261,9 +261,11 @@ const sf_cof_plan_info *sf_cof_plan_get_info(const sf_cof_plan *p);
  * reading either); 0 and NULL otherwise. */
 double sf_cof_plan_cell_std(const sf_cof_plan *p);
 struct sf_field *sf_cof_plan_cell_field(const sf_cof_plan *p);
-/* One realisation from rng (nothing is drawn for a uniform COF).  A
- * function of the rng state alone: no field is carried over between
- * draws (each costs one FFT of which the second field is discarded).
+/* One realisation from rng (nothing is drawn for a uniform COF, and rng
+ * may be NULL there; SF_EINVAL for a NULL rng otherwise).  A function of
+ * the rng state alone: no field is carried over between draws (the cell
+ * averages' draw is one real FFT, the lognormal strip's one complex FFT
+ * of which the second field is not extracted).
  * Tiles (info.generator = SF_COFGEN_TILES): the draw takes the 64-bit key
  * of the realisation from two gsl_rng_get calls and returns a window of
  * info.nx x info.ny points over the disc at the origin; the rest of the

@@ -429,6 +429,34 @@ static void sep_sum_embedding(void **state)
     free(row);
     free(lam);
     sf_field_free(f);
+    /* the real sampler: separable-sum kernels only; one field per draw */
+    sf_field_spec rs = sp;
+    rs.sample_real = 1;
+    rs.sep_terms = 0;
+    f = (sf_field *)1;
+    assert_int_equal(sf_field_alloc(&rs, &f), SF_EINVAL);
+    assert_null(f);
+    rs.sep_terms = sp.sep_terms;
+    rs.defer_covariance = 1;
+    assert_int_equal(sf_field_alloc(&rs, &f), SF_SUCCESS);
+    double *a = malloc(rs.m * rs.n * sizeof *a), *b = malloc(rs.m * rs.n * sizeof *b);
+    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+    assert_int_equal(sf_field_sample(f, rng, a), SF_EINVAL);
+    assert_int_equal(sf_field_sample_pair(f, rng, a, b), SF_EINVAL);
+    assert_int_equal(sf_field_sample_fresh(NULL, rng, a), SF_EINVAL);
+    assert_int_equal(sf_field_sample_fresh(f, NULL, a), SF_EINVAL);
+    assert_int_equal(sf_field_sample_fresh(f, rng, NULL), SF_EINVAL);
+    assert_int_equal(sf_field_sample_fresh(f, rng, a), SF_SUCCESS);
+    assert_int_equal(sf_field_measure_covariance(NULL), SF_EINVAL);
+    assert_int_equal(sf_field_covariance(f, b), SF_EINVAL);   /* deferred */
+    assert_int_equal(sf_field_measure_covariance(f), SF_SUCCESS);
+    assert_true(sf_field_get_info(f)->cov_error < 1e-13);
+    assert_int_equal(sf_field_covariance(f, b), SF_SUCCESS);
+    assert_close(b[0], 1, 1e-13);
+    gsl_rng_free(rng);
+    free(a);
+    free(b);
+    sf_field_free(f);
     sp.sep_fn = NULL;
     f = (sf_field *)1;
     assert_int_equal(sf_field_alloc(&sp, &f), SF_EINVAL);

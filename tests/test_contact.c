@@ -338,8 +338,15 @@ static void wrench_and_margins(void **state)
     assert_close(m0, 4 - hypot(1, 2), 1e-14);
     assert_close(m1, m0, 1e-12);   /* uniform: the section is the circle */
     assert_int_equal(sf_contact_stick_margin(c, 0, 0, INFINITY, 0, 0, &m0), SF_EINVAL);
+    assert_int_equal(sf_contact_stick_margin(c, 0, 0, INFINITY, 0, 1, &m0), SF_EINVAL);
+    assert_true(isnan(m0));
     sf_surface *s;
     assert_int_equal(sf_surface_alloc(c, 0, 0, &s), SF_SUCCESS);
+    /* on a surface the caller keeps: the same margin as a fresh one's */
+    assert_int_equal(sf_surface_stick_margin(s, c, 0, 0, 1.0, 2.0, &m0), SF_SUCCESS);
+    assert_close(m0, m1, 0);
+    assert_int_equal(sf_surface_stick_margin(s, c, 0, 0, NAN, 2.0, &m0), SF_EINVAL);
+    assert_true(isnan(m0));
     double th, p[3];
     assert_int_equal(sf_surface_section(s, 0.7, &th, p), SF_SUCCESS);
     assert_close(th, 0, 1e-12);

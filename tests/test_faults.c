@@ -347,8 +347,14 @@ static int lnfield(void *ctx)
         assert_null(f);
         return rc;
     }
+    const sf_scene *s = ctx;
+    double *cof = malloc(s->nx * s->ny * sizeof *cof);
+    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+    int rs = sf_lnfield_sample(f, rng, NULL, cof);   /* its scratch and the kept field, on first use */
+    gsl_rng_free(rng);
+    free(cof);
     sf_lnfield_free(f);
-    return rc;
+    return rs ? rs : rc;
 }
 
 static int tiles(void *ctx)

@@ -131,6 +131,15 @@ static void sampling_is_deterministic_and_pairs_match(void **state)
     assert_memory_equal(a, re, n * sizeof(double));
     assert_memory_equal(b, im, n * sizeof(double));
     assert_true(gsl_rng_get(r1) == gsl_rng_get(r2));   /* same draws consumed */
+    /* a fresh draw is discard + sample, bit for bit, whatever was kept */
+    gsl_rng_set(r1, 7);
+    gsl_rng_set(r2, 7);
+    sf_field_sample(f, r1, a);   /* keeps a second field ... */
+    sf_field_discard(f);         /* ... that discard forgets */
+    sf_field_sample(f, r1, a);
+    sf_field_sample_fresh(f, r2, re);   /* the same stream position: one FFT's draws earlier */
+    sf_field_sample_fresh(f, r2, re);
+    assert_memory_equal(a, re, n * sizeof(double));
     gsl_rng_free(r1);
     gsl_rng_free(r2);
     sf_field_free(f);

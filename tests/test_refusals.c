@@ -896,11 +896,47 @@ static void periodogram_edges(void **state)
     assert_close(sum, var, 1e-12);
 }
 
+/* A draw needs a generator unless the COF is uniform: each kind of plan
+ * refuses a NULL rng with SF_EINVAL and hands out nothing. */
+static void draw_without_rng(void **state)
+{
+    (void)state;
+    struct { int cof, gen; double l, T; } k[] = {
+        { SF_COF_UNIFORM, SF_COFGEN_AUTO, 0.1, 2 },     /* draws nothing: accepted */
+        { SF_COF_VARIABLE, SF_COFGEN_AUTO, 0.1, 2 },
+        { SF_COF_FIELD, SF_COFGEN_CIRCULANT, 0.1, 2 },  /* the lognormal strip */
+        { SF_COF_FIELD, SF_COFGEN_TILES, 0.1, 2 },
+        { SF_COF_FIELD, SF_COFGEN_AUTO, 0.005, 2 },     /* auto: cell averages at l/R = 0.01 */
+    };
+    for (size_t i = 0; i < sizeof k / sizeof k[0]; i++) {
+        sf_scene s;
+        sf_scene_default(&s);
+        s.cof = k[i].cof;
+        s.cof_generator = k[i].gen;
+        s.l = k[i].l;
+        s.T = k[i].T;
+        s.strip_halfwidth = 0.05;
+        sf_cof_plan *p;
+        char err[256] = "";
+        assert_int_equal(sf_cof_plan_alloc(&s, &p, err, sizeof err), SF_SUCCESS);
+        sf_cof *c = (sf_cof *)1;
+        int rc = sf_cof_plan_draw(p, NULL, &c);
+        assert_int_equal(rc, i == 0 ? SF_SUCCESS : SF_EINVAL);
+        if (i)
+            assert_null(c);
+        if (i == 4)
+            assert_true(sf_cof_plan_get_info(p)->box > 0);
+        sf_cof_free(c);
+        sf_cof_plan_free(p);
+    }
+}
+
 int main(void)
 {
     sf_init();
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(cof_refusals),
+        cmocka_unit_test(draw_without_rng),
         cmocka_unit_test(plan_refusals),
         cmocka_unit_test(window_partial_slides),
         cmocka_unit_test(field_refusals),
