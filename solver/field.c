@@ -94,10 +94,10 @@ static size_t min_period(size_t m)
     return m <= 1 ? 1 : 2 * (m - 1);
 }
 
-/* The DFTs of `rows` real even sequences of period P (rows[j + P r],
- * j < P), into out[k + P r]: real, since each row is even.  One FFTW plan
- * (FFTW_ESTIMATE, in place) for all rows. */
-static int dft_even_rows(size_t P, size_t rows, const double *in, double *out)
+/* The DFTs of `rows` real even sequences of period P (v[j + P r], j < P),
+ * in place: v[k + P r] becomes the DFT, real since each row is even.  One
+ * FFTW plan (FFTW_ESTIMATE, in place) for all rows. */
+static int dft_even_rows(size_t P, size_t rows, double *v)
 {
     fftw_complex *buf = SF_FALLIBLE(fftw_alloc_complex(P));
     if (!buf)
@@ -109,10 +109,10 @@ static int dft_even_rows(size_t P, size_t rows, const double *in, double *out)
     }
     for (size_t r = 0; r < rows; r++) {
         for (size_t j = 0; j < P; j++)
-            buf[j] = in[j + P * r];
+            buf[j] = v[j + P * r];
         fftw_execute(p);
         for (size_t k = 0; k < P; k++)
-            out[k + P * r] = creal(buf[k]);
+            v[k + P * r] = creal(buf[k]);
     }
     fftw_destroy_plan(p);
     fftw_free(buf);
@@ -126,7 +126,7 @@ static int eig_1d(size_t P, double d, double l, double *lam)
         size_t jj = j < P - j ? j : P - j;
         lam[j] = sq_exp((double)jj * d, l);
     }
-    return dft_even_rows(P, 1, lam, lam);
+    return dft_even_rows(P, 1, lam);
 }
 
 /* NaN-propagating max (fmax and `if (x > m)` drop a NaN, so one NaN
@@ -245,9 +245,11 @@ static int sep_tables(sf_field *f, size_t px, size_t py)
     f->sy = sf_malloc(T * py * sizeof *f->sy);
     if (!f->sx || !f->sy)
         return SF_ENOMEM;
-    int rc = dft_even_rows(px, T, f->tx, f->sx);
+    memcpy(f->sx, f->tx, T * px * sizeof *f->sx);
+    memcpy(f->sy, f->ty, T * py * sizeof *f->sy);
+    int rc = dft_even_rows(px, T, f->sx);
     if (!rc)
-        rc = dft_even_rows(py, T, f->ty, f->sy);
+        rc = dft_even_rows(py, T, f->sy);
     /* even exactly, not to round-off: lambda(-k) = lambda(k) bit for bit,
      * which a real sampler's Hermitian draw needs (draw_real) */
     for (size_t t = 0; t < T; t++) {
