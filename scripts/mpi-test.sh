@@ -7,14 +7,21 @@ serial=$1
 mpi=$2
 tmp=$(mktemp -d /tmp/sf-mpi.XXXXXX)
 trap 'rm -rf "$tmp"' EXIT INT TERM
+# the lognormal strip, the tiles' neighbourhood and the one-variable
+# limit; then the cell-averaged COF (real sampler) at small l/R
 printf 'T = 30\nt_skip = 10\ncells = 8\nrtol = 1e-6\n' > "$tmp/s.scene"
-"$serial" sweep "$tmp/s.scene" --param l_over_R --values 1,10,1000000 --realisations 7 --out "$tmp/serial.tsv" --summary "$tmp/serial-sum.tsv"
+printf 'T = 30\nt_skip = 10\ncof_model = cell_average\ncells = 32\nrtol = 1e-6\n' > "$tmp/c.scene"
 R="mpirun --oversubscribe"
 [ "$(id -u)" = 0 ] && R="$R --allow-run-as-root"
-for np in 2 3; do
-    OMP_NUM_THREADS=1 $R -np $np "$mpi" sweep "$tmp/s.scene" --param l_over_R --values 1,10,1000000 --realisations 7 \
-        --out "$tmp/mpi$np.tsv" --summary "$tmp/mpi$np-sum.tsv"
-    cmp "$tmp/serial.tsv" "$tmp/mpi$np.tsv"
-    cmp "$tmp/serial-sum.tsv" "$tmp/mpi$np-sum.tsv"
+for sc in s:1,10,1000000 c:0.01,0.03; do
+    name=${sc%%:*}; values=${sc#*:}
+    "$serial" sweep "$tmp/$name.scene" --param l_over_R --values "$values" --realisations 7 \
+        --out "$tmp/$name-serial.tsv" --summary "$tmp/$name-serial-sum.tsv"
+    for np in 2 3; do
+        OMP_NUM_THREADS=1 $R -np $np "$mpi" sweep "$tmp/$name.scene" --param l_over_R --values "$values" \
+            --realisations 7 --out "$tmp/$name-mpi$np.tsv" --summary "$tmp/$name-mpi$np-sum.tsv"
+        cmp "$tmp/$name-serial.tsv" "$tmp/$name-mpi$np.tsv"
+        cmp "$tmp/$name-serial-sum.tsv" "$tmp/$name-mpi$np-sum.tsv"
+    done
 done
-echo "mpi-test: mpirun -np 2 and -np 3 give the serial bytes"
+echo "mpi-test: mpirun -np 2 and -np 3 give the serial bytes (lognormal strip, one variable, cell averages)"
