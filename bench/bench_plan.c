@@ -121,28 +121,36 @@ int bench_plan(FILE *f, const char *dir)
  * COF plan, draw and run, CPU time of this thread, at the default
  * qoi_tol (the plan's settings) and at the settings before issue 14
  * (32 rings, rtol 1e-8); interleaved, medians. */
-static double one_realisation(const sf_scene *s, int *rc)
+/* Draw realisation `seed`'s COF from plan p and run it (no history). */
+static int draw_and_run(const sf_scene *s, sf_cof_plan *p, unsigned long seed)
 {
-    double t0 = bench_cpu();
-    sf_cof_plan *p;
-    sf_cof *cof = NULL;
     char err[200];
-    *rc = sf_cof_plan_alloc(s, &p, err, sizeof err);
-    if (*rc)
-        return NAN;
-    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
-    gsl_rng_set(rng, s->seed);
-    *rc = sf_cof_plan_draw(p, rng, &cof);
-    gsl_rng_free(rng);
-    sf_cof_plan_free(p);
+    sf_cof *cof = NULL;
     sf_osc *o = NULL;
-    if (!*rc && !(*rc = sf_osc_alloc(s, cof, &o, err, sizeof err))) {
+    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+    gsl_rng_set(rng, seed);
+    int rc = sf_cof_plan_draw(p, rng, &cof);
+    gsl_rng_free(rng);
+    if (!rc && !(rc = sf_osc_alloc(s, cof, &o, err, sizeof err))) {
         sf_osc_result r;
-        *rc = sf_osc_run(o, NULL, NULL, 0, &r, err, sizeof err);
+        rc = sf_osc_run(o, NULL, NULL, 0, &r, err, sizeof err);
         sf_osc_result_free(&r);
     }
     sf_osc_free(o);
     sf_cof_free(cof);
+    return rc;
+}
+
+static double one_realisation(const sf_scene *s, int *rc)
+{
+    double t0 = bench_cpu();
+    sf_cof_plan *p;
+    char err[200];
+    *rc = sf_cof_plan_alloc(s, &p, err, sizeof err);
+    if (*rc)
+        return NAN;
+    *rc = draw_and_run(s, p, s->seed);
+    sf_cof_plan_free(p);
     return bench_cpu() - t0;
 }
 
@@ -161,19 +169,7 @@ static int per_realisation(const sf_scene *sc[2], int K, double med[2])
     for (int i = 0; i < K && !rc && t; i++)
         for (int j = 0; j < 2 && !rc; j++) {
             double t0 = bench_cpu();
-            gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
-            gsl_rng_set(rng, sf_mc_seed(sc[j]->seed, (size_t)i));
-            sf_cof *cof = NULL;
-            sf_osc *o = NULL;
-            rc = sf_cof_plan_draw(p[j], rng, &cof);
-            gsl_rng_free(rng);
-            if (!rc && !(rc = sf_osc_alloc(sc[j], cof, &o, err, sizeof err))) {
-                sf_osc_result r;
-                rc = sf_osc_run(o, NULL, NULL, 0, &r, err, sizeof err);
-                sf_osc_result_free(&r);
-            }
-            sf_osc_free(o);
-            sf_cof_free(cof);
+            rc = draw_and_run(sc[j], p[j], sf_mc_seed(sc[j]->seed, (size_t)i));
             t[j * K + i] = bench_cpu() - t0;
         }
     for (int j = 0; j < 2; j++) {

@@ -6,13 +6,13 @@
 # in every test run (seconds, no build).
 set -u
 cd "$(dirname "$0")/.."
+. scripts/mutant-lib.sh
 bad=0; n=0
 for m in tests/mutants/*.mut; do
     n=$((n + 1))
-    file=$(sed -n 's/^file: //p' "$m")
-    find=$(sed -n 's/^find: //p' "$m")
-    cases=$(sed -n 's/^cases: //p' "$m")
-    c=$(FIND="$find" perl -0ne '$c = () = /\Q$ENV{FIND}\E/g; print $c' "$file" 2>/dev/null || echo 0)
+    file=$(mut_key "$m" file)
+    cases=$(mut_key "$m" cases)
+    c=$(text_count "$file" "$(mut_key "$m" find)")
     if [ "$c" != 1 ]; then
         echo "mutants: STALE $(basename "$m" .mut): its text is found $c times in $file" >&2
         bad=$((bad + 1))

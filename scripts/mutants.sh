@@ -21,6 +21,7 @@
 set -u
 top=$(cd "$(dirname "$0")/.." && pwd)
 cd "$top"
+. scripts/mutant-lib.sh
 list=${*:-$(ls tests/mutants/*.mut 2>/dev/null)}
 [ -n "$list" ] || { echo "no mutants in tests/mutants" >&2; exit 2; }
 work=$(mktemp -d /tmp/sf-mutants.XXXXXX)
@@ -38,12 +39,12 @@ tier_of() { grep -qE '^[[:space:]]*tier[[:space:]]*=[[:space:]]*(full|paper)' "$
 for m in $list; do
     total=$((total + 1))
     name=$(basename "$m" .mut)
-    file=$(sed -n 's/^file: //p' "$m")
-    find=$(sed -n 's/^find: //p' "$m")
-    repl=$(sed -n 's/^replace: //p' "$m")
-    cases=$(sed -n 's/^cases: //p' "$m")
-    eqs=$(sed -n 's/^eq: //p' "$m" | tr -d ' ')
-    moderate=$(sed -n 's/^moderate: //p' "$m" | tr -d ' ')
+    file=$(mut_key "$m" file)
+    find=$(mut_key "$m" find)
+    repl=$(mut_key "$m" replace)
+    cases=$(mut_key "$m" cases)
+    eqs=$(mut_key "$m" eq | tr -d ' ')
+    moderate=$(mut_key "$m" moderate | tr -d ' ')
     [ -n "$eqs" ] || eqs=unmapped
     [ -n "$moderate" ] || moderate=no
     [ "$moderate" = yes ] && mod_total=$((mod_total + 1))
@@ -61,7 +62,7 @@ for m in $list; do
     mkdir -p "$dir"
     git ls-files -co --exclude-standard | grep -v '^reports/' | tar -cf - -T - | tar -xf - -C "$dir"
     [ -d build ] && tar -cf - build | tar -xf - -C "$dir"
-    n=$(FIND="$find" perl -0ne '$c = () = /\Q$ENV{FIND}\E/g; print $c' "$dir/$file" 2>/dev/null || echo 0)
+    n=$(text_count "$dir/$file" "$find")
     if [ "$n" != 1 ]; then
         echo "STALE  $name: '$find' found $n times in $file"
         echo "| $name | $file | $eqs | $moderate | **stale** (text found $n times) | |" >> "$tmp_report"

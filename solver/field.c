@@ -28,8 +28,9 @@ struct sf_field {
     double *lx, *ly;        /* raw 1-D eigenvalues (separable path) */
     double *lam;            /* raw 2-D eigenvalues, before clamping, of a general kernel
                                (the separable paths rebuild them by rows: eig_row) */
-    double *amp;            /* sqrt(max(lambda, 0)/M), length M */
-    double *cov;            /* produced covariance at grid lags, m*n */
+    double *amp;            /* sqrt(max(lambda, 0)/M): M of them, or the stored half
+                               (px/2 + 1) py of a real sampler */
+    double *cov;            /* produced covariance at grid lags, m*n (NULL until measured) */
     fftw_complex *work;
     fftw_plan plan;
     double *kept;           /* second field of the last FFT */
@@ -38,7 +39,6 @@ struct sf_field {
     size_t tpx, tpy;        /* the periods the tables were made for */
     double *sx, *sy;        /* their 1-D DFTs per term (real: each row is even): the 2-D
                                eigenvalues are sum_t sx[kx + px t] sy[ky + py t] */
-    int cov_done;           /* cov and info.cov_error computed */
 };
 
 static double sq_exp(double r, double l)

@@ -27,9 +27,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <gsl/gsl_blas.h>
 #include <gsl/gsl_integration.h>
-#include <gsl/gsl_linalg.h>
 #include <gsl/gsl_math.h>
 #include <gsl/gsl_randist.h>
 
@@ -88,63 +86,36 @@ static double oracle_cov(const oracle_par *o, double h, double dx, double dy, co
 }
 
 /* Node patches of the effective field against the oracle's covariance:
- * whitened likelihood-ratio test of Cov = Sigma (common.c). */
+ * whitened likelihood-ratio test of Cov = Sigma (common.c: check_wlrt). */
 enum { PATCH = 4 };
-typedef struct {
-    gsl_matrix *L;   /* Cholesky factor of the oracle's patch covariance */
-    gsl_matrix *S;   /* sum of z z^T */
-    gsl_vector *z;
-    size_t N;
-    int bad;         /* the oracle's matrix was not positive definite */
-} patch_lrt;
 typedef struct { size_t N; double stat, tr; } lrt_note;
 
-static void patch_lrt_init(patch_lrt *t, const oracle_par *o, double h, double d, const double *u,
-                           const double *w, size_t nn)
+/* The oracle's covariance of a PATCH x PATCH patch of nodes at spacing d. */
+static gsl_matrix *patch_sigma(const oracle_par *o, double h, double d, const double *u, const double *w, size_t nn)
 {
     enum { P = PATCH * PATCH };
     double cl[PATCH][PATCH];   /* the oracle at lags (a d, b d); it is even in each */
     for (int a = 0; a < PATCH; a++)
         for (int b = 0; b < PATCH; b++)
             cl[a][b] = oracle_cov(o, h, a * d, b * d, u, w, nn);
-    t->L = gsl_matrix_alloc(P, P);
-    t->S = gsl_matrix_calloc(P, P);
-    t->z = gsl_vector_alloc(P);
-    t->N = 0;
+    gsl_matrix *m = gsl_matrix_alloc(P, P);
     for (int p = 0; p < P; p++)
         for (int q = 0; q < P; q++)
-            gsl_matrix_set(t->L, p, q, cl[abs(p % PATCH - q % PATCH)][abs(p / PATCH - q / PATCH)]);
-    t->bad = gsl_linalg_cholesky_decomp1(t->L) != 0;
+            gsl_matrix_set(m, p, q, cl[abs(p % PATCH - q % PATCH)][abs(p / PATCH - q / PATCH)]);
+    return m;
 }
 
-/* Patches with corners at a lattice of stride `stride` nodes (their
- * gaps beyond the support: independent patches). */
-static void patch_lrt_add(patch_lrt *t, const double *mu, size_t nx, size_t ny, size_t stride, double mean)
+/* Patches with corners at a lattice of stride `stride` nodes (their gaps
+ * beyond the support: independent patches), mu_h - mean into the test. */
+static void patch_lrt_add(check_wlrt *t, const double *mu, size_t nx, size_t ny, size_t stride, double mean)
 {
+    double y[PATCH * PATCH];
     for (size_t jy = 0; jy + PATCH <= ny; jy += stride)
         for (size_t ix = 0; ix + PATCH <= nx; ix += stride) {
             for (int q = 0; q < PATCH * PATCH; q++)
-                gsl_vector_set(t->z, (size_t)q, mu[ix + (size_t)(q % PATCH) + nx * (jy + (size_t)(q / PATCH))] - mean);
-            gsl_blas_dtrsv(CblasLower, CblasNoTrans, CblasNonUnit, t->L, t->z);
-            gsl_blas_dsyr(CblasLower, 1.0, t->z, t->S);
-            t->N++;
+                y[q] = mu[ix + (size_t)(q % PATCH) + nx * (jy + (size_t)(q / PATCH))] - mean;
+            check_wlrt_add(t, y);
         }
-}
-
-/* The p-value (NaN when the oracle's matrix failed or no patch was seen:
- * the case fails), and frees the test. */
-static double patch_lrt_done(patch_lrt *t, double *stat, double *tr)
-{
-    double pv = NAN;
-    *stat = *tr = NAN;
-    if (!t->bad && t->N) {
-        gsl_matrix_scale(t->S, 1.0 / (double)t->N);
-        pv = check_lrt_identity(t->S, t->N, stat, tr);
-    }
-    gsl_matrix_free(t->L);
-    gsl_matrix_free(t->S);
-    gsl_vector_free(t->z);
-    return pv;
 }
 
 static int chk_covariance(const sf_case *c, sf_result *r)
@@ -225,8 +196,8 @@ static int chk_covariance(const sf_case *c, sf_result *r)
         size_t step = (size_t)ceil((h + 9 * s.l) / d) + 1, npt = 0;
         double sum = 0, ss = 0, cap_n = (double)s.samples * (double)(in->nx / step + 1) * (double)(in->ny / step + 1);
         double *vals = check_alloc((size_t)cap_n * sizeof *vals);
-        patch_lrt pl;
-        patch_lrt_init(&pl, &o, h, d, u, w, nn);
+        check_wlrt pl;
+        int lrt_ok = !check_wlrt_init(&pl, patch_sigma(&o, h, d, u, w, nn));   /* else: p-value NaN, the row fails */
         free(u);
         free(w);
         for (size_t i = 0; i < s.samples && !rc; i++) {
@@ -237,12 +208,15 @@ static int chk_covariance(const sf_case *c, sf_result *r)
                 for (size_t jy = 0; jy < in->ny; jy += step)
                     for (size_t ix = 0; ix < in->nx; ix += step)
                         vals[npt++] = mu[ix + in->nx * jy];
-                patch_lrt_add(&pl, mu, in->nx, in->ny, step + PATCH - 1, s.mu_mean);
+                if (lrt_ok)
+                    patch_lrt_add(&pl, mu, in->nx, in->ny, step + PATCH - 1, s.mu_mean);
             }
             sf_cof_free(cof);
         }
         sf_cof_plan_free(p);
-        double lrt_stat, lrt_tr, plrt = patch_lrt_done(&pl, &lrt_stat, &lrt_tr);
+        double lrt_stat = NAN, lrt_tr = NAN;
+        size_t lrt_n = lrt_ok ? pl.N : 0;
+        double plrt = lrt_ok ? check_wlrt_done(&pl, &lrt_stat, &lrt_tr) : NAN;
         if (rc)
             break;
         for (size_t i = 0; i < npt; i++)
@@ -271,8 +245,8 @@ static int chk_covariance(const sf_case *c, sf_result *r)
         sf_check_pvalue(r, t, pv, c->spec.alpha / (double)ntests, npt);
         snprintf(t, sizeof t, "l/R = %g: covariance of %d x %d node patches = the oracle's (whitened LRT, chi2 %d dof)",
                  x[k], PATCH, PATCH, PATCH * PATCH * (PATCH * PATCH + 1) / 2);
-        sf_check_pvalue(r, t, plrt, c->spec.alpha / (double)ntests, pl.N);
-        lrt_row[k] = (lrt_note){ pl.N, lrt_stat, lrt_tr };
+        sf_check_pvalue(r, t, plrt, c->spec.alpha / (double)ntests, lrt_n);
+        lrt_row[k] = (lrt_note){ lrt_n, lrt_stat, lrt_tr };
     }
     gsl_integration_glfixed_table_free(gl);
     if (!rc) {

@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
+#include <gsl/gsl_blas.h>
 #include <gsl/gsl_linalg.h>
 #include <gsl/gsl_math.h>
 #include <gsl/gsl_sf_ellint.h>
@@ -79,6 +80,48 @@ double check_lrt_identity(const gsl_matrix *S, size_t N, double *stat, double *t
     if (trace) *trace = tr / pd;
     /* NaN data give a NaN statistic: p-value NaN, which fails the row */
     return bad ? 0.0 : sf_chisq_pvalue(st, pd * (pd + 1) / 2);
+}
+
+int check_wlrt_init(check_wlrt *t, gsl_matrix *sigma)
+{
+    memset(t, 0, sizeof *t);
+    if (gsl_linalg_cholesky_decomp1(sigma)) {
+        gsl_matrix_free(sigma);
+        return SF_EFAIL;
+    }
+    t->L = sigma;
+    t->S = gsl_matrix_calloc(sigma->size1, sigma->size1);
+    t->z = gsl_vector_alloc(sigma->size1);
+    if (!t->S || !t->z) {
+        fputs("slipfield: out of memory in a check\n", stderr);
+        exit(SF_EXIT_INTERNAL);
+    }
+    return SF_SUCCESS;
+}
+
+void check_wlrt_add(check_wlrt *t, const double *y)
+{
+    for (size_t a = 0; a < t->z->size; a++)
+        gsl_vector_set(t->z, a, y[a]);
+    gsl_blas_dtrsv(CblasLower, CblasNoTrans, CblasNonUnit, t->L, t->z);
+    gsl_blas_dsyr(CblasLower, 1.0, t->z, t->S);
+    t->N++;
+}
+
+double check_wlrt_done(check_wlrt *t, double *stat, double *trace)
+{
+    double pv = NAN;
+    if (stat) *stat = NAN;
+    if (trace) *trace = NAN;
+    if (t->N) {
+        gsl_matrix_scale(t->S, 1.0 / (double)t->N);
+        pv = check_lrt_identity(t->S, t->N, stat, trace);
+    }
+    gsl_matrix_free(t->L);
+    gsl_matrix_free(t->S);
+    gsl_vector_free(t->z);
+    memset(t, 0, sizeof *t);
+    return pv;
 }
 
 void *check_alloc(size_t n)

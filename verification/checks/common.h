@@ -60,6 +60,23 @@ double ref_rho_h(double sigma, double rho);
 #include <gsl/gsl_matrix.h>
 double check_lrt_identity(const gsl_matrix *S, size_t N, double *stat, double *trace);
 
+/* The same test of Cov = Sigma for sample vectors y of length p with known
+ * mean 0, accumulated one vector at a time: each is whitened by the
+ * Cholesky factor of Sigma (z = L^-1 y) and S += z z^T.
+ * check_wlrt_init takes sigma (p x p) and factors it in place (it then
+ * belongs to the test): SF_EFAIL when it is not positive definite, and
+ * the test is then freed.  check_wlrt_done frees the test and returns the
+ * p-value of check_lrt_identity (NaN when no vector was added). */
+#include <gsl/gsl_vector.h>
+typedef struct {
+    gsl_matrix *L, *S;
+    gsl_vector *z;
+    size_t N;
+} check_wlrt;
+int check_wlrt_init(check_wlrt *t, gsl_matrix *sigma);
+void check_wlrt_add(check_wlrt *t, const double *y);
+double check_wlrt_done(check_wlrt *t, double *stat, double *trace);
+
 /* Build the Gaussian field plan a case's (generator) scene asks for; note the
  * embedding facts in the findings.  Returns SF_SUCCESS or SF_ETRUNC (plan
  * usable) or an error (plan NULL). */
