@@ -20,11 +20,15 @@ static void usage(FILE *f)
           "Monte Carlo sweep: at each value of NAME, N realisations of the scene.\n"
           "  --param NAME      a numeric scene key, or l_over_R (l = value x R), or\n"
           "                    mu_mean (at the scene's CV: mu_std scales with it)\n"
-          "  --out FILE        TSV: param value realisation pv_x_ratio pv_F_ratio\n"
-          "                    stick_fraction_ratio (ratios to the deterministic model,\n"
-          "                    uniform COF at mu_mean, same T, t_skip and stepper)\n"
-          "  --summary FILE    TSV: param value n mean and std of each ratio, and the\n"
-          "                    deterministic pv_x [m], pv_F [N], stick_fraction\n"
+          "  --out FILE        TSV: param value realisation, the ratios pv_x_ratio pv_F_ratio\n"
+          "                    stick_fraction_ratio to the deterministic model (uniform COF\n"
+          "                    at mu_mean, same T, t_skip and stepper), then pv_x [m],\n"
+          "                    pv_F [N], stick_fraction [-]\n"
+          "  --summary FILE    TSV, one row per value: n, and per QoI the realisations\n"
+          "                    used and excluded (a non-finite value is excluded, never\n"
+          "                    averaged), mean, std (n - 1), standard error of the mean,\n"
+          "                    95% confidence interval (Student t), the deterministic\n"
+          "                    value, and the ratio's mean, std and standard error\n"
           "  --threads T       OpenMP threads (default: all); results do not depend on it\n"
           "  --resume          continue from FILE.ckpt<k> checkpoints of an interrupted run\n"
           "Realisation i of every value uses its own stream (seed, i): bit-identical\n"
@@ -105,10 +109,9 @@ int sf_cmd_sweep(int argc, char **argv)
             return SF_EXIT_USAGE;
         }
     }
-    fprintf(out.f, "param\tvalue\trealisation\tpv_x_ratio\tpv_F_ratio\tstick_fraction_ratio\n");
+    sf_sweep_write_header(out.f);
     if (sum_path)
-        fprintf(sum.f, "param\tvalue\tn\tmean_pv_x_ratio\tstd_pv_x_ratio\tmean_pv_F_ratio\tstd_pv_F_ratio\t"
-                       "mean_stick_fraction_ratio\tstd_stick_fraction_ratio\tdet_pv_x\tdet_pv_F\tdet_stick_fraction\n");
+        sf_sweep_summary_header(sum.f);
     int ok = 1;
     for (size_t k = 0; k < nv && ok; k++) {
         sf_scene s = s0;
@@ -125,13 +128,9 @@ int sf_cmd_sweep(int argc, char **argv)
             if (p.from_checkpoint)
                 fprintf(stderr, "slipfield sweep: %s = %g: %zu of %zu realisations from the checkpoint\n", param,
                         v[k], p.from_checkpoint, n);
-            for (size_t i = 0; i < n; i++)
-                fprintf(out.f, "%s\t%.17g\t%zu\t%.17g\t%.17g\t%.17g\n", param, v[k], i, p.ratio[3 * i],
-                        p.ratio[3 * i + 1], p.ratio[3 * i + 2]);
+            sf_sweep_write_rows(out.f, param, v[k], &p);
             if (sum_path)
-                fprintf(sum.f, "%s\t%.17g\t%zu\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\n", param,
-                        v[k], n, p.mean[0], p.std[0], p.mean[1], p.std[1], p.mean[2], p.std[2], p.det[0], p.det[1],
-                        p.det[2]);
+                sf_sweep_summary_row(sum.f, param, v[k], &p);
         }
         sf_sweep_point_free(&p);
     }

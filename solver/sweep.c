@@ -9,7 +9,11 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <gsl/gsl_cdf.h>
 #include <gsl/gsl_statistics_double.h>
+
+static const char *const qname[SF_SWEEP_NQ] = { "pv_x", "pv_F", "stick_fraction" };
+static const char *const qunit[SF_SWEEP_NQ] = { "m", "N", "-" };
 
 int sf_sweep_set(sf_scene *s, const char *name, double value, char *err, size_t errlen)
 {
@@ -31,7 +35,6 @@ int sf_sweep_set(sf_scene *s, const char *name, double value, char *err, size_t 
 
 typedef struct {
     const sf_scene *s;
-    const double *det;
     sf_cof_plan *plan;
 } ws_t;
 
@@ -69,9 +72,9 @@ static int realise(void *p, size_t i, gsl_rng *rng, double *out)
     rc = sf_osc_alloc(w->s, cof, &o, NULL, 0);
     if (!rc) {
         rc = sf_osc_run(o, NULL, NULL, 0, &r, NULL, 0);
-        out[SF_SWEEP_PVX] = r.pv_x / w->det[SF_SWEEP_PVX];
-        out[SF_SWEEP_PVF] = r.pv_F / w->det[SF_SWEEP_PVF];
-        out[SF_SWEEP_SF] = r.stick_fraction / w->det[SF_SWEEP_SF];
+        out[SF_SWEEP_PVX] = r.pv_x;
+        out[SF_SWEEP_PVF] = r.pv_F;
+        out[SF_SWEEP_SF] = r.stick_fraction;
         sf_osc_result_free(&r);
         sf_osc_free(o);
     }
@@ -105,48 +108,138 @@ int sf_sweep_run(const sf_scene *s, size_t n, int threads, const char *checkpoin
     out->det[SF_SWEEP_PVF] = r.pv_F;
     out->det[SF_SWEEP_SF] = r.stick_fraction;
     sf_osc_result_free(&r);
-    if (!(out->det[SF_SWEEP_PVX] > 0) || !(out->det[SF_SWEEP_SF] > 0)) {
-        return sf_seterr(err, errlen, SF_EINVAL, "the deterministic reference has no complete cycle after t_skip: raise T");
-    }
+    for (int q = 0; q < SF_SWEEP_NQ; q++)   /* every ratio needs its reference */
+        if (!(out->det[q] > 0) || !isfinite(out->det[q]))
+            return sf_seterr(err, errlen, SF_EINVAL,
+                             "the deterministic reference has no complete cycle after t_skip (%s = %g): raise T",
+                             qname[q], out->det[q]);
     out->n = n;
+    out->qoi = sf_calloc(n * SF_SWEEP_NQ, sizeof *out->qoi);
     out->ratio = sf_calloc(n * SF_SWEEP_NQ, sizeof *out->ratio);
-    if (!out->ratio)
+    if (!out->qoi || !out->ratio)
         return SF_ENOMEM;
-    ws_t ctx = { s, out->det, NULL };
+    ws_t ctx = { s, NULL };
     sf_mc_spec spec = { n, SF_SWEEP_NQ, s->seed, threads, checkpoint, resume, 0, label };
-    /* the checkpoint's identity: the effective scene as text (no padding bytes) */
+    /* the checkpoint's identity: what a line holds and the effective
+     * scene as text (no padding bytes) */
     char *text = NULL;
     size_t len = 0;
     FILE *m = SF_FALLIBLE(open_memstream(&text, &len));
     if (!m)
         return SF_ENOMEM;
+    fputs("sweep v2: pv_x pv_F stick_fraction\n", m);
     sf_scene_write(s, m);
     fclose(m);
     spec.key = sf_mc_hash(text, len, 0);
     free(text);
     sf_mc_ops ops = { ws_alloc, ws_free, realise };
-    rc = sf_mc_run(&spec, &ops, &ctx, out->ratio, &out->from_checkpoint, err, errlen);
-    if (rc)
-        return rc;
-    double *v = sf_malloc(n * sizeof *v);
+    rc = sf_mc_run(&spec, &ops, &ctx, out->qoi, &out->from_checkpoint, err, errlen);
+    return rc ? rc : sf_sweep_point_stats(out);
+}
+
+int sf_sweep_stat_of(const double *x, size_t stride, size_t n, sf_sweep_stat *st)
+{
+    double *v = sf_malloc((n ? n : 1) * sizeof *v);
     if (!v)
         return SF_ENOMEM;
-    for (int q = 0; q < SF_SWEEP_NQ; q++) {
-        size_t m = 0;
-        for (size_t i = 0; i < n; i++)
-            if (isfinite(out->ratio[i * SF_SWEEP_NQ + q]))
-                v[m++] = out->ratio[i * SF_SWEEP_NQ + q];
-        out->mean[q] = m ? gsl_stats_mean(v, 1, m) : NAN;
-        out->std[q] = m > 1 ? gsl_stats_sd(v, 1, m) : NAN;
-        if (q == SF_SWEEP_PVX)
-            out->n_valid = m;
+    size_t m = 0;
+    for (size_t i = 0; i < n; i++)
+        if (isfinite(x[i * stride]))
+            v[m++] = x[i * stride];
+    st->n_used = m;
+    st->n_excluded = n - m;
+    st->mean = m ? gsl_stats_mean(v, 1, m) : NAN;
+    st->std = st->se = st->ci_lo = st->ci_hi = NAN;
+    if (m > 1) {
+        st->std = gsl_stats_sd_m(v, 1, m, st->mean);
+        st->se = st->std / sqrt((double)m);
+        double t = gsl_cdf_tdist_Pinv(0.5 * (1 + SF_SWEEP_CI_LEVEL), (double)(m - 1));
+        st->ci_lo = st->mean - t * st->se;
+        st->ci_hi = st->mean + t * st->se;
     }
     free(v);
     return SF_SUCCESS;
 }
 
+int sf_sweep_point_stats(sf_sweep_point *p)
+{
+    p->n_valid = 0;
+    for (size_t i = 0; i < p->n; i++) {
+        int all = 1;
+        for (int q = 0; q < SF_SWEEP_NQ; q++) {
+            double *r = p->ratio + i * SF_SWEEP_NQ + q;
+            *r = p->qoi[i * SF_SWEEP_NQ + q] / p->det[q];
+            all = all && isfinite(*r) && isfinite(p->qoi[i * SF_SWEEP_NQ + q]);
+        }
+        p->n_valid += (size_t)all;
+    }
+    for (int q = 0; q < SF_SWEEP_NQ; q++) {
+        int rc = sf_sweep_stat_of(p->qoi + q, SF_SWEEP_NQ, p->n, &p->stat[q]);
+        if (rc || (rc = sf_sweep_stat_of(p->ratio + q, SF_SWEEP_NQ, p->n, &p->rstat[q])))
+            return rc;
+        p->mean[q] = p->rstat[q].mean;
+        p->std[q] = p->rstat[q].std;
+    }
+    return SF_SUCCESS;
+}
+
+void sf_sweep_fmt(char *buf, size_t len, double x)
+{
+    for (int prec = 1; prec <= 17; prec++) {
+        snprintf(buf, len, "%.*g", prec, x);
+        if (strtod(buf, NULL) == x || !isfinite(x))
+            return;
+    }
+}
+
+void sf_sweep_write_header(FILE *f)
+{
+    fputs("param\tvalue\trealisation\tpv_x_ratio\tpv_F_ratio\tstick_fraction_ratio", f);
+    for (int q = 0; q < SF_SWEEP_NQ; q++)
+        fprintf(f, "\t%s[%s]", qname[q], qunit[q]);
+    fputc('\n', f);
+}
+
+void sf_sweep_write_rows(FILE *f, const char *param, double value, const sf_sweep_point *p)
+{
+    char v[32];
+    sf_sweep_fmt(v, sizeof v, value);
+    for (size_t i = 0; i < p->n; i++) {
+        const double *r = p->ratio + i * SF_SWEEP_NQ, *x = p->qoi + i * SF_SWEEP_NQ;
+        fprintf(f, "%s\t%s\t%zu\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\n", param, v, i, r[0], r[1], r[2], x[0],
+                x[1], x[2]);
+    }
+}
+
+void sf_sweep_summary_header(FILE *f)
+{
+    int lv = (int)lround(100 * SF_SWEEP_CI_LEVEL);
+    fputs("param\tvalue\tn", f);
+    for (int q = 0; q < SF_SWEEP_NQ; q++) {
+        const char *a = qname[q], *u = qunit[q];
+        fprintf(f, "\t%s_n_used\t%s_n_excluded\t%s_mean[%s]\t%s_std[%s]\t%s_se[%s]\t%s_ci%d_lo[%s]\t%s_ci%d_hi[%s]"
+                   "\t%s_det[%s]\t%s_ratio_mean[-]\t%s_ratio_std[-]\t%s_ratio_se[-]",
+                a, a, a, u, a, u, a, u, a, lv, u, a, lv, u, a, u, a, a, a);
+    }
+    fputc('\n', f);
+}
+
+void sf_sweep_summary_row(FILE *f, const char *param, double value, const sf_sweep_point *p)
+{
+    char v[32];
+    sf_sweep_fmt(v, sizeof v, value);
+    fprintf(f, "%s\t%s\t%zu", param, v, p->n);
+    for (int q = 0; q < SF_SWEEP_NQ; q++) {
+        const sf_sweep_stat *a = &p->stat[q], *b = &p->rstat[q];
+        fprintf(f, "\t%zu\t%zu\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g", a->n_used,
+                a->n_excluded, a->mean, a->std, a->se, a->ci_lo, a->ci_hi, p->det[q], b->mean, b->std, b->se);
+    }
+    fputc('\n', f);
+}
+
 void sf_sweep_point_free(sf_sweep_point *p)
 {
+    free(p->qoi);
     free(p->ratio);
-    p->ratio = NULL;
+    p->qoi = p->ratio = NULL;
 }

@@ -4,8 +4,8 @@
  * mu_mean, same T, t_skip, eps_lambda and stepper: the same QoI
  * definitions, so ratios compare like with like), then N realisations
  * (montecarlo.h: realisation i has its own stream, OpenMP, checkpoint),
- * each giving the ratios pv_x / pv_x,det, pv_F / pv_F,det and
- * stick_fraction / stick_fraction,det.
+ * each giving pv_x [m], pv_F [N] and the stick fraction [-], and their
+ * ratios to the deterministic values.
  *
  * Parameters: any numeric scene key, plus `l_over_R` (sets l = value x R,
  * dimensionless) and `mu_mean` at fixed CV (mu_std scales with it, as in
@@ -15,17 +15,35 @@
 #define SF_SWEEP_H
 
 #include <stddef.h>
+#include <stdio.h>
 #include "scene.h"
 
 enum { SF_SWEEP_PVX = 0, SF_SWEEP_PVF = 1, SF_SWEEP_SF = 2, SF_SWEEP_NQ = 3 };
 
+/* The level of every confidence interval a sweep reports. */
+#define SF_SWEEP_CI_LEVEL 0.95
+
+/* One quantity over a point's realisations.  A non-finite value (a
+ * realisation the QoI's definition cannot measure) is excluded and
+ * counted, never averaged: n_used + n_excluded = n.  std divides by
+ * n_used - 1; se = std / sqrt(n_used), the Monte Carlo standard error of
+ * the mean; [ci_lo, ci_hi] = mean -+ t se, t the Student quantile at
+ * (1 + SF_SWEEP_CI_LEVEL) / 2 with n_used - 1 degrees of freedom.  NAN
+ * where too few values are used (mean: none; the rest: fewer than 2). */
+typedef struct {
+    size_t n_used, n_excluded;
+    double mean, std, se, ci_lo, ci_hi;
+} sf_sweep_stat;
+
 typedef struct {
     double det[SF_SWEEP_NQ];    /* deterministic pv_x [m], pv_F [N], stick fraction [-] */
-    double *ratio;              /* n x SF_SWEEP_NQ, realisation-major */
-    double mean[SF_SWEEP_NQ], std[SF_SWEEP_NQ];   /* over the realisations with a complete cycle */
+    double *qoi;                /* n x SF_SWEEP_NQ, realisation-major: the values, in their units */
+    double *ratio;              /* n x SF_SWEEP_NQ: qoi / det */
+    sf_sweep_stat stat[SF_SWEEP_NQ];    /* of the values */
+    sf_sweep_stat rstat[SF_SWEEP_NQ];   /* of the ratios */
+    double mean[SF_SWEEP_NQ], std[SF_SWEEP_NQ];   /* of the ratios: rstat[q].mean, rstat[q].std */
     size_t n, from_checkpoint;
-    size_t n_valid;             /* realisations with at least one complete cycle after t_skip
-                                   (the others have NaN ratios: no cycle to measure) */
+    size_t n_valid;             /* realisations whose every QoI is finite */
 } sf_sweep_point;
 
 /* Apply parameter `name` = value to s (SF_EPARSE with the reason). */
@@ -35,5 +53,24 @@ int sf_sweep_set(sf_scene *s, const char *name, double value, char *err, size_t 
 int sf_sweep_run(const sf_scene *s, size_t n, int threads, const char *checkpoint, int resume,
                  const char *label, sf_sweep_point *out, char *err, size_t errlen);
 void sf_sweep_point_free(sf_sweep_point *p);
+
+/* The statistics of x[0], x[stride], ... x[(n - 1) stride]. */
+int sf_sweep_stat_of(const double *x, size_t stride, size_t n, sf_sweep_stat *st);
+
+/* From p->qoi, p->det and p->n: the ratios and every statistic above
+ * (sf_sweep_run calls it; so may a caller that changed p->qoi). */
+int sf_sweep_point_stats(sf_sweep_point *p);
+
+/* The shortest %g text of x that reads back to x (0.1, not
+ * 0.10000000000000001). */
+void sf_sweep_fmt(char *buf, size_t len, double x);
+
+/* The sweep's two tables (TSV, a header line, then the rows of each
+ * point): per realisation, and the summary per point.  `slipfield sweep`
+ * writes them with --out and --summary. */
+void sf_sweep_write_header(FILE *f);
+void sf_sweep_write_rows(FILE *f, const char *param, double value, const sf_sweep_point *p);
+void sf_sweep_summary_header(FILE *f);
+void sf_sweep_summary_row(FILE *f, const char *param, double value, const sf_sweep_point *p);
 
 #endif
