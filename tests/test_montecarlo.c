@@ -1,13 +1,18 @@
 /* Unit tests: Monte Carlo driver: counter-based seeds, bit-identical
- * results for any thread count, checkpoint and resume. */
+ * results for any thread count, checkpoint and resume; the sweep's
+ * aggregation and the summary it prints. */
 #include "test_util.h"
 #include "montecarlo.h"
+#include "sweep.h"
 #include "sf_error.h"
 
+#include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
 #include <gsl/gsl_randist.h>
+#include <gsl/gsl_statistics_double.h>
 
 /* A realisation: a few draws, so the whole stream matters. */
 static int realise(void *ws, size_t i, gsl_rng *rng, double *out)
@@ -112,6 +117,90 @@ static void checkpoint_resume(void **state)
     free(out);
 }
 
+/* The summary row's field named `col` (header of the same table). */
+static double summary_field(const char *text, const char *col)
+{
+    char *t = strdup(text), *save1, *save2;
+    char *head = strtok_r(t, "\n", &save1), *row = strtok_r(NULL, "\n", &save1);
+    double v = NAN;
+    char *h = strtok_r(head, "\t", &save2);
+    char *cells[64];
+    size_t nc = 0;
+    for (char *c = strtok_r(row, "\t", &save1); c && nc < 64; c = strtok_r(NULL, "\t", &save1))
+        cells[nc++] = c;
+    for (size_t k = 0; h && k < nc; k++, h = strtok_r(NULL, "\t", &save2))
+        if (!strcmp(h, col))
+            v = strtod(cells[k], NULL);
+    free(t);
+    return v;
+}
+
+/* 16 realisations, 8 of them without a stick fraction (NaN) and one
+ * without a PV_x (+Inf): every count and statistic the summary prints
+ * is that of the finite values (the summary once said n = 16 over 8). */
+static void summary_counts_finite_values(void **state)
+{
+    (void)state;
+    sf_sweep_point p = { .det = { 2, 4, 0.5 }, .n = 16 };
+    p.qoi = calloc(16 * SF_SWEEP_NQ, sizeof *p.qoi);
+    p.ratio = calloc(16 * SF_SWEEP_NQ, sizeof *p.ratio);
+    double sf[8];
+    size_t m = 0;
+    for (size_t i = 0; i < 16; i++) {
+        p.qoi[3 * i] = i == 4 ? INFINITY : 1.5 + 0.01 * (double)(i * i % 7);
+        p.qoi[3 * i + 1] = 4 + 0.3 * sin((double)i);
+        p.qoi[3 * i + 2] = i % 2 ? NAN : 0.3 + 0.02 * (double)i;
+        if (!(i % 2))
+            sf[m++] = p.qoi[3 * i + 2];
+    }
+    assert_int_equal(sf_sweep_point_stats(&p), SF_SUCCESS);
+    char *text = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&text, &len);
+    sf_sweep_summary_header(f);
+    sf_sweep_summary_row(f, "v_b", 0.6, &p);
+    fclose(f);
+    assert_true(summary_field(text, "n") == 16);
+    assert_true(summary_field(text, "stick_fraction_n_used") == 8);
+    assert_true(summary_field(text, "stick_fraction_n_excluded") == 8);
+    assert_true(summary_field(text, "pv_x_n_used") == 15);
+    assert_true(summary_field(text, "pv_x_n_excluded") == 1);
+    assert_true(summary_field(text, "pv_F_n_used") == 16);
+    assert_int_equal(p.n_valid, 7);
+    double mean = gsl_stats_mean(sf, 1, 8), sd = gsl_stats_sd(sf, 1, 8), se = sd / sqrt(8.0);
+    assert_true(summary_field(text, "stick_fraction_mean[-]") == mean);
+    assert_true(summary_field(text, "stick_fraction_std[-]") == sd);
+    assert_true(summary_field(text, "stick_fraction_se[-]") == se);
+    /* t_{0.975, 7} = 2.36462425159278 (tables) */
+    assert_true(fabs(summary_field(text, "stick_fraction_ci95_hi[-]") - (mean + 2.36462425159278 * se)) <= 1e-14);
+    assert_true(summary_field(text, "stick_fraction_ratio_mean[-]") == gsl_stats_mean(p.ratio + 2, 6, 8));
+    assert_true(isnan(summary_field(text, "no_such_column")));
+    assert_non_null(strstr(text, "\nv_b\t0.6\t16\t"));   /* the value as given, not 0.59999999999999998 */
+    free(text);
+    /* one value: a mean, no spread; none: nothing */
+    sf_sweep_stat st;
+    double one[2] = { 3, NAN };
+    assert_int_equal(sf_sweep_stat_of(one, 1, 2, &st), SF_SUCCESS);
+    assert_true(st.n_used == 1 && st.n_excluded == 1 && st.mean == 3 && isnan(st.std) && isnan(st.ci_lo));
+    assert_int_equal(sf_sweep_stat_of(one + 1, 1, 1, &st), SF_SUCCESS);
+    assert_true(st.n_used == 0 && isnan(st.mean));
+    sf_sweep_point_free(&p);
+}
+
+static void shortest_text(void **state)
+{
+    (void)state;
+    char b[32];
+    const double x[] = { 0.1, 0.2, 1, 1e6, 1e-300, 0.30000000000000004, 2.0 / 3, -7.25 };
+    const char *want[] = { "0.1", "0.2", "1", "1e+06", "1e-300", "0.30000000000000004", NULL, "-7.25" };
+    for (size_t i = 0; i < sizeof x / sizeof *x; i++) {
+        sf_sweep_fmt(b, sizeof b, x[i]);
+        assert_true(strtod(b, NULL) == x[i]);
+        if (want[i])
+            assert_string_equal(b, want[i]);
+    }
+}
+
 int main(void)
 {
     sf_init();
@@ -119,6 +208,8 @@ int main(void)
         cmocka_unit_test(seeds),
         cmocka_unit_test(thread_count_invariance),
         cmocka_unit_test(checkpoint_resume),
+        cmocka_unit_test(summary_counts_finite_values),
+        cmocka_unit_test(shortest_text),
     };
     return cmocka_run_group_tests_name("montecarlo", tests, NULL, NULL);
 }
