@@ -1,0 +1,393 @@
+/* The Monte Carlo aggregation, recomputed from what a sweep prints.
+ *
+ * A sweep is run, written as `slipfield sweep` writes it (the
+ * per-realisation table and the summary, sweep.h), and read back as text;
+ * every statistic of the summary is then recomputed here from the
+ * per-realisation rows alone with GSL (gsl_stats_mean, gsl_stats_sd,
+ * gsl_cdf_tdist_Pinv), not with the solver's aggregation.  The validation
+ * cases gate on the same statistics through sf_sweep_point: those are
+ * compared too. */
+#include "checks.h"
+#include "common.h"
+#include "sweep.h"
+#include "sf_error.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <gsl/gsl_cdf.h>
+#include <gsl/gsl_statistics_double.h>
+
+#define NQ SF_SWEEP_NQ
+#define MAXCOL 64
+static const char *const qn[NQ] = { "pv_x", "pv_F", "stick_fraction" };
+
+/* A TSV table read back: the header's names and the cells as numbers
+ * (strtod: %.17g reads back to the same bits; "nan", "inf" too). */
+typedef struct {
+    size_t ncol, nrow;
+    char name[MAXCOL][48];
+    char **key;       /* nrow: "param\tvalue" of the row */
+    double *cell;     /* nrow x ncol (text columns: NAN) */
+} table;
+
+static int table_read(const char *text, table *t)
+{
+    memset(t, 0, sizeof *t);
+    size_t lines = 0;
+    for (const char *p = text; *p; p++)
+        lines += *p == '\n';
+    char *buf = check_alloc(strlen(text) + 1), *save = NULL;
+    strcpy(buf, text);
+    t->key = check_alloc((lines ? lines : 1) * sizeof *t->key);
+    t->cell = check_alloc((lines ? lines : 1) * MAXCOL * sizeof *t->cell);
+    int rc = SF_SUCCESS;
+    for (char *ln = strtok_r(buf, "\n", &save); ln; ln = strtok_r(NULL, "\n", &save)) {
+        char *s2 = NULL, *c = strtok_r(ln, "\t", &s2);
+        size_t k = 0;
+        if (!t->ncol) {   /* the header */
+            for (; c && k < MAXCOL; c = strtok_r(NULL, "\t", &s2), k++)
+                snprintf(t->name[k], sizeof t->name[k], "%s", c);
+            t->ncol = k;
+            continue;
+        }
+        double *row = t->cell + t->nrow * MAXCOL;
+        char key[160] = "";
+        for (; c && k < t->ncol; c = strtok_r(NULL, "\t", &s2), k++) {
+            char *end;
+            row[k] = strtod(c, &end);
+            if (k < 2)   /* param, value: the row's point, as printed */
+                snprintf(key + strlen(key), sizeof key - strlen(key), "%s%s", k ? "\t" : "", c);
+            else if (*end)
+                rc = SF_EPARSE;
+        }
+        if (k != t->ncol || c)
+            rc = SF_EPARSE;
+        t->key[t->nrow] = check_alloc(strlen(key) + 1);
+        strcpy(t->key[t->nrow++], key);
+    }
+    free(buf);
+    return rc;
+}
+
+static void table_free(table *t)
+{
+    for (size_t i = 0; i < t->nrow; i++)
+        free(t->key[i]);
+    free(t->key);
+    free(t->cell);
+}
+
+/* The column called `name` (its index), or -1. */
+static int col(const table *t, const char *name)
+{
+    for (size_t k = 0; k < t->ncol; k++)
+        if (!strcmp(t->name[k], name))
+            return (int)k;
+    return -1;
+}
+
+/* Row i's cell in the column called name; NAN and *missing set when the
+ * table has no such column. */
+static double cell(const table *t, size_t i, const char *name, int *missing)
+{
+    int k = col(t, name);
+    if (k < 0) {
+        *missing = 1;
+        return NAN;
+    }
+    return t->cell[i * MAXCOL + (size_t)k];
+}
+
+/* The column whose name starts with pre and ends with post; the text in
+ * between into mid (e.g. the interval's level "95" of pv_x_ci95_lo[m]). */
+static int col_around(const table *t, const char *pre, const char *post, char *mid, size_t len)
+{
+    size_t a = strlen(pre), b = strlen(post);
+    for (size_t k = 0; k < t->ncol; k++) {
+        size_t n = strlen(t->name[k]);
+        if (n > a + b && !strncmp(t->name[k], pre, a) && !strcmp(t->name[k] + n - b, post)) {
+            snprintf(mid, len, "%.*s", (int)(n - a - b), t->name[k] + a);
+            return (int)k;
+        }
+    }
+    return -1;
+}
+
+/* Worst discrepancies, each over its round-off allowance. */
+typedef struct {
+    double count;      /* |printed - counted|, realisations */
+    int missing;       /* a column the summary should have is not there */
+    double mean, sd, se, ci, rmean, rsd, rse;   /* |diff| / allowance */
+    size_t ratio_bits; /* ratio cells that are not value / det to the bit */
+} worst;
+
+/* |a - b| / (8 n eps scale): a sum of n terms taken in another order
+ * moves by at most n eps times the sum of their magnitudes; the factor 8
+ * covers the square root, the division and the t quantile's product.
+ * Equal non-finite values (no statistic formed) agree. */
+static double off(double a, double b, size_t n, double scale)
+{
+    if (!isfinite(a) || !isfinite(b))
+        return (isnan(a) && isnan(b)) || a == b ? 0 : INFINITY;
+    double tol = 8 * (double)(n ? n : 1) * DBL_EPSILON * scale;
+    return a == b ? 0 : tol > 0 ? fabs(a - b) / tol : INFINITY;
+}
+
+static void upd(double *w, double x)
+{
+    if (!(x <= *w))
+        *w = x;
+}
+
+/* The recomputation of one (point, QoI) from the finite values of column
+ * cx of the rows rows[0..n); printed values in the summary row srow. */
+typedef struct {
+    double mean, sd, se, lo, hi;
+    size_t used;
+    double scale, dscale;   /* max |x|, max |x - mean| */
+} recomp;
+
+static recomp recompute(const table *tv, const size_t *rows, size_t n, int cx, double level, double *buf)
+{
+    recomp o = { NAN, NAN, NAN, NAN, NAN, 0, 0, 0 };
+    for (size_t i = 0; i < n; i++) {
+        double x = tv->cell[rows[i] * MAXCOL + (size_t)cx];
+        if (isfinite(x))
+            buf[o.used++] = x;
+    }
+    if (!o.used)
+        return o;
+    o.mean = gsl_stats_mean(buf, 1, o.used);
+    for (size_t i = 0; i < o.used; i++) {
+        o.scale = fmax(o.scale, fabs(buf[i]));
+        o.dscale = fmax(o.dscale, fabs(buf[i] - o.mean));
+    }
+    if (o.used > 1) {
+        o.sd = gsl_stats_sd(buf, 1, o.used);
+        o.se = o.sd / sqrt((double)o.used);
+        double t = gsl_cdf_tdist_Pinv(0.5 * (1 + level), (double)(o.used - 1));
+        o.lo = o.mean - t * o.se;
+        o.hi = o.mean + t * o.se;
+    }
+    return o;
+}
+
+/* Compare point k's summary row with the recomputation from its rows. */
+static void compare_point(sf_result *r, const table *tv, const table *ts, size_t srow, const sf_sweep_point *pt,
+                          const char *lv, worst *w, size_t *excluded, double *maxratio)
+{
+    size_t *rows = check_alloc((tv->nrow ? tv->nrow : 1) * sizeof *rows), n = 0;
+    double *buf = check_alloc((tv->nrow ? tv->nrow : 1) * sizeof *buf);
+    for (size_t i = 0; i < tv->nrow; i++)
+        if (!strcmp(tv->key[i], ts->key[srow]))
+            rows[n++] = i;
+    /* realisations 0 .. n-1, each once, as many as the summary's n */
+    size_t seen = 0;
+    for (size_t i = 0; i < n; i++)
+        seen += cell(tv, rows[i], "realisation", &w->missing) == (double)i;
+    upd(&w->count, fabs(cell(ts, srow, "n", &w->missing) - (double)n) + (double)(n - seen));
+    upd(&w->count, fabs((double)pt->n - (double)n));
+    double level = atof(lv) / 100;
+    const char *units[NQ] = { "m", "N", "-" };
+    char point[160];
+    snprintf(point, sizeof point, "%s", ts->key[srow]);
+    char *tab = strchr(point, '\t');
+    if (tab)
+        *tab = '=';
+    for (int q = 0; q < NQ; q++) {
+        char nm[96], rn[64];
+        snprintf(nm, sizeof nm, "%s[%s]", qn[q], units[q]);
+        snprintf(rn, sizeof rn, "%s_ratio", qn[q]);
+        int cx = col(tv, nm), crt = col(tv, rn);
+        if (cx < 0 || crt < 0) {
+            w->missing = 1;
+            break;
+        }
+        recomp a = recompute(tv, rows, n, cx, level, buf), b = recompute(tv, rows, n, crt, level, buf);
+        /* the summary's cells for this QoI: "n_used" -> pv_x_n_used, "mean[%s]" -> pv_x_mean[m] */
+#define S(field) (snprintf(nm, sizeof nm, "%s_" field, qn[q], units[q]), cell(ts, srow, nm, &w->missing))
+        double used = S("n_used%.0s"), excl = S("n_excluded%.0s");
+        upd(&w->count, fabs(used - (double)a.used) + fabs(excl - (double)(n - a.used)));
+        upd(&w->count, fabs(used - (double)b.used));   /* a ratio is finite exactly when its value is */
+        upd(&w->count, fabs((double)pt->stat[q].n_used - (double)a.used));
+        *excluded += n - a.used;
+        double mean = S("mean[%s]"), sd = S("std[%s]"), se = S("se[%s]"), det = S("det[%s]");
+        upd(&w->mean, off(mean, a.mean, a.used, a.scale));
+        upd(&w->sd, off(sd, a.sd, a.used, a.dscale));
+        upd(&w->se, off(se, a.se, a.used, a.dscale));
+        char ci[96];
+        snprintf(ci, sizeof ci, "%s_ci%s_lo[%s]", qn[q], lv, units[q]);
+        upd(&w->ci, off(cell(ts, srow, ci, &w->missing), a.lo, a.used, a.scale));
+        snprintf(ci, sizeof ci, "%s_ci%s_hi[%s]", qn[q], lv, units[q]);
+        upd(&w->ci, off(cell(ts, srow, ci, &w->missing), a.hi, a.used, a.scale));
+        double rmean = S("ratio_mean[-]%.0s"), rse = S("ratio_se[-]%.0s");
+        upd(&w->rmean, off(rmean, b.mean, b.used, b.scale));
+        upd(&w->rsd, off(S("ratio_std[-]%.0s"), b.sd, b.used, b.dscale));
+        upd(&w->rse, off(rse, b.se, b.used, b.dscale));
+#undef S
+        /* what the validation cases read: sf_sweep_point's ratio statistics */
+        upd(&w->rmean, off(pt->mean[q], b.mean, b.used, b.scale));
+        upd(&w->rsd, off(pt->std[q], b.sd, b.used, b.dscale));
+        upd(&w->rse, off(pt->rstat[q].se, b.se, b.used, b.dscale));
+        for (size_t i = 0; i < n; i++) {
+            double x = tv->cell[rows[i] * MAXCOL + (size_t)cx], y = tv->cell[rows[i] * MAXCOL + (size_t)crt];
+            double want = x / det;
+            w->ratio_bits += !(y == want || (isnan(y) && isnan(want)));
+            if (isfinite(y))
+                *maxratio = fmax(*maxratio, y);
+        }
+        sf_note(r, "| %s | %s | %.0f / %.0f | %.6g | %.6g | %.4g | %.4g | [%.6g, %.6g] | %.6g +- %.3g |", point, qn[q],
+                used, excl, mean, a.mean, sd, se, a.lo, a.hi, rmean, rse);
+    }
+    free(rows);
+    free(buf);
+}
+
+/* The point `base` with defects of the data planted: a realisation
+ * without PV_x (NaN), one with an infinite stick fraction, one with no
+ * QoI at all, and one (the first finite after them) whose PV_F is 40
+ * times its value (an extreme ratio). */
+static int plant(const sf_sweep_point *base, sf_sweep_point *p)
+{
+    if (base->n < 6)
+        return SF_EINVAL;
+    *p = *base;
+    size_t n = base->n * NQ;
+    p->qoi = check_alloc(n * sizeof *p->qoi);
+    p->ratio = check_alloc(n * sizeof *p->ratio);
+    memcpy(p->qoi, base->qoi, n * sizeof *p->qoi);
+    p->qoi[1 * NQ + SF_SWEEP_PVX] = NAN;
+    p->qoi[2 * NQ + SF_SWEEP_SF] = INFINITY;
+    for (int q = 0; q < NQ; q++)
+        p->qoi[3 * NQ + q] = NAN;
+    size_t i = 4;   /* the first realisation after those with a finite PV_F */
+    while (i < base->n && !isfinite(p->qoi[i * NQ + SF_SWEEP_PVF]))
+        i++;
+    if (i < base->n)
+        p->qoi[i * NQ + SF_SWEEP_PVF] *= 40;
+    return sf_sweep_point_stats(p);
+}
+
+static int chk_sweep_aggregation(const sf_case *c, sf_result *r)
+{
+    const sf_scene *s0 = &c->scene;
+    size_t K = c->spec.sweep.n;
+    if (!K || !*c->spec.sweep_param)
+        return SF_EINVAL;
+    sf_sweep_point *pt = check_alloc((K + 1) * sizeof *pt);
+    char err[256] = "";
+    int rc = SF_SUCCESS;
+    size_t made = 0;
+    for (; made < K && !rc; made++) {
+        sf_scene s = *s0;
+        rc = sf_sweep_set(&s, c->spec.sweep_param, c->spec.sweep.v[made], err, sizeof err);
+        if (!rc)
+            rc = sf_sweep_run(&s, s0->samples, 0, NULL, 0, NULL, &pt[made], err, sizeof err);
+        if (rc)
+            sf_note(r, "**Sweep failed at %s = %g:** %s", c->spec.sweep_param, c->spec.sweep.v[made], err);
+    }
+    size_t natural = 0;
+    for (size_t k = 0; k < made && !rc; k++)
+        for (int q = 0; q < NQ; q++)
+            natural += pt[k].stat[q].n_excluded;
+    if (!rc && (rc = plant(&pt[K - 1], &pt[K])) == SF_SUCCESS)
+        made++;
+    /* the two tables, as `slipfield sweep --out --summary` writes them */
+    char *tv_text = NULL, *ts_text = NULL;
+    size_t tv_len = 0, ts_len = 0;
+    FILE *fv = open_memstream(&tv_text, &tv_len), *fs = open_memstream(&ts_text, &ts_len);
+    if (!fv || !fs)
+        rc = SF_ENOMEM;
+    if (!rc) {
+        sf_sweep_write_header(fv);
+        sf_sweep_summary_header(fs);
+        for (size_t k = 0; k <= K; k++) {
+            const char *param = k < K ? c->spec.sweep_param : "planted";
+            sf_sweep_write_rows(fv, param, c->spec.sweep.v[k < K ? k : K - 1], &pt[k]);
+            sf_sweep_summary_row(fs, param, c->spec.sweep.v[k < K ? k : K - 1], &pt[k]);
+        }
+    }
+    if (fv)
+        fclose(fv);
+    if (fs)
+        fclose(fs);
+    table tv = { 0 }, ts = { 0 };
+    char lv[16] = "";
+    if (!rc && (table_read(tv_text, &tv) || table_read(ts_text, &ts) || ts.nrow != K + 1 ||
+                col_around(&ts, "pv_x_ci", "_lo[m]", lv, sizeof lv) < 0)) {
+        sf_note(r, "**The tables do not read back** (%zu summary rows for %zu points).", ts.nrow, K + 1);
+        rc = SF_EFAIL;
+    }
+    if (!rc) {
+        worst w = { 0 };
+        size_t excluded = 0;
+        double maxratio = 0;
+        sf_note(r, "| point | QoI | used / excluded | mean printed | mean recomputed | std | se | %s%% interval "
+                   "recomputed | ratio mean +- se |\n|---|---|---|---|---|---|---|---|---|", lv);
+        for (size_t k = 0; k <= K; k++)
+            compare_point(r, &tv, &ts, k, &pt[k], lv, &w, &excluded, &maxratio);
+        double level = atof(lv) / 100;
+        sf_check_true(r, "the summary states its interval's level (in the header)", level > 0 && level < 1, lv);
+        sf_check_true(r, "every column the comparison reads is in the tables", !w.missing,
+                      w.missing ? "some missing" : "all there");
+        sf_check_le(r, "realisations: largest |printed - counted| (n; used and excluded per QoI vs the finite and "
+                       "non-finite rows; sf_sweep_point's counts)", w.count, 0);
+        sf_check_le(r, "mean of each QoI: largest |printed - recomputed| / (8 n eps max|x|)", w.mean, 1);
+        sf_check_le(r, "std (n - 1): largest |printed - recomputed| / (8 n eps max|x - mean|)", w.sd, 1);
+        sf_check_le(r, "standard error of the mean: same allowance as the std", w.se, 1);
+        sf_check_le(r, "interval ends (mean -+ t se, Student t): largest |printed - recomputed| / (8 n eps max|x|)",
+                    w.ci, 1);
+        sf_check_le(r, "ratio columns that are not value / det to the bit", (double)w.ratio_bits, 0);
+        sf_check_le(r, "ratio mean (printed, and sf_sweep_point's): largest |diff| / allowance", w.rmean, 1);
+        sf_check_le(r, "ratio std (printed, and sf_sweep_point's): largest |diff| / allowance", w.rsd, 1);
+        sf_check_le(r, "ratio standard error (printed, and sf_sweep_point's): largest |diff| / allowance", w.rse, 1);
+        /* what the comparison covered: it must have seen exclusions and an extreme value */
+        sf_check_ge(r, "excluded (non-finite) values among the rows compared", (double)excluded, 5);
+        sf_check_ge(r, "largest ratio among the rows compared (an extreme realisation is included)", maxratio, 20);
+        sf_note(r, "\n%zu points of %zu realisations (%s = the case's sweep) and one planted point (the last "
+                   "point's values with a NaN PV_x, an infinite stick fraction, a realisation with no QoI and a PV_F "
+                   "40 times its value). The sweep itself excluded %zu values (realisations without a complete "
+                   "cycle after t_skip). Recomputed from the per-realisation table alone: GSL's gsl_stats_mean and "
+                   "gsl_stats_sd over the finite values, se = sd / sqrt(n_used), the interval mean -+ t se with t "
+                   "= gsl_cdf_tdist_Pinv((1 + level) / 2, n_used - 1) at the level the header states.\n",
+                K, s0->samples, c->spec.sweep_param, natural);
+        /* plot: per point, the PV_F mean held, and printed with its interval */
+        double *x = check_alloc((K + 1) * sizeof *x), *mp = check_alloc((K + 1) * sizeof *mp),
+               *mr = check_alloc((K + 1) * sizeof *mr), *lo = check_alloc((K + 1) * sizeof *lo),
+               *hi = check_alloc((K + 1) * sizeof *hi);
+        char clo[48], chi[48];
+        snprintf(clo, sizeof clo, "pv_F_ci%s_lo[N]", lv);
+        snprintf(chi, sizeof chi, "pv_F_ci%s_hi[N]", lv);
+        int miss = 0;
+        for (size_t k = 0; k <= K; k++) {
+            x[k] = (double)k;
+            mp[k] = pt[k].stat[SF_SWEEP_PVF].mean;
+            mr[k] = cell(&ts, k, "pv_F_mean[N]", &miss);
+            lo[k] = cell(&ts, k, clo, &miss);
+            hi[k] = cell(&ts, k, chi, &miss);
+        }
+        sf_plot *pl = sf_result_plot(r, "pvf_means", "PV_F mean per point: printed, with its interval, and held",
+                                     "point (the last: planted) [-]", "PV_F [N]");
+        sf_plot_band(pl, "printed interval", K + 1, x, lo, hi);
+        sf_plot_series(pl, "printed mean", SF_STYLE_POINTS, K + 1, x, mr);
+        sf_plot_series(pl, "sf_sweep_point mean", SF_STYLE_LINES, K + 1, x, mp);
+        free(x); free(mp); free(mr); free(lo); free(hi);
+    }
+    table_free(&tv);
+    table_free(&ts);
+    free(tv_text);
+    free(ts_text);
+    for (size_t k = 0; k < made; k++)
+        sf_sweep_point_free(&pt[k]);
+    free(pt);
+    return rc ? SF_EFAIL : SF_SUCCESS;
+}
+
+const sf_check_def sf_checks_sweepstats[] = {
+    { "mc_sweep_aggregation", chk_sweep_aggregation,
+      "sweep summary: every statistic recomputed from the per-realisation table" },
+    { NULL, NULL, NULL }
+};
