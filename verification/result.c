@@ -40,6 +40,8 @@ struct sf_result {
     char first_bad[128];   /* where the first one was seen */
     sf_claim_row *claims;
     size_t nclaims;
+    sf_sample_row *samples;
+    size_t nsamples;
 };
 
 static void count_values(sf_result *r, const char *where, size_t n, const double *x)
@@ -88,6 +90,7 @@ void sf_result_free(sf_result *r)
     }
     free(r->plots);
     free(r->claims);
+    free(r->samples);
     free(r->rows);
     free(r->notes);
     free(r);
@@ -247,6 +250,18 @@ void sf_claim_defs(sf_result *r, const char *defs)
     if (r->nclaims)
         snprintf(r->claims[r->nclaims - 1].defs, sizeof r->claims[0].defs, "%s", defs);
 }
+
+void sf_result_sample(sf_result *r, const char *what, size_t n_used, size_t n_excluded)
+{
+    r->samples = xrealloc(r->samples, (r->nsamples + 1) * sizeof *r->samples);
+    sf_sample_row *s = &r->samples[r->nsamples++];
+    snprintf(s->what, sizeof s->what, "%s", what);
+    s->n_used = n_used;
+    s->n_excluded = n_excluded;
+}
+
+size_t sf_result_nsamples(const sf_result *r) { return r->nsamples; }
+const sf_sample_row *sf_result_sample_at(const sf_result *r, size_t i) { return &r->samples[i]; }
 
 size_t sf_result_nclaims(const sf_result *r) { return r->nclaims; }
 const sf_claim_row *sf_result_claim(const sf_result *r, size_t i) { return &r->claims[i]; }

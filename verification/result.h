@@ -83,6 +83,18 @@ size_t sf_result_nclaims(const sf_result *r);
 const sf_claim_row *sf_result_claim(const sf_result *r, size_t i);
 const char *sf_claim_status_name(int status);
 
+/* A statistic over realisations that a check reports or gates on: how
+ * many values it used and how many it excluded (non-finite: a realisation
+ * the QoI's definition cannot measure).  results.json lists them per case
+ * ("samples"), so that no excluded realisation goes unsaid. */
+typedef struct {
+    char what[160];
+    size_t n_used, n_excluded;
+} sf_sample_row;
+void sf_result_sample(sf_result *r, const char *what, size_t n_used, size_t n_excluded);
+size_t sf_result_nsamples(const sf_result *r);
+const sf_sample_row *sf_result_sample_at(const sf_result *r, size_t i);
+
 /* Findings: Markdown appended to the report (printf-style). */
 void sf_note(sf_result *r, const char *fmt, ...)
     __attribute__((format(printf, 2, 3)));

@@ -214,6 +214,18 @@ static json_t *case_json(const sf_outcome *o, const sf_result *r)
     for (size_t i = 0; r && i < sf_result_nrows(r); i++)
         json_array_append_new(rows, row_json(sf_result_row(r, i)));
     json_object_set_new(j, "rows", rows);
+    if (r && sf_result_nsamples(r)) {
+        json_t *sm = json_array();
+        for (size_t i = 0; i < sf_result_nsamples(r); i++) {
+            const sf_sample_row *x = sf_result_sample_at(r, i);
+            json_t *o = json_object();
+            json_object_set_new(o, "what", jstr(x->what));
+            json_object_set_new(o, "n_used", json_integer((json_int_t)x->n_used));
+            json_object_set_new(o, "n_excluded", json_integer((json_int_t)x->n_excluded));
+            json_array_append_new(sm, o);
+        }
+        json_object_set_new(j, "samples", sm);
+    }
     return j;
 }
 

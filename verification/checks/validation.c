@@ -30,6 +30,17 @@ typedef struct {
     sf_sweep_point *pt;
 } sweep_run;
 
+/* The counts of a sweep point's ratio statistics, for results.json. */
+static void sweep_samples(sf_result *r, const char *param, double v, const sf_sweep_point *p)
+{
+    static const char *const nm[SF_SWEEP_NQ] = { "PV_x ratio", "PV_F ratio", "stick-fraction ratio" };
+    for (int q = 0; q < SF_SWEEP_NQ; q++) {
+        char what[160];
+        snprintf(what, sizeof what, "%s = %g: %s", *param ? param : "point", v, nm[q]);
+        sf_result_sample(r, what, p->rstat[q].n_used, p->rstat[q].n_excluded);
+    }
+}
+
 static int run_sweep(const sf_case *c, sf_result *r, sweep_run *sw)
 {
     const sf_scene *s0 = &c->scene;
@@ -49,17 +60,20 @@ static int run_sweep(const sf_case *c, sf_result *r, sweep_run *sw)
         }
     }
     sf_note(r, "| %s | det PV_x [m] | det PV_F [N] | det stick fr. | PV_x ratio | PV_F ratio | stick-fr. ratio | "
-               "with a cycle |\n|---|---|---|---|---|---|---|---|", c->spec.sweep_param);
+               "used / excluded |\n|---|---|---|---|---|---|---|---|", c->spec.sweep_param);
     for (size_t k = 0; k < sw->K; k++) {
         const sf_sweep_point *p = &sw->pt[k];
-        sf_note(r, "| %g | %.4f | %.4f | %.4f | %.4f +- %.4f | %.4f +- %.4f | %.4f +- %.4f | %zu/%zu |", sw->v[k],
-                p->det[0], p->det[1], p->det[2], p->mean[0], p->std[0], p->mean[1], p->std[1], p->mean[2], p->std[2],
-                p->n_valid, p->n);
+        sf_note(r, "| %g | %.4f | %.4f | %.4f | %.4f +- %.4f (se %.4f) | %.4f +- %.4f (se %.4f) | %.4f +- %.4f (se %.4f) "
+                   "| %zu/%zu, %zu/%zu, %zu/%zu |", sw->v[k], p->det[0], p->det[1], p->det[2], p->mean[0], p->std[0],
+                p->rstat[0].se, p->mean[1], p->std[1], p->rstat[1].se, p->mean[2], p->std[2], p->rstat[2].se,
+                p->rstat[0].n_used, p->rstat[0].n_excluded, p->rstat[1].n_used, p->rstat[1].n_excluded,
+                p->rstat[2].n_used, p->rstat[2].n_excluded);
+        sweep_samples(r, c->spec.sweep_param, sw->v[k], p);
     }
-    sf_note(r, "\n(mean +- std over the realisations with at least one complete cycle after t_skip, of %zu; "
-               "T = %g s, t_skip = %g s; ratios to the deterministic model at the same parameters. A realisation "
-               "without a complete cycle has no PV to measure: its count is the last column.)\n", s0->samples,
-               s0->T, s0->t_skip);
+    sf_note(r, "\n(mean +- std and the standard error of the mean, each over the finite values of its QoI: used / "
+               "excluded of %zu realisations, for PV_x, PV_F and the stick fraction in turn; T = %g s, t_skip = %g "
+               "s; ratios to the deterministic model at the same parameters. A realisation without a complete cycle "
+               "has no value to measure: it is excluded, never averaged.)\n", s0->samples, s0->T, s0->t_skip);
     return SF_SUCCESS;
 }
 
@@ -108,6 +122,7 @@ static int chk_fig10(const sf_case *c, sf_result *r)
         sf_note(r, "**Sweep failed:** %s", err);
         return SF_EFAIL;
     }
+    sweep_samples(r, "l_over_R", s->l / s->R, &pt);
     size_t n = 0;
     for (size_t i = 0; i < pt.n; i++)   /* keep the realisations with a cycle, in order */
         if (isfinite(pt.ratio[3 * i]))
@@ -153,7 +168,8 @@ static int chk_fig11(const sf_case *c, sf_result *r)
             kmax = k;
     double cv = s0->mu_std / s0->mu_mean, s2 = sw.pt[K - 1].std[1] * sw.pt[K - 1].std[1];
     sf_check_pvalue(r, "largest l/R: var of the PV_F ratio = CV^2 (chi-square, mean estimated)",
-                    sf_var_pvalue(s2, cv * cv, sw.pt[K - 1].n, 0), c->spec.alpha, sw.pt[K - 1].n);
+                    sf_var_pvalue(s2, cv * cv, sw.pt[K - 1].rstat[1].n_used, 0), c->spec.alpha,
+                    sw.pt[K - 1].rstat[1].n_used);
     sf_check_true(r, "the PV_F spread peaks at l/R between 0.3 and 10 (the paper: near 1)",
                   sw.v[kmax] >= 0.3 && sw.v[kmax] <= 10, "peak location in range");
     sf_note(r, "Peak of the PV_F spread at l/R = %g (std %.3f); at l/R = %g the std is %.3f (exact limit: CV = %g). "
@@ -187,7 +203,7 @@ static int chk_fig12(const sf_case *c, sf_result *r)
        error of log(mean stick fraction) at each point */
     double *w = check_alloc(K * sizeof *w);
     for (size_t k = 0; k < K; k++) {
-        double se = sw.pt[k].std[2] / (sw.pt[k].mean[2] * sqrt((double)sw.pt[k].n_valid));
+        double se = sw.pt[k].rstat[2].se / sw.pt[k].mean[2];
         w[k] = 1 / (se * se);
     }
     double c0, bd, bs, a, b, cc, ss;
@@ -233,7 +249,7 @@ static int chk_fig13(const sf_case *c, sf_result *r)
         return SF_EFAIL;
     size_t K = sw.K;
     double d0 = fabs(sw.pt[0].mean[1] - 1), d1 = fabs(sw.pt[K - 1].mean[1] - 1);
-    double se0 = sw.pt[0].std[1] / sqrt((double)sw.pt[0].n), se1 = sw.pt[K - 1].std[1] / sqrt((double)sw.pt[K - 1].n);
+    double se0 = sw.pt[0].rstat[1].se, se1 = sw.pt[K - 1].rstat[1].se;
     double z = (d0 - d1) / hypot(se0, se1);
     size_t valid = SIZE_MAX;
     for (size_t k = 0; k < K; k++)
@@ -872,6 +888,18 @@ static void cpoint_free(cpoint *p)
     free(p->bifdet);
 }
 
+/* The counts behind each point's statistics (our definitions), for
+ * results.json: the claims' tests use nv values, not n. */
+static void cpoint_samples(sf_result *r, const char *param, const cpoint *pt, size_t K)
+{
+    for (size_t k = 0; k < K; k++)
+        for (int q = 0; q < NQ; q++) {
+            char what[160];
+            snprintf(what, sizeof what, "%s = %g: %s", *param ? param : "point", pt[k].val, qname[q]);
+            sf_result_sample(r, what, pt[k].nv[D_OURS][q], pt[k].n - pt[k].nv[D_OURS][q]);
+        }
+}
+
 /* ---- claim specs */
 enum { K_MEAN, K_MEAN_EQ, K_DROP_EQ, K_SD, K_SD_EQ, K_HW100, K_CLUSTER };
 typedef struct {
@@ -1283,6 +1311,7 @@ static int claims_sweep(const sf_case *c, sf_result *r, const claim_spec *spec, 
                 p->sd[0][Q_TSTK], d[Q_TSTK], p->mean[0][Q_BIFSD], p->sd[0][Q_BIFSD], p->nv[0][Q_PVX], p->n, secs[k], cpu[k]);
         fewest = p->nv[0][Q_PVX] < fewest ? p->nv[0][Q_PVX] : fewest;
     }
+    cpoint_samples(r, c->spec.sweep_param, pt, K);
     double cpu_tot = 0;
     for (size_t k = 0; k < K; k++)
         cpu_tot += cpu[k];
