@@ -19,7 +19,8 @@ static void usage(FILE *f)
           "                  (s, m, m, rad, m/s, m/s, rad/s, N, N, N m, stick|slip);\n"
           "                  one row per accepted step and per event\n"
           "  --summary FILE  quantities of interest as `key = value` lines (pv_x, pv_F,\n"
-          "                  stick_fraction, cycles, transitions, ...); '-' for stdout\n"
+          "                  stick_fraction, each with its realisations used and excluded,\n"
+          "                  cycles, transitions, ...); '-' for stdout\n"
           "  --explain       print what the plan computes and what it skips, then exit\n"
           "A run without --out keeps no history.\n",
           f);
@@ -36,6 +37,11 @@ static void summary(FILE *f, const sf_scene *s, const sf_osc_result *r)
     fprintf(f, "# slipfield run summary: cycles are stick onset to stick onset, complete, with onset >= t_skip\n");
     fprintf(f, "pv_x = %.17g\npv_F = %.17g\nstick_fraction = %.17g\nperiod = %.17g\n", r->pv_x, r->pv_F,
             r->stick_fraction, r->period);
+    /* one realisation: each QoI used (finite) or excluded (nothing to measure), as in a sweep's summary */
+    const char *qn[3] = { "pv_x", "pv_F", "stick_fraction" };
+    const double qv[3] = { r->pv_x, r->pv_F, r->stick_fraction };
+    for (int q = 0; q < 3; q++)
+        fprintf(f, "%s_n_used = %d\n%s_n_excluded = %d\n", qn[q], isfinite(qv[q]) != 0, qn[q], !isfinite(qv[q]));
     fprintf(f, "cycles = %zu\ntransitions = %zu\nbifurcation_samples = %zu\n", r->ncycles, r->ntrans, r->nbif);
     fprintf(f, "x_min = %.17g\nx_max = %.17g\ny_absmax = %.17g\n", r->x_min, r->x_max, r->y_absmax);
     fprintf(f, "energy_change = %.17g\nfriction_work = %.17g\njump_energy = %.17g\nenergy_residual = %.17g\n",
