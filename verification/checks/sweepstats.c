@@ -248,7 +248,7 @@ static void compare_point(sf_result *r, const table *tv, const table *ts, size_t
 
 /* The point `base` with defects of the data planted: a realisation
  * without PV_x (NaN), one with an infinite stick fraction, one with no
- * QoI at all, and one (the first finite after them) whose PV_F is 40
+ * QoI at all, and one (the first finite after them) whose PV_F is 100
  * times its value (an extreme ratio). */
 static int plant(const sf_sweep_point *base, sf_sweep_point *p)
 {
@@ -267,7 +267,7 @@ static int plant(const sf_sweep_point *base, sf_sweep_point *p)
     while (i < base->n && !isfinite(p->qoi[i * NQ + SF_SWEEP_PVF]))
         i++;
     if (i < base->n)
-        p->qoi[i * NQ + SF_SWEEP_PVF] *= 40;
+        p->qoi[i * NQ + SF_SWEEP_PVF] *= 100;
     return sf_sweep_point_stats(p);
 }
 
@@ -349,7 +349,7 @@ static int chk_sweep_aggregation(const sf_case *c, sf_result *r)
         sf_check_ge(r, "largest ratio among the rows compared (an extreme realisation is included)", maxratio, 20);
         sf_note(r, "\n%zu points of %zu realisations (%s = the case's sweep) and one planted point (the last "
                    "point's values with a NaN PV_x, an infinite stick fraction, a realisation with no QoI and a PV_F "
-                   "40 times its value). The sweep itself excluded %zu values (realisations without a complete "
+                   "100 times its value). The sweep itself excluded %zu values (realisations without a complete "
                    "cycle after t_skip). Recomputed from the per-realisation table alone: GSL's gsl_stats_mean and "
                    "gsl_stats_sd over the finite values, se = sd / sqrt(n_used), the interval mean -+ t se with t "
                    "= gsl_cdf_tdist_Pinv((1 + level) / 2, n_used - 1) at the level the header states.\n",
