@@ -172,7 +172,7 @@ int sf_cli_close(const char *cmd, sf_out *o, int ok)
 int sf_cli_parse(const char *cmd, int argc, char **argv, const sf_opt *opts, size_t nopts,
                  const char **scene, void (*usage)(FILE *))
 {
-    sf_optspec sp = { cmd, opts, nopts, usage, 0, 1, "more than one scene given", NULL };
+    sf_optspec sp = { cmd, opts, nopts, usage, 1, "more than one scene given", NULL };
     size_t n;
     *scene = NULL;
     return sf_opt_parse(&sp, argc, argv, scene, &n);
