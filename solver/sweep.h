@@ -13,6 +13,9 @@
  */
 #ifndef SF_SWEEP_H
 #define SF_SWEEP_H
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 #include <stddef.h>
 #include "scene.h"
@@ -36,4 +39,7 @@ int sf_sweep_run(const sf_scene *s, size_t n, int threads, const char *checkpoin
                  const char *label, sf_sweep_point *out, char *err, size_t errlen);
 void sf_sweep_point_free(sf_sweep_point *p);
 
+#ifdef __cplusplus
+}
+#endif
 #endif
