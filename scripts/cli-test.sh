@@ -161,6 +161,10 @@ printf 'cof = uniform\nnx = 4\nny = 4\nsamples = 3\n' > f.scene
 expect 0 "" "$bin" field f.scene --out f.tsv
 [ "$(cut -f1 f.tsv | sort -u | grep -c '^[0-9]')" -eq 3 ] && ok || bad "field: the scene's samples is not the default"
 
+# ---- the example scene runs ----------------------------------------------------
+expect 0 "" "$bin" run "$top/examples/disc.scene"
+grep -q '^cycles = [1-9]' "$tmp/out" && ok || bad "examples/disc.scene: $(grep cycles "$tmp/out")"
+
 # ---- the report's Re-run line: its own folder ------------------------------------
 expect 0 "" "$bin" verify "$top/cases/contact/central-symmetry.md" --reports rep
 grep -q 'Re-run: `build/slipfield verify [^`]* --reports reports/rerun`' rep/contact/central-symmetry/report.md && ok \

@@ -109,6 +109,12 @@ if printf '%s' "$man_text" | grep -q 'SCENE KEYS' && printf '%s' "$man_text" | g
 else
     bad "slipfield.1 does not render or lacks the help text"
 fi
+missing_sec=""
+for sec in NAME SYNOPSIS DESCRIPTION OPTIONS 'EXIT STATUS' ENVIRONMENT FILES EXAMPLES 'SEE ALSO'; do
+    printf '%s\n' "$man_text" | grep -qx "$sec" || missing_sec="$missing_sec '$sec'"
+done
+[ -z "$missing_sec" ] && ok "slipfield.1 has NAME, SYNOPSIS, DESCRIPTION, OPTIONS, EXIT STATUS, ENVIRONMENT, FILES, EXAMPLES" \
+    || bad "slipfield.1 lacks the sections$missing_sec"
 if [ -z "$(groff -man -Tutf8 -ww -z "$root/share/man/man1/slipfield.1" 2>&1)" ]; then ok "groff -ww: no warnings"; else bad "groff warns on slipfield.1"; fi
 
 $make -s --no-print-directory uninstall DESTDIR="$stage" PREFIX="$prefix" > "$work/uninstall.log" 2>&1
