@@ -124,6 +124,12 @@ int sf_cli_open(const char *cmd, const char *path, const char *input, sf_out *o)
         fprintf(stderr, "slipfield %s: --out %s is the input scene %s: refusing to overwrite it\n", cmd, path, input);
         return SF_EXIT_USAGE;
     }
+    struct stat so;
+    if (exists && fstat(STDOUT_FILENO, &so) == 0 && so.st_dev == out.st_dev && so.st_ino == out.st_ino) {
+        o->f = stdout;   /* /dev/stdout, or the file stdout already writes: share its offset */
+        o->is_stdout = 1;
+        return SF_EXIT_OK;
+    }
     if (exists && S_ISDIR(out.st_mode)) {
         fprintf(stderr, "slipfield %s: cannot write %s: %s\n", cmd, path, strerror(EISDIR));
         return SF_EXIT_USAGE;

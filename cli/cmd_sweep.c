@@ -176,6 +176,10 @@ int sf_cmd_sweep(int argc, char **argv)
             ok = 0;
             fail = rc;
         } else {
+            if (p.n_valid < n)
+                fprintf(stderr, "slipfield sweep: %s = %g: warning: %zu of %zu realisations formed no quantity of "
+                                "interest (no complete cycle after t_skip: nan ratios, left out of the means)\n",
+                        param, v[k], n - p.n_valid, n);
             if (p.from_checkpoint)
                 fprintf(stderr, "slipfield sweep: %s = %g: %zu of %zu realisations from the checkpoint\n", param,
                         v[k], p.from_checkpoint, n);

@@ -71,6 +71,10 @@ if [ $devices = 1 ]; then
 fi
 n=$("$bin" surface s.scene --out stdout-link | wc -l)
 [ "$n" -eq $rows ] && [ -L stdout-link ] && ok || { bad "--out a link to stdout: $n rows, link kept: $([ -L stdout-link ] && echo yes || echo no)"; copies_ok=0; }
+# stdout redirected to a file (appending): the output goes through stdout's own offset
+echo first > app.tsv
+"$bin" surface s.scene --out stdout-link >> app.tsv
+[ "$(wc -l < app.tsv)" -eq $((rows + 1)) ] && [ "$(head -1 app.tsv)" = first ] && ok || bad "--out a link to stdout, appended: $(wc -l < app.tsv) lines"
 if [ "$devnull" != /dev/null ] && [ $copies_ok = 1 ]; then   # the real nodes, now that the copies are safe
     check_dev /dev/null
     check_full /dev/full
