@@ -72,13 +72,14 @@ CLI_OBJ := $(call objs,rel,$(CLI_SRC))
 TESTS := $(patsubst tests/%.c,$(BUILD)/rel/tests/%,$(TEST_SRC))
 TESTS_SAN := $(patsubst tests/%.c,$(BUILD)/san/tests/%,$(TEST_SRC))
 
-.PHONY: all deps verify test bench mutants clean help report-test fuzz valgrind catalogue mpi-test install uninstall power layering coverage
+.PHONY: all deps verify test check bench mutants clean help report-test fuzz valgrind catalogue mpi-test install uninstall power layering coverage
 .SECONDARY:
 .DEFAULT_GOAL := all
 
 help:
 	@echo "make verify   install deps if missing, build, run the quick-tier cases (TIER=full: quick and full; TIER=paper: the paper's claims at its scale, reports/paper.md; CASES='cases/field/*')"
-	@echo "make test     install deps if missing, run the CMocka unit tests (plain and under ASan+UBSan)"
+	@echo "make test     install deps if missing, run the CMocka unit tests (plain and under ASan+UBSan) and the CLI, install and report scripts"
+	@echo "make check    the same as make test"
 	@echo "make layering solver/ includes only solver/, verification/ not cli/ (also run by make test)"
 	@echo "make coverage line and branch coverage of solver/ by the unit tests + quick tier (gcov, lcov) -> reports/coverage/"
 	@echo "make bench    benchmarks -> reports/bench/report.md"
@@ -177,6 +178,9 @@ $(BUILD)/bench/slipfield-bench: $(call objs,rel,$(BENCH_SRC)) $(BUILD)/libsfveri
 test: deps
 	@$(MAKE) --no-print-directory test-run
 
+# the GNU name for the tests
+check: test
+
 .PHONY: test-run
 test-run: $(TESTS) $(TESTS_SAN) $(BUILD)/slipfield
 	@st=0; sh scripts/layering.sh || st=1; \
@@ -185,6 +189,7 @@ test-run: $(TESTS) $(TESTS_SAN) $(BUILD)/slipfield
 	 sh scripts/bad-input.sh $(BUILD)/slipfield || st=1; \
 	 sh scripts/isolation.sh $(BUILD)/slipfield || st=1; \
 	 sh scripts/resume-test.sh $(BUILD)/slipfield || st=1; \
+	 sh scripts/cli-test.sh $(BUILD)/slipfield || st=1; \
 	 sh scripts/results-test.sh $(BUILD)/slipfield || st=1; \
 	 sh scripts/drift-test.sh || st=1; \
 	 sh scripts/install-test.sh || st=1; \
@@ -295,13 +300,18 @@ BINDIR = $(PREFIX)/bin
 LIBDIR = $(PREFIX)/lib
 INCLUDEDIR = $(PREFIX)/include
 MANDIR = $(PREFIX)/share/man
+DATADIR = $(PREFIX)/share/slipfield
 PCDIR = $(LIBDIR)/pkgconfig
-SF_VERSION := $(shell sed -n 's/^\#define SF_VERSION "\(.*\)"/\1/p' verification/version.h)
+# MAJOR.MINOR.PATCH from solver/sf_version.h (releases are tagged vMAJOR.MINOR.PATCH)
+sf_ver = $(shell sed -n 's/^\#define SF_VERSION_$(1) \([0-9]*\)$$/\1/p' solver/sf_version.h)
+SF_VERSION := $(call sf_ver,MAJOR).$(call sf_ver,MINOR).$(call sf_ver,PATCH)
 SO_MAJOR := $(firstword $(subst ., ,$(SF_VERSION)))
 SONAME := libslipfield.so.$(SO_MAJOR)
 SHLIB := libslipfield.so.$(SF_VERSION)
-# (sf_alloc.h is internal: the allocation wrappers of solver/*.c)
-PUBLIC_HEADERS := $(filter-out solver/sf_alloc.h,$(sort $(wildcard solver/*.h)))
+# (internal: sf_alloc.h, the allocation wrappers of solver/*.c, and
+# cof_x512.h, the wrench's AVX-512 look-up)
+PRIVATE_HEADERS := solver/sf_alloc.h solver/cof_x512.h
+PUBLIC_HEADERS := $(filter-out $(PRIVATE_HEADERS),$(sort $(wildcard solver/*.h)))
 LIB_PKGS := gsl fftw3
 LIB_LIBS = $(shell pkg-config --libs $(LIB_PKGS) 2>/dev/null || echo -lgsl -lgslcblas -lfftw3) -lm -fopenmp
 
@@ -320,8 +330,12 @@ $(BUILD)/slipfield.1: $(BUILD)/slipfield scripts/man.sh
 install: all
 	@$(MAKE) --no-print-directory install-files
 
+INSTALL_DIRS = $(BINDIR) $(LIBDIR) $(PCDIR) $(INCLUDEDIR)/slipfield $(MANDIR)/man1 $(DATADIR)
+# the folders this install created (uninstall removes them when empty)
+DIRS_MANIFEST = $(DATADIR)/install-dirs
 install-files: $(BUILD)/slipfield $(BUILD)/libslipfield.a $(BUILD)/$(SHLIB) $(BUILD)/slipfield.1
-	install -d $(DESTDIR)$(BINDIR) $(DESTDIR)$(LIBDIR) $(DESTDIR)$(PCDIR) $(DESTDIR)$(INCLUDEDIR)/slipfield $(DESTDIR)$(MANDIR)/man1
+	@sh scripts/install-dirs.sh missing "$(DESTDIR)" $(INSTALL_DIRS) > $(BUILD)/install-dirs
+	install -d $(addprefix $(DESTDIR),$(INSTALL_DIRS))
 	install -m 755 $(BUILD)/slipfield $(DESTDIR)$(BINDIR)/slipfield
 	install -m 644 $(BUILD)/libslipfield.a $(DESTDIR)$(LIBDIR)/libslipfield.a
 	install -m 755 $(BUILD)/$(SHLIB) $(DESTDIR)$(LIBDIR)/$(SHLIB)
@@ -332,9 +346,12 @@ install-files: $(BUILD)/slipfield $(BUILD)/libslipfield.a $(BUILD)/$(SHLIB) $(BU
 	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@LIBDIR@|$(LIBDIR)|' -e 's|@INCLUDEDIR@|$(INCLUDEDIR)|' \
 	    -e 's|@VERSION@|$(SF_VERSION)|' slipfield.pc.in > $(DESTDIR)$(PCDIR)/slipfield.pc
 	chmod 644 $(DESTDIR)$(PCDIR)/slipfield.pc
+	@if [ -s $(BUILD)/install-dirs ] || [ ! -f $(DESTDIR)$(DIRS_MANIFEST) ]; then \
+	   install -m 644 $(BUILD)/install-dirs $(DESTDIR)$(DIRS_MANIFEST); fi
 
 uninstall:
 	rm -f $(DESTDIR)$(BINDIR)/slipfield $(DESTDIR)$(LIBDIR)/libslipfield.a $(DESTDIR)$(LIBDIR)/$(SHLIB) \
 	      $(DESTDIR)$(LIBDIR)/$(SONAME) $(DESTDIR)$(LIBDIR)/libslipfield.so $(DESTDIR)$(PCDIR)/slipfield.pc \
 	      $(DESTDIR)$(MANDIR)/man1/slipfield.1 $(addprefix $(DESTDIR)$(INCLUDEDIR)/slipfield/,$(notdir $(PUBLIC_HEADERS)))
-	-rmdir $(DESTDIR)$(INCLUDEDIR)/slipfield 2>/dev/null
+	@rmdir $(DESTDIR)$(INCLUDEDIR)/slipfield 2>/dev/null || true
+	@sh scripts/install-dirs.sh remove "$(DESTDIR)" $(DIRS_MANIFEST)

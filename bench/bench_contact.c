@@ -17,6 +17,7 @@
 #include "bench.h"
 #include "contact.h"
 #include "cof.h"
+#include "cof_x512.h"
 #include "result.h"
 
 #include <math.h>

@@ -8,18 +8,43 @@
 #include "sf_error.h"   /* SF_EXIT_* */
 
 /* Read a scene file with Table 1 defaults; on error print it and return
- * SF_EXIT_USAGE. */
+ * SF_EXIT_USAGE.  Keys the scene sets that the command does not read
+ * (samples, u, v, w, ntheta, npsi outside their commands) are reported on
+ * stderr. */
 int sf_cli_load_scene(const char *cmd, const char *path, sf_scene *s);
+/* A command option opt given and the scene sets key, its default: say the
+ * key is ignored. */
+void sf_cli_key_overridden(const char *cmd, const char *path, const sf_scene *s, const char *key, const char *opt);
 
-/* Output file written under a temporary name, renamed on sf_cli_close
- * (path "-" is stdout).  On failure the temporary file is removed. */
+/* The exit status of a solver error code: the scene's to fix (its values,
+ * its size, a run that left its strip or did not converge: 2), except an
+ * allocation that failed (3). */
+int sf_cli_status(int rc);
+
+/* An output file.  A new path or a regular file is written under a
+ * temporary name in its folder and renamed over it on success (removed on
+ * failure: nothing half-written); anything else (a character device such
+ * as /dev/null, a FIFO, a symbolic link such as /dev/stdout) is opened and
+ * written in place and never replaced; "-" is stdout.  An output that is
+ * the input scene itself (same file) is refused. */
 typedef struct {
     FILE *f;
     char final[1024], tmp[1100];
-    int is_stdout;
+    int is_stdout, in_place;
 } sf_out;
-int sf_cli_open(const char *cmd, const char *path, sf_out *o);
+/* input: the scene path (NULL: none).  Returns SF_EXIT_OK or SF_EXIT_USAGE
+ * after printing why. */
+int sf_cli_open(const char *cmd, const char *path, const char *input, sf_out *o);
+/* ok = 0: the command failed, its output is discarded (SF_EXIT_INTERNAL
+ * returned: the caller says why and picks the status).  Returns
+ * SF_EXIT_OK, or SF_EXIT_USAGE after printing why the output could not be
+ * written (with the system's reason: a full disk, stdout on /dev/full). */
 int sf_cli_close(const char *cmd, sf_out *o, int ok);
+
+/* A signal (SIGINT, SIGTERM, SIGHUP) removes the temporary files and
+ * prints "slipfield: interrupted" and then hint (e.g. ": rerun with
+ * --resume"). */
+void sf_cli_interrupt_hint(const char *hint);
 
 /* A subcommand's options (options.h: the one parser of every command):
  * sf_cli_parse() fills them, takes one positional SCENE argument, prints

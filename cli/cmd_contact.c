@@ -32,7 +32,7 @@ static int contact_open(const char *cmd, const char *path, const sf_scene *s, co
     int rc = sf_cof_plan_alloc(s, &p, err, sizeof err);
     if (rc) {
         fprintf(stderr, "slipfield %s: %s: %s\n", cmd, path, *err ? err : sf_strerror(rc));
-        return rc == SF_ENOMEM ? SF_EXIT_INTERNAL : SF_EXIT_USAGE;
+        return sf_cli_status(rc);
     }
     gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
     gsl_rng_set(rng, s->seed);
@@ -46,9 +46,9 @@ static int contact_open(const char *cmd, const char *path, const sf_scene *s, co
     if (!rc)
         rc = sf_contact_alloc(&spec, cr->cof, &cr->ct);
     if (rc) {
-        fprintf(stderr, "slipfield %s: %s: cannot set up the contact: %s\n", cmd, path, sf_strerror(rc));
+        fprintf(stderr, "slipfield %s: %s: cannot set up the contact: %s\n", cmd, path, *err ? err : sf_strerror(rc));
         sf_cof_free(cr->cof);
-        return SF_EXIT_INTERNAL;
+        return sf_cli_status(rc);
     }
     return SF_EXIT_OK;
 }
@@ -95,17 +95,18 @@ int sf_cmd_surface(int argc, char **argv)
         return rc;
     sf_surface *sf;
     sf_out o;
-    if (sf_surface_alloc(cr.ct, xb, yb, &sf)) {
+    if ((rc = sf_surface_alloc(cr.ct, xb, yb, &sf))) {
+        fprintf(stderr, "slipfield surface: %s: %s\n", path, sf_strerror(rc));
         contact_close(&cr);
-        return SF_EXIT_INTERNAL;
+        return sf_cli_status(rc);
     }
-    if (sf_cli_open("surface", out_path, &o)) {
+    if ((rc = sf_cli_open("surface", out_path, path, &o))) {
         sf_surface_free(sf);
         contact_close(&cr);
-        return SF_EXIT_USAGE;
+        return rc;
     }
     fprintf(o.f, "theta\tpsi\tFx\tFy\tT\n");
-    for (size_t i = 0; i < s.ntheta; i++)
+    for (size_t i = 0; i < s.ntheta && !ferror(o.f); i++)
         for (size_t j = 0; j < s.npsi; j++) {
             double th = -M_PI / 2 + M_PI * (double)i / (double)(s.ntheta - 1);
             double ps = 2 * M_PI * (double)j / (double)s.npsi, q[3];
@@ -119,11 +120,12 @@ int sf_cmd_surface(int argc, char **argv)
 
 static void wrench_usage(FILE *f)
 {
-    fputs("usage: slipfield wrench SCENE --vx VX --vy VY --spin W [--xb XB] [--yb YB] [--out FILE]\n"
+    fputs("usage: slipfield wrench SCENE [--vx VX] [--vy VY] [--spin W] [--xb XB] [--yb YB] [--out FILE]\n"
           "The friction wrench of the belt on the disc (Eqs. 7-8), static COF.\n"
           "  --vx, --vy   disc centre velocity in the ground frame [m/s]; the slip\n"
-          "               relative to the belt is (VX - v_b, VY)\n"
-          "  --spin W     disc spin rate [rad/s]\n"
+          "               relative to the belt is (VX - v_b, VY) (default: the\n"
+          "               scene's relative velocity u, v)\n"
+          "  --spin W     disc spin rate [rad/s] (default: the scene's w)\n"
           "  --xb, --yb   belt point under the disc centre [m] (default 0, 0)\n"
           "  --kinetic    use the kinetic COF (mu_k_ratio x static)\n"
           "  --out FILE   output, '-' for stdout (default)\n"
@@ -148,14 +150,19 @@ int sf_cmd_wrench(int argc, char **argv)
     int rc = sf_cli_parse("wrench", argc, argv, opts, 7, &path, wrench_usage);
     if (rc)
         return rc == SF_CLI_HELP ? SF_EXIT_OK : rc;
-    if (isnan(vx) || isnan(vy) || isnan(w)) {
-        fprintf(stderr, "slipfield wrench: --vx, --vy and --spin are required\n");
-        wrench_usage(stderr);
-        return SF_EXIT_USAGE;
-    }
     sf_scene s;
     if (sf_cli_load_scene("wrench", path, &s))
         return SF_EXIT_USAGE;
+    /* a flag given overrides the scene's key; a key not overridden is used */
+    const struct { double *flag, key; const char *name, *opt; } motion[] = {
+        { &vx, s.u + s.v_b, "u", "--vx" }, { &vy, s.v, "v", "--vy" }, { &w, s.w, "w", "--spin" },
+    };
+    for (size_t k = 0; k < 3; k++) {
+        if (isnan(*motion[k].flag))
+            *motion[k].flag = motion[k].key;
+        else
+            sf_cli_key_overridden("wrench", path, &s, motion[k].name, motion[k].opt);
+    }
     contact_run cr;
     if ((rc = contact_open("wrench", path, &s, &cr)))
         return rc;
@@ -163,12 +170,12 @@ int sf_cmd_wrench(int argc, char **argv)
     rc = sf_contact_wrench(cr.ct, xb, yb, vx - s.v_b, vy, w, kinetic ? s.mu_k_ratio : 1.0, q);
     contact_close(&cr);
     if (rc) {
-        fprintf(stderr, "slipfield wrench: %s\n", sf_strerror(rc));
-        return SF_EXIT_USAGE;
+        fprintf(stderr, "slipfield wrench: %s: %s\n", path, sf_strerror(rc));
+        return sf_cli_status(rc);
     }
     sf_out o;
-    if (sf_cli_open("wrench", out_path, &o))
-        return SF_EXIT_USAGE;
+    if ((rc = sf_cli_open("wrench", out_path, path, &o)))
+        return rc;
     fprintf(o.f, "Fx\tFy\tT\n%.17g\t%.17g\t%.17g\n", q[0], q[1], q[2]);
     return sf_cli_close("wrench", &o, 1);
 }

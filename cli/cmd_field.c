@@ -14,7 +14,8 @@ static void usage(FILE *f)
           "Sample lognormal COF random fields (circulant embedding + Nataf map).\n"
           "Writes TSV with header: sample x y gaussian cof (x, y in metres; gaussian\n"
           "is the standard normal field, cof the lognormal COF, dimensionless).\n"
-          "  --samples N   number of fields (default 1)\n"
+          "  --samples N   number of fields (default: the scene's samples if it sets\n"
+          "                the key, else 1)\n"
           "  --out FILE    output file, '-' for stdout (default)\n",
           f);
 }
@@ -22,7 +23,7 @@ static void usage(FILE *f)
 int sf_cmd_field(int argc, char **argv)
 {
     const char *scene_path, *out_path = "-";
-    size_t samples = 1;
+    size_t samples = 0;   /* 0: not given */
     const sf_opt opts[] = {
         { "--samples", SF_OPT_SIZE, &samples, 1, 1000000, NULL },
         { "--out", SF_OPT_STRING, &out_path, 0, 0, NULL },
@@ -33,6 +34,10 @@ int sf_cmd_field(int argc, char **argv)
     sf_scene s;
     if (sf_cli_load_scene("field", scene_path, &s))
         return SF_EXIT_USAGE;
+    if (samples)
+        sf_cli_key_overridden("field", scene_path, &s, "samples", "--samples");
+    else
+        samples = sf_scene_was_set(&s, "samples") ? s.samples : 1;
     sf_lnfield *lf;
     rc = sf_lnfield_alloc(&s, &lf);
     if (rc == SF_ETRUNC) {
@@ -40,22 +45,23 @@ int sf_cmd_field(int argc, char **argv)
                 sf_field_get_info(sf_lnfield_gaussian(lf))->cov_error);
     } else if (rc) {
         fprintf(stderr, "slipfield field: %s: cannot build the field: %s\n", scene_path, sf_strerror(rc));
-        return rc == SF_EINVAL ? SF_EXIT_USAGE : SF_EXIT_INTERNAL;
+        return sf_cli_status(rc);
     }
+    rc = SF_SUCCESS;   /* a truncated embedding is usable (warned above) */
     size_t n = s.nx * s.ny;
     double *g = malloc(n * sizeof *g), *h = malloc(n * sizeof *h);
     gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
     sf_out o;
-    if (!g || !h || !rng || sf_cli_open("field", out_path, &o)) {
+    int st = !g || !h || !rng ? SF_EXIT_INTERNAL : sf_cli_open("field", out_path, scene_path, &o);
+    if (st) {
         free(g); free(h); gsl_rng_free(rng); sf_lnfield_free(lf);
-        return SF_EXIT_USAGE;
+        return st;
     }
     gsl_rng_set(rng, s.seed);
     fprintf(o.f, "sample\tx\ty\tgaussian\tcof\n");
-    int ok = 1;
-    for (size_t k = 0; k < samples && ok; k++) {
-        ok = sf_lnfield_sample(lf, rng, g, h) == SF_SUCCESS;
-        for (size_t j = 0; j < s.ny && ok; j++)
+    for (size_t k = 0; k < samples && !rc && !ferror(o.f); k++) {
+        rc = sf_lnfield_sample(lf, rng, g, h);
+        for (size_t j = 0; j < s.ny && !rc; j++)
             for (size_t i = 0; i < s.nx; i++)
                 fprintf(o.f, "%zu\t%.10g\t%.10g\t%.17g\t%.17g\n", k, (double)i * s.dx,
                         (double)j * s.dy, g[i + s.nx * j], h[i + s.nx * j]);
@@ -64,5 +70,8 @@ int sf_cmd_field(int argc, char **argv)
     free(h);
     gsl_rng_free(rng);
     sf_lnfield_free(lf);
-    return sf_cli_close("field", &o, ok);
+    if (rc)
+        fprintf(stderr, "slipfield field: %s: %s\n", scene_path, sf_strerror(rc));
+    st = sf_cli_close("field", &o, !rc);
+    return rc ? sf_cli_status(rc) : st;
 }

@@ -21,8 +21,11 @@ static void usage(FILE *f)
           "  --summary FILE  quantities of interest as `key = value` lines (pv_x, pv_F,\n"
           "                  stick_fraction, each with its realisations used and excluded,\n"
           "                  cycles, transitions, ...); '-' for stdout\n"
+          "                  (the default when neither --out nor --summary is given)\n"
           "  --explain       print what the plan computes and what it skips, then exit\n"
-          "A run without --out keeps no history.\n",
+          "A run without --out keeps no history. A quantity that the run cannot form\n"
+          "(no complete cycle after t_skip: raise T) is nan in the summary, and said\n"
+          "on stderr.\n",
           f);
 }
 
@@ -63,6 +66,8 @@ int sf_cmd_run(int argc, char **argv)
     int rc = sf_cli_parse("run", argc, argv, opts, 3, &path, usage);
     if (rc)
         return rc == SF_CLI_HELP ? SF_EXIT_OK : rc;
+    if (!out_path && !sum_path)
+        sum_path = "-";
     sf_scene s;
     if (sf_cli_load_scene("run", path, &s))
         return SF_EXIT_USAGE;
@@ -74,7 +79,7 @@ int sf_cmd_run(int argc, char **argv)
     sf_cof_plan *plan;
     if ((rc = sf_cof_plan_alloc(&s, &plan, err, sizeof err))) {
         fprintf(stderr, "slipfield run: %s: %s\n", path, *err ? err : sf_strerror(rc));
-        return rc == SF_ENOMEM ? SF_EXIT_INTERNAL : SF_EXIT_USAGE;
+        return sf_cli_status(rc);
     }
     if (explain) {
         const sf_cof_plan_info *in = sf_cof_plan_get_info(plan);
@@ -126,7 +131,7 @@ int sf_cmd_run(int argc, char **argv)
     if (rc || (rc = sf_osc_alloc(&s, cof, &o, err, sizeof err))) {
         fprintf(stderr, "slipfield run: %s: %s\n", path, *err ? err : sf_strerror(rc));
         sf_cof_free(cof);
-        return rc == SF_EINVAL ? SF_EXIT_USAGE : SF_EXIT_INTERNAL;
+        return sf_cli_status(rc);
     }
     if (explain) {
         sf_osc_explain(o, stdout);
@@ -140,18 +145,13 @@ int sf_cmd_run(int argc, char **argv)
     if (*sf_osc_get_plan(o)->warning)
         fprintf(stderr, "slipfield run: %s: warning: %s\n", path, sf_osc_get_plan(o)->warning);
     sf_out out = { 0 }, sum = { 0 };
-    int ok = 1;
-    if (out_path && sf_cli_open("run", out_path, &out))
-        ok = 0;
-    if (ok && sum_path && sf_cli_open("run", sum_path, &sum)) {
-        if (out_path)
-            sf_cli_close("run", &out, 0);
-        ok = 0;
-    }
-    if (!ok) {
+    int st = out_path ? sf_cli_open("run", out_path, path, &out) : SF_EXIT_OK;
+    if (!st && sum_path && (st = sf_cli_open("run", sum_path, path, &sum)) && out_path)
+        sf_cli_close("run", &out, 0);
+    if (st) {
         sf_osc_free(o);
         sf_cof_free(cof);
-        return SF_EXIT_USAGE;
+        return st;
     }
     if (out_path)
         fprintf(out.f, "t\tx\ty\tphi\tvx\tvy\tomega\tFx\tFy\tT\tstate\n");
@@ -161,13 +161,16 @@ int sf_cmd_run(int argc, char **argv)
         fprintf(stderr, "slipfield run: %s: %s\n", path, *err ? err : sf_strerror(rc));
     else if (sum_path)
         summary(sum.f, &s, &res);
-    int st = SF_EXIT_OK;
-    if (out_path && sf_cli_close("run", &out, rc == SF_SUCCESS))
-        st = SF_EXIT_INTERNAL;
-    if (sum_path && sf_cli_close("run", &sum, rc == SF_SUCCESS))
-        st = SF_EXIT_INTERNAL;
+    if (!rc && !(isfinite(res.pv_x) && isfinite(res.pv_F) && isfinite(res.stick_fraction)))
+        fprintf(stderr, "slipfield run: %s: warning: no quantity of interest: %zu complete cycles after t_skip = %g s "
+                        "(pv_x, pv_F or stick_fraction is nan): raise T (%g s)\n",
+                path, res.ncycles, s.t_skip, s.T);
+    if (out_path && sf_cli_close("run", &out, rc == SF_SUCCESS) && !rc)
+        st = SF_EXIT_USAGE;
+    if (sum_path && sf_cli_close("run", &sum, rc == SF_SUCCESS) && !rc)
+        st = SF_EXIT_USAGE;
     sf_osc_result_free(&res);
     sf_osc_free(o);
     sf_cof_free(cof);
-    return rc ? SF_EXIT_INTERNAL : st;
+    return rc ? sf_cli_status(rc) : st;
 }

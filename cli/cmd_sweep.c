@@ -7,7 +7,9 @@
 #include "montecarlo.h"
 #include "sf_error.h"
 
+#include <dirent.h>
 #include <errno.h>
+#include <signal.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -29,8 +31,12 @@ static void usage(FILE *f)
           "                    averaged), mean, std (n - 1), standard error of the mean,\n"
           "                    95% confidence interval (Student t), the deterministic\n"
           "                    value, and the ratio's mean, std and standard error\n"
+          "  --realisations N  realisations per value (default: the scene's samples, if\n"
+          "                    it sets the key)\n"
           "  --threads T       OpenMP threads (default: all); results do not depend on it\n"
           "  --resume          continue from FILE.ckpt<k> checkpoints of an interrupted run\n"
+          "                    (and remove the temporary files a killed run left)\n"
+          "The swept value overrides the scene's value of NAME.\n"
           "Realisation i of every value uses its own stream (seed, i): bit-identical\n"
           "output for any thread count. Progress on stderr when it is a terminal.\n",
           f);
@@ -52,6 +58,37 @@ static int parse_values(const char *v, double *out, size_t cap, size_t *n)
     return *n ? 0 : -1;
 }
 
+/* Remove the temporary files that a killed run (SIGKILL: no clean-up)
+ * left beside out: "<out>.tmp<pid>" and "<out>.ckpt<k>.tmp", of processes
+ * that no longer run. */
+static void remove_stale_tmp(const char *out)
+{
+    char dir[1100];
+    const char *slash = strrchr(out, '/'), *base = slash ? slash + 1 : out;
+    snprintf(dir, sizeof dir, "%.*s", slash ? (int)(slash - out) + 1 : 1, slash ? out : ".");
+    size_t bl = strlen(base);
+    DIR *d = opendir(dir);
+    if (!d)
+        return;
+    struct dirent *e;
+    while ((e = readdir(d))) {
+        const char *n = e->d_name, *t;
+        if (strncmp(n, base, bl) || n[bl] != '.' || !(t = strstr(n + bl, ".tmp")))
+            continue;
+        char *end;
+        long pid = strtol(t + 4, &end, 10);
+        int ours = t == n + bl ? t[4] && !*end && pid > 0 && kill((pid_t)pid, 0) != 0 && errno == ESRCH
+                               : !strncmp(n + bl, ".ckpt", 5) && !t[4];
+        if (ours) {
+            char p[2200];
+            snprintf(p, sizeof p, "%.*s%s", slash ? (int)(slash - out) + 1 : 0, out, n);
+            if (unlink(p) == 0)
+                fprintf(stderr, "slipfield sweep: removed %s, left by an interrupted run\n", p);
+        }
+    }
+    closedir(d);
+}
+
 int sf_cmd_sweep(int argc, char **argv)
 {
     const char *path, *param = NULL, *values = NULL, *out_path = NULL, *sum_path = NULL;
@@ -71,8 +108,8 @@ int sf_cmd_sweep(int argc, char **argv)
         return rc == SF_CLI_HELP ? SF_EXIT_OK : rc;
     double v[SF_LIST_MAX];
     size_t nv;
-    if (!param || !values || !n || !out_path) {
-        fprintf(stderr, "slipfield sweep: --param, --values, --realisations and --out are required\n");
+    if (!param || !values || !out_path) {
+        fprintf(stderr, "slipfield sweep: --param, --values and --out are required\n");
         return SF_EXIT_USAGE;
     }
     if (parse_values(values, v, SF_LIST_MAX, &nv)) {
@@ -83,6 +120,14 @@ int sf_cmd_sweep(int argc, char **argv)
     sf_scene s0;
     if (sf_cli_load_scene("sweep", path, &s0))
         return SF_EXIT_USAGE;
+    if (n)
+        sf_cli_key_overridden("sweep", path, &s0, "samples", "--realisations");
+    else if (sf_scene_was_set(&s0, "samples"))
+        n = s0.samples;
+    else {
+        fprintf(stderr, "slipfield sweep: --realisations is required (or the scene's samples key)\n");
+        return SF_EXIT_USAGE;
+    }
     char err[300];
     for (size_t k = 0; k < nv; k++) {   /* validate every value before any work */
         sf_scene t = s0;
@@ -90,7 +135,15 @@ int sf_cmd_sweep(int argc, char **argv)
             fprintf(stderr, "slipfield sweep: %s\n", err);
             return SF_EXIT_USAGE;
         }
+        if (!(t.T > t.t_skip)) {
+            fprintf(stderr, "slipfield sweep: %s = %g: T = %g s is not above t_skip = %g s: no cycle to measure\n",
+                    param, v[k], t.T, t.t_skip);
+            return SF_EXIT_USAGE;
+        }
     }
+    if (resume && strcmp(out_path, "-"))
+        remove_stale_tmp(out_path);
+    sf_cli_interrupt_hint(strcmp(out_path, "-") ? ": rerun with --resume" : "");
     /* under MPI every rank computes, rank 0 writes */
     int writer = sf_mc_rank(NULL) == 0;
     sf_out out = { 0 }, sum = { 0 };
@@ -102,17 +155,17 @@ int sf_cmd_sweep(int argc, char **argv)
         out.f = sum.f = null;
         out.is_stdout = sum.is_stdout = 1;
     } else {
-        if (sf_cli_open("sweep", out_path, &out))
-            return SF_EXIT_USAGE;
-        if (sum_path && sf_cli_open("sweep", sum_path, &sum)) {
+        if ((rc = sf_cli_open("sweep", out_path, path, &out)))
+            return rc;
+        if (sum_path && (rc = sf_cli_open("sweep", sum_path, path, &sum))) {
             sf_cli_close("sweep", &out, 0);
-            return SF_EXIT_USAGE;
+            return rc;
         }
     }
     sf_sweep_write_header(out.f);
     if (sum_path)
         sf_sweep_summary_header(sum.f);
-    int ok = 1;
+    int ok = 1, fail = SF_SUCCESS;
     for (size_t k = 0; k < nv && ok; k++) {
         sf_scene s = s0;
         sf_sweep_set(&s, param, v[k], err, sizeof err);
@@ -124,7 +177,12 @@ int sf_cmd_sweep(int argc, char **argv)
         if (rc) {
             fprintf(stderr, "slipfield sweep: %s = %g: %s\n", param, v[k], *err ? err : sf_strerror(rc));
             ok = 0;
+            fail = rc;
         } else {
+            if (p.n_valid < n)
+                fprintf(stderr, "slipfield sweep: %s = %g: warning: %zu of %zu realisations formed no quantity of "
+                                "interest (no complete cycle after t_skip: nan ratios, left out of the means)\n",
+                        param, v[k], n - p.n_valid, n);
             if (p.from_checkpoint)
                 fprintf(stderr, "slipfield sweep: %s = %g: %zu of %zu realisations from the checkpoint\n", param,
                         v[k], p.from_checkpoint, n);
@@ -136,16 +194,16 @@ int sf_cmd_sweep(int argc, char **argv)
     }
     if (!writer) {
         fclose(null);
-        return ok ? SF_EXIT_OK : SF_EXIT_INTERNAL;
+        return sf_cli_status(fail);
     }
     int st = sf_cli_close("sweep", &out, ok);
-    if (sum_path && sf_cli_close("sweep", &sum, ok))
-        st = SF_EXIT_INTERNAL;
+    if (sum_path && sf_cli_close("sweep", &sum, ok) && ok)
+        st = SF_EXIT_USAGE;
     if (ok && !st && strcmp(out_path, "-"))   /* complete: the checkpoints are no longer needed */
         for (size_t k = 0; k < nv; k++) {
             char ck[1100];
             snprintf(ck, sizeof ck, "%s.ckpt%zu", out_path, k);
             unlink(ck);
         }
-    return ok ? st : SF_EXIT_INTERNAL;
+    return ok ? st : sf_cli_status(fail);
 }

@@ -30,7 +30,7 @@ static const command commands[] = {
     { "sweep", sf_cmd_sweep, "Monte Carlo sweep over a parameter: QoI ratios to the deterministic model" },
     { "surface", sf_cmd_surface, "the static limit surface (Eq. 11) to TSV" },
     { "wrench", sf_cmd_wrench, "the friction force and torque at one motion (Eqs. 7-8)" },
-    { "help", cmd_help, "help on a topic: 'slipfield help scene' lists scene keys" },
+    { "help", cmd_help, "help on a command or on scene keys: 'slipfield help run', 'help scene'" },
 };
 #define NCMD (sizeof commands / sizeof commands[0])
 
@@ -41,7 +41,12 @@ static void usage(FILE *f)
                "verification suite (Hu, Batou & Ouyang, MSSP 183 (2023) 109572).\n\ncommands:\n");
     for (size_t i = 0; i < NCMD; i++)
         fprintf(f, "  %-8s %s\n", commands[i].name, commands[i].summary);
-    fprintf(f, "\n'slipfield COMMAND --help' for a command's options.\n"
+    fprintf(f, "\noptions:\n"
+               "  -h, --help  this text ('slipfield help COMMAND' or 'slipfield COMMAND --help':\n"
+               "              a command's options)\n"
+               "  --version   version, git revision, GSL and FFTW versions\n"
+               "Options may follow the positional arguments; '--opt=value' is '--opt value';\n"
+               "'--' ends the options.\n"
                "Scenes are 'key = value' files in SI units; defaults are the paper's Table 1.\n"
                "Exit status: 0 ok, 1 a check failed, 2 bad input or usage, 3 internal error.\n"
                "Environment: SLIPFIELD_FFTW_WISDOM=FILE keeps FFTW wisdom for scenes with\n"
@@ -50,12 +55,26 @@ static void usage(FILE *f)
 
 static int cmd_help(int argc, char **argv)
 {
-    if (argc >= 2 && !strcmp(argv[1], "scene")) {
+    if (argc > 2) {
+        fprintf(stderr, "slipfield help: one topic at a time\n");
+        return SF_EXIT_USAGE;
+    }
+    if (argc < 2 || !strcmp(argv[1], "help") || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h")) {
+        usage(stdout);
+        return SF_EXIT_OK;
+    }
+    if (!strcmp(argv[1], "scene")) {
         sf_case_print_keys(stdout);   /* the solver's keys, then the case's */
         return SF_EXIT_OK;
     }
-    usage(stdout);
-    return SF_EXIT_OK;
+    for (size_t i = 0; i < NCMD; i++)
+        if (!strcmp(argv[1], commands[i].name) && commands[i].fn != cmd_help) {
+            char *args[] = { argv[1], "--help", NULL };
+            return commands[i].fn(2, args);
+        }
+    fprintf(stderr, "slipfield help: no help on '%s': topics are scene and the commands\n", argv[1]);
+    usage(stderr);
+    return SF_EXIT_USAGE;
 }
 
 /* SLIPFIELD_FFTW_WISDOM=FILE: FFTW wisdom imported before the command and

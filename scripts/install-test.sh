@@ -1,8 +1,10 @@
 #!/bin/sh
 # make test: `make install` into a temporary DESTDIR + PREFIX (and into a
 # temporary PREFIX alone), then examples/cycle.c is built against what was
-# installed with pkg-config -- shared and static -- and run; the installed
-# slipfield and its man page work; `make uninstall` removes every file.
+# installed with pkg-config -- shared and static -- and run, and so is the
+# C++ consumer examples/consumer.cpp (the umbrella header, extern "C", the
+# version); the installed slipfield and its man page work; `make uninstall`
+# removes every file and the folders install created.
 # Needs no root: everything goes under /tmp.
 set -u
 cd "$(dirname "$0")/.." || exit 3
@@ -13,7 +15,9 @@ pass=0; fail=0
 ok()  { pass=$((pass + 1)); echo "ok    $*"; }
 bad() { fail=$((fail + 1)); echo "FAIL  $*"; }
 cc=${CC:-cc}
-sh scripts/deps.sh groff-base >/dev/null || exit 1   # renders the man page
+cxx=${CXX:-g++}
+# groff renders the man page; g++ builds the C++ consumer
+sh scripts/deps.sh groff-base $(command -v "$cxx" >/dev/null 2>&1 || echo g++) >/dev/null || exit 1
 
 stage=$work/stage
 prefix=/opt/slipfield
@@ -44,12 +48,26 @@ if [ "$soname" = libslipfield.so.0 ] && [ -f "$root/lib/$target" ] && [ "$(readl
 else
     bad "shared library: soname '$soname', libslipfield.so.0 -> '$target'"
 fi
-nheaders=$(ls solver/*.h | grep -v '/sf_alloc\.h$' | wc -l)   # sf_alloc.h: internal, not installed (Makefile)
+# internal, not installed (Makefile's PRIVATE_HEADERS): sf_alloc.h, cof_x512.h
+public=$(ls solver/*.h | grep -v -e '/sf_alloc\.h$' -e '/cof_x512\.h$')
+nheaders=$(echo "$public" | wc -l)
 [ "$(ls "$root/include/slipfield/"*.h | wc -l)" -eq "$nheaders" ] && ok "all $nheaders public solver headers" || bad "headers missing"
+noguard=""; umbrella_missing=""
+for h in $public; do
+    b=$(basename "$h")
+    [ "$b" = slipfield.h ] && continue
+    grep -q 'extern "C"' "$h" || noguard="$noguard $b"
+    grep -q "^#include \"$b\"" solver/slipfield.h || umbrella_missing="$umbrella_missing $b"
+done
+[ -z "$noguard" ] && ok "every installed header has extern \"C\" guards" || bad "no extern \"C\" guards:$noguard"
+[ -z "$umbrella_missing" ] && ok "slipfield.h includes every public header" || bad "slipfield.h lacks:$umbrella_missing"
+simd=$(grep -l -e immintrin -e '__m512' -e '__attribute__((target' "$root/include/slipfield/"*.h)
+[ -z "$simd" ] && ok "no SIMD intrinsics in the installed headers" || bad "SIMD in installed headers: $simd"
 
 # the example, against the installed library, with pkg-config
 export PKG_CONFIG_SYSROOT_DIR="$stage" PKG_CONFIG_PATH="$root/lib/pkgconfig"
-if pkg-config --exists slipfield && [ "$(pkg-config --modversion slipfield)" = "$(sed -n 's/^#define SF_VERSION "\(.*\)"/\1/p' verification/version.h)" ]; then
+ver=$(for k in MAJOR MINOR PATCH; do sed -n "s/^#define SF_VERSION_$k \([0-9]*\)$/\1/p" solver/sf_version.h; done | paste -sd.)
+if pkg-config --exists slipfield && [ "$(pkg-config --modversion slipfield)" = "$ver" ]; then
     ok "pkg-config finds slipfield $(pkg-config --modversion slipfield)"
 else
     bad "pkg-config does not find slipfield"
@@ -72,6 +90,15 @@ if $cc -std=c11 examples/cycle.c $(pkg-config --cflags slipfield) "$root/lib/lib
 else
     bad "static link failed"; sed 's/^/      /' "$work/cc2.log" | head -10
 fi
+# C++: the umbrella header and the version, against the shared library
+# shellcheck disable=SC2046
+if $cxx -std=c++11 -Wall -Wextra -Wpedantic -Werror examples/consumer.cpp $(pkg-config --cflags --libs slipfield) \
+        -o "$work/consumer" 2> "$work/cxx.log"; then
+    if out=$(LD_LIBRARY_PATH="$root/lib" "$work/consumer"); then ok "C++ consumer (examples/consumer.cpp) builds and runs: $out"
+    else bad "C++ consumer fails: $out"; fi
+else
+    bad "examples/consumer.cpp does not build with $cxx"; sed 's/^/      /' "$work/cxx.log" | head -10
+fi
 unset PKG_CONFIG_SYSROOT_DIR PKG_CONFIG_PATH
 
 if "$root/bin/slipfield" --version | grep -q '^slipfield '; then ok "installed slipfield runs"; else bad "installed slipfield does not run"; fi
@@ -82,11 +109,17 @@ if printf '%s' "$man_text" | grep -q 'SCENE KEYS' && printf '%s' "$man_text" | g
 else
     bad "slipfield.1 does not render or lacks the help text"
 fi
+missing_sec=""
+for sec in NAME SYNOPSIS DESCRIPTION OPTIONS 'EXIT STATUS' ENVIRONMENT FILES EXAMPLES 'SEE ALSO'; do
+    printf '%s\n' "$man_text" | grep -qx "$sec" || missing_sec="$missing_sec '$sec'"
+done
+[ -z "$missing_sec" ] && ok "slipfield.1 has NAME, SYNOPSIS, DESCRIPTION, OPTIONS, EXIT STATUS, ENVIRONMENT, FILES, EXAMPLES" \
+    || bad "slipfield.1 lacks the sections$missing_sec"
 if [ -z "$(groff -man -Tutf8 -ww -z "$root/share/man/man1/slipfield.1" 2>&1)" ]; then ok "groff -ww: no warnings"; else bad "groff warns on slipfield.1"; fi
 
 $make -s --no-print-directory uninstall DESTDIR="$stage" PREFIX="$prefix" > "$work/uninstall.log" 2>&1
-left=$(find "$stage" -type f -o -type l)
-[ -z "$left" ] && ok "make uninstall removes every file" || bad "make uninstall left: $left"
+left=$(find "$stage" -mindepth 1)
+[ -z "$left" ] && ok "make uninstall removes every file and the folders install created" || bad "make uninstall left: $left"
 
 # PREFIX alone (what a user without DESTDIR does)
 p2=$work/prefix
@@ -98,7 +131,15 @@ else
     bad "make install PREFIX=tmp: the example does not build or run"
 fi
 $make -s --no-print-directory uninstall PREFIX="$p2" > /dev/null 2>&1
-[ -z "$(find "$p2" -type f -o -type l)" ] && ok "make uninstall PREFIX=tmp removes every file" || bad "uninstall PREFIX=tmp left files"
+[ ! -e "$p2" ] && ok "make uninstall PREFIX=tmp removes every file and folder (PREFIX too: install made it)" \
+    || bad "uninstall PREFIX=tmp left: $(find "$p2")"
+# a folder that was there before install stays, with what else it holds
+p3=$work/existing
+mkdir -p "$p3/lib"; : > "$p3/lib/other.so"
+$make -s --no-print-directory install PREFIX="$p3" > /dev/null 2>&1
+$make -s --no-print-directory uninstall PREFIX="$p3" > /dev/null 2>&1
+[ "$(cd "$p3" && find . | sort | paste -sd' ')" = ". ./lib ./lib/other.so" ] && ok "uninstall keeps folders it did not create" \
+    || bad "uninstall into an existing PREFIX left or took: $(cd "$p3" && find . | paste -sd' ')"
 # the README shows the example: the same text
 sed -n '/^#include <slipfield\/cof.h>/,/^}/p' README.md > "$work/readme.c"
 sed -n '/^#include <slipfield\/cof.h>/,/^}/p' examples/cycle.c > "$work/example.c"

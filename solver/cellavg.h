@@ -28,6 +28,9 @@
  * is measured in cases/field/cellavg-moments.md). */
 #ifndef SF_CELLAVG_H
 #define SF_CELLAVG_H
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 #include <stddef.h>
 
@@ -70,4 +73,7 @@ double sf_cellavg_support(const sf_cellavg *c);
  * (bilinear interpolation between its nodes; numplan.c says why). */
 double sf_cellavg_grid_spacing(double h);
 
+#ifdef __cplusplus
+}
+#endif
 #endif

@@ -1,4 +1,5 @@
 #include "contact.h"
+#include "cof_x512.h"
 #include "sf_alloc.h"
 #include "sf_error.h"
 

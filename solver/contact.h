@@ -15,6 +15,9 @@
  */
 #ifndef SF_CONTACT_H
 #define SF_CONTACT_H
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 #include <stddef.h>
 #include "cof.h"
@@ -56,4 +59,7 @@ double sf_contact_mean_cof(const sf_contact *c, double xb, double yb);
  * coupling): eps = U/(|w| R); |F| = mu N f(eps), |T| = mu N R t(eps). */
 void sf_contensou(double eps, double *f, double *t);
 
+#ifdef __cplusplus
+}
+#endif
 #endif

@@ -11,6 +11,9 @@
  */
 #ifndef SF_CYCLE1D_H
 #define SF_CYCLE1D_H
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 #include "scene.h"
 
@@ -32,4 +35,7 @@ int sf_cycle1d_init(sf_cycle1d *c, const sf_scene *s, double eps);
  * slip onset after it, ...). */
 double sf_cycle1d_transition(const sf_cycle1d *c, unsigned n);
 
+#ifdef __cplusplus
+}
+#endif
 #endif

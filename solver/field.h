@@ -20,6 +20,9 @@
  */
 #ifndef SF_FIELD_H
 #define SF_FIELD_H
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 #include <stddef.h>
 #include <gsl/gsl_rng.h>
@@ -153,4 +156,7 @@ int sf_field_wisdom_export(const char *path);
  * clamping.  Exposed for verification (FFT vs direct DFT). */
 int sf_field_eigenvalues(const sf_field *f, double *lambda);
 
+#ifdef __cplusplus
+}
+#endif
 #endif

@@ -5,6 +5,9 @@
  * the paper did without). */
 #ifndef SF_LNFIELD_H
 #define SF_LNFIELD_H
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 #include "field.h"
 #include "lognormal.h"
@@ -38,4 +41,7 @@ int sf_lnfield_sample(sf_lnfield *f, gsl_rng *rng, double *gauss, double *cof);
  * plan then sf_lnfield_sample, with no copy of the second field. */
 int sf_lnfield_sample_fresh(sf_lnfield *f, gsl_rng *rng, double *cof);
 
+#ifdef __cplusplus
+}
+#endif
 #endif

@@ -9,6 +9,9 @@
  */
 #ifndef SF_LOGNORMAL_H
 #define SF_LOGNORMAL_H
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 typedef struct {
     double mean, std, cv;   /* target moments of H (same units as H) */
@@ -31,4 +34,7 @@ double sf_lognormal_cdf(const sf_lognormal *ln, double h);
 double sf_lognormal_rho_h(const sf_lognormal *ln, double rho_g);
 double sf_lognormal_rho_g(const sf_lognormal *ln, double rho_h);
 
+#ifdef __cplusplus
+}
+#endif
 #endif

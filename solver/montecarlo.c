@@ -2,10 +2,12 @@
 #include "sf_alloc.h"
 #include "sf_error.h"
 
+#include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 #include <unistd.h>
 #ifdef _OPENMP
 #include <omp.h>
@@ -207,7 +209,16 @@ typedef struct {
     FILE *ck;                             /* the checkpoint, open to append (or NULL) */
     size_t finished;
     int failed, rc, tty;
+    size_t started;                       /* finished when the loop began (resumed) */
+    double t0;                            /* its monotonic start time [s] */
 } mc_loop;
+
+static double now_s(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
 
 /* Realisation i returned r: keep the first error, or checkpoint it and
  * report progress.  Called inside the critical section. */
@@ -225,8 +236,11 @@ static void record(mc_loop *L, size_t i, int r)
         fflush(L->ck);
     }
     L->finished++;
-    if (L->tty)
-        fprintf(stderr, "\r%s: %zu/%zu realisations", s->label, L->finished, s->n);
+    if (L->tty) {   /* ETA: this run's mean time per realisation so far */
+        double dt = now_s() - L->t0, eta = dt / (double)(L->finished - L->started) * (double)(s->n - L->finished);
+        fprintf(stderr, "\r%s: %zu/%zu realisations, ETA %02d:%02d:%02d  ", s->label, L->finished, s->n,
+                (int)(eta / 3600), (int)fmod(eta / 60, 60), (int)fmod(eta, 60));
+    }
 }
 
 /* The realisations not done yet, on an OpenMP team: each thread has its
@@ -291,7 +305,7 @@ int sf_mc_run(const sf_mc_spec *s0, const sf_mc_ops *ops, void *ctx, double *out
         free(theirs);
         return rc;
     }
-    mc_loop L = { s, out, done, theirs, ck, before, 0, SF_SUCCESS, s->label && isatty(2) };
+    mc_loop L = { s, out, done, theirs, ck, before, 0, SF_SUCCESS, s->label && isatty(2), before, now_s() };
     realise_all(&L, ops, ctx);
     rc = L.rc;
     if (L.tty)

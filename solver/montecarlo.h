@@ -14,6 +14,9 @@
  */
 #ifndef SF_MONTECARLO_H
 #define SF_MONTECARLO_H
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 #include <stddef.h>
 #include <gsl/gsl_rng.h>
@@ -55,4 +58,7 @@ unsigned long sf_mc_hash(const void *p, size_t n, unsigned long h);
 int sf_mc_run(const sf_mc_spec *spec, const sf_mc_ops *ops, void *ctx, double *out,
               size_t *done_before, char *err, size_t errlen);
 
+#ifdef __cplusplus
+}
+#endif
 #endif

@@ -20,6 +20,9 @@
  * rtol across l/R on the same fields) are in numplan.c. */
 #ifndef SF_NUMPLAN_H
 #define SF_NUMPLAN_H
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 #include <stddef.h>
 #include <stdio.h>
@@ -100,4 +103,7 @@ void sf_numplan_explain(const sf_numplan *p, FILE *f);
 double sf_numplan_err_quad(double l_over_R, size_t rings);
 double sf_numplan_err_time(double rtol);
 
+#ifdef __cplusplus
+}
+#endif
 #endif

@@ -45,6 +45,9 @@
  */
 #ifndef SF_OSCILLATOR_H
 #define SF_OSCILLATOR_H
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 #include <stddef.h>
 #include "cof.h"
@@ -193,4 +196,7 @@ double sf_osc_stick_onset(const sf_osc *o, double *y);
  * no-op with velocity_jump = false.  Returns the kinetic-energy change [J]. */
 double sf_osc_slip_onset(const sf_osc *o, double *y);
 
+#ifdef __cplusplus
+}
+#endif
 #endif

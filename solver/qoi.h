@@ -3,6 +3,9 @@
  * are accumulated by the integrator itself: oscillator.h.) */
 #ifndef SF_QOI_H
 #define SF_QOI_H
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 #include <stddef.h>
 
@@ -12,4 +15,7 @@
  * transform.  f and p hold n/2 + 1 values.  Parseval: sum p df = var(x). */
 int sf_periodogram(const double *x, size_t n, double dt, double *f, double *p);
 
+#ifdef __cplusplus
+}
+#endif
 #endif

@@ -13,6 +13,9 @@
  */
 #ifndef SF_SCENE_H
 #define SF_SCENE_H
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 #include <stddef.h>
 #include <stdio.h>
@@ -154,4 +157,7 @@ const char *sf_scene_key_unit(const char *key);
 /* Names of the enum values, for messages and reports. */
 const char *sf_scene_enum_name(const char *key, int value);
 
+#ifdef __cplusplus
+}
+#endif
 #endif

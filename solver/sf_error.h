@@ -5,6 +5,9 @@
  * that failed (SF_ENOMEM). */
 #ifndef SF_ERROR_H
 #define SF_ERROR_H
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 #include <stddef.h>
 
@@ -56,4 +59,7 @@ void sf_init(void);
  * SF_ETRUNC warning.  Use `if (!sf_usable(rc)) return rc;`. */
 static inline int sf_usable(int rc) { return rc == SF_SUCCESS || rc == SF_ETRUNC; }
 
+#ifdef __cplusplus
+}
+#endif
 #endif

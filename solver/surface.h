@@ -17,6 +17,9 @@
  */
 #ifndef SF_SURFACE_H
 #define SF_SURFACE_H
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 #include "contact.h"
 
@@ -64,4 +67,7 @@ int sf_contact_stick_margin(const sf_contact *c, double xb, double yb,
 int sf_surface_stick_margin(sf_surface *s, const sf_contact *c, double xb, double yb, double Fx, double Fy,
                             double *margin);
 
+#ifdef __cplusplus
+}
+#endif
 #endif

@@ -25,6 +25,10 @@ int sf_sweep_set(sf_scene *s, const char *name, double value, char *err, size_t 
         return SF_SUCCESS;
     }
     double cv = s->mu_std / s->mu_mean;
+    sf_keytab t = sf_scene_keytab(s);   /* the swept value overrides the scene's */
+    for (size_t k = 0; k < t.n; k++)
+        if (!strcmp(t.keys[k].name, name))
+            t.set[k] = 0;
     char line[160];
     snprintf(line, sizeof line, "%s = %.17g\n", name, value);
     int rc = sf_scene_parse(s, line, "--param", 1, err, errlen);

@@ -13,6 +13,9 @@
  */
 #ifndef SF_SWEEP_H
 #define SF_SWEEP_H
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 #include <stddef.h>
 #include <stdio.h>
@@ -73,4 +76,7 @@ void sf_sweep_write_rows(FILE *f, const char *param, double value, const sf_swee
 void sf_sweep_summary_header(FILE *f);
 void sf_sweep_summary_row(FILE *f, const char *param, double value, const sf_sweep_point *p);
 
+#ifdef __cplusplus
+}
+#endif
 #endif

@@ -36,6 +36,9 @@
  */
 #ifndef SF_TILES_H
 #define SF_TILES_H
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 #include <stddef.h>
 #include <stdint.h>
@@ -79,4 +82,7 @@ uint64_t sf_tiles_tile_seed(uint64_t key, long tile);
  * slipfield builds on). */
 extern const gsl_rng_type *sf_rng_splitmix64;
 
+#ifdef __cplusplus
+}
+#endif
 #endif

@@ -10,6 +10,7 @@
 #include "scene.h"
 #include "sf_error.h"
 #include "sweep.h"
+#include "sf_version.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -182,6 +183,25 @@ static void sweep_set_edges(void **state)
     assert_close(s.mu_mean, 0.8, 1e-15);
     assert_close(s.mu_std / s.mu_mean, cv, 1e-15);
     assert_int_not_equal(sf_sweep_set(&s, "no_such_key", 1, err, sizeof err), SF_SUCCESS);
+    /* the swept value overrides a value the scene file set (not "set twice"),
+       value after value */
+    sf_scene_default(&s);
+    assert_int_equal(sf_scene_parse(&s, "T = 30\n", "t.scene", 1, err, sizeof err), SF_SUCCESS);
+    assert_int_equal(sf_sweep_set(&s, "T", 40, err, sizeof err), SF_SUCCESS);
+    assert_close(s.T, 40, 0);
+    assert_int_equal(sf_sweep_set(&s, "T", 50, err, sizeof err), SF_SUCCESS);
+    assert_close(s.T, 50, 0);
+    assert_true(sf_scene_was_set(&s, "T"));
+}
+
+/* the library's run-time version is the headers' */
+static void version_agrees(void **state)
+{
+    (void)state;
+    char v[32];
+    snprintf(v, sizeof v, "%d.%d.%d", SF_VERSION_MAJOR, SF_VERSION_MINOR, SF_VERSION_PATCH);
+    assert_string_equal(sf_version(), v);
+    assert_string_equal(SF_VERSION_STRING, v);
 }
 
 /* Stick duration from rest at the origin, uniform COF through the
@@ -298,6 +318,7 @@ int main(void)
         cmocka_unit_test(explain_variants),
         cmocka_unit_test(plan_edges),
         cmocka_unit_test(sweep_set_edges),
+        cmocka_unit_test(version_agrees),
         cmocka_unit_test(stick_on_exact_section),
         cmocka_unit_test(scene_parse_limits),
     };

@@ -253,9 +253,12 @@ const char *sf_case_enum_name(const char *key, int value)
 
 void sf_case_print_keys(FILE *out)
 {
-    sf_scene s = { 0 };   /* only its table is read */
-    sf_keytab t[2] = { sf_scene_keytab(&s), { spec_keys, NSPEC, NULL, NULL } };
-    sf_keys_print(t, 2, out);
+    fprintf(out, "Scene keys (scene files of every command, and a case's scene block):\n\n");
+    sf_scene_print_keys(out);
+    fprintf(out, "\nCase-only keys (a case file's scene block only: run, sweep, field, surface\n"
+                 "and wrench reject them as unknown keys):\n\n");
+    sf_keytab t = { spec_keys, NSPEC, NULL, NULL };
+    sf_keys_print(&t, 1, out);
 }
 
 /* ---- power alternatives ---- */

@@ -31,11 +31,16 @@ static int opt_double(const char *cmd, const char *opt, const char *v, double *o
     return SF_EXIT_OK;
 }
 
-/* Option o with value v (NULL when none follows); *used: v was consumed.
- * Returns SF_EXIT_OK, SF_OPT_DONE or an exit status. */
-static int take(const sf_optspec *sp, const sf_opt *o, const char *v, int *used)
+/* Option o with value v (NULL when none follows); *used: v was consumed;
+ * inline: v came as --name=v.  Returns SF_EXIT_OK, SF_OPT_DONE or an exit
+ * status. */
+static int take(const sf_optspec *sp, const sf_opt *o, const char *v, int inline_v, int *used)
 {
     *used = 0;
+    if (inline_v && (o->kind == SF_OPT_FLAG || o->kind == SF_OPT_ACTION)) {
+        fprintf(stderr, "slipfield %s: %s takes no value\n", sp->cmd, o->name);
+        return SF_EXIT_USAGE;
+    }
     switch (o->kind) {
     case SF_OPT_FLAG:
         *(int *)o->dst = 1;
@@ -48,11 +53,11 @@ static int take(const sf_optspec *sp, const sf_opt *o, const char *v, int *used)
         break;
     }
     if (!v) {
-        fprintf(stderr, "slipfield %s: unknown option or missing value: %s\n", sp->cmd, o->name);
+        fprintf(stderr, "slipfield %s: %s needs a value\n", sp->cmd, o->name);
         sp->usage(stderr);
         return SF_EXIT_USAGE;
     }
-    *used = 1;
+    *used = !inline_v;
     switch (o->kind) {
     case SF_OPT_SIZE: return opt_size(sp->cmd, o->name, v, o->lo, o->hi, o->dst);
     case SF_OPT_DOUBLE: return opt_double(sp->cmd, o->name, v, o->dst);
@@ -61,10 +66,11 @@ static int take(const sf_optspec *sp, const sf_opt *o, const char *v, int *used)
     }
 }
 
-static const sf_opt *find_opt(const sf_optspec *sp, const char *a)
+/* The option named a[0..len) ("--name" of "--name=value"). */
+static const sf_opt *find_opt(const sf_optspec *sp, const char *a, size_t len)
 {
     for (size_t k = 0; k < sp->nopts; k++)
-        if (!strcmp(a, sp->opts[k].name))
+        if (strlen(sp->opts[k].name) == len && !strncmp(a, sp->opts[k].name, len))
             return &sp->opts[k];
     return NULL;
 }
@@ -72,35 +78,37 @@ static const sf_opt *find_opt(const sf_optspec *sp, const char *a)
 int sf_opt_parse(const sf_optspec *sp, int argc, char **argv, const char **pos, size_t *npos)
 {
     *npos = 0;
-    int i = 1;
-    for (; i < argc; i++) {
+    int only_pos = 0;   /* after "--" */
+    for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
-        int is_opt = sp->options_first ? a[0] == '-' : a[0] == '-' && a[1];
-        if (sp->options_first && !is_opt)
-            break;   /* the positional arguments start here */
+        if (!only_pos && !strcmp(a, "--")) {
+            only_pos = 1;
+            continue;
+        }
+        if (only_pos || a[0] != '-' || !a[1]) {
+            if (sp->max_pos && *npos == sp->max_pos) {
+                fprintf(stderr, "slipfield %s: %s\n", sp->cmd, sp->too_many);
+                return SF_EXIT_USAGE;
+            }
+            pos[(*npos)++] = a;
+            continue;
+        }
         if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
             sp->usage(stdout);
             return SF_OPT_DONE;
         }
-        const sf_opt *o = find_opt(sp, a);
-        if (o) {
-            int used, rc = take(sp, o, i + 1 < argc ? argv[i + 1] : NULL, &used);
-            if (rc)
-                return rc;
-            i += used;
-        } else if (is_opt) {
-            fprintf(stderr, "slipfield %s: unknown option or missing value: %s\n", sp->cmd, a);
+        const char *eq = strncmp(a, "--", 2) ? NULL : strchr(a, '=');
+        const sf_opt *o = find_opt(sp, a, eq ? (size_t)(eq - a) : strlen(a));
+        if (!o) {
+            fprintf(stderr, "slipfield %s: unknown option: %.*s\n", sp->cmd, eq ? (int)(eq - a) : (int)strlen(a), a);
             sp->usage(stderr);
             return SF_EXIT_USAGE;
-        } else if (sp->max_pos && *npos == sp->max_pos) {
-            fprintf(stderr, "slipfield %s: %s\n", sp->cmd, sp->too_many);
-            return SF_EXIT_USAGE;
-        } else {
-            pos[(*npos)++] = a;
         }
+        int used, rc = take(sp, o, eq ? eq + 1 : i + 1 < argc ? argv[i + 1] : NULL, eq != NULL, &used);
+        if (rc)
+            return rc;
+        i += used;
     }
-    for (; i < argc; i++)
-        pos[(*npos)++] = argv[i];
     if (*npos == 0) {
         if (sp->none)
             fprintf(stderr, "slipfield %s: %s\n", sp->cmd, sp->none);

@@ -3,8 +3,11 @@
  * their options in a table and call sf_opt_parse; it lives here because
  * verification/ must not include cli/ and cli/ may include verification/.
  *
- * Messages go to stderr as "slipfield CMD: ...", usage errors return
- * SF_EXIT_USAGE (2). */
+ * getopt_long's conventions: options and positional arguments mix in any
+ * order, `--name=value` is `--name value`, "--" ends the options (what
+ * follows is positional), and "-" is a positional argument (stdout or
+ * stdin as a path).  Messages go to stderr as "slipfield CMD: ...", usage
+ * errors return SF_EXIT_USAGE (2). */
 #ifndef SF_OPTIONS_H
 #define SF_OPTIONS_H
 
@@ -34,9 +37,6 @@ typedef struct {
     const sf_opt *opts;
     size_t nopts;
     void (*usage)(FILE *);      /* -h, --help: to stdout; after an unknown option: to stderr */
-    int options_first;          /* 1: options end at the first argument that does not start
-                                   with '-' (verify's case files); 0: options and positional
-                                   arguments mix, and "-" is positional (a path) */
     size_t max_pos;             /* at most this many positional arguments (0: any number) */
     const char *too_many;       /* the message when there are more */
     const char *none;           /* the message (before the usage) when there is none; NULL: usage only */

@@ -79,9 +79,12 @@ static void cell(FILE *f, const char *s)
         fputs(*s == '|' ? "\\|" : (char[2]){ *s, 0 }, f);
 }
 
+/* A one-case run in its own folder: into the run's own root it would
+ * replace the index and results.json with a one-case summary. */
 static void write_rerun(FILE *f, const sf_case *c)
 {
-    fprintf(f, "- Re-run: `build/slipfield verify %s` (or `make verify CASES=%s`)\n", c->path, c->path);
+    fprintf(f, "- Re-run: `build/slipfield verify %s --reports reports/rerun` (its report: "
+               "`reports/rerun/%s/report.md`)\n", c->path, c->id);
 }
 
 /* Write into <root>/<family>/.<name>.tmpPID, then swap it in. */

@@ -303,7 +303,7 @@ static int parse_options(int argc, char **argv, verify_opts *o, const char **fil
         { "--alternative", SF_OPT_FN, &o->alternative, 0, 0, opt_alternative },
         { "--seed", SF_OPT_FN, o, 0, 0, opt_seed },
     };
-    sf_optspec sp = { "verify", opts, sizeof opts / sizeof opts[0], usage, 1, 0, NULL, "no case files given" };
+    sf_optspec sp = { "verify", opts, sizeof opts / sizeof opts[0], usage, 0, NULL, "no case files given" };
     return sf_opt_parse(&sp, argc, argv, files, n);
 }
 

@@ -1,0 +1,178 @@
+#!/bin/sh
+# make test: the command line as people use it.  Outputs: a regular file is
+# replaced atomically, a character device, a FIFO or a link such as
+# /dev/stdout is written in place and stays what it was, the input scene is
+# never overwritten; exit statuses (2 with the reason for what the user
+# fixes: usage, size cap, a disc off its strip, T <= t_skip, a full device,
+# stdout on a full device); an interrupted sweep; help; getopt_long habits;
+# ignored scene keys; the report's Re-run line.
+# Safe as root: /dev is only written after the same test passed on a copy
+# of the node made here (mknod), so a regression replaces the copy, never
+# /dev/null, /dev/full or /dev/stdout.
+set -u
+sf_name=cli
+. "$(dirname "$0")/common.sh"
+bin=${1:-build/slipfield}
+case $bin in /*) ;; *) bin=$top/$bin ;; esac
+pass=0; fail=0
+ok()  { pass=$((pass + 1)); }
+bad() { fail=$((fail + 1)); echo "cli-test: FAIL $*" >&2; }
+# expect STATUS FRAGMENT CMD...: exit status and a fragment of stderr
+expect() {
+    want=$1 frag=$2; shift 2
+    "$@" > "$tmp/out" 2> "$tmp/err"; rc=$?
+    if [ $rc -eq "$want" ] && { [ -z "$frag" ] || grep -qF -- "$frag" "$tmp/err"; }; then ok
+    else bad "'$*': exit $rc (want $want), stderr: $(head -c 300 "$tmp/err") (want '$frag')"; fi
+}
+cd "$tmp" || exit 1
+printf 'cof = uniform\nntheta = 5\nnpsi = 4\n' > s.scene   # 20 surface rows
+cp s.scene s.orig
+rows=21   # header + 5 x 4
+
+# ---- outputs ----------------------------------------------------------------
+expect 0 "" "$bin" surface s.scene --out new.tsv
+[ "$(wc -l < new.tsv)" -eq $rows ] && [ -z "$(ls | grep '\.tmp')" ] && ok || bad "a new file: $(wc -l < new.tsv) rows"
+ln -s new.tsv link.tsv
+expect 0 "" "$bin" surface s.scene --out link.tsv
+[ -L link.tsv ] && [ "$(wc -l < new.tsv)" -eq $rows ] && ok || bad "a symbolic link was replaced"
+# the input scene, by its name, by a hard link, through a symbolic link
+ln s.scene hard.scene; ln -s s.scene soft.scene
+for o in s.scene hard.scene soft.scene; do
+    expect 2 "is the input scene" "$bin" surface s.scene --out $o
+done
+cmp -s s.scene s.orig && [ -L soft.scene ] && ok || bad "the input scene was changed"
+
+# character devices and a link to stdout: copies first (see the header).
+# Not root: the real nodes (a rename over them would fail, not replace
+# them).  Root without mknod here: no device is tested.
+devnull=/dev/null devfull=/dev/full devices=1
+if [ "$(id -u)" = 0 ]; then
+    if mknod null c 1 3 2>/dev/null && mknod full c 1 7 2>/dev/null && echo x > null; then
+        devnull=$tmp/null devfull=$tmp/full
+    else
+        echo "cli-test: cannot make device nodes under $tmp: character devices not tested" >&2
+        devices=0
+    fi
+fi
+ln -s /proc/self/fd/1 stdout-link
+copies_ok=$devices
+check_dev() {   # check_dev PATH: written in place, still a character device
+    expect 0 "" "$bin" surface s.scene --out "$1"
+    if [ -c "$1" ] && [ -z "$(ls "$(dirname "$1")" | grep "$(basename "$1")\.tmp")" ]; then ok
+    else bad "$1 is no longer a character device (or a temporary file was left)"; copies_ok=0; fi
+}
+check_full() {  # check_full PATH: exit 2 with the reason, still a device
+    expect 2 "No space left on device" "$bin" surface s.scene --out "$1"
+    [ -c "$1" ] && ok || { bad "$1 is no longer a character device"; copies_ok=0; }
+}
+if [ $devices = 1 ]; then
+    check_dev "$devnull"
+    check_full "$devfull"
+fi
+n=$("$bin" surface s.scene --out stdout-link | wc -l)
+[ "$n" -eq $rows ] && [ -L stdout-link ] && ok || { bad "--out a link to stdout: $n rows, link kept: $([ -L stdout-link ] && echo yes || echo no)"; copies_ok=0; }
+# stdout redirected to a file (appending): the output goes through stdout's own offset
+echo first > app.tsv
+"$bin" surface s.scene --out stdout-link >> app.tsv
+[ "$(wc -l < app.tsv)" -eq $((rows + 1)) ] && [ "$(head -1 app.tsv)" = first ] && ok || bad "--out a link to stdout, appended: $(wc -l < app.tsv) lines"
+if [ "$devnull" != /dev/null ] && [ $copies_ok = 1 ]; then   # the real nodes, now that the copies are safe
+    check_dev /dev/null
+    check_full /dev/full
+    n=$("$bin" surface s.scene --out /dev/stdout | wc -l)
+    [ "$n" -eq $rows ] && [ -L /dev/stdout ] && ok || bad "--out /dev/stdout: $n rows"
+fi
+# stdout on a full device, --out - and the default
+if [ $devices = 1 ]; then   # (a shell redirection: in place, whatever the program does)
+    expect 2 "error writing stdout: No space left on device" sh -c '"$0" surface s.scene > "$1"' "$bin" "$devfull"
+    expect 2 "error writing stdout: No space left on device" sh -c '"$0" surface s.scene --out - > "$1"' "$bin" "$devfull"
+fi
+# a FIFO: its reader gets every row
+mkfifo fifo
+timeout 30 cat fifo > from-fifo & reader=$!
+expect 0 "" timeout 30 "$bin" surface s.scene --out fifo
+wait $reader
+[ -p fifo ] && [ "$(wc -l < from-fifo)" -eq $rows ] && ok || bad "FIFO: $(wc -l < from-fifo) rows read, still a FIFO: $([ -p fifo ] && echo yes || echo no)"
+# a folder, a folder that does not exist
+mkdir dir
+expect 2 "Is a directory" "$bin" surface s.scene --out dir
+expect 2 "cannot write" "$bin" surface s.scene --out no/such/dir/x.tsv
+[ -z "$(find . -name '*.tmp*')" ] && ok || bad "temporary files left: $(find . -name '*.tmp*')"
+
+# ---- exit statuses --------------------------------------------------------
+expect 2 "unknown option: --bogus" "$bin" surface s.scene --bogus
+expect 2 "" "$bin" nosuchcommand
+printf 'nx = 1000000\nny = 1000000\n' > big.scene
+expect 2 "over the size cap" "$bin" field big.scene --out big.tsv
+[ ! -e big.tsv ] && ok || bad "the refused field left big.tsv"
+printf 'cof = field\nstrip_halfwidth = 0.0001\ny0 = 0.05\nT = 15\nt_skip = 0\ncells = 8\n' > strip.scene
+expect 2 "left the belt strip" "$bin" run strip.scene --out strip.tsv --summary strip.txt
+[ ! -e strip.tsv ] && [ ! -e strip.txt ] && ok || bad "the failed run left its outputs"
+printf 'cof = uniform\nT = 30\nt_skip = 10\n' > sw.scene
+expect 2 "not above t_skip" "$bin" sweep sw.scene --param T --values 40,5 --realisations 2 --out sw.tsv
+[ ! -e sw.tsv ] && ok || bad "the refused sweep left sw.tsv"
+expect 2 "no complete cycle after t_skip" "$bin" sweep sw.scene --param T --values 12 --realisations 2 --out sw.tsv
+# run: no QoI is said; no --out nor --summary prints the summary
+printf 'cof = uniform\nT = 5\n' > t5.scene
+expect 0 "warning: no quantity of interest" "$bin" run t5.scene
+grep -q '^pv_x = nan' "$tmp/out" && ok || bad "run without --out/--summary: no summary on stdout"
+
+# ---- sweeps: the swept value overrides the scene's; interruption -------------
+expect 0 "" "$bin" sweep sw.scene --param T --values 20 --realisations 2 --out T.tsv
+[ "$(cut -f1,2 T.tsv | sed -n 2p)" = "T	20" ] && ok || bad "sweep --param T over a scene that sets T"
+printf 'T = 30\nt_skip = 10\ncells = 8\nrtol = 1e-6\n' > long.scene
+sweep="$bin sweep long.scene --param l_over_R --values 1 --realisations 5000 --threads 1 --out cut.tsv"
+started() { for _ in $(seq 1 600); do [ -s cut.tsv.ckpt0 ] && return; sleep 0.05; done; }
+$sweep 2> int.err & pid=$!; started; kill -INT $pid; wait $pid; rc=$?
+[ $rc -ne 0 ] && grep -q "interrupted: rerun with --resume" int.err && [ -z "$(ls | grep 'cut\.tsv\.tmp')" ] && [ ! -e cut.tsv ] \
+    && ok || bad "SIGINT: exit $rc, '$(cat int.err)', left: $(ls | grep cut)"
+rm -f cut.tsv.ckpt0
+$sweep 2> /dev/null & pid=$!; started; kill -KILL $pid; wait $pid 2> /dev/null
+[ -n "$(ls | grep 'cut\.tsv\.tmp[0-9]')" ] && ok || bad "SIGKILL left no temporary file (the next check tests nothing)"
+rm -f cut.tsv.ckpt0   # (a different sweep follows: its checkpoint would not match)
+expect 0 "left by an interrupted run" $sweep --realisations 3 --resume --values 2
+[ -z "$(ls | grep 'cut\.tsv\.tmp')" ] && ok || bad "--resume left: $(ls | grep 'cut\.tsv\.tmp')"
+
+# ---- help -------------------------------------------------------------------
+for c in verify field run sweep surface wrench; do
+    expect 0 "" "$bin" help $c
+    grep -q "^usage: slipfield $c" "$tmp/out" && ok || bad "help $c: $(head -1 "$tmp/out")"
+done
+expect 2 "no help on 'foo'" "$bin" help foo
+expect 0 "" "$bin" --help
+grep -q -- "--version" "$tmp/out" && ok || bad "--help does not list --version"
+expect 0 "" "$bin" help scene
+grep -q "^Case-only keys" "$tmp/out" && grep -q "^check " "$tmp/out" && ok || bad "help scene does not mark the case-only keys"
+
+# ---- getopt_long habits ------------------------------------------------------
+expect 0 "" "$bin" surface --out=eq.tsv s.scene
+cmp -s eq.tsv new.tsv && ok || bad "--out=FILE"
+expect 0 "" "$bin" surface --xb=0.1 s.scene --out after.tsv
+[ "$(wc -l < after.tsv)" -eq $rows ] && ok || bad "options after the scene"
+expect 0 "" "$bin" surface --out dash.tsv -- s.scene
+[ -s dash.tsv ] && ok || bad "-- before the scene"
+expect 2 "--resume takes no value" "$bin" sweep sw.scene --resume=1
+expect 2 "--out needs a value" "$bin" surface s.scene --out
+
+# ---- scene keys a command ignores ---------------------------------------------
+printf 'cof = uniform\nu = -0.1\nntheta = 5\n' > keys.scene
+expect 0 "key 'u' is ignored by surface" "$bin" surface keys.scene --out keys.tsv
+expect 0 "key 'ntheta' is ignored by wrench" "$bin" wrench keys.scene
+expect 0 "key 'u' is ignored: --vx given" "$bin" wrench keys.scene --vx 0.1 --vy 0 --spin 0
+printf 'cof = uniform\nu = -0.2\n' > u.scene
+"$bin" wrench u.scene --out u.tsv 2> /dev/null && "$bin" wrench u.scene --vx 0 --vy 0 --spin 0 --out flags.tsv 2> /dev/null \
+    && cmp -s u.tsv flags.tsv && ok || bad "wrench: the scene's u, v, w are not its default motion"
+printf 'cof = uniform\nnx = 4\nny = 4\nsamples = 3\n' > f.scene
+expect 0 "" "$bin" field f.scene --out f.tsv
+[ "$(cut -f1 f.tsv | sort -u | grep -c '^[0-9]')" -eq 3 ] && ok || bad "field: the scene's samples is not the default"
+
+# ---- the example scene runs ----------------------------------------------------
+expect 0 "" "$bin" run "$top/examples/disc.scene"
+grep -q '^cycles = [1-9]' "$tmp/out" && ok || bad "examples/disc.scene: $(grep cycles "$tmp/out")"
+
+# ---- the report's Re-run line: its own folder ------------------------------------
+expect 0 "" "$bin" verify "$top/cases/contact/central-symmetry.md" --reports rep
+grep -q 'Re-run: `build/slipfield verify [^`]* --reports reports/rerun`' rep/contact/central-symmetry/report.md && ok \
+    || bad "Re-run line: $(grep Re-run rep/contact/central-symmetry/report.md)"
+
+echo "cli-test: $pass passed, $fail failed"
+[ $fail -eq 0 ]

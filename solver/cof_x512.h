@@ -1,0 +1,52 @@
+/* slipfield (private, not installed): the AVX-512 look-up of the COF view
+ * at 8 points, for the wrench's on-grid loop (contact.c) and its bench.
+ * Kept out of cof.h so that the installed headers need no <immintrin.h>
+ * and no target attributes (a C++ or non-x86 consumer includes them). */
+#ifndef SF_COF_X512_H
+#define SF_COF_X512_H
+
+#include "cof.h"
+
+/* The same look-up for 8 points at once, AVX-512 (the wrench's on-grid
+ * loop on machines that have it; GCC or Clang on x86-64, and not in the
+ * coverage build, -DSF_NO_CLONES, which compiles the portable loop only).
+ * Lane by lane the operations of sf_cof_view_eval_on, in its order (the
+ * same bits); what differs is how the nodal values arrive: a compiler
+ * vectorising sf_cof_view_cell loads them one by one (4 scalar loads and
+ * their inserts per point: about two thirds of the wrench's time on AVX-512
+ * hardware without fast gathers), here (g[k], g[k+1]) and
+ * (g[k+m], g[k+m+1]) come as two 16-byte loads per point and two unpacks
+ * per 8 points sort them into g0..g3. */
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(SF_NO_CLONES)
+#define SF_COF_VIEW_X512 1
+#include <immintrin.h>
+
+/* rows (g[k], g[k+1]) of points p0, p2, p4, p6 in one register */
+__attribute__((target("avx512f"), always_inline)) static inline __m512d sf_cof_pairs4(const double *g, const int *k)
+{
+    __m256d lo = _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(g + k[0])), _mm_loadu_pd(g + k[2]), 1);
+    __m256d hi = _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(g + k[4])), _mm_loadu_pd(g + k[6]), 1);
+    return _mm512_insertf64x4(_mm512_castpd256_pd512(lo), hi, 1);
+}
+
+__attribute__((target("avx512f"), always_inline)) static inline __m512d sf_cof_view_eval_on8(const sf_cof_view *v,
+                                                                                            __m512d xb, __m512d yb)
+{
+    __m512d sx = _mm512_mul_pd(_mm512_sub_pd(xb, _mm512_set1_pd(v->x0)), _mm512_set1_pd(v->idx));
+    __m512d sy = _mm512_mul_pd(_mm512_sub_pd(yb, _mm512_set1_pd(v->y0)), _mm512_set1_pd(v->idy));
+    __m256i i = _mm512_cvttpd_epi32(sx), j = _mm512_cvttpd_epi32(sy);   /* (int): truncation */
+    __m512d tx = _mm512_sub_pd(sx, _mm512_cvtepi32_pd(i)), ty = _mm512_sub_pd(sy, _mm512_cvtepi32_pd(j));
+    int k[8];
+    _mm256_storeu_si256((__m256i *)(void *)k, _mm256_add_epi32(i, _mm256_mullo_epi32(_mm256_set1_epi32(v->m), j)));
+    const double *g = v->grid, *h = v->grid + v->m;
+    __m512d e0 = sf_cof_pairs4(g, k), o0 = sf_cof_pairs4(g, k + 1);   /* points 0 2 4 6 and 1 3 5 7 */
+    __m512d e1 = sf_cof_pairs4(h, k), o1 = sf_cof_pairs4(h, k + 1);
+    __m512d g0 = _mm512_unpacklo_pd(e0, o0), g1 = _mm512_unpackhi_pd(e0, o0);   /* points 0..7 in order */
+    __m512d g2 = _mm512_unpacklo_pd(e1, o1), g3 = _mm512_unpackhi_pd(e1, o1);
+    __m512d a = _mm512_add_pd(g0, _mm512_mul_pd(tx, _mm512_sub_pd(g1, g0)));
+    __m512d b = _mm512_add_pd(g2, _mm512_mul_pd(tx, _mm512_sub_pd(g3, g2)));
+    return _mm512_add_pd(a, _mm512_mul_pd(ty, _mm512_sub_pd(b, a)));
+}
+#endif
+
+#endif
