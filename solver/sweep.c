@@ -189,9 +189,11 @@ int sf_sweep_point_stats(sf_sweep_point *p)
 
 void sf_sweep_fmt(char *buf, size_t len, double x)
 {
+    /* an exponent only where plain digits would be long (20, not 2e+01) */
+    int plain = fabs(x) >= 1e-4 && fabs(x) < 1e15;
     for (int prec = 1; prec <= 17; prec++) {
         snprintf(buf, len, "%.*g", prec, x);
-        if (strtod(buf, NULL) == x || !isfinite(x))
+        if (!isfinite(x) || (strtod(buf, NULL) == x && !(plain && strchr(buf, 'e') && prec < 17)))
             return;
     }
 }

@@ -191,8 +191,8 @@ static void shortest_text(void **state)
 {
     (void)state;
     char b[32];
-    const double x[] = { 0.1, 0.2, 1, 1e6, 1e-300, 0.30000000000000004, 2.0 / 3, -7.25 };
-    const char *want[] = { "0.1", "0.2", "1", "1e+06", "1e-300", "0.30000000000000004", NULL, "-7.25" };
+    const double x[] = { 0.1, 0.2, 1, 20, 1e6, 1e20, 1e-300, 0.30000000000000004, 2.0 / 3, -7.25 };
+    const char *want[] = { "0.1", "0.2", "1", "20", "1000000", "1e+20", "1e-300", "0.30000000000000004", NULL, "-7.25" };
     for (size_t i = 0; i < sizeof x / sizeof *x; i++) {
         sf_sweep_fmt(b, sizeof b, x[i]);
         assert_true(strtod(b, NULL) == x[i]);
