@@ -11,7 +11,7 @@
 #define SF_PAPER_H
 
 #include <stdio.h>
-#include "report.h"
+#include "outcome.h"
 #include "result.h"
 
 /* Markdown section "Claims of the paper" for a case report (nothing when

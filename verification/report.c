@@ -17,11 +17,6 @@
 #include <fftw3.h>
 #include <gsl/gsl_version.h>
 
-const char *sf_verdict_name(int v)
-{
-    return v == SF_VERDICT_PASS ? "PASS" : v == SF_VERDICT_FAIL ? "FAIL" : "ERROR";
-}
-
 static const char *vv_name(int vv)
 {
     return vv == 0 ? "code verification" : vv == 1 ? "solution verification" : "validation";
