@@ -129,16 +129,6 @@ static json_t *find_case(json_t *cases, const char *id)
     return NULL;
 }
 
-/* Markdown table cells must not contain '|' or a newline. */
-static void cell(FILE *f, const char *s)
-{
-    for (; *s; s++) {
-        if (*s == '|') fputs("\\|", f);
-        else if (*s == '\n') fputc(' ', f);
-        else fputc(*s, f);
-    }
-}
-
 static void fmt(char *b, size_t n, double x, int absent)
 {
     if (absent) snprintf(b, n, "—");
@@ -180,7 +170,7 @@ static void compare_rows(json_t *c0, json_t *c1, const char *id, sections *sec, 
         if (!b) {
             s->rows_removed++;
             fprintf(sec->rows, "| %s | removed | ", id);
-            cell(sec->rows, q);
+            sf_md_text(sec->rows, q);
             fprintf(sec->rows, " |\n");
             continue;
         }
@@ -218,14 +208,14 @@ static void compare_rows(json_t *c0, json_t *c1, const char *id, sections *sec, 
         if (isfinite(m0) && isfinite(m1)) snprintf(d, sizeof d, "%+.3g", m1 - m0);
         else snprintf(d, sizeof d, "—");
         fprintf(sec->moved, "| %s | ", id);
-        cell(sec->moved, q);
+        sf_md_text(sec->moved, q);
         fprintf(sec->moved, " | %s | %s | %s | %s | %s | %s |\n", kind, b0, b1, d, thr, share);
     }
     for (size_t k = 0; k < n1; k++)
         if (!used[k]) {
             s->rows_added++;
             fprintf(sec->rows, "| %s | added | ", id);
-            cell(sec->rows, str(json_array_get(r1, k), "quantity"));
+            sf_md_text(sec->rows, str(json_array_get(r1, k), "quantity"));
             fprintf(sec->rows, " |\n");
         }
     free(used);
@@ -277,7 +267,7 @@ int sf_drift_write(const sf_baseline *bl, const char *root, sf_drift_summary *s,
             int worse = strcmp(v1, "pass") != 0 && !strcmp(v0, "pass");
             s->to_fail += worse;
             fprintf(sec.verdicts, "| %s | %s | **%s** | ", id, v0, v1);
-            cell(sec.verdicts, str(c1, "message"));
+            sf_md_text(sec.verdicts, str(c1, "message"));
             fprintf(sec.verdicts, " |\n");
         }
         json_t *sd0 = json_object_get(c0, "seed"), *sd1 = json_object_get(c1, "seed");

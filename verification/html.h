@@ -6,10 +6,18 @@
 #define SF_HTML_H
 
 #include <stddef.h>
+#include <stdio.h>
 
 /* Render markdown to a standalone page at path (temporary name + rename).
  * Returns 0, or -1 with a message in err. */
 int sf_html_write(const char *path, const char *title, const char *markdown,
                   char *err, size_t errlen);
+
+/* Write generated text (a row's quantity, a claim, a key metric) into
+ * Markdown as literal text: no emphasis, link, code span or raw HTML
+ * from its characters (a path with a star stays a path), '|' escaped for
+ * table cells, line breaks and tabs as spaces.  An underscore inside a
+ * word (PV_x) is left alone: it cannot open emphasis. */
+void sf_md_text(FILE *f, const char *s);
 
 #endif

@@ -67,13 +67,6 @@ static void fmt_num(char *buf, size_t n, double x)
         snprintf(buf, n, "%.6g", x);
 }
 
-/* Markdown table cells must not contain '|'. */
-static void cell(FILE *f, const char *s)
-{
-    for (; *s; s++)
-        fputs(*s == '|' ? "\\|" : (char[2]){ *s, 0 }, f);
-}
-
 static void write_rerun(FILE *f, const sf_case *c)
 {
     fprintf(f, "- Re-run: `build/slipfield verify %s` (or `make verify CASES=%s`)\n", c->path, c->path);
@@ -157,9 +150,9 @@ int sf_report_case(const char *root, const sf_case *c, const sf_result *r,
         fmt_num(m, sizeof m, row->measured);
         fmt_num(e, sizeof e, row->expected);
         fputs("| ", f);
-        cell(f, row->quantity);
+        sf_md_text(f, row->quantity);
         fprintf(f, " | %s | %s | ", m, e);
-        cell(f, row->criterion);
+        sf_md_text(f, row->criterion);
         fprintf(f, " | %s |\n", row->pass ? "yes" : "**no**");
     }
     if (sf_result_nrows(r) == 0)
@@ -256,6 +249,7 @@ static void write_index(FILE *f, const sf_run_meta *meta, const sf_outcome *o, s
                         size_t np, size_t nf, size_t ne, const char *page)
 {
     fprintf(f, "# slipfield verification report\n\n");
+    sf_paper_index_tally(f, meta->root, o, n, strcmp(page, "report.html") == 0);
     fprintf(f, "- Cases: **%zu passed**, %zu failed, %zu errors, %zu skipped (of %zu selected)\n",
             np, nf, ne, meta->skipped, n + meta->skipped);
     fprintf(f, "- Tier: %s; seeds: %s; total wall time: %.1f s\n", meta->tier_name, meta->seed_note,
@@ -280,7 +274,7 @@ static void write_index(FILE *f, const sf_run_meta *meta, const sf_outcome *o, s
         else snprintf(m, sizeof m, "%.3g", o[i].margin);
         fprintf(f, "| [%s](%s/%s) | %s | %s | **%s** | %s%s | ", o[i].id, o[i].id, page, o[i].family,
                 vv_name(o[i].vv), sf_verdict_name(o[i].verdict), m, o[i].near_edge ? " *near the edge*" : "");
-        cell(f, o[i].key);
+        sf_md_text(f, o[i].key);
         fprintf(f, " | %.2f |\n", o[i].seconds);
     }
     sf_paper_index_section(f, meta->root, o, n, strcmp(page, "report.html") == 0);
