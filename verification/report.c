@@ -72,14 +72,16 @@ static void write_rerun(FILE *f, const sf_case *c)
     fprintf(f, "- Re-run: `build/slipfield verify %s` (or `make verify CASES=%s`)\n", c->path, c->path);
 }
 
-/* Write into <root>/<family>/.<name>.tmpPID, then swap it in. */
+/* Write into <root>/<family>/.<name>.tmpPID, then swap it in.  `fresh`
+ * empties it first; otherwise what sf_report_plots staged there stays. */
 static int open_tmp_dir(const char *root, const char *id, char *tmp, size_t tn,
-                        char *fin, size_t fn)
+                        char *fin, size_t fn, int fresh)
 {
     const char *slash = strchr(id, '/');
     snprintf(fin, fn, "%s/%s", root, id);
     snprintf(tmp, tn, "%s/%.*s/.%s.tmp%ld", root, (int)(slash - id), id, slash + 1, (long)getpid());
-    remove_dir(tmp);
+    if (fresh)
+        remove_dir(tmp);
     return sf_mkdirs(tmp);
 }
 
@@ -124,17 +126,24 @@ static void write_header(FILE *f, const sf_case *c, const sf_outcome *o)
     fprintf(f, "## Scene\n\n```scene\n%s```\n\n", c->scene_text);
 }
 
+int sf_report_plots(const char *root, const sf_case *c, sf_result *r, char *err, size_t errlen)
+{
+    char tmp[1024], fin[1024];
+    if (open_tmp_dir(root, c->id, tmp, sizeof tmp, fin, sizeof fin, 1) != 0) {
+        snprintf(err, errlen, "cannot create %s: %s", tmp, strerror(errno));
+        return SF_EIO;
+    }
+    return sf_result_render_plots(r, tmp, err, errlen) < 0 ? SF_EIO : SF_SUCCESS;
+}
+
 int sf_report_case(const char *root, const sf_case *c, const sf_result *r,
                    const sf_outcome *o, const char *error, char *err, size_t errlen)
 {
     char tmp[1024], fin[1024];
-    if (open_tmp_dir(root, c->id, tmp, sizeof tmp, fin, sizeof fin) != 0) {
+    if (open_tmp_dir(root, c->id, tmp, sizeof tmp, fin, sizeof fin, 0) != 0) {
         snprintf(err, errlen, "cannot create %s: %s", tmp, strerror(errno));
         return SF_EIO;
     }
-    char perr[256] = "";
-    int plots_ok = sf_result_render_plots(r, tmp, perr, sizeof perr) == 0;
-
     char *md = NULL;
     size_t mdlen = 0;
     FILE *f = open_memstream(&md, &mdlen);
@@ -165,11 +174,14 @@ int sf_report_case(const char *root, const sf_case *c, const sf_result *r,
         fprintf(f, "## Findings\n\n%s\n", sf_result_notes(r));
     if (sf_result_nplots(r)) {
         fprintf(f, "## Plots\n\n");
-        if (!plots_ok)
-            fprintf(f, "**Plots could not be rendered:** %s\n\n", perr);
         for (size_t i = 0; i < sf_result_nplots(r); i++) {
             const sf_plot *p = sf_result_get_plot(r, i);
-            fprintf(f, "![%s](%s.png)\n\n", sf_plot_title(p), sf_plot_stem(p));
+            char png[1200];
+            snprintf(png, sizeof png, "%s/%s.png", tmp, sf_plot_stem(p));
+            if (access(png, F_OK) == 0)
+                fprintf(f, "![%s](%s.png)\n\n", sf_plot_title(p), sf_plot_stem(p));
+            else
+                fprintf(f, "**Plot `%s` was not rendered** (see the error above).\n\n", sf_plot_stem(p));
         }
     }
     if (c->prose_after && *c->prose_after)
@@ -189,10 +201,6 @@ int sf_report_case(const char *root, const sf_case *c, const sf_result *r,
         snprintf(err, errlen, "cannot rename %s to %s: %s", tmp, fin, strerror(errno));
         return SF_EIO;
     }
-    if (!plots_ok) {
-        snprintf(err, errlen, "%s", perr);
-        return SF_EIO;
-    }
     return SF_SUCCESS;
 }
 
@@ -200,7 +208,7 @@ int sf_report_crash(const char *root, const sf_case *c, const sf_outcome *o,
                     char *err, size_t errlen)
 {
     char tmp[1024], fin[1024];
-    if (open_tmp_dir(root, c->id, tmp, sizeof tmp, fin, sizeof fin) != 0) {
+    if (open_tmp_dir(root, c->id, tmp, sizeof tmp, fin, sizeof fin, 1) != 0) {
         snprintf(err, errlen, "cannot create %s", tmp);
         return SF_EIO;
     }

@@ -8,8 +8,15 @@
 #include "outcome.h"
 #include "result.h"
 
-/* Write <root>/<id>/report.md and its plots.  `error` (may be NULL) is a
- * message when the check could not complete. */
+/* Stage <root>/<id>'s report in a temporary folder and render r's plots
+ * there.  Call it before the verdict: a plot gnuplot warns about, or an
+ * empty one, adds a failing row naming it (sf_result_render_plots).
+ * SF_SUCCESS, or SF_EIO when gnuplot could not run (err says why). */
+int sf_report_plots(const char *root, const sf_case *c, sf_result *r, char *err, size_t errlen);
+
+/* Write <root>/<id>/report.md (with the plots sf_report_plots staged) and
+ * swap the folder in.  `error` (may be NULL) is a message when the check
+ * could not complete. */
 int sf_report_case(const char *root, const sf_case *c, const sf_result *r,
                    const sf_outcome *o, const char *error, char *err, size_t errlen);
 

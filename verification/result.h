@@ -113,7 +113,11 @@ const char *sf_plot_stem(const sf_plot *p);
 const char *sf_plot_title(const sf_plot *p);
 
 /* Render all plots of r into dir (PNG via gnuplot, through a pipe; files
- * written under a temporary name and renamed).  Returns 0 on success. */
-int sf_result_render_plots(const sf_result *r, const char *dir, char *err, size_t errlen);
+ * written under a temporary name and renamed).  A plot that gnuplot warns
+ * about (its stderr is read back, plot by plot), or that would be empty
+ * or hold a series with no point to draw, adds a failing row naming it:
+ * render before the verdict.  Returns 0, the number of such plots (err:
+ * the first), or -1 when gnuplot could not run (err says why). */
+int sf_result_render_plots(sf_result *r, const char *dir, char *err, size_t errlen);
 
 #endif

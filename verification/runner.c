@@ -122,12 +122,16 @@ static void run_child(const sf_case *c, const char *root, int fd, unsigned timeo
     double t0 = now();
     int rc = d->fn(c, r);
     o.seconds = now() - t0;
-    char msg[256] = "";
+    size_t nrows = sf_result_nrows(r);   /* the check's own rows */
+    /* the plots before the verdict: a misdrawn one is a failing row */
+    char perr[256] = "";
+    int prc = sf_report_plots(root, c, r, perr, sizeof perr);
+    char msg[300] = "";
     if (rc) {
         snprintf(msg, sizeof msg, "the check could not complete: %s", sf_strerror(rc));
         o.verdict = SF_VERDICT_ERROR;
         snprintf(o.key, sizeof o.key, "%s", msg);
-    } else if (sf_result_nrows(r) == 0) {
+    } else if (nrows == 0) {
         o.verdict = SF_VERDICT_ERROR;
         snprintf(o.key, sizeof o.key, "the check produced no row (it cannot fail, so it cannot pass)");
     } else if (sf_result_nplots(r) == 0) {
@@ -135,6 +139,10 @@ static void run_child(const sf_case *c, const char *root, int fd, unsigned timeo
            a defect like a check without a row (issue 16) */
         o.verdict = SF_VERDICT_ERROR;
         snprintf(o.key, sizeof o.key, "the check produced no plot (a report must show its evidence)");
+    } else if (prc != SF_SUCCESS) {
+        snprintf(msg, sizeof msg, "plots not rendered: %s", perr);
+        o.verdict = SF_VERDICT_ERROR;
+        snprintf(o.key, sizeof o.key, "%s", msg);
     } else {
         sf_result_gate_nonfinite(r);
         o.verdict = sf_result_passed(r) ? SF_VERDICT_PASS : SF_VERDICT_FAIL;
