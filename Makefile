@@ -180,6 +180,7 @@ test: deps
 .PHONY: test-run
 test-run: $(TESTS) $(TESTS_SAN) $(BUILD)/slipfield
 	@st=0; sh scripts/layering.sh || st=1; \
+	 sh scripts/refs-check.sh || st=1; \
 	 sh scripts/mutants-fresh.sh || st=1; \
 	 sh scripts/run-tests.sh $(BUILD) $(TESTS) -- $(TESTS_SAN) || st=1; \
 	 sh scripts/bad-input.sh $(BUILD)/slipfield || st=1; \
