@@ -137,7 +137,8 @@ static void generated_text_stays_literal(void **state)
         { "PV_x and mu_s", "PV_x and mu_s" },
         { "_lead and trail_", "\\_lead and trail\\_" },
         { "p <= 1e-3 | x < 2", "p <= 1e-3 \\| x < 2" },
-        { "<b>bold</b> & &amp; [link](x) `code`", "\\<b>bold\\</b> & \\&amp; \\[link\\](x) \\`code\\`" },
+        { "<b>bold</b> & &amp; [link](x) `code`", "\\<b>bold\\</b> & \\&amp; [link\\](x) \\`code\\`" },
+        { "T [N m], [a][b], [c]: d", "T [N m], [a\\][b], [c\\]: d" },
         { "two\nlines\tand a tab", "two lines and a tab" },
     };
     for (size_t i = 0; i < sizeof t / sizeof t[0]; i++) {

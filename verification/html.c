@@ -77,8 +77,10 @@ void sf_md_text(FILE *f, const char *s)
             special = word_char(d) || d == '/' || d == '!' || d == '?';
         else if (c == '&')   /* "&amp;" would be an entity */
             special = word_char(d) || d == '#';
+        else if (c == ']')   /* "[N m]" is text; "[x](y)" and "[x][y]" are links */
+            special = d == '(' || d == '[' || d == ':';
         else
-            special = strchr("\\`*[]|", c) != NULL;
+            special = strchr("\\`*|", c) != NULL;
         if (special)
             fputc('\\', f);
         fputc(c, f);
