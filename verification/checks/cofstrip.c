@@ -649,11 +649,13 @@ static int chk_cof_window(const sf_case *c, sf_result *r)
      * the window made whole), each >= 6 l from the other */
     double reach = 3 * (w.R + w.M) + 6 * l;   /* belt a trip holds beyond its patch columns [m] */
     double room = L / 2 - reach;
-    if (nxr - 1 < w.spx + 2 || b < 2 || !(room >= (double)w.pitx * h)) {
+    /* a trip's patch columns take at most pitx + spx columns each (a
+     * patch put astride a seam goes up to spx further) */
+    if (nxr - 1 < w.spx + 2 || b < 2 || !(room >= (double)(w.pitx + w.spx) * h)) {
         sf_cof_plan_free(plan);
         return SF_EINVAL;
     }
-    size_t ncols = (size_t)floor(room / ((double)w.pitx * h)), per_min = 4;
+    size_t ncols = (size_t)floor(room / ((double)(w.pitx + w.spx) * h)), per_min = 4;
     size_t want = (s->samples + 2 * w.npy * per_min - 1) / (2 * w.npy * per_min);
     ncols = want < ncols ? want : ncols;
     ncols = ncols ? ncols : 1;
