@@ -142,7 +142,7 @@ static int chk_design(const sf_case *c, sf_result *r)
     gsl_rng_free(g);
     size_t np_ = n * NQ;
     double *pred = check_alloc(np_ * sizeof *pred), *ach = check_alloc(np_ * sizeof *ach), *un = check_alloc(np_ * sizeof *un);
-    size_t npairs = 0, within = 0, cont_points = 0, disc_points = 0, covered = 0, ref_ok = 0;
+    size_t npairs = 0, within = 0, cont_points = 0, disc_points = 0, covered = 0, ref_ok = 0, bounded = 0;
     double worst = 0, worst_ref = 0, cpu_run = 0, cpu_u = 0;
     sf_note(r, "Latin hypercube of %zu points (seed %lu): l/R %g-%g (log), CV 0.05-1, v_b 0.1-0.8 m/s, mean COF "
                "0.2-1, T 20-100 s, qoi_tol %g-%g (log); one realisation per point. Levels on the same field: the "
@@ -212,6 +212,7 @@ static int chk_design(const sf_case *c, sf_result *r)
             ach[npairs] = fmax(a[k], 1e-17);
             un[npairs] = fmax(pr.u[k], 1e-17);
             within += a[k] <= tol;
+            bounded += a[k] <= pr.np.err_total;
             covered += a[k] <= pr.u[k];
             ref_ok += e1[k] <= tol;
             worst = sf_max(worst, a[k] / tol);
@@ -231,6 +232,9 @@ static int chk_design(const sf_case *c, sf_result *r)
                  DESIGN_FRACTION);
         sf_check_ge(r, t, frac, DESIGN_FRACTION);
         sf_check_le(r, "worst achieved error / qoi_tol over the pairs", worst, c->spec.tolerance);
+        snprintf(t, sizeof t, "fraction of pairs with achieved error <= the plan's predicted error (>= %.2f)",
+                 DESIGN_FRACTION);
+        sf_check_ge(r, t, npairs ? (double)bounded / (double)npairs : 0, DESIGN_FRACTION);
         snprintf(t, sizeof t, "fraction of pairs whose reference (level 2) is within qoi_tol of level 1 (>= %.2f)",
                  DESIGN_FRACTION);
         sf_check_ge(r, t, npairs ? (double)ref_ok / (double)npairs : 0, DESIGN_FRACTION);
