@@ -11,8 +11,11 @@ void sf_unum_companion(const sf_scene *s, const sf_numplan *p, sf_scene *c, doub
     if (p->quadrature && !p->cell_average) {
         c->cells = (2 * p->cells + 2) / 3;   /* ceil(2n/3): ~0.44 of the cells */
         rq = ((double)p->cells / (double)c->cells) * ((double)p->cells / (double)c->cells);
-    } else
+    } else {
         c->cells = p->cells;   /* cell averages: the boxes are the cells */
+        if (p->cell_average)
+            c->cof_model = SF_COFMODEL_CELL;
+    }
     c->layout = p->layout;
     c->integrator = p->integrator;
     if (p->integrator == SF_INTEG_RK4) {
