@@ -22,7 +22,7 @@ static void usage(FILE *f)
           "  --summary FILE  quantities of interest as `key = value` lines (pv_x, pv_F,\n"
           "                  stick_fraction, cycles, transitions, ...) and each QoI's\n"
           "                  numerical error u_num (u_pv_x, ...: a coarser companion solve\n"
-          "                  of the same realisation, about 20%% more CPU); '-' for stdout\n"
+          "                  of the same realisation, 0.04-0.45x the run's CPU); '-' for stdout\n"
           "  --explain       print what the plan computes and what it skips, then exit\n"
           "A run without --out keeps no history.\n",
           f);
