@@ -12,7 +12,12 @@
  * (level 1) and 3x its rings with rtol / 100 (level 2, the reference), on
  * the same field.  Per (point, QoI): achieved = |Q0 - Q2| / |Q2|, the
  * reference's own error estimate |Q1 - Q2| / |Q2|, the plan's predicted
- * error, and the run's a-posteriori u_num (unum.h) / |Q0|.
+ * error, and the run's a-posteriori u_num (unum.h) / |Q0|.  A pair whose
+ * reference is not converged to the tolerance under test (|Q1 - Q2| >
+ * qoi_tol: a realisation near a grazing stick, where the levels need not
+ * converge monotonically) cannot decide the promise either way: it is
+ * listed and left out of the gates, and must be at most a quarter of the
+ * pairs (the decision does not look at level 0, the run under test).
  *
  * A per-realisation QoI is a mean over the complete cycles in [t_skip, T]:
  * where the levels disagree on the number of cycles (a cycle starting or
@@ -142,7 +147,7 @@ static int chk_design(const sf_case *c, sf_result *r)
     gsl_rng_free(g);
     size_t np_ = n * NQ;
     double *pred = check_alloc(np_ * sizeof *pred), *ach = check_alloc(np_ * sizeof *ach), *un = check_alloc(np_ * sizeof *un);
-    size_t npairs = 0, within = 0, cont_points = 0, disc_points = 0, covered = 0, ref_ok = 0, bounded = 0;
+    size_t npairs = 0, within = 0, cont_points = 0, disc_points = 0, covered = 0, undecided = 0, bounded = 0;
     double worst = 0, worst_ref = 0, cpu_run = 0, cpu_u = 0;
     sf_note(r, "Latin hypercube of %zu points (seed %lu): l/R %g-%g (log), CV 0.05-1, v_b 0.1-0.8 m/s, mean COF "
                "0.2-1, T 20-100 s, qoi_tol %g-%g (log); one realisation per point. Levels on the same field: the "
@@ -208,15 +213,18 @@ static int chk_design(const sf_case *c, sf_result *r)
                 sf_note(r, "**Non-finite error at point %zu, %s.**", i, qname[k]);
                 break;
             }
+            worst_ref = sf_max(worst_ref, e1[k] / tol);
+            if (e1[k] > tol) {   /* the reference not converged to qoi_tol: this pair cannot decide */
+                undecided++;
+                continue;
+            }
             pred[npairs] = fmax(pr.np.err_total, 1e-17);
             ach[npairs] = fmax(a[k], 1e-17);
             un[npairs] = fmax(pr.u[k], 1e-17);
             within += a[k] <= tol;
             bounded += a[k] <= pr.np.err_total;
             covered += a[k] <= pr.u[k];
-            ref_ok += e1[k] <= tol;
             worst = sf_max(worst, a[k] / tol);
-            worst_ref = sf_max(worst_ref, e1[k] / tol);
             npairs++;
         }
     }
@@ -235,9 +243,10 @@ static int chk_design(const sf_case *c, sf_result *r)
         snprintf(t, sizeof t, "fraction of pairs with achieved error <= the plan's predicted error (>= %.2f)",
                  DESIGN_FRACTION);
         sf_check_ge(r, t, npairs ? (double)bounded / (double)npairs : 0, DESIGN_FRACTION);
-        snprintf(t, sizeof t, "fraction of pairs whose reference (level 2) is within qoi_tol of level 1 (>= %.2f)",
-                 DESIGN_FRACTION);
-        sf_check_ge(r, t, npairs ? (double)ref_ok / (double)npairs : 0, DESIGN_FRACTION);
+        snprintf(found, sizeof found, "%zu of %zu pairs with |Q1 - Q2| <= qoi_tol", npairs, npairs + undecided);
+        sf_check_true(r, "the reference is converged (level 1 within qoi_tol of level 2) for at least 3/4 of the pairs "
+                         "of continuous points; only those pairs decide the gates above",
+                      4 * npairs >= 3 * (npairs + undecided), found);
         sf_note(r, "\nReference convergence: worst |Q1 - Q2| / |Q2| / qoi_tol = %.2g. The a-posteriori u_num of a "
                    "run (unum.h) covers the achieved error in %zu of %zu pairs (%.0f%%); its companion cost %.0f%% of "
                    "the plan's runs (CPU %.2f s against %.2f s, field draws excluded).",
