@@ -2,20 +2,22 @@
  * interest (u_num of ASME V&V 20), from a companion solve.
  *
  * The companion is the same realisation (the same COF, the same scene) at
- * a COARSER numerical setting than the accuracy plan's (numplan.h): half
- * the quadrature's rings (or Cartesian cells per diameter) and 16x its rtol
- * (4x at least, 1e-5 at most where that allows; a fixed-step rk4 run:
- * twice dt).  A coarser companion costs a fraction of the run (about a
- * quarter of the quadrature's cells, fewer steps); a finer one would cost
- * several runs.  If the errors behave as their models (numplan.c: the
- * quadrature's as rings^-2 or faster, the stepping's as sqrt(rtol)), the
+ * a COARSER numerical setting than the accuracy plan's (numplan.h):
+ * ceil(2/3) of the quadrature's rings (or Cartesian cells per diameter),
+ * rho_q = (cells / cells_c)^2 ~ 2.25, and rtol x rho_q^2 (x16 without a
+ * coarsened quadrature; 4x at least, 1e-5 at most where that allows; a
+ * fixed-step rk4 run: twice dt).  A coarser companion costs a fraction of
+ * the run (0.04-0.45 of it, make bench BENCH_SECTIONS=unum: ~0.44 of the
+ * cells, fewer steps, no field draw); a finer one would cost more than the
+ * run.  If the errors behave as their models (numplan.c: the quadrature's
+ * as rings^-2 or faster, the stepping's as sqrt(rtol) or faster), the
  * companion's error is at least rho times the run's, rho = the smaller of
- * (cells / cells_c)^2 and sqrt(rtol_c / rtol) (16 for rk4 at 2 dt), so the
- * run's error is about |Q - Q_c| / (rho - 1); the estimate reported is the
- * two-level grid convergence index with the safety factor of an order
- * that is assumed, not observed (Fs = 3, Roache; ASME V&V 20):
+ * rho_q and sqrt(rtol_c / rtol) (16 for rk4 at 2 dt), so the run's error
+ * is about |Q - Q_c| / (rho - 1); the estimate reported is the two-level
+ * grid convergence index with the safety factor of an order that is
+ * assumed, not observed (Fs = 3, Roache; ASME V&V 20):
  *
- *     u_num(Q) = 3 |Q - Q_c| / (rho - 1)   (= |Q - Q_c| at rho = 4).
+ *     u_num(Q) = 3 |Q - Q_c| / (rho - 1)   (~ 2.4 |Q - Q_c| at rho = 2.25).
  *
  * The cell-average model (cellavg.h) cannot be coarsened on the same
  * realisation (its COF is the field averaged over the quadrature's own
