@@ -93,12 +93,52 @@ static void estimate_is_its_formula(void **state)
     sf_cof_free(cof);
 }
 
+/* the other summary forms, and a companion that cannot run */
+static void write_forms_and_refusal(void **state)
+{
+    (void)state;
+    sf_unum u;
+    memset(&u, 0, sizeof u);
+    u.cell_average = 1;
+    u.rtol = 1e-8;
+    u.rtol_c = 1.6e-7;
+    u.rho = 4;
+    char *buf = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&buf, &len);
+    sf_unum_write(&u, f);
+    u.cell_average = 0;
+    u.fixed_step = 1;
+    sf_unum_write(&u, f);
+    fclose(f);
+    assert_non_null(strstr(buf, "\nu_apriori_pv_F = "));
+    assert_non_null(strstr(buf, "rk4 at 2 dt"));
+    assert_non_null(strstr(buf, "\ncompanion_dt = "));
+    free(buf);
+    sf_scene s;
+    sf_scene_default(&s);
+    s.dof = SF_DOF_1;   /* the 1-D model refuses a field COF */
+    double v[4] = { 0.5, 0.5, 0.5, 0.5 };
+    sf_cof *g = NULL;
+    assert_int_equal(sf_cof_alloc_grid(2, 2, -1, -1, 2, 2, v, &g), SF_SUCCESS);
+    sf_numplan p = { 0 };
+    p.rtol = 1e-8;
+    p.integrator = SF_INTEG_RK8PD;
+    sf_osc_result r;
+    memset(&r, 0, sizeof r);
+    char err[256] = "";
+    assert_int_equal(sf_unum_estimate(&s, g, &p, &r, &u, err, sizeof err), SF_EINVAL);
+    assert_true(*err != 0);
+    sf_cof_free(g);
+}
+
 int main(void)
 {
     sf_init();
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(companion_settings),
         cmocka_unit_test(estimate_is_its_formula),
+        cmocka_unit_test(write_forms_and_refusal),
     };
     return cmocka_run_group_tests_name("unum", tests, NULL, NULL);
 }
