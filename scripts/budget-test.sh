@@ -22,13 +22,23 @@ none "--only zzz" --only zzz cases/field/*.md
 none "--tags nope" --tags nope cases/field/*.md
 none "--tier paper on quick cases" --tier paper cases/field/*.md
 none "a CASES glob matching nothing" 'cases/zzz*.md'
-# time limits: 20x the recorded time, at least 60 s; --timeout overrides
-"$bin" verify --list cases/field/exact-covariance-minimal.md | grep -q ' timeout=60s$' || bad "a fast case's limit is not 60 s"
-t=$(awk -F'\t' '$1 == "validation/quick-claims-fig15" { print $2 }' cases/times.tsv)
-lim=$("$bin" verify --list cases/validation/quick-claims-fig15.md | sed -n 's/.* timeout=\([0-9]*\)s$/\1/p')
+# time limits: CPU time 20x the recorded, at least 60 s; --timeout (wall) turns them off
+"$bin" verify --list cases/field/exact-covariance-minimal.md | grep -q ' cpu_limit=60s wall_limit=900s$' ||
+    bad "a fast case's CPU limit is not 60 s"
+t=$(awk -F'\t' '$1 == "limits/large-lr-variable" { print $2 }' cases/times.tsv)
+lim=$("$bin" verify --list cases/limits/large-lr-variable.md | sed -n 's/.* cpu_limit=\([0-9]*\)s .*/\1/p')
 [ -n "$t" ] && [ -n "$lim" ] && awk -v t="$t" -v l="$lim" 'BEGIN { exit !(l >= 20 * t && l < 20 * t + 1 && l >= 60) }' ||
-    bad "quick-claims-fig15: limit '$lim' s is not 20x its recorded '$t' s"
-"$bin" verify --timeout 7 --list cases/validation/quick-claims-fig15.md | grep -q ' timeout=7s$' || bad "--timeout does not override"
+    bad "large-lr-variable: CPU limit '$lim' s is not 20x its recorded '$t' s"
+"$bin" verify --timeout 7 --list cases/limits/large-lr-variable.md | grep -q ' cpu_limit=0s wall_limit=7s$' ||
+    bad "--timeout does not replace the CPU limits"
+# a case that spins past its CPU limit is stopped and says so (a 1 s limit
+# from a table next to the test case)
+mkdir -p "$tmp/c/spin"
+cp tests/isolation/hang.md "$tmp/c/spin/spin.md"
+sed -i 's/^check = selftest_hang$/check = selftest_spin/' "$tmp/c/spin/spin.md"
+printf 'spin/spin\t0.01\n' > "$tmp/c/times.tsv"
+SF_SELFTEST=1 SF_CASETIME_FLOOR=1 "$bin" verify --reports "$tmp/spin" "$tmp/c/spin/spin.md" > "$tmp/spin.out" 2>&1
+grep -qE '^ERROR +spin/spin .*CPU-time limit of 1 s' "$tmp/spin.out" || bad "a spinning case was not stopped at its CPU limit: $(head -c 300 "$tmp/spin.out")"
 # replication: seed 7 suspect then passes, seed 742 below the floor
 SF_SELFTEST=1 "$bin" verify --reports "$tmp/r" tests/budget/*.md > "$tmp/out" 2>&1
 [ $? -eq 1 ] || bad "the budget selftests: exit status, expected 1"

@@ -44,8 +44,9 @@ static void usage(FILE *f)
           "                      paper's settings, reports/paper.md)\n"
           "  --reports DIR       report folder (default: reports)\n"
           "  --jobs N            cases run in parallel (default 1)\n"
-          "  --timeout S         per-case time limit in seconds (default: 20x the case's recorded\n"
-          "                      time in cases/times.tsv, at least 60 s; 900 s for a case without one)\n"
+          "  --timeout S         per-case wall-time limit in seconds (default 900); without it each\n"
+          "                      case also gets a CPU-time limit of 20x its recorded CPU time\n"
+          "                      (cases/times.tsv), at least 60 s\n"
           "  --seed N|random     override every case's seed (mixed with the case id; not pin_seed cases)\n"
           "  --alternative A     power run: the data generator (never the oracle) draws under\n"
           "                      A = KEY*FACTOR or KEY+DELTA, or 'scene': each case's power_alt\n"
@@ -130,7 +131,7 @@ static int run_check(const sf_case *c, const sf_check_def *d, sf_result **r, sf_
 }
 
 /* Child: run the check, write the report, send one line to the parent. */
-static void run_child(const sf_case *c, const char *root, int fd, unsigned timeout)
+static void run_child(const sf_case *c, const char *root, int fd, unsigned timeout, unsigned cpu_limit)
 {
     /* die with the runner: a killed `make verify` leaves no case running
        on to write a report nobody asked for any more */
@@ -138,6 +139,11 @@ static void run_child(const sf_case *c, const char *root, int fd, unsigned timeo
     if (getppid() == 1)
         _exit(SF_EXIT_INTERNAL);
     alarm(timeout);
+    if (cpu_limit) {
+        /* SIGXCPU at the limit, SIGKILL a little later if it is caught */
+        struct rlimit rl = { cpu_limit, (rlim_t)cpu_limit + 5 };
+        setrlimit(RLIMIT_CPU, &rl);
+    }
     sf_outcome o;
     fill_outcome(&o, c);
     const sf_check_def *d = sf_check_find(c->spec.check);
@@ -192,6 +198,7 @@ typedef struct {
 static void finish_job(const job *j, int status, const sf_case *cases, sf_outcome *out,
                        const char *root)
 {
+    unsigned cpu_limit;
     const sf_case *c = &cases[j->idx];
     sf_outcome *o = &out[j->idx];
     fill_outcome(o, c);
@@ -217,6 +224,9 @@ static void finish_job(const job *j, int status, const sf_case *cases, sf_outcom
         o->seconds = now() - j->t0;
         if (WIFSIGNALED(status) && WTERMSIG(status) == SIGALRM)
             snprintf(o->key, sizeof o->key, "timed out after %.0f s", o->seconds);
+        else if (WIFSIGNALED(status) && WTERMSIG(status) == SIGXCPU && (cpu_limit = sf_casetime_limit(c->path, c->id)) > 0)
+            snprintf(o->key, sizeof o->key, "stopped at its CPU-time limit of %u s (20x its recorded CPU time, at "
+                     "least 60 s): a hang, or a case many times slower than it was", cpu_limit);
         else if (WIFSIGNALED(status))
             snprintf(o->key, sizeof o->key, "crashed with signal %d (%s)", WTERMSIG(status), strsignal(WTERMSIG(status)));
         else
@@ -236,8 +246,8 @@ typedef struct {
     const char *root;
     int tier;                  /* --tier: 0 quick, 1 full (quick and full), 2 paper */
     int jobs, list, have_seed;
-    unsigned timeout;          /* --timeout, or the limit of a case without a recorded time */
-    int timeout_set;           /* --timeout given: it holds for every case */
+    unsigned timeout;          /* --timeout: wall-time limit of each case */
+    int timeout_set;           /* --timeout given: no CPU-time limits */
     unsigned long seed;
     char seed_note[64];
     const char *tags, *baseline_path, *alternative;
@@ -289,11 +299,12 @@ static int opt_timeout(const char *cmd, const char *v, void *dst)
     return SF_EXIT_OK;
 }
 
-/* A case's time limit: --timeout when given, else scaled from its
- * recorded time (casetime.h). */
-static unsigned case_timeout(const verify_opts *o, const sf_case *c)
+/* A case's CPU-time limit (0: none): scaled from its recorded CPU time
+ * (casetime.h), unless --timeout set a wall limit for every case (a run
+ * under valgrind, say, which multiplies CPU time). */
+static unsigned case_cpu_limit(const verify_opts *o, const sf_case *c)
 {
-    return o->timeout_set ? o->timeout : sf_casetime_limit(c->path, c->id, o->timeout);
+    return o->timeout_set ? 0 : sf_casetime_limit(c->path, c->id);
 }
 
 static int opt_alternative(const char *cmd, const char *v, void *dst)
@@ -451,8 +462,8 @@ static void list_cases(const verify_opts *o, const sf_case *cases, size_t n)
 {
     for (size_t k = 0; k < n; k++) {
         printf("%-48s tier=%-5s ", cases[k].id, sf_case_enum_name("tier", cases[k].spec.tier));
-        printf("vv=%-10s check=%s tags=%s timeout=%us\n", sf_case_enum_name("vv", cases[k].spec.vv),
-               cases[k].spec.check, cases[k].spec.tags, case_timeout(o, &cases[k]));
+        printf("vv=%-10s check=%s tags=%s cpu_limit=%us wall_limit=%us\n", sf_case_enum_name("vv", cases[k].spec.vv),
+               cases[k].spec.check, cases[k].spec.tags, case_cpu_limit(o, &cases[k]), o->timeout);
     }
 }
 
@@ -505,7 +516,7 @@ static int spawn_case(const sf_case *cases, size_t next, const verify_opts *o, j
            a leak check of the case process sees only its own */
         free(run);
         free(out);
-        run_child(&cases[next], o->root, fd[1], case_timeout(o, &cases[next]));
+        run_child(&cases[next], o->root, fd[1], o->timeout, case_cpu_limit(o, &cases[next]));
     }
     close(fd[1]);
     for (int s = 0; s < o->jobs; s++)

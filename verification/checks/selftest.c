@@ -45,6 +45,16 @@ static int chk_hang(const sf_case *c, sf_result *r)
         pause();
 }
 
+static int chk_spin(const sf_case *c, sf_result *r)
+{
+    (void)c;
+    if (!armed(r))
+        return SF_EINVAL;
+    for (volatile unsigned long k = 0;; k++)
+        ;
+    return SF_EFAIL;
+}
+
 static int chk_pass(const sf_case *c, sf_result *r)
 {
     (void)c;
@@ -88,6 +98,7 @@ const sf_check_def sf_checks_selftest[] = {
     { "selftest_abort", chk_abort, "calls abort() (isolation test)" },
     { "selftest_segv", chk_segv, "raises SIGSEGV (isolation test)" },
     { "selftest_hang", chk_hang, "never returns (time-out test)" },
+    { "selftest_spin", chk_spin, "spins without end (CPU-time limit test)" },
     { "selftest_pass", chk_pass, "passes (isolation test)" },
     { "selftest_uniform_p", chk_uniform_p, "a uniform draw as a p-value (false-alarm budget test)" },
     { "selftest_noplot", chk_noplot, "a row but no plot: an ERROR (isolation test)" },
