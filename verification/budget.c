@@ -124,7 +124,8 @@ void sf_budget_index_section(FILE *f, const char *tier_name, const sf_outcome *o
                "(split over its rows); a statistical row whose p-value is below its alpha but not below %g x it is "
                "*suspect* and the case is run once more on a fresh stream, failing only if that fails too; so a "
                "case spends share = (a - A) + %g A + A a, where A is the alpha of its statistical rows and a = "
-               "max(alpha, A) (without the replication the same cases would spend %.3g). %zu case%s seed-proof "
+               "max(alpha, A); a row that compares a Bonferroni-adjusted p-value with the case's alpha counts that alpha in "
+               "full (conservative). Without the replication the same cases would spend %.3g. %zu case%s seed-proof "
                "(`seed_proof`: the tolerance holds at every seed), %zu pinned (`pin_seed`), %zu declare no random "
                "data (the false-alarm study, `make verify SEED=random REPEAT=N`, lists any that draw some). "
                "%zu case%s replicated in this run.\n\n",

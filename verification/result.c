@@ -185,10 +185,16 @@ int sf_check_true(sf_result *r, const char *q, int ok, const char *found)
     return row->pass;
 }
 
+void sf_result_mark_statistical(sf_result *r, double alpha)
+{
+    if (r->nrows)
+        r->rows[r->nrows - 1].alpha = alpha;
+}
+
 int sf_check_verdict(sf_result *r, const char *q, int ok, const char *found, double alpha)
 {
     int pass = sf_check_true(r, q, ok, found);
-    r->rows[r->nrows - 1].alpha = alpha;
+    sf_result_mark_statistical(r, alpha);
     return pass;
 }
 

@@ -51,6 +51,10 @@ int sf_check_true(sf_result *r, const char *quantity, int ok, const char *found)
 /* The same for a statistical verdict (a claim confirmed or contradicted by
  * a test at alpha): a boolean row that spends alpha of the case's budget. */
 int sf_check_verdict(sf_result *r, const char *quantity, int ok, const char *found, double alpha);
+/* Mark the last row statistical: it decides a test at alpha (e.g. a
+ * p-value against a bound made with sf_check_le), so it spends alpha of
+ * the case's budget and may be replicated (budget.h). */
+void sf_result_mark_statistical(sf_result *r, double alpha);
 
 /* Non-finite values fail (issue 13).  The result counts every NaN/Inf
  * among its rows' measured values and its plotted series (the plots are
