@@ -53,8 +53,10 @@ for f in $cand; do
 done
 # the tier's family-wise rate: every case of the tier runs in each run (a
 # run fails when any case fails, as CI sees it)
-rev=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
-git diff --quiet HEAD -- solver verification cli cases 2>/dev/null || rev="$rev+local changes"
+# the revision the binary was built from (a copy may predate the tree)
+rev=$("$BIN" --version 2>/dev/null | sed -n '1s/.*(\(.*\)).*/\1/p')
+[ -n "$rev" ] || rev=unknown
+git diff --quiet HEAD -- cases 2>/dev/null || rev="$rev (cases with local changes)"
 t_start=$(date +%s)
 : > "$tmp/runs.tsv"
 i=0
