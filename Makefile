@@ -185,6 +185,7 @@ test-run: $(TESTS) $(TESTS_SAN) $(BUILD)/slipfield
 	 sh scripts/run-tests.sh $(BUILD) $(TESTS) -- $(TESTS_SAN) || st=1; \
 	 sh scripts/bad-input.sh $(BUILD)/slipfield || st=1; \
 	 sh scripts/isolation.sh $(BUILD)/slipfield || st=1; \
+	 sh scripts/budget-test.sh $(BUILD)/slipfield || st=1; \
 	 sh scripts/resume-test.sh $(BUILD)/slipfield || st=1; \
 	 sh scripts/results-test.sh $(BUILD)/slipfield || st=1; \
 	 sh scripts/drift-test.sh || st=1; \

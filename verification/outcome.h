@@ -6,10 +6,11 @@
 #define SF_OUTCOME_H
 
 #include <stddef.h>
+#include "budget.h"
 
 enum { SF_VERDICT_PASS = 0, SF_VERDICT_FAIL = 1, SF_VERDICT_ERROR = 2 };
 
-typedef struct {
+typedef struct sf_outcome {
     char id[128], family[64], path[512], title[256];
     int tier, vv;
     int verdict;
@@ -21,6 +22,7 @@ typedef struct {
     double margin;       /* the tightest row's margin; NAN when none */
     int near_edge;       /* passed with margin >= SF_NEAR_EDGE */
     double cpu_seconds;  /* CPU time of the case process (runner) */
+    sf_budget_entry budget;   /* its share of the tier's false-alarm budget (budget.h) */
 } sf_outcome;
 
 struct sf_drift_summary;     /* drift.h */

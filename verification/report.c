@@ -285,6 +285,7 @@ static void write_index(FILE *f, const sf_run_meta *meta, const sf_outcome *o, s
         sf_md_text(f, o[i].key);
         fprintf(f, " | %.2f |\n", o[i].seconds);
     }
+    sf_budget_index_section(f, meta->tier_name, o, n, page);
     sf_paper_index_section(f, meta->root, o, n, strcmp(page, "report.html") == 0);
 }
 

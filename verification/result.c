@@ -170,6 +170,7 @@ int sf_check_pvalue(sf_result *r, const char *test, double p, double alpha, size
     row->ratio = p > 0 ? alpha / p : INFINITY;
     row->pass = p >= alpha;
     set_limit(row, SF_ROW_PVALUE, alpha, n);
+    row->alpha = alpha;
     return row->pass;
 }
 
@@ -182,6 +183,19 @@ int sf_check_true(sf_result *r, const char *q, int ok, const char *found)
     row->pass = ok != 0;
     set_limit(row, SF_ROW_TRUE, NAN, 0);
     return row->pass;
+}
+
+void sf_result_mark_statistical(sf_result *r, double alpha)
+{
+    if (r->nrows)
+        r->rows[r->nrows - 1].alpha = alpha;
+}
+
+int sf_check_verdict(sf_result *r, const char *q, int ok, const char *found, double alpha)
+{
+    int pass = sf_check_true(r, q, ok, found);
+    sf_result_mark_statistical(r, alpha);
+    return pass;
 }
 
 void sf_result_data(sf_result *r, const char *what, size_t n, double *x)
