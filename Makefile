@@ -184,10 +184,12 @@ check: test
 .PHONY: test-run
 test-run: $(TESTS) $(TESTS_SAN) $(BUILD)/slipfield
 	@st=0; sh scripts/layering.sh || st=1; \
+	 sh scripts/refs-check.sh || st=1; \
 	 sh scripts/mutants-fresh.sh || st=1; \
 	 sh scripts/run-tests.sh $(BUILD) $(TESTS) -- $(TESTS_SAN) || st=1; \
 	 sh scripts/bad-input.sh $(BUILD)/slipfield || st=1; \
 	 sh scripts/isolation.sh $(BUILD)/slipfield || st=1; \
+	 sh scripts/budget-test.sh $(BUILD)/slipfield || st=1; \
 	 sh scripts/resume-test.sh $(BUILD)/slipfield || st=1; \
 	 sh scripts/cli-test.sh $(BUILD)/slipfield || st=1; \
 	 sh scripts/results-test.sh $(BUILD)/slipfield || st=1; \

@@ -60,6 +60,7 @@ int main(int argc, char **argv)
         { "sweep", bench_sweep, 0, NULL, 0, 0 },   { "memory", bench_memory, 1, NULL, 0, 0 },
         { "belt", bench_belt, 1, NULL, 0, 0 },
         { "realisation", bench_realisation, 0, NULL, 0, 0 },
+        { "unum", bench_unum, 0, NULL, 0, 0 },
         { "plan", bench_plan, 0, NULL, 0, 1 },   /* the plan's calibration (minutes): only when named */
         { "fig11", bench_fig11, 0, NULL, 0, 1 },   /* issue 14: Fig. 11 time estimate (minutes): only when named */
     };

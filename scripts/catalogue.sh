@@ -50,7 +50,7 @@ fam_desc() {
     echo
     echo "| case | title | tier | kind | check | tags |"
     echo "|---|---|---|---|---|---|"
-    while read -r id tier kind check tags; do
+    while read -r id tier kind check tags _; do
         f="cases/$id.md"
         title=$(sed -n '1s/^# //p' "$f" | sed 's/|/\\|/g')
         echo "| [$id]($(echo "$id" | sed 's|^[^/]*/||; s|$|.md|' | sed "s|^|$(dirname "$id" | sed 's|^||')/|")) | $title | ${tier#tier=} | ${kind#vv=} | \`${check#check=}\` | ${tags#tags=} |"

@@ -3,7 +3,8 @@
 top=$(cd "$(dirname "$0")/.." && pwd)
 cd "$top"
 tmp=$(mktemp -d "/tmp/sf-${sf_name:-test}.XXXXXX")
-trap 'rm -rf "$tmp"' EXIT INT TERM
+trap 'rm -rf "$tmp"' EXIT
+trap 'exit 130' INT TERM   # a killed script stops (the EXIT trap cleans up), not carry on
 scene_val() {   # scene_val FILE KEY: the key's value in a case's scene block
     awk -v k="$2" '/^```scene/ { f = 1; next } /^```/ { f = 0 } f && $1 == k && $2 == "=" { $1 = ""; $2 = ""; sub(/^ +/, ""); print; exit }' "$1"
 }

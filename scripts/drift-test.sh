@@ -7,7 +7,10 @@
 # baseline.  Pass: the mutant's run exits 0 (verdicts unchanged) and
 # drift.md lists a moved metric of the mutant's cases -- and no verdict
 # change.  A mutant whose text is not found exactly once is stale: a
-# failure.
+# failure.  The first mutant's cases also run against their own baseline
+# with this tree's binary: that page must show no drift at all (each
+# row's uncertainty is wide enough for a rerun); and case names on the
+# page link to their reports.
 set -u
 top=$(cd "$(dirname "$0")/.." && pwd)
 cd "$top" || exit 3
@@ -47,16 +50,31 @@ for m in $list; do
     (cd "$dir" && ./build/slipfield verify --reports "$work/$name-mut" --baseline "$work/$name-base/results.json" $cases) \
         > "$work/$name-mut.log" 2>&1
     rc=$?
+    if [ -z "${selfdone:-}" ]; then
+        selfdone=1
+        # shellcheck disable=SC2086
+        build/slipfield verify --reports "$work/$name-self" --baseline "$work/$name-base/results.json" $cases \
+            > "$work/$name-self.log" 2>&1
+        if grep -q '^- \*\*No drift\*\*' "$work/$name-self/drift.md" 2>/dev/null; then
+            ok "a run against itself ($cases): no drift"
+        else
+            bad "a run against itself ($cases) shows drift"
+            sed -n '/^## /,$p' "$work/$name-self/drift.md" 2>/dev/null | head -8
+        fi
+    fi
     page="$work/$name-mut/drift.md"
-    moved=$(sed -n '/^## Metrics that moved/,/^## /p' "$page" 2>/dev/null | grep -c '^| [a-z0-9_-]*/[a-z0-9_-]* |')
+    moved=$(sed -n '/^## Metrics that moved/,/^## /p' "$page" 2>/dev/null | grep -c '^| \[[a-z0-9_-]*/[a-z0-9_-]*\]')
     if [ $rc0 -ne 0 ] || [ $rc -ne 0 ]; then
         bad "$name: a verdict changed or a run failed (baseline exit $rc0, mutant exit $rc): not a drift-only defect"
         tail -3 "$work/$name-mut.log"
     elif grep -q '^## Verdict changes' "$page"; then
         bad "$name: the drift page reports a verdict change"
     elif [ "$moved" -ge 1 ]; then
+        grep -q '^| \[[a-z0-9_-]*/[a-z0-9_-]*\]([a-z0-9_-]*/[a-z0-9_-]*/report\.md) |' "$page" ||
+            bad "$name: the drift page does not link the cases to their reports"
+        grep -q '/report\.html' "$work/$name-mut/drift.html" || bad "$name: drift.html does not link report.html"
         ok "$name: verdicts unchanged, $moved metric(s) moved on the drift page:"
-        sed -n '/^## Metrics that moved/,/^## /p' "$page" | grep '^| [a-z0-9_-]*/' | head -3 | cut -c1-220 | sed 's/^/      /'
+        sed -n '/^## Metrics that moved/,/^## /p' "$page" | grep '^| \[' | head -3 | cut -c1-260 | sed 's/^/      /'
     else
         bad "$name: MISSED: no metric moved on the drift page"
     fi

@@ -3,7 +3,7 @@
 # reader with clang (ASan + UBSan), run each for FUZZ_TIME seconds from the
 # seed corpus, and fail on any crash (the input is kept in build/fuzz/).
 # A crash found becomes a regression test: copy the input into
-# tests/bad-input/ with its expected message (see tests/bad-input/README).
+# tests/bad-input/ with its expected message (see tests/bad-input/MANIFEST).
 set -eu
 T=${1:-60}
 top=$(cd "$(dirname "$0")/.." && pwd)

@@ -23,6 +23,11 @@ grep -c '<testcase' "$tmp/r/junit.xml" | grep -qx 4 || bad "junit.xml does not l
 # a check that produces rows but no plot is an ERROR, not a pass
 SF_SELFTEST=1 "$bin" verify --jobs 1 --reports "$tmp/np" tests/noplot/noplot.md > "$tmp/np.out" 2>&1
 [ $? -eq 1 ] && grep -qE "^ERROR +noplot/noplot .*no plot" "$tmp/np.out" || bad "a check without a plot was not an ERROR"
+# a gnuplot warning, or a plot with nothing to draw, is a failing row naming the plot
+SF_SELFTEST=1 "$bin" verify --jobs 1 --reports "$tmp/bp" tests/noplot/badplot.md > "$tmp/bp.out" 2>&1
+[ $? -eq 1 ] && grep -qE "^FAIL +noplot/badplot .*plot flat_log" "$tmp/bp.out" || bad "a gnuplot warning did not fail the case"
+grep -q "plot nothing_to_draw:.*no point to draw" "$tmp/bp/noplot/badplot/report.md" 2>/dev/null || bad "an empty plot did not fail the case"
+grep -q "^Warning" "$tmp/bp.out" && bad "gnuplot's warning leaked to the terminal"
 # kill mid-run: the hang case is in flight when the runner is killed
 SF_SELFTEST=1 "$bin" verify --jobs 1 --timeout 60 --reports "$tmp/k" tests/isolation/pass.md tests/isolation/hang.md > /dev/null 2>&1 &
 pid=$!

@@ -73,10 +73,10 @@ rc=$?
 [ $rc -eq 0 ] && ok "drift alone does not fail the run" || bad "a run with drift exits $rc"
 page="$work/c/drift.md"
 q=$($py -c 'import json,sys; d=json.load(open(sys.argv[1])); print([c for c in d["cases"] if c["id"]=="contact/pure-spin-polar"][0]["rows"][0]["quantity"])' "$work/a/results.json")
-if grep -F "contact/pure-spin-polar | $q" "$page" | grep -q '| exact |'; then ok "a moved exact metric is on the drift page"
+if grep -F "(contact/pure-spin-polar/report.md) | $q" "$page" | grep -q '| exact |'; then ok "a moved exact metric is on the drift page"
 else bad "the moved exact metric is not on the drift page"; sed 's/^/      /' "$page"; fi
-grep -q 'field/sampled-covariance-lrt .*| statistical |' "$page" && ok "a moved p-value is on the drift page" || bad "the moved p-value is not on the drift page"
-grep -q '| field/exact-covariance-padded | fail | \*\*pass\*\*' "$page" && ok "a verdict change is on the drift page" || bad "the verdict change is not on the drift page"
+grep -q 'field/sampled-covariance-lrt/report.md) .*| statistical |' "$page" && ok "a moved p-value is on the drift page" || bad "the moved p-value is not on the drift page"
+grep -q '| \[field/exact-covariance-padded\](field/exact-covariance-padded/report.md) | fail | \*\*pass\*\*' "$page" && ok "a verdict change is on the drift page" || bad "the verdict change is not on the drift page"
 grep -q ', 2 metrics moved,' "$page" && ok "exactly the two changed rows moved" || bad "a row that did not change counted as moved (or one that did, not)"
 
 # 4. a case that now fails where it passed: a copy of a case whose

@@ -7,7 +7,7 @@ set -eu
 sf_name=vg
 . "$(dirname "$0")/common.sh"
 VG="valgrind -q --error-exitcode=99 --leak-check=full --errors-for-leak-kinds=definite --show-leak-kinds=definite"
-$VG build/slipfield verify --jobs 1 --reports "$tmp/reports" \
+$VG build/slipfield verify --jobs 1 --timeout 900 --reports "$tmp/reports" \
     cases/field/exact-covariance-minimal.md cases/lognormal/nataf-map-roundtrip.md \
     cases/contact/pure-spin-polar.md cases/surface/equator-mean-cof.md cases/deterministic/energy-1d.md \
     cases/plan/section-vs-full-surface.md

@@ -25,7 +25,7 @@
  * interpolated bilinearly at the cell centres.  Its marginal is Gaussian:
  * matched in mean and variance; the cell average of (h/l)^2 correlation
  * areas is close to Gaussian by the central limit theorem (its skewness
- * is measured in cases/field/cellavg-moments.md). */
+ * is measured in cases/plan/cellavg-covariance.md). */
 #ifndef SF_CELLAVG_H
 #define SF_CELLAVG_H
 #ifdef __cplusplus

@@ -99,8 +99,8 @@ int sf_numplan_make(const sf_scene *s, int quadrature, sf_numplan *p, char *err,
 void sf_numplan_explain(const sf_numplan *p, FILE *f);
 
 /* The predicted relative QoI errors of the plan's models (numplan.c), for
- * the checks that verify them. */
-double sf_numplan_err_quad(double l_over_R, size_t rings);
+ * the checks that verify them; cv = mu_std / mu_mean). */
+double sf_numplan_err_quad(double l_over_R, double cv, size_t rings);
 double sf_numplan_err_time(double rtol);
 
 #ifdef __cplusplus

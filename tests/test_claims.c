@@ -1,9 +1,11 @@
-/* Unit tests: the paper's claims as data (result.h sf_claim) and their
- * trip through claims.tsv into the index section (paper.h). */
+/* Unit tests: the paper's claims as data (result.h sf_claim), their
+ * trip through claims.tsv into the index (paper.h), and the escaping of
+ * generated text in the Markdown they are written into (html.h). */
 #include "test_util.h"
 #include "result.h"
 #include "report.h"
 #include "paper.h"
+#include "html.h"
 #include "scene.h"
 
 #include <math.h>
@@ -59,7 +61,14 @@ static void claims_tsv_reach_the_index(void **state)
     assert_non_null(strstr(md, "bad-claim"));
     assert_non_null(strstr(md, "fails \\| with a bar"));
     assert_null(strstr(md, "ok-claim"));
-    assert_non_null(strstr(md, "1 confirmed, 1 contradicted, 0 not decidable"));
+    free(md);
+    /* the tally the index opens with: a zero count is not emphasised (the
+     * HTML colours emphasised verdict words) */
+    f = open_memstream(&md, &len);
+    sf_paper_index_tally(f, root, &o, 1, 1);
+    fclose(f);
+    assert_non_null(strstr(md, "(2): **1 confirmed**, **1 contradicted**, 0 not decidable"));
+    assert_non_null(strstr(md, "[paper.html](paper.html)"));
     free(md);
     sf_run_meta meta = { root, "fixed", "quick", 1.0, 0, NULL };
     char err[256] = "";
@@ -117,12 +126,68 @@ static void contradicted_claims_say_why(void **state)
     assert_int_equal(system(cmd), 0);
 }
 
+/* Text a check generates is literal in Markdown: a star in a path is no
+ * emphasis, a tag no HTML, a bar no cell break; what cannot change the
+ * rendering (PV_x, p <= alpha) is left readable. */
+static void generated_text_stays_literal(void **state)
+{
+    (void)state;
+    static const struct { const char *in, *out; } t[] = {
+        { "cases/dynamics/*, cases/deterministic/*", "cases/dynamics/\\*, cases/deterministic/\\*" },
+        { "PV_x and mu_s", "PV_x and mu_s" },
+        { "_lead and trail_", "\\_lead and trail\\_" },
+        { "p <= 1e-3 | x < 2", "p <= 1e-3 \\| x < 2" },
+        { "<b>bold</b> & &amp; [link](x) `code`", "\\<b>bold\\</b> & \\&amp; [link\\](x) \\`code\\`" },
+        { "T [N m], [a][b], [c]: d", "T [N m], [a\\][b], [c\\]: d" },
+        { "two\nlines\tand a tab", "two lines and a tab" },
+    };
+    for (size_t i = 0; i < sizeof t / sizeof t[0]; i++) {
+        char *md = NULL;
+        size_t len = 0;
+        FILE *f = open_memstream(&md, &len);
+        sf_md_text(f, t[i].in);
+        fclose(f);
+        assert_string_equal(md, t[i].out);
+        free(md);
+    }
+}
+
+/* The HTML colours a claim's verdict like a case's: confirmed and passed
+ * as PASS, contradicted as FAIL, not decidable as ERROR; other bold text
+ * stays plain. */
+static void verdicts_are_coloured(void **state)
+{
+    (void)state;
+    char path[] = "/tmp/sf-colour-XXXXXX";
+    int fd = mkstemp(path);
+    assert_true(fd >= 0);
+    close(fd);
+    char err[256] = "";
+    assert_int_equal(sf_html_write(path, "t", "**3 confirmed**, **1 contradicted**, **2 not decidable**, **PASS**, "
+                                              "**4 passed**, **Error:** x\n", err, sizeof err), 0);
+    FILE *f = fopen(path, "r");
+    assert_non_null(f);
+    char buf[8192];
+    size_t n = fread(buf, 1, sizeof buf - 1, f);
+    buf[n] = '\0';
+    fclose(f);
+    unlink(path);
+    assert_non_null(strstr(buf, "<strong class=\"pass\">3 confirmed</strong>"));
+    assert_non_null(strstr(buf, "<strong class=\"fail\">1 contradicted</strong>"));
+    assert_non_null(strstr(buf, "<strong class=\"error\">2 not decidable</strong>"));
+    assert_non_null(strstr(buf, "<strong class=\"pass\">PASS</strong>"));
+    assert_non_null(strstr(buf, "<strong class=\"pass\">4 passed</strong>"));
+    assert_non_null(strstr(buf, "<strong>Error:</strong>"));
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(claim_records_and_nan_is_undecided),
         cmocka_unit_test(claims_tsv_reach_the_index),
         cmocka_unit_test(contradicted_claims_say_why),
+        cmocka_unit_test(generated_text_stays_literal),
+        cmocka_unit_test(verdicts_are_coloured),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

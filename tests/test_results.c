@@ -143,6 +143,17 @@ static void drift_rules(void **state)
     assert_false(sf_drift_pvalue_moved(1.0, 0.9));
     assert_false(sf_drift_pvalue_moved(0.0, 1e-300));
     assert_true(sf_drift_pvalue_moved(0.3, NAN));
+    /* a chaotic case's exact row: round-off amplified, 1e-6 of the scale */
+    assert_false(sf_drift_chaotic_moved(0.2, 0.2 + 1e-8, NAN));    /* PV_x moved by round-off */
+    assert_true(sf_drift_chaotic_moved(0.2, 0.2 * 1.05, NAN));     /* by a 5% defect */
+    assert_true(sf_drift_chaotic_moved(1.0, NAN, 1.0));
+    assert_true(sf_drift_chaotic_family("dynamics"));
+    assert_false(sf_drift_chaotic_family("field"));
+    /* a p-value from the same draws: the exact rows' null, not |dz| > 2 sqrt 2 */
+    assert_false(sf_drift_pvalue_coupled_moved(0.7755, 0.7755, 0));
+    assert_true(sf_drift_pvalue_coupled_moved(0.7755, 0.7761, 1));  /* |dz| = 0.002: independent draws would not flag it */
+    assert_false(sf_drift_pvalue_coupled_moved(0.7755, 0.7755 * (1 + 1e-8), 1));
+    assert_true(sf_drift_pvalue_coupled_moved(0.7755, 0.7755 * (1 + 1e-8), 0));
     /* run time: more than 2x and more than 0.5 s */
     assert_false(sf_drift_time_grew(0.01, 0.1));
     assert_false(sf_drift_time_grew(1.0, 1.9));

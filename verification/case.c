@@ -218,6 +218,7 @@ static const sf_key spec_keys[] = {
     { "vv", SF_KEY_ENUM, OFF(vv), 0, 0, 0, 0, 0, "code", "", SF_KEY_CHOICES("code", "solution", "validation"), "code verification, solution verification or validation" },
     { "tags", SF_KEY_STRING, STR(tags), 0, 0, 0, 0, "", "", NULL, "comma-separated tags" },
     { "pin_seed", SF_KEY_BOOL, OFF(pin_seed), 0, 0, 0, 0, 0, "false", "", NULL, "a deterministic check of one pinned realisation: verify --seed leaves this case's seed alone" },
+    { "seed_proof", SF_KEY_STRING, STR(seed_proof), 0, 0, 0, 0, "", "", NULL, "a tolerance on seed-dependent data that holds at every seed: a token for why (exact-property, round-off, same-bits); the prose says it" },
     { "power_alt", SF_KEY_STRING, STR(power_alt), 0, 0, 0, 0, "", "", NULL, "alternative a statistical case's power is measured against: KEY*FACTOR or KEY+DELTA (generator only)" },
     { "sweep", SF_KEY_LIST, OFF(sweep), 0, -INF, INF, 0, 0, "", "", NULL, "list of values a check sweeps over" },
     { "sweep_param", SF_KEY_STRING, STR(sweep_param), 0, 0, 0, 0, "", "", NULL, "parameter a sweep varies: a numeric key, l_over_R or mu_mean (fixed CV)" },

@@ -32,6 +32,10 @@ typedef struct {
     char power_alt[48];
     int pin_seed;            /* 1: a deterministic check of one pinned realisation
                                 (`verify --seed` leaves this case's seed alone) */
+    /* a tolerance on seed-dependent data that holds at every seed: a token
+     * for why (exact-property, round-off, same-bits), the prose says it;
+     * the case then spends none of the tier's false-alarm budget (budget.h) */
+    char seed_proof[200];
     sf_list sweep, sweep2;
     char sweep_param[32];    /* the scene key (or l_over_R) a sweep varies */
     /* which keys the block set (index into the table) */

@@ -18,6 +18,9 @@ struct sf_baseline {
 };
 
 #define EXACT_ULPS 10.0          /* "10x their round-off" */
+/* a chaotic trajectory amplifies a change of round-off: about 1e-7 in
+   PV_x over 40 s (measured); 1e-6 of the values' scale is 10x that */
+#define CHAOS_SCALE 1e-6
 #define Z_MOVE (2.0 * 1.4142135623730951)   /* 2 sampling errors of a difference of two N(0,1) */
 #define TIME_FACTOR 2.0
 #define TIME_FLOOR 0.5           /* s */
@@ -54,6 +57,33 @@ int sf_drift_pvalue_moved(double p0, double p1)
         return !(p0 == p1);
     }
     return fabs(pz(p1) - pz(p0)) > Z_MOVE;
+}
+
+int sf_drift_chaotic_moved(double m0, double m1, double expected)
+{
+    if (!isfinite(m0) || !isfinite(m1))
+        return sf_drift_exact_moved(m0, m1, expected);
+    double scale = fmax(fmax(fabs(m0), fabs(m1)), 1.0);
+    if (isfinite(expected))
+        scale = fmax(scale, fabs(expected));
+    return fabs(m1 - m0) > CHAOS_SCALE * scale;
+}
+
+int sf_drift_pvalue_coupled_moved(double p0, double p1, int chaotic)
+{
+    if (!isfinite(p0) || !isfinite(p1))
+        return sf_drift_pvalue_moved(p0, p1);
+    double k = chaotic ? CHAOS_SCALE : EXACT_ULPS * DBL_EPSILON;
+    return fabs(p1 - p0) > k * fmax(fabs(p0), fabs(p1));
+}
+
+int sf_drift_chaotic_family(const char *family)
+{
+    static const char *const fam[] = { "dynamics", "validation", "plan", "stress", "limits" };
+    for (size_t k = 0; k < sizeof fam / sizeof *fam; k++)
+        if (!strcmp(family, fam[k]))
+            return 1;
+    return 0;
 }
 
 int sf_drift_time_grew(double t0, double t1)
@@ -129,16 +159,6 @@ static json_t *find_case(json_t *cases, const char *id)
     return NULL;
 }
 
-/* Markdown table cells must not contain '|' or a newline. */
-static void cell(FILE *f, const char *s)
-{
-    for (; *s; s++) {
-        if (*s == '|') fputs("\\|", f);
-        else if (*s == '\n') fputc(' ', f);
-        else fputc(*s, f);
-    }
-}
-
 static void fmt(char *b, size_t n, double x, int absent)
 {
     if (absent) snprintf(b, n, "—");
@@ -166,6 +186,10 @@ static void compare_rows(json_t *c0, json_t *c1, const char *id, sections *sec, 
 {
     json_t *r0 = json_object_get(c0, "rows"), *r1 = json_object_get(c1, "rows");
     size_t n0 = json_array_size(r0), n1 = json_array_size(r1);
+    /* same seed: both runs drew the same data, which a change of code
+       moves only by round-off (amplified on a chaotic trajectory) */
+    int coupled = json_integer_value(json_object_get(c0, "seed")) == json_integer_value(json_object_get(c1, "seed"));
+    int chaotic = sf_drift_chaotic_family(str(c1, "family"));
     char *used = calloc(n1 ? n1 : 1, 1);
     if (!used) return;
     for (size_t i = 0; i < n0; i++) {
@@ -179,8 +203,8 @@ static void compare_rows(json_t *c0, json_t *c1, const char *id, sections *sec, 
             }
         if (!b) {
             s->rows_removed++;
-            fprintf(sec->rows, "| %s | removed | ", id);
-            cell(sec->rows, q);
+            fprintf(sec->rows, "| [%s](%s/report.md) | removed | ", id, id);
+            sf_md_text(sec->rows, q);
             fprintf(sec->rows, " |\n");
             continue;
         }
@@ -188,12 +212,18 @@ static void compare_rows(json_t *c0, json_t *c1, const char *id, sections *sec, 
         double m0 = num(a, "measured", &ab0), m1 = num(b, "measured", &ab1);
         const char *kind = str(b, "kind");
         int moved;
-        char thr[64] = "", share[64] = "—";
+        char thr[96] = "", share[64] = "—";
         if (ab0 != ab1) {
             moved = 1;
-        } else if (!strcmp(kind, "statistical")) {
+        } else if (!strcmp(kind, "statistical") && !coupled) {
             moved = sf_drift_pvalue_moved(m0, m1);
-            snprintf(thr, sizeof thr, "\\|dz\\| > %.2f", Z_MOVE);
+            snprintf(thr, sizeof thr, "independent draws: \\|dz\\| > %.2f", Z_MOVE);
+            if (isfinite(m0) && isfinite(m1))
+                snprintf(share, sizeof share, "dz = %+.2f", pz(m1) - pz(m0));
+        } else if (!strcmp(kind, "statistical")) {
+            moved = sf_drift_pvalue_coupled_moved(m0, m1, chaotic);
+            double u = (chaotic ? CHAOS_SCALE : EXACT_ULPS * DBL_EPSILON) * fmax(fabs(m0), fabs(m1));
+            snprintf(thr, sizeof thr, "same draws, %s: %.2g", chaotic ? "chaotic" : "round-off", u);
             if (isfinite(m0) && isfinite(m1))
                 snprintf(share, sizeof share, "dz = %+.2f", pz(m1) - pz(m0));
         } else if (!strcmp(kind, "boolean")) {
@@ -202,9 +232,10 @@ static void compare_rows(json_t *c0, json_t *c1, const char *id, sections *sec, 
             snprintf(thr, sizeof thr, "any change");
         } else {
             double e = num(b, "expected", NULL);
-            moved = sf_drift_exact_moved(m0, m1, e);
+            moved = chaotic ? sf_drift_chaotic_moved(m0, m1, e) : sf_drift_exact_moved(m0, m1, e);
             double sc = fmax(fmax(fmax(fabs(m0), fabs(m1)), isfinite(e) ? fabs(e) : 0), 1.0);
-            snprintf(thr, sizeof thr, "%.2g", EXACT_ULPS * DBL_EPSILON * sc);
+            snprintf(thr, sizeof thr, "%s: %.2g", chaotic ? "chaotic" : "round-off",
+                     (chaotic ? CHAOS_SCALE : EXACT_ULPS * DBL_EPSILON) * sc);
             double t = tol_units(b);
             if (isfinite(t) && t > 0 && isfinite(m0) && isfinite(m1))
                 snprintf(share, sizeof share, "%.3g", fabs(m1 - m0) / t);
@@ -217,18 +248,43 @@ static void compare_rows(json_t *c0, json_t *c1, const char *id, sections *sec, 
         fmt(b1, sizeof b1, m1, ab1);
         if (isfinite(m0) && isfinite(m1)) snprintf(d, sizeof d, "%+.3g", m1 - m0);
         else snprintf(d, sizeof d, "—");
-        fprintf(sec->moved, "| %s | ", id);
-        cell(sec->moved, q);
+        fprintf(sec->moved, "| [%s](%s/report.md) | ", id, id);
+        sf_md_text(sec->moved, q);
         fprintf(sec->moved, " | %s | %s | %s | %s | %s | %s |\n", kind, b0, b1, d, thr, share);
     }
     for (size_t k = 0; k < n1; k++)
         if (!used[k]) {
             s->rows_added++;
-            fprintf(sec->rows, "| %s | added | ", id);
-            cell(sec->rows, str(json_array_get(r1, k), "quantity"));
+            fprintf(sec->rows, "| [%s](%s/report.md) | added | ", id, id);
+            sf_md_text(sec->rows, str(json_array_get(r1, k), "quantity"));
             fprintf(sec->rows, " |\n");
         }
     free(used);
+}
+
+/* The Markdown with its case links pointing at report.html (the HTML
+ * page sits beside the HTML reports); NULL when out of memory. */
+static char *html_links(const char *md)
+{
+    static const char from[] = "/report.md)", to[] = "/report.html)";
+    size_t n = 0;
+    for (const char *p = md; (p = strstr(p, from)); p += sizeof from - 1)
+        n++;
+    char *out = malloc(strlen(md) + n * (sizeof to - sizeof from) + 1), *o = out;
+    if (!out)
+        return NULL;
+    for (const char *p = md, *q; ; p = q + sizeof from - 1) {
+        q = strstr(p, from);
+        size_t k = q ? (size_t)(q - p) : strlen(p);
+        memcpy(o, p, k);
+        o += k;
+        if (!q)
+            break;
+        memcpy(o, to, sizeof to - 1);
+        o += sizeof to - 1;
+    }
+    *o = '\0';
+    return out;
 }
 
 static char *take(FILE *f, char **buf)
@@ -268,7 +324,7 @@ int sf_drift_write(const sf_baseline *bl, const char *root, sf_drift_summary *s,
         json_t *c0 = find_case(c0s, id);
         if (!c0) {
             s->added++;
-            fprintf(sec.cases, "| %s | added | %s |\n", id, str(c1, "verdict"));
+            fprintf(sec.cases, "| [%s](%s/report.md) | added | %s |\n", id, id, str(c1, "verdict"));
             continue;
         }
         const char *v0 = str(c0, "verdict"), *v1 = str(c1, "verdict");
@@ -276,14 +332,14 @@ int sf_drift_write(const sf_baseline *bl, const char *root, sf_drift_summary *s,
             s->verdicts++;
             int worse = strcmp(v1, "pass") != 0 && !strcmp(v0, "pass");
             s->to_fail += worse;
-            fprintf(sec.verdicts, "| %s | %s | **%s** | ", id, v0, v1);
-            cell(sec.verdicts, str(c1, "message"));
+            fprintf(sec.verdicts, "| [%s](%s/report.md) | %s | **%s** | ", id, id, v0, v1);
+            sf_md_text(sec.verdicts, str(c1, "message"));
             fprintf(sec.verdicts, " |\n");
         }
         json_t *sd0 = json_object_get(c0, "seed"), *sd1 = json_object_get(c1, "seed");
         if (json_integer_value(sd0) != json_integer_value(sd1)) {
             s->seeds++;
-            fprintf(sec.seeds, "| %s | %lld | %lld |\n", id, (long long)json_integer_value(sd0),
+            fprintf(sec.seeds, "| [%s](%s/report.md) | %lld | %lld |\n", id, id, (long long)json_integer_value(sd0),
                     (long long)json_integer_value(sd1));
         }
         /* CPU time when both runs have it (it does not depend much on
@@ -293,7 +349,7 @@ int sf_drift_write(const sf_baseline *bl, const char *root, sf_drift_summary *s,
         double t0 = num(c0, tk, NULL), t1 = num(c1, tk, NULL);
         if (sf_drift_time_grew(t0, t1)) {
             s->slower++;
-            fprintf(sec.slower, "| %s | %s | %.2f | %.2f | %.1fx |\n", id, cpu ? "CPU" : "wall", t0, t1,
+            fprintf(sec.slower, "| [%s](%s/report.md) | %s | %.2f | %.2f | %.1fx |\n", id, id, cpu ? "CPU" : "wall", t0, t1,
                     t0 > 0 ? t1 / t0 : INFINITY);
         }
         compare_rows(c0, c1, id, &sec, s);
@@ -331,19 +387,26 @@ int sf_drift_write(const sf_baseline *bl, const char *root, sf_drift_summary *s,
                 s->slower, s->slower == 1 ? "" : "s", s->added, s->added == 1 ? "" : "s", s->removed,
                 s->rows_added, s->rows_added == 1 ? "" : "s", s->rows_removed, s->seeds, s->seeds == 1 ? "" : "s");
     fprintf(f, "- Only a verdict that changed to FAIL or ERROR fails the run (it fails anyway); the rest is for review.\n\n");
-    fprintf(f, "How a change is decided (cases matched by id, rows by quantity):\n\n"
-               "- *exact* rows (a tolerance or bound): the measured value moved by more than 10x its "
-               "round-off, |m1 - m0| > 10 eps max(|m0|, |m1|, |expected|, 1) with eps = 2.2e-16 (the 1: "
-               "an error metric near zero still carries the round-off of its operands, which are of order one). "
-               "The last column gives the move as a share of the tolerance.\n"
-               "- *statistical* rows (p-value against alpha): z = Phi^-1(1 - p) is N(0, 1) under the "
-               "null hypothesis, so two runs differ by N(0, 2); a move counts when |z1 - z0| > 2 sqrt(2) = %.2f.\n"
+    fprintf(f, "How a change is decided (cases matched by id, rows by quantity); each row against its own "
+               "uncertainty (the threshold column):\n\n"
+               "- *exact* rows (a tolerance or bound): the measured value moved by more than its round-off, "
+               "|m1 - m0| > 10 eps max(|m0|, |m1|, |expected|, 1) with eps = 2.2e-16 (the 1: an error metric near "
+               "zero still carries the round-off of its operands, which are of order one); in a case whose data "
+               "pass through a chaotic trajectory (families dynamics, validation, plan, stress, limits), by more "
+               "than that round-off amplified by the dynamics, 1e-6 max(|m0|, |m1|, |expected|, 1) (a change of "
+               "round-off moves PV_x by about 1e-7 over 40 s). The last column gives the move as a share of the "
+               "tolerance.\n"
+               "- *statistical* rows (p-value against alpha): with the same seed in both runs the p-values come "
+               "from the same draws, so they may move only as the exact rows do: |p1 - p0| > k max(p0, p1), k = "
+               "10 eps or 1e-6 (chaotic); with different seeds the draws are independent, z = Phi^-1(1 - p) is "
+               "N(0, 1) under the null hypothesis, two runs differ by N(0, 2), and a move counts when |z1 - z0| > "
+               "2 sqrt(2) = %.2f.\n"
                "- *boolean* rows: any change. Run times: the CPU time of the case process (wall time when "
                "a run lacks it) grew by more than 2x and by more than 0.5 s.\n\n", Z_MOVE);
     if (s->verdicts)
         fprintf(f, "## Verdict changes\n\n| case | baseline | now | key metric now |\n|---|---|---|---|\n%s\n", buf[0]);
     if (s->moved)
-        fprintf(f, "## Metrics that moved\n\n| case | quantity | kind | baseline | now | change | threshold | change / tolerance |\n"
+        fprintf(f, "## Metrics that moved\n\n| case | quantity | kind | baseline | now | change | threshold (the row's uncertainty) | change / tolerance |\n"
                    "|---|---|---|---|---|---|---|---|\n%s\n", buf[1]);
     if (s->slower)
         fprintf(f, "## Run times that grew\n\n| case | time | baseline [s] | now [s] | ratio |\n|---|---|---|---|---|\n%s\n", buf[2]);
@@ -366,8 +429,10 @@ int sf_drift_write(const sf_baseline *bl, const char *root, sf_drift_summary *s,
         rc = SF_EIO;
     } else {
         snprintf(path, sizeof path, "%s/drift.html", root);
-        if (sf_html_write(path, "slipfield: changed since baseline", md, err, errlen) != 0)
+        char *html_md = html_links(md);
+        if (!html_md || sf_html_write(path, "slipfield: changed since baseline", html_md, err, errlen) != 0)
             rc = SF_EIO;
+        free(html_md);
     }
     free(md);
 out:

@@ -7,23 +7,26 @@
  *
  *  - a verdict that differs;
  *  - an exact row (abs, rel, le, ge: a tolerance or bound) whose measured
- *    value moved by more than 10x its round-off, taken as one unit in the
- *    last place of the values compared, and of 1: |m1 - m0| > 10 eps
- *    max(|m0|, |m1|, |expected|, 1) (eps = DBL_EPSILON).  The 1 is there
- *    because the suite's metrics are in SI or dimensionless units on
- *    operands of order one: an error metric near zero (3e-16) carries the
- *    round-off of those operands, not of itself (e.g. the FFTW "measure"
- *    planner picks a plan by timing, so its round-off differs from run to
- *    run by ~1e-16).  With fixed seeds the same code gives the same bits,
- *    so anything larger is a change of code, settings or seed; the page
- *    also gives the move as a share of the tolerance;
- *  - a statistical row (a p-value against alpha) whose p moved by more
- *    than its sampling error: under the null hypothesis
- *    z = Phi^-1(1 - p) is standard normal, so two independent runs differ
- *    by a N(0, 2) amount; a move counts when |z1 - z0| > 2 sqrt(2) (a
- *    two-sided 5% test that both come from the same null distribution).
- *    p above 0.5 counts as 0.5 (z = 0): far from alpha either way, and a
- *    Bonferroni-adjusted p is clamped at 1;
+ *    value moved by more than its own uncertainty between two runs: the
+ *    round-off of the values compared, 10 eps max(|m0|, |m1|, |expected|,
+ *    1) (eps = DBL_EPSILON; the 1 because the suite's metrics are SI or
+ *    dimensionless values on operands of order one, so an error metric
+ *    near zero carries their round-off), or, for a case whose data pass
+ *    through a chaotic trajectory (the families dynamics, validation,
+ *    plan, stress, limits), that round-off amplified by the dynamics,
+ *    1e-6 max(|m0|, |m1|, |expected|, 1) (a change of round-off moves PV_x
+ *    by about 1e-7 over 40 s).  The page also gives the move as a share of
+ *    the tolerance;
+ *  - a statistical row (a p-value against alpha): with the same seed in
+ *    both runs the two p-values come from the same draws, so the null is
+ *    the exact rows' (a change of code moves the data only by round-off,
+ *    amplified on a chaotic trajectory): |p1 - p0| > k max(p0, p1), k as
+ *    above; with different seeds the draws are independent and
+ *    z = Phi^-1(1 - p) is standard normal under the null hypothesis, so
+ *    two runs differ by a N(0, 2) amount; a move counts when |z1 - z0| >
+ *    2 sqrt(2) (a two-sided 5% test that both come from the same null
+ *    distribution).  p above 0.5 counts as 0.5 (z = 0): far from alpha
+ *    either way, and a Bonferroni-adjusted p is clamped at 1;
  *  - a boolean row whose outcome changed; a value that became or stopped
  *    being non-finite;
  *  - a run time that grew by more than 2x, and by more than 0.5 s (below
@@ -31,6 +34,9 @@
  *    case process (cpu_seconds), which a busy machine hardly changes;
  *    wall time only when a run lacks it;
  *  - cases and rows present in one run only, and seeds that differ.
+ *
+ * Case names link to their reports (report.md; report.html from
+ * drift.html).
  *
  * Only a verdict that changed to FAIL or ERROR is a failure, and the run
  * already fails on it; drift never changes the exit status.
@@ -61,6 +67,13 @@ void sf_baseline_free(sf_baseline *b);
 
 /* The rules above, one value pair at a time. */
 int sf_drift_exact_moved(double m0, double m1, double expected);
+/* An exact row of a chaotic case: |m1 - m0| > 1e-6 max(|m0|, |m1|, |expected|, 1). */
+int sf_drift_chaotic_moved(double m0, double m1, double expected);
+/* A p-value from the same draws (same seed): |p1 - p0| > k max(p0, p1),
+ * k = 1e-6 for a chaotic case, 10 eps otherwise. */
+int sf_drift_pvalue_coupled_moved(double p0, double p1, int chaotic);
+/* Do the cases of this family integrate chaotic trajectories? */
+int sf_drift_chaotic_family(const char *family);
 int sf_drift_pvalue_moved(double p0, double p1);
 int sf_drift_time_grew(double t0, double t1);
 

@@ -20,23 +20,70 @@ static const char *css =
     "img{max-width:100%;border:1px solid #ddd;margin:.5em 0}"
     ".pass{color:#1a7f37}.fail{color:#c62828}.error{color:#b26a00}";
 
-/* Colour the verdict words the Markdown writers emphasise. */
+/* Colour the verdict words the Markdown writers emphasise: a case's
+ * PASS / FAIL / ERROR, a claim's confirmed / contradicted / not decidable
+ * (the same three colours), optionally after a count ("**3 passed**"). */
+static const struct { const char *word, *cls; } verdicts[] = {
+    { "PASS", "pass" }, { "passed", "pass" }, { "confirmed", "pass" },
+    { "FAIL", "fail" }, { "contradicted", "fail" }, { "contradicted in part", "fail" },
+    { "ERROR", "error" }, { "not decidable", "error" }, { "not decidable at this N", "error" },
+};
+
+static const char *verdict_class(const char *inner, size_t len)
+{
+    while (len && ((*inner >= '0' && *inner <= '9') || *inner == ' ')) {
+        inner++;
+        len--;
+    }
+    for (size_t k = 0; k < sizeof verdicts / sizeof verdicts[0]; k++)
+        if (strlen(verdicts[k].word) == len && !strncmp(inner, verdicts[k].word, len))
+            return verdicts[k].cls;
+    return NULL;
+}
+
 static void write_body(FILE *f, const char *html)
 {
-    static const char *from[] = { "<strong>PASS</strong>", "<strong>FAIL</strong>", "<strong>ERROR</strong>" };
-    static const char *to[] = { "<strong class=\"pass\">PASS</strong>", "<strong class=\"fail\">FAIL</strong>",
-                                "<strong class=\"error\">ERROR</strong>" };
+    static const char open[] = "<strong>", close[] = "</strong>";
     const char *p = html;
     while (*p) {
-        int hit = -1;
-        for (int k = 0; k < 3; k++)
-            if (!strncmp(p, from[k], strlen(from[k]))) { hit = k; break; }
-        if (hit >= 0) {
-            fputs(to[hit], f);
-            p += strlen(from[hit]);
+        const char *end = strncmp(p, open, sizeof open - 1) ? NULL : strstr(p, close);
+        const char *cls = end ? verdict_class(p + sizeof open - 1, (size_t)(end - p) - (sizeof open - 1)) : NULL;
+        if (cls) {
+            fprintf(f, "<strong class=\"%s\">", cls);
+            p += sizeof open - 1;
         } else {
             fputc(*p++, f);
         }
+    }
+}
+
+static int word_char(char c)
+{
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9');
+}
+
+void sf_md_text(FILE *f, const char *s)
+{
+    for (const char *p = s; *p; p++) {
+        char c = *p, d = p[1];
+        int special;
+        if (c == '\n' || c == '\t' || c == '\r') {
+            fputc(' ', f);
+            continue;
+        }
+        if (c == '_')   /* intraword: cannot open or close emphasis */
+            special = !(p > s && word_char(p[-1]) && word_char(d));
+        else if (c == '<')   /* "<=" and "< 1" are text; "<a" could be a tag */
+            special = word_char(d) || d == '/' || d == '!' || d == '?';
+        else if (c == '&')   /* "&amp;" would be an entity */
+            special = word_char(d) || d == '#';
+        else if (c == ']')   /* "[N m]" is text; "[x](y)" and "[x][y]" are links */
+            special = d == '(' || d == '[' || d == ':';
+        else
+            special = strchr("\\`*|", c) != NULL;
+        if (special)
+            fputc('\\', f);
+        fputc(c, f);
     }
 }
 
@@ -84,7 +131,7 @@ int sf_html_write(const char *path, const char *title, const char *markdown,
     escape(f, title);
     fprintf(f, "</title>\n<style>%s</style>\n</head>\n<body>\n", css);
     write_body(f, html);
-    /* Broken-image marker read by the browser test (tests/browser). */
+    /* Broken-image marker read by the browser test (scripts/report-test.sh). */
     fputs("<script>window.addEventListener('load',function(){var b=0;"
           "document.querySelectorAll('img').forEach(function(i){if(!i.complete||i.naturalWidth===0)b++;});"
           "document.body.setAttribute('data-broken-images',String(b));"

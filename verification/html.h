@@ -6,10 +6,20 @@
 #define SF_HTML_H
 
 #include <stddef.h>
+#include <stdio.h>
 
 /* Render markdown to a standalone page at path (temporary name + rename).
  * Returns 0, or -1 with a message in err. */
 int sf_html_write(const char *path, const char *title, const char *markdown,
                   char *err, size_t errlen);
+
+/* Write generated text (a row's quantity, a claim, a key metric) into
+ * Markdown as literal text: no emphasis, link, code span, entity or raw
+ * HTML from its characters (a path with a star stays a path), '|'
+ * escaped for table cells, line breaks and tabs as spaces.  Only what
+ * could change the rendering is escaped, so the .md stays readable: an
+ * underscore inside a word (PV_x) cannot open emphasis, "<=" is no tag,
+ * a unit in brackets ([N m]) is no link. */
+void sf_md_text(FILE *f, const char *s);
 
 #endif

@@ -11,19 +11,6 @@
 #include <string.h>
 #include <unistd.h>
 
-/* Markdown table cells: no '|', no line breaks. */
-static void cell(FILE *f, const char *s)
-{
-    for (; *s; s++) {
-        if (*s == '|')
-            fputs("\\|", f);
-        else if (*s == '\n' || *s == '\t')
-            fputc(' ', f);
-        else
-            fputc(*s, f);
-    }
-}
-
 static void num_ci(FILE *f, const sf_claim_row *c)
 {
     if (!isfinite(c->measured)) {
@@ -40,9 +27,11 @@ static void num_ci(FILE *f, const sf_claim_row *c)
     }
 }
 
+/* Bold, so that the HTML colours it like a case verdict (html.c). */
 static const char *status_md(int s)
 {
-    return s == SF_CLAIM_CONFIRMED ? "confirmed" : s == SF_CLAIM_CONTRADICTED ? "**contradicted**" : "*not decidable at this N*";
+    return s == SF_CLAIM_CONFIRMED ? "**confirmed**" : s == SF_CLAIM_CONTRADICTED ? "**contradicted**"
+                                                                                : "**not decidable at this N**";
 }
 
 static void claim_row(FILE *f, const sf_claim_row *c, const char *link)
@@ -52,19 +41,21 @@ static void claim_row(FILE *f, const sf_claim_row *c, const char *link)
         fprintf(f, "[%s](%s) | ", c->id, link);
     else
         fprintf(f, "`%s` | ", c->id);
-    cell(f, c->text);
+    sf_md_text(f, c->text);
     fputs(" | ", f);
     num_ci(f, c);
     fprintf(f, " | %s | ", status_md(c->status));
-    cell(f, c->how);
+    sf_md_text(f, c->how);
     if (isfinite(c->alpha))
         fprintf(f, "; alpha = %.3g", c->alpha);
     fputs(" | ", f);
     /* a contradicted claim always says why (or that nobody has said yet) */
-    cell(f, *c->note ? c->note : c->status == SF_CLAIM_CONTRADICTED ? "**no explanation recorded**: not expected "
-                                                                       "at this tier; see the case report" : "");
+    if (*c->note)
+        sf_md_text(f, c->note);
+    else if (c->status == SF_CLAIM_CONTRADICTED)
+        fputs("**no explanation recorded**: not expected at this tier; see the case report", f);
     fputs(" | ", f);
-    cell(f, *c->defs ? c->defs : "—");
+    sf_md_text(f, *c->defs ? c->defs : "—");
     fputs(" |\n", f);
 }
 
@@ -160,10 +151,16 @@ static sf_claim_row *read_tsv(const char *root, const char *id, size_t *n)
     return v;
 }
 
-void sf_paper_index_section(FILE *f, const char *root, const sf_outcome *o, size_t n, int html)
+/* A count in the tally: bold (so coloured like a verdict in the HTML)
+ * only when it is not zero. */
+static void tally_count(FILE *f, size_t k, const char *what)
+{
+    fprintf(f, k ? "**%zu %s**" : "%zu %s", k, what);
+}
+
+void sf_paper_index_tally(FILE *f, const char *root, const sf_outcome *o, size_t n, int html)
 {
     size_t tot = 0, cnt[3] = { 0, 0, 0 };
-    int head = 0;
     for (size_t i = 0; i < n; i++) {
         size_t m;
         sf_claim_row *v = read_tsv(root, o[i].id, &m);
@@ -171,6 +168,25 @@ void sf_paper_index_section(FILE *f, const char *root, const sf_outcome *o, size
             tot++;
             cnt[v[j].status < 0 || v[j].status > 2 ? 2 : v[j].status]++;
         }
+        free(v);
+    }
+    if (!tot)
+        return;
+    fprintf(f, "- The paper's claims in this run (%zu): ", tot);
+    tally_count(f, cnt[SF_CLAIM_CONFIRMED], "confirmed");
+    fputs(", ", f);
+    tally_count(f, cnt[SF_CLAIM_CONTRADICTED], "contradicted");
+    fputs(", ", f);
+    tally_count(f, cnt[SF_CLAIM_UNDECIDED], "not decidable");
+    fprintf(f, " at this N; figure by figure: [paper%s](paper%s)\n", html ? ".html" : ".md", html ? ".html" : ".md");
+}
+
+void sf_paper_index_section(FILE *f, const char *root, const sf_outcome *o, size_t n, int html)
+{
+    int head = 0;
+    for (size_t i = 0; i < n; i++) {
+        size_t m;
+        sf_claim_row *v = read_tsv(root, o[i].id, &m);
         for (size_t j = 0; j < m; j++) {
             if (v[j].status == SF_CLAIM_CONFIRMED)
                 continue;
@@ -187,10 +203,6 @@ void sf_paper_index_section(FILE *f, const char *root, const sf_outcome *o, size
         }
         free(v);
     }
-    if (tot)
-        fprintf(f, "\n**Claims of the paper in this run: %zu** -- %zu confirmed, %zu contradicted, %zu not decidable "
-                   "at this N. Figure by figure: [paper%s](paper%s).\n",
-                tot, cnt[0], cnt[1], cnt[2], html ? ".html" : ".md", html ? ".html" : ".md");
 }
 
 /* The Sec. 2.4 (and Fig. 9 / 14) claims are deterministic facts of the
@@ -201,7 +213,7 @@ static const char *sec24 =
     "bounds) by the cases named, which run in the quick tier.\n\n"
     "| the paper says | gated by | verdict |\n|---|---|---|\n"
     "| The three-variable criterion: slip ends at lambda < eps_lambda with an admissible stick wrench; "
-    "stick ends when the stick force leaves the limit surface (Eqs. 9-14) | cases/dynamics/*, cases/deterministic/* "
+    "stick ends when the stick force leaves the limit surface (Eqs. 9-14) | `cases/dynamics/*`, `cases/deterministic/*` "
     "(closed-form cycles, eps-corrected cycle) | confirmed |\n"
     "| With zero stick torque the limit surface collapses to its equatorial circle (Fig. 5) | "
     "cases/surface/section-vs-circle, cases/dynamics/exact-section-vs-circle | **contradicted in part**: the exact "
@@ -259,7 +271,8 @@ int sf_paper_report(const sf_run_meta *meta, const sf_outcome *o, size_t n, char
         }
         fprintf(f, "# The paper's claims, figure by figure\n\n"
                    "Hu, Batou & Ouyang (2023), Secs. 2.4, 3, 4 and 5, against this run (tier %s, seeds %s). "
-                   "Each claim is a one-sided test at the stated alpha: **confirmed** when the data reject the "
+                   "Each claim is a one-sided test at the stated alpha (its case's alpha split over the claims the case gates, "
+                   "Bonferroni, so that the tier's false-alarm budget holds): **confirmed** when the data reject the "
                    "opposite of the claim, **contradicted** when they reject the claim, otherwise *not decidable at "
                    "this N*. A claim about a magnitude (\"about 40%%\", \"tends to 0.2\") is an equivalence test "
                    "against the margin the text names. The QoI definitions the paper leaves open (DESIGN.md sec. 3) "
@@ -270,14 +283,15 @@ int sf_paper_report(const sf_run_meta *meta, const sf_outcome *o, size_t n, char
                    "- Paper tier (`make verify TIER=paper`): T = 100 s, 100 realisations per point, eps_lambda = 1e-3, "
                    "the grids of Sec. 3 (l/R 0.01 .. 1000: 11 values, v_b 0.1 .. 0.6 m/s, mean COF 0.2 .. 1 at CV = 0.2), Fig. 15 "
                    "at l/R = 0.1, 1, 10 with 10 realisations each, Fig. 3's three fields. Quick tier: the same claims "
-                   "at N = 6 .. 56 (1000 at the one-variable limit), T = 20 .. 40 s, each gate sized for a power of 0.99 "
-                   "(measured over fresh seeds: the cases' prose and reports/false-alarm).\n"
+                   "at N = 6 .. 56 (1000 at the one-variable limit), T = 20 .. 40 s; each gate's report gives the minimum "
+                   "detectable effect at power 0.99 at its N beside this run's effect (a gate that demands a verdict "
+                   "stays within its alpha only where the true effect is at least that; fresh seeds: reports/false-alarm).\n"
                    "- l/R runs from 1e-2 as in the paper: below l/R = 0.044 the accuracy plan computes the wrench from "
                    "the COF averaged over its Cartesian cells (cof_model = cell_average: an effective Gaussian field "
-                   "with the exact box-averaged covariance; cases/plan/cellavg-*). That is a model of the cell "
+                   "with the exact box-averaged covariance; `cases/plan/cellavg-*`). That is a model of the cell "
                    "averages, not of the point field: its covariance is exact, its marginal Gaussian (the lognormal's "
                    "mean and variance); its predicted QoI error (CV max(0.3 l/R, 0.0125) (32/cells)^2) is checked against "
-                   "the point model on the same fine field down to l/R = 0.01 (cases/plan/cellavg-plan-qoi-tol*). The quick tier's small-l/R point stays at 0.25.\n"
+                   "the point model on the same fine field down to l/R = 0.01 (`cases/plan/cellavg-plan-qoi-tol*`). The quick tier's small-l/R point stays at 0.25.\n"
                    "- The paper's Figs. 15 and 16 show one realisation per value; we test their claims over "
                    "realisations (the plots still show one).\n"
                    "- Each claim's sentence is turned into a testable statement (the \"read:\" part of its text); "
@@ -319,7 +333,7 @@ int sf_paper_report(const sf_run_meta *meta, const sf_outcome *o, size_t n, char
                     head = 1;
                 }
                 fprintf(f, "| %s | `%s` | %s | ", o[i].id, v[j].id, status_md(v[j].status));
-                cell(f, v[j].defs + strlen("DEPENDS ON THE DEFINITION: "));
+                sf_md_text(f, v[j].defs + strlen("DEPENDS ON THE DEFINITION: "));
                 fputs(" |\n", f);
             }
             free(v);

@@ -11,7 +11,7 @@
 #define SF_PAPER_H
 
 #include <stdio.h>
-#include "report.h"
+#include "outcome.h"
 #include "result.h"
 
 /* Markdown section "Claims of the paper" for a case report (nothing when
@@ -21,8 +21,13 @@ void sf_paper_case_claims(FILE *f, const sf_result *r);
 /* <dir>/claims.tsv (nothing when there is no claim). 0 or -1. */
 int sf_paper_write_tsv(const char *dir, const sf_result *r);
 
-/* Index section: the link to paper.md/.html and every claim that is not
- * confirmed, read from the cases' claims.tsv.  Nothing without claims. */
+/* The index's opening line on the claims, read from the cases'
+ * claims.tsv: how many are confirmed, contradicted, not decidable, and
+ * the link to paper.md/.html.  Nothing without claims. */
+void sf_paper_index_tally(FILE *f, const char *root, const sf_outcome *o, size_t n, int html);
+
+/* Index section: every claim that is not confirmed.  Nothing when all
+ * are. */
 void sf_paper_index_section(FILE *f, const char *root, const sf_outcome *o, size_t n, int html);
 
 /* <root>/paper.md and paper.html when any run case holds claims. */

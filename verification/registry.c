@@ -15,6 +15,7 @@ static const sf_check_def *const families[] = {
     sf_checks_limits,
     sf_checks_validation,
     sf_checks_plan,
+    sf_checks_design,
     sf_checks_cellavg,
     sf_checks_mms,
     sf_checks_cofstrip,

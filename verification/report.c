@@ -17,11 +17,6 @@
 #include <fftw3.h>
 #include <gsl/gsl_version.h>
 
-const char *sf_verdict_name(int v)
-{
-    return v == SF_VERDICT_PASS ? "PASS" : v == SF_VERDICT_FAIL ? "FAIL" : "ERROR";
-}
-
 static const char *vv_name(int vv)
 {
     return vv == 0 ? "code verification" : vv == 1 ? "solution verification" : "validation";
@@ -72,13 +67,6 @@ static void fmt_num(char *buf, size_t n, double x)
         snprintf(buf, n, "%.6g", x);
 }
 
-/* Markdown table cells must not contain '|'. */
-static void cell(FILE *f, const char *s)
-{
-    for (; *s; s++)
-        fputs(*s == '|' ? "\\|" : (char[2]){ *s, 0 }, f);
-}
-
 /* A one-case run in its own folder: into the run's own root it would
  * replace the index and results.json with a one-case summary. */
 static void write_rerun(FILE *f, const sf_case *c)
@@ -87,14 +75,16 @@ static void write_rerun(FILE *f, const sf_case *c)
                "`reports/rerun/%s/report.md`)\n", c->path, c->id);
 }
 
-/* Write into <root>/<family>/.<name>.tmpPID, then swap it in. */
+/* Write into <root>/<family>/.<name>.tmpPID, then swap it in.  `fresh`
+ * empties it first; otherwise what sf_report_plots staged there stays. */
 static int open_tmp_dir(const char *root, const char *id, char *tmp, size_t tn,
-                        char *fin, size_t fn)
+                        char *fin, size_t fn, int fresh)
 {
     const char *slash = strchr(id, '/');
     snprintf(fin, fn, "%s/%s", root, id);
     snprintf(tmp, tn, "%s/%.*s/.%s.tmp%ld", root, (int)(slash - id), id, slash + 1, (long)getpid());
-    remove_dir(tmp);
+    if (fresh)
+        remove_dir(tmp);
     return sf_mkdirs(tmp);
 }
 
@@ -139,17 +129,24 @@ static void write_header(FILE *f, const sf_case *c, const sf_outcome *o)
     fprintf(f, "## Scene\n\n```scene\n%s```\n\n", c->scene_text);
 }
 
+int sf_report_plots(const char *root, const sf_case *c, sf_result *r, char *err, size_t errlen)
+{
+    char tmp[1024], fin[1024];
+    if (open_tmp_dir(root, c->id, tmp, sizeof tmp, fin, sizeof fin, 1) != 0) {
+        snprintf(err, errlen, "cannot create %s: %s", tmp, strerror(errno));
+        return SF_EIO;
+    }
+    return sf_result_render_plots(r, tmp, err, errlen) < 0 ? SF_EIO : SF_SUCCESS;
+}
+
 int sf_report_case(const char *root, const sf_case *c, const sf_result *r,
                    const sf_outcome *o, const char *error, char *err, size_t errlen)
 {
     char tmp[1024], fin[1024];
-    if (open_tmp_dir(root, c->id, tmp, sizeof tmp, fin, sizeof fin) != 0) {
+    if (open_tmp_dir(root, c->id, tmp, sizeof tmp, fin, sizeof fin, 0) != 0) {
         snprintf(err, errlen, "cannot create %s: %s", tmp, strerror(errno));
         return SF_EIO;
     }
-    char perr[256] = "";
-    int plots_ok = sf_result_render_plots(r, tmp, perr, sizeof perr) == 0;
-
     char *md = NULL;
     size_t mdlen = 0;
     FILE *f = open_memstream(&md, &mdlen);
@@ -165,9 +162,9 @@ int sf_report_case(const char *root, const sf_case *c, const sf_result *r,
         fmt_num(m, sizeof m, row->measured);
         fmt_num(e, sizeof e, row->expected);
         fputs("| ", f);
-        cell(f, row->quantity);
+        sf_md_text(f, row->quantity);
         fprintf(f, " | %s | %s | ", m, e);
-        cell(f, row->criterion);
+        sf_md_text(f, row->criterion);
         fprintf(f, " | %s |\n", row->pass ? "yes" : "**no**");
     }
     if (sf_result_nrows(r) == 0)
@@ -180,11 +177,14 @@ int sf_report_case(const char *root, const sf_case *c, const sf_result *r,
         fprintf(f, "## Findings\n\n%s\n", sf_result_notes(r));
     if (sf_result_nplots(r)) {
         fprintf(f, "## Plots\n\n");
-        if (!plots_ok)
-            fprintf(f, "**Plots could not be rendered:** %s\n\n", perr);
         for (size_t i = 0; i < sf_result_nplots(r); i++) {
             const sf_plot *p = sf_result_get_plot(r, i);
-            fprintf(f, "![%s](%s.png)\n\n", sf_plot_title(p), sf_plot_stem(p));
+            char png[1200];
+            snprintf(png, sizeof png, "%s/%s.png", tmp, sf_plot_stem(p));
+            if (access(png, F_OK) == 0)
+                fprintf(f, "![%s](%s.png)\n\n", sf_plot_title(p), sf_plot_stem(p));
+            else
+                fprintf(f, "**Plot `%s` was not rendered** (see the error above).\n\n", sf_plot_stem(p));
         }
     }
     if (c->prose_after && *c->prose_after)
@@ -204,10 +204,6 @@ int sf_report_case(const char *root, const sf_case *c, const sf_result *r,
         snprintf(err, errlen, "cannot rename %s to %s: %s", tmp, fin, strerror(errno));
         return SF_EIO;
     }
-    if (!plots_ok) {
-        snprintf(err, errlen, "%s", perr);
-        return SF_EIO;
-    }
     return SF_SUCCESS;
 }
 
@@ -215,7 +211,7 @@ int sf_report_crash(const char *root, const sf_case *c, const sf_outcome *o,
                     char *err, size_t errlen)
 {
     char tmp[1024], fin[1024];
-    if (open_tmp_dir(root, c->id, tmp, sizeof tmp, fin, sizeof fin) != 0) {
+    if (open_tmp_dir(root, c->id, tmp, sizeof tmp, fin, sizeof fin, 1) != 0) {
         snprintf(err, errlen, "cannot create %s", tmp);
         return SF_EIO;
     }
@@ -264,6 +260,7 @@ static void write_index(FILE *f, const sf_run_meta *meta, const sf_outcome *o, s
                         size_t np, size_t nf, size_t ne, const char *page)
 {
     fprintf(f, "# slipfield verification report\n\n");
+    sf_paper_index_tally(f, meta->root, o, n, strcmp(page, "report.html") == 0);
     fprintf(f, "- Cases: **%zu passed**, %zu failed, %zu errors, %zu skipped (of %zu selected)\n",
             np, nf, ne, meta->skipped, n + meta->skipped);
     fprintf(f, "- Tier: %s; seeds: %s; total wall time: %.1f s\n", meta->tier_name, meta->seed_note,
@@ -288,9 +285,10 @@ static void write_index(FILE *f, const sf_run_meta *meta, const sf_outcome *o, s
         else snprintf(m, sizeof m, "%.3g", o[i].margin);
         fprintf(f, "| [%s](%s/%s) | %s | %s | **%s** | %s%s | ", o[i].id, o[i].id, page, o[i].family,
                 vv_name(o[i].vv), sf_verdict_name(o[i].verdict), m, o[i].near_edge ? " *near the edge*" : "");
-        cell(f, o[i].key);
+        sf_md_text(f, o[i].key);
         fprintf(f, " | %.2f |\n", o[i].seconds);
     }
+    sf_budget_index_section(f, meta->tier_name, o, n, page);
     sf_paper_index_section(f, meta->root, o, n, strcmp(page, "report.html") == 0);
 }
 

@@ -173,6 +173,7 @@ int sf_check_pvalue(sf_result *r, const char *test, double p, double alpha, size
     row->ratio = p > 0 ? alpha / p : INFINITY;
     row->pass = p >= alpha;
     set_limit(row, SF_ROW_PVALUE, alpha, n);
+    row->alpha = alpha;
     return row->pass;
 }
 
@@ -185,6 +186,19 @@ int sf_check_true(sf_result *r, const char *q, int ok, const char *found)
     row->pass = ok != 0;
     set_limit(row, SF_ROW_TRUE, NAN, 0);
     return row->pass;
+}
+
+void sf_result_mark_statistical(sf_result *r, double alpha)
+{
+    if (r->nrows)
+        r->rows[r->nrows - 1].alpha = alpha;
+}
+
+int sf_check_verdict(sf_result *r, const char *q, int ok, const char *found, double alpha)
+{
+    int pass = sf_check_true(r, q, ok, found);
+    sf_result_mark_statistical(r, alpha);
+    return pass;
 }
 
 void sf_result_data(sf_result *r, const char *what, size_t n, double *x)
@@ -412,22 +426,31 @@ static int finite_for(const sf_plot *p, double x, double y)
     return 1;
 }
 
-static void write_plot(FILE *g, const sf_plot *p, const char *path)
+/* Write one plot's gnuplot commands.  A single x value (one sweep point)
+ * gets an x range around it, and its one-point lines and bands are drawn
+ * as points and error bars (a line through one point draws nothing).
+ * `why` gets a reason when the plot would be empty, or a series would
+ * draw nothing: a check that plots nothing shows no evidence. */
+static void write_plot(FILE *g, const sf_plot *p, const char *path, char *why, size_t whylen)
 {
+    why[0] = '\0';
     fprintf(g, "reset session\n%s", sf_plot_style);
     fprintf(g, "set output \"%s\"\n", path);
     fprintf(g, "set title \"%s\"\nset xlabel \"%s\"\nset ylabel \"%s\"\n",
             p->title, p->xlabel, p->ylabel);
     fprintf(g, p->logx ? "set logscale x\nset format x '%%.0e'\n" : "unset logscale x\n");
     fprintf(g, p->logy ? "set logscale y\nset format y '%%.0e'\n" : "unset logscale y\n");
-    int any = 0;
-    double ylo = INFINITY, yhi = -INFINITY;
+    double xlo = INFINITY, xhi = -INFINITY, ylo = INFINITY, yhi = -INFINITY;
     for (size_t j = 0; j < p->ns; j++) {
         const series *s = &p->s[j];
         for (size_t i = 0; i < s->n; i++)
             if (s->style == -2 ? finite_for(p, 1, s->y[i]) : finite_for(p, s->x[i], s->y[i])) {
                 ylo = fmin(ylo, s->y[i]);
                 yhi = fmax(yhi, s->y[i]);
+                if (s->style != -2) {
+                    xlo = fmin(xlo, s->x[i]);
+                    xhi = fmax(xhi, s->x[i]);
+                }
                 if (s->style == -1 && finite_for(p, s->x[i], s->y2[i])) {
                     ylo = fmin(ylo, s->y2[i]);
                     yhi = fmax(yhi, s->y2[i]);
@@ -440,10 +463,20 @@ static void write_plot(FILE *g, const sf_plot *p, const char *path)
         double mid = 0.5 * (ylo + yhi), h = fmax(1e-3 * fabs(mid), 1e-12);
         fprintf(g, "set yrange [%.10g:%.10g]\n", mid - h, mid + h);
     }
+    int one_x = isfinite(xlo) && xhi - xlo <= 1e-9 * fmax(fabs(xlo), fabs(xhi));
+    if (one_x) {
+        double mid = 0.5 * (xlo + xhi), h = fabs(mid) > 0 ? 0.5 * fabs(mid) : 1;
+        if (p->logx)
+            fprintf(g, "set xrange [%.10g:%.10g]\n", mid / 3, mid * 3);
+        else
+            fprintf(g, "set xrange [%.10g:%.10g]\n", mid - h, mid + h);
+    }
+    size_t *written = xrealloc(NULL, (p->ns + 1) * sizeof *written);
+    int any = 0;
     for (size_t j = 0; j < p->ns; j++) {
         const series *s = &p->s[j];
         fprintf(g, "$d%zu << EOD\n", j);
-        size_t written = 0;
+        written[j] = 0;
         for (size_t i = 0; i < s->n; i++) {
             if (s->style == -2) break;
             if (!finite_for(p, s->x[i], s->y[i])) continue;
@@ -453,15 +486,21 @@ static void write_plot(FILE *g, const sf_plot *p, const char *path)
             } else {
                 fprintf(g, "%.10g %.10g\n", s->x[i], s->y[i]);
             }
-            written++;
+            written[j]++;
         }
         fprintf(g, "EOD\n");
-        if (written || s->style == -2)
+        if (written[j] && s->style != -2)
             any = 1;
+        else if (s->style != -2 && !*why)
+            snprintf(why, whylen, "series '%.60s' has no point to draw (%zu values, none finite%s)", s->label, s->n,
+                     p->logx || p->logy ? " and positive on the log axis" : "");
     }
     if (!any) {
-        fprintf(g, "set label 1 \"no finite data to plot\" at graph 0.5, graph 0.5 center\n"
+        if (!*why)
+            snprintf(why, whylen, "no finite data to plot");
+        fprintf(g, "unset logscale\nset label 1 \"no finite data to plot\" at graph 0.5, graph 0.5 center\n"
                    "plot [0:1][0:1] NaN title ''\n");
+        free(written);
         return;
     }
     fprintf(g, "plot ");
@@ -472,12 +511,19 @@ static void write_plot(FILE *g, const sf_plot *p, const char *path)
             const series *s = &p->s[j];
             int isband = s->style == -1;
             if ((pass == 0) != isband) continue;
-            if (s->style != -2 && s->n == 0) continue;
+            if (s->style != -2 && written[j] == 0) continue;
             if (!first) fprintf(g, ", \\\n     ");
             first = 0;
+            /* a line through one point is invisible: mark the point */
+            const char *lines = written[j] == 1 ? "linespoints" : "lines";
             switch (s->style) {
             case -1:
-                fprintf(g, "$d%zu using 1:2:3 with filledcurves fc rgb '#bbbbbb' fs transparent solid 0.5 title \"%s\"", j, s->label);
+                if (written[j] == 1)
+                    fprintf(g, "$d%zu using 1:(($2+$3)/2):2:3 with yerrorbars lc rgb '#888888' pt 0 title \"%s\"", j,
+                            s->label);
+                else
+                    fprintf(g, "$d%zu using 1:2:3 with filledcurves fc rgb '#bbbbbb' fs transparent solid 0.5 title \"%s\"",
+                            j, s->label);
                 break;
             case -2:
                 fprintf(g, "%.10g with lines dt 2 lw 1.5 lc rgb '#555555' title \"%s\"", s->y[0], s->label);
@@ -489,26 +535,54 @@ static void write_plot(FILE *g, const sf_plot *p, const char *path)
                 fprintf(g, "$d%zu using 1:2 with linespoints title \"%s\"", j, s->label);
                 break;
             case SF_STYLE_STEPS:
-                fprintf(g, "$d%zu using 1:2 with steps title \"%s\"", j, s->label);
+                fprintf(g, "$d%zu using 1:2 with %s title \"%s\"", j, written[j] == 1 ? "points" : "steps", s->label);
                 break;
             case SF_STYLE_DASHED:
-                fprintf(g, "$d%zu using 1:2 with lines dt 2 lw 2 lc rgb 'black' title \"%s\"", j, s->label);
+                fprintf(g, "$d%zu using 1:2 with %s dt 2 lw 2 lc rgb 'black'%s title \"%s\"", j, lines,
+                        written[j] == 1 ? " pt 6 ps 1.5" : "", s->label);
                 break;
             default:
-                fprintf(g, "$d%zu using 1:2 with lines title \"%s\"", j, s->label);
+                fprintf(g, "$d%zu using 1:2 with %s title \"%s\"", j, lines, s->label);
             }
         }
     }
     fprintf(g, "\n");
+    free(written);
 }
 
-int sf_result_render_plots(const sf_result *r, const char *dir, char *err, size_t errlen)
+/* Read gnuplot's messages (its stderr, in a temporary file) back: each
+ * plot's script starts by printing a marker, so a message belongs to the
+ * plot after the last marker.  msg[i] gets plot i's first message. */
+static void read_messages(FILE *e, size_t nplots, char (*msg)[160])
+{
+    static const char mark[] = "@sf-plot ";
+    char line[512];
+    size_t cur = 0;
+    rewind(e);
+    while (fgets(line, sizeof line, e)) {
+        line[strcspn(line, "\r\n")] = '\0';
+        if (!strncmp(line, mark, sizeof mark - 1)) {
+            cur = (size_t)strtoul(line + sizeof mark - 1, NULL, 10);
+            continue;
+        }
+        /* a message about a command echoes it ("gnuplot> plot ...") and
+         * marks the place ("^") before saying what is wrong */
+        char *t = line + strspn(line, " \t^");
+        if (*t && strncmp(t, "gnuplot>", 8) && cur < nplots && !msg[cur][0])
+            snprintf(msg[cur], sizeof msg[cur], "%s", t);
+    }
+}
+
+int sf_result_render_plots(sf_result *r, const char *dir, char *err, size_t errlen)
 {
     if (r->nplots == 0)
         return 0;
+    FILE *e = tmpfile();   /* gnuplot's stderr: a file cannot fill up and stall it */
     int fd[2];
-    if (pipe(fd) != 0) {
-        snprintf(err, errlen, "pipe: %s", strerror(errno));
+    if (!e || pipe(fd) != 0) {
+        snprintf(err, errlen, "%s: %s", e ? "pipe" : "tmpfile", strerror(errno));
+        if (e)
+            fclose(e);
         return -1;
     }
     pid_t pid = fork();
@@ -516,12 +590,14 @@ int sf_result_render_plots(const sf_result *r, const char *dir, char *err, size_
         snprintf(err, errlen, "fork: %s", strerror(errno));
         close(fd[0]);
         close(fd[1]);
+        fclose(e);
         return -1;
     }
     if (pid == 0) {
         /* gnuplot reads the script on stdin; no shell, no interpolated
          * command line */
         dup2(fd[0], 0);
+        dup2(fileno(e), 2);
         close(fd[0]);
         close(fd[1]);
         execlp("gnuplot", "gnuplot", (char *)NULL);
@@ -532,31 +608,63 @@ int sf_result_render_plots(const sf_result *r, const char *dir, char *err, size_
     if (!g) {
         close(fd[1]);
         waitpid(pid, NULL, 0);
+        fclose(e);
         snprintf(err, errlen, "fdopen failed");
         return -1;
     }
     char path[1024];
+    char (*msg)[160] = xrealloc(NULL, r->nplots * sizeof *msg);
     for (size_t i = 0; i < r->nplots; i++) {
         snprintf(path, sizeof path, "%s/%s.png.tmp", dir, r->plots[i]->stem);
-        write_plot(g, r->plots[i], path);
+        fprintf(g, "print \"@sf-plot %zu\"\n", i);   /* print writes to stderr */
+        write_plot(g, r->plots[i], path, msg[i], sizeof msg[i]);
     }
     fprintf(g, "unset output\nexit\n");
     fclose(g);
     int status = 0;
     waitpid(pid, &status, 0);
+    /* our own reasons first: gnuplot's message on an empty plot is vaguer */
+    char (*said)[160] = xrealloc(NULL, r->nplots * sizeof *said);
+    memset(said, 0, r->nplots * sizeof *said);
+    read_messages(e, r->nplots, said);
+    fclose(e);
+    for (size_t i = 0; i < r->nplots; i++)
+        if (!msg[i][0])
+            memcpy(msg[i], said[i], sizeof msg[i]);
+    free(said);
     if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-        snprintf(err, errlen, "gnuplot failed (status %d)%s", WIFEXITED(status) ? WEXITSTATUS(status) : -1,
-                 WIFEXITED(status) && WEXITSTATUS(status) == 127 ? ": gnuplot not found (run 'make deps')" : "");
+        /* gnuplot stops at an error: name the plot it stopped on */
+        size_t k = 0;
+        while (k + 1 < r->nplots && !msg[k][0])
+            k++;
+        snprintf(err, errlen, "gnuplot failed (status %d)%s%s%s%s", WIFEXITED(status) ? WEXITSTATUS(status) : -1,
+                 WIFEXITED(status) && WEXITSTATUS(status) == 127 ? ": gnuplot not found (run 'make deps')" : "",
+                 msg[k][0] ? " on plot " : "", msg[k][0] ? r->plots[k]->stem : "", msg[k][0] ? ": " : "");
+        size_t len = strlen(err);
+        if (msg[k][0] && len + 1 < errlen)
+            snprintf(err + len, errlen - len, "%s", msg[k]);
+        free(msg);
         return -1;
     }
+    int warned = 0;
     for (size_t i = 0; i < r->nplots; i++) {
         char fin[1024];
         snprintf(path, sizeof path, "%s/%s.png.tmp", dir, r->plots[i]->stem);
         snprintf(fin, sizeof fin, "%s/%s.png", dir, r->plots[i]->stem);
         if (rename(path, fin) != 0) {
             snprintf(err, errlen, "plot %s was not written", fin);
+            free(msg);
             return -1;
         }
+        if (msg[i][0]) {
+            /* a message means a misdrawn plot: a failing row names it */
+            char q[160];
+            snprintf(q, sizeof q, "plot %s: drawn cleanly (no gnuplot message, no empty series)", r->plots[i]->stem);
+            sf_check_true(r, q, 0, msg[i]);
+            if (!warned++)
+                snprintf(err, errlen, "plot %s: %s", r->plots[i]->stem, msg[i]);
+        }
     }
-    return 0;
+    free(msg);
+    return warned;
 }

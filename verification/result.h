@@ -27,6 +27,9 @@ typedef struct {
     int test;
     double limit;
     size_t n;
+    /* > 0: a statistical row (a p-value, a claim's verdict) and the share
+     * of the case's alpha it spends; the runner may replicate it (budget.h) */
+    double alpha;
 } sf_row;
 
 /* sf_row.test: abs, rel, le, ge are exact rows (a tolerance or bound),
@@ -45,6 +48,13 @@ int sf_check_ge(sf_result *r, const char *quantity, double measured, double boun
 int sf_check_pvalue(sf_result *r, const char *test, double p, double alpha, size_t n);
 /* A boolean property with a short explanation of what was found. */
 int sf_check_true(sf_result *r, const char *quantity, int ok, const char *found);
+/* The same for a statistical verdict (a claim confirmed or contradicted by
+ * a test at alpha): a boolean row that spends alpha of the case's budget. */
+int sf_check_verdict(sf_result *r, const char *quantity, int ok, const char *found, double alpha);
+/* Mark the last row statistical: it decides a test at alpha (e.g. a
+ * p-value against a bound made with sf_check_le), so it spends alpha of
+ * the case's budget and may be replicated (budget.h). */
+void sf_result_mark_statistical(sf_result *r, double alpha);
 
 /* Non-finite values fail (issue 13).  The result counts every NaN/Inf
  * among its rows' measured values and its plotted series (the plots are
@@ -125,7 +135,11 @@ const char *sf_plot_stem(const sf_plot *p);
 const char *sf_plot_title(const sf_plot *p);
 
 /* Render all plots of r into dir (PNG via gnuplot, through a pipe; files
- * written under a temporary name and renamed).  Returns 0 on success. */
-int sf_result_render_plots(const sf_result *r, const char *dir, char *err, size_t errlen);
+ * written under a temporary name and renamed).  A plot that gnuplot warns
+ * about (its stderr is read back, plot by plot), or that would be empty
+ * or hold a series with no point to draw, adds a failing row naming it:
+ * render before the verdict.  Returns 0, the number of such plots (err:
+ * the first), or -1 when gnuplot could not run (err says why). */
+int sf_result_render_plots(sf_result *r, const char *dir, char *err, size_t errlen);
 
 #endif

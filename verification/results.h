@@ -26,7 +26,7 @@
 #define SF_RESULTS_H
 
 #include "case.h"
-#include "report.h"
+#include "outcome.h"
 #include "result.h"
 
 #include <stddef.h>

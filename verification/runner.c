@@ -2,7 +2,9 @@
  * time-out in one is that case's failure and the rest still run), write
  * the reports and gate on the verdicts. */
 #include "runner.h"
+#include "budget.h"
 #include "case.h"
+#include "casetime.h"
 #include "drift.h"
 #include "registry.h"
 #include "paper.h"
@@ -42,7 +44,9 @@ static void usage(FILE *f)
           "                      paper's settings, reports/paper.md)\n"
           "  --reports DIR       report folder (default: reports)\n"
           "  --jobs N            cases run in parallel (default 1)\n"
-          "  --timeout S         per-case time limit in seconds (default 900)\n"
+          "  --timeout S         per-case wall-time limit in seconds (default 900); without it each\n"
+          "                      case also gets a CPU-time limit of 20x its recorded CPU time\n"
+          "                      (cases/times.tsv), at least 60 s\n"
           "  --seed N|random     override every case's seed (mixed with the case id; not pin_seed cases)\n"
           "  --alternative A     power run: the data generator (never the oracle) draws under\n"
           "                      A = KEY*FACTOR or KEY+DELTA, or 'scene': each case's power_alt\n"
@@ -101,10 +105,33 @@ static void fill_outcome(sf_outcome *o, const sf_case *c)
     o->seed = c->scene.seed;
     snprintf(o->check, sizeof o->check, "%s", c->spec.check);
     o->margin = NAN;
+    sf_budget_entry_init(&o->budget, c);
+}
+
+/* Run the check; a case that failed only in suspect statistical rows
+ * runs once more on a fresh stream and the replication's result replaces
+ * the first (budget.h).  Records in *e the statistical rows of the result
+ * kept.  Returns the check's status. */
+static int run_check(const sf_case *c, const sf_check_def *d, sf_result **r, sf_budget_entry *e)
+{
+    int rc = d->fn(c, *r);
+    if (!rc && sf_budget_suspect(c, *r)) {
+        sf_case c2 = *c;   /* shallow: the check only reads it */
+        c2.scene.seed = sf_budget_replica_seed(c->scene.seed);
+        char note[2048];
+        sf_budget_replica_note(*r, c->scene.seed, c2.scene.seed, note, sizeof note);
+        sf_result_free(*r);
+        *r = sf_result_alloc();
+        sf_note(*r, "%s", note);
+        e->replicated = 1;
+        rc = d->fn(&c2, *r);
+    }
+    sf_budget_entry_rows(e, *r);
+    return rc;
 }
 
 /* Child: run the check, write the report, send one line to the parent. */
-static void run_child(const sf_case *c, const char *root, int fd, unsigned timeout)
+static void run_child(const sf_case *c, const char *root, int fd, unsigned timeout, unsigned cpu_limit)
 {
     /* die with the runner: a killed `make verify` leaves no case running
        on to write a report nobody asked for any more */
@@ -112,6 +139,11 @@ static void run_child(const sf_case *c, const char *root, int fd, unsigned timeo
     if (getppid() == 1)
         _exit(SF_EXIT_INTERNAL);
     alarm(timeout);
+    if (cpu_limit) {
+        /* SIGXCPU at the limit, SIGKILL a little later if it is caught */
+        struct rlimit rl = { cpu_limit, (rlim_t)cpu_limit + 5 };
+        setrlimit(RLIMIT_CPU, &rl);
+    }
     sf_outcome o;
     fill_outcome(&o, c);
     const sf_check_def *d = sf_check_find(c->spec.check);
@@ -120,14 +152,18 @@ static void run_child(const sf_case *c, const char *root, int fd, unsigned timeo
         sf_note(r, "**Power run:** the data generator draws under the alternative `%s` (the oracle does not): "
                    "this run should FAIL.\n", c->alternative);
     double t0 = now();
-    int rc = d->fn(c, r);
+    int rc = run_check(c, d, &r, &o.budget);
     o.seconds = now() - t0;
-    char msg[256] = "";
+    size_t nrows = sf_result_nrows(r);   /* the check's own rows */
+    /* the plots before the verdict: a misdrawn one is a failing row */
+    char perr[256] = "";
+    int prc = sf_report_plots(root, c, r, perr, sizeof perr);
+    char msg[300] = "";
     if (rc) {
         snprintf(msg, sizeof msg, "the check could not complete: %s", sf_strerror(rc));
         o.verdict = SF_VERDICT_ERROR;
         snprintf(o.key, sizeof o.key, "%s", msg);
-    } else if (sf_result_nrows(r) == 0) {
+    } else if (nrows == 0) {
         o.verdict = SF_VERDICT_ERROR;
         snprintf(o.key, sizeof o.key, "the check produced no row (it cannot fail, so it cannot pass)");
     } else if (sf_result_nplots(r) == 0) {
@@ -135,6 +171,10 @@ static void run_child(const sf_case *c, const char *root, int fd, unsigned timeo
            a defect like a check without a row (issue 16) */
         o.verdict = SF_VERDICT_ERROR;
         snprintf(o.key, sizeof o.key, "the check produced no plot (a report must show its evidence)");
+    } else if (prc != SF_SUCCESS) {
+        snprintf(msg, sizeof msg, "plots not rendered: %s", perr);
+        o.verdict = SF_VERDICT_ERROR;
+        snprintf(o.key, sizeof o.key, "%s", msg);
     } else {
         sf_result_gate_nonfinite(r);
         o.verdict = sf_result_passed(r) ? SF_VERDICT_PASS : SF_VERDICT_FAIL;
@@ -147,8 +187,9 @@ static void run_child(const sf_case *c, const char *root, int fd, unsigned timeo
         snprintf(o.key, sizeof o.key, "report not written: %.280s", err);
     }
     sf_result_free(r);
-    char line[512];
-    int n = snprintf(line, sizeof line, "%d\t%.6f\t%s\n", o.verdict, o.seconds, o.key);
+    char line[600], be[96];
+    sf_budget_entry_format(&o.budget, be, sizeof be);
+    int n = snprintf(line, sizeof line, "%d\t%.6f\t%s\t%s\n", o.verdict, o.seconds, be, o.key);
     if (n > 0 && write(fd, line, (size_t)(n < (int)sizeof line ? n : (int)sizeof line - 1)) < 0)
         _exit(SF_EXIT_INTERNAL);
     close(fd);
@@ -165,6 +206,7 @@ typedef struct {
 static void finish_job(const job *j, int status, const sf_case *cases, sf_outcome *out,
                        const char *root)
 {
+    unsigned cpu_limit;
     const sf_case *c = &cases[j->idx];
     sf_outcome *o = &out[j->idx];
     fill_outcome(o, c);
@@ -175,12 +217,13 @@ static void finish_job(const job *j, int status, const sf_case *cases, sf_outcom
     int ok = 0;
     if (WIFEXITED(status) && WEXITSTATUS(status) == 0 && n > 0) {
         char *tab1 = strchr(line, '\t'), *tab2 = tab1 ? strchr(tab1 + 1, '\t') : NULL;
-        if (tab1 && tab2) {
+        char *tab3 = tab2 ? strchr(tab2 + 1, '\t') : NULL;
+        if (tab3 && sf_budget_entry_scan(&o->budget, tab2 + 1)) {
             o->verdict = atoi(line);
             o->seconds = strtod(tab1 + 1, NULL);
-            char *nl = strchr(tab2 + 1, '\n');
+            char *nl = strchr(tab3 + 1, '\n');
             if (nl) *nl = '\0';
-            snprintf(o->key, sizeof o->key, "%s", tab2 + 1);
+            snprintf(o->key, sizeof o->key, "%s", tab3 + 1);
             ok = 1;
         }
     }
@@ -189,6 +232,9 @@ static void finish_job(const job *j, int status, const sf_case *cases, sf_outcom
         o->seconds = now() - j->t0;
         if (WIFSIGNALED(status) && WTERMSIG(status) == SIGALRM)
             snprintf(o->key, sizeof o->key, "timed out after %.0f s", o->seconds);
+        else if (WIFSIGNALED(status) && WTERMSIG(status) == SIGXCPU && (cpu_limit = sf_casetime_limit(c->path, c->id)) > 0)
+            snprintf(o->key, sizeof o->key, "stopped at its CPU-time limit of %u s (20x its recorded CPU time, at "
+                     "least 60 s): a hang, or a case many times slower than it was", cpu_limit);
         else if (WIFSIGNALED(status))
             snprintf(o->key, sizeof o->key, "crashed with signal %d (%s)", WTERMSIG(status), strsignal(WTERMSIG(status)));
         else
@@ -208,7 +254,8 @@ typedef struct {
     const char *root;
     int tier;                  /* --tier: 0 quick, 1 full (quick and full), 2 paper */
     int jobs, list, have_seed;
-    unsigned timeout;
+    unsigned timeout;          /* --timeout: wall-time limit of each case */
+    int timeout_set;           /* --timeout given: no CPU-time limits */
     unsigned long seed;
     char seed_note[64];
     const char *tags, *baseline_path, *alternative;
@@ -253,10 +300,19 @@ static int opt_jobs(const char *cmd, const char *v, void *dst)
 
 static int opt_timeout(const char *cmd, const char *v, void *dst)
 {
-    unsigned *timeout = dst;
-    *timeout = (unsigned)atoi(v);
-    if (*timeout < 1) { fprintf(stderr, "slipfield %s: --timeout takes seconds >= 1\n", cmd); return SF_EXIT_USAGE; }
+    verify_opts *o = dst;
+    o->timeout = (unsigned)atoi(v);
+    o->timeout_set = 1;
+    if (o->timeout < 1) { fprintf(stderr, "slipfield %s: --timeout takes seconds >= 1\n", cmd); return SF_EXIT_USAGE; }
     return SF_EXIT_OK;
+}
+
+/* A case's CPU-time limit (0: none): scaled from its recorded CPU time
+ * (casetime.h), unless --timeout set a wall limit for every case (a run
+ * under valgrind, say, which multiplies CPU time). */
+static unsigned case_cpu_limit(const verify_opts *o, const sf_case *c)
+{
+    return o->timeout_set ? 0 : sf_casetime_limit(c->path, c->id);
 }
 
 static int opt_alternative(const char *cmd, const char *v, void *dst)
@@ -299,7 +355,7 @@ static int parse_options(int argc, char **argv, verify_opts *o, const char **fil
         { "--tier", SF_OPT_FN, &o->tier, 0, 0, opt_tier },
         { "--reports", SF_OPT_STRING, &o->root, 0, 0, NULL },
         { "--jobs", SF_OPT_FN, &o->jobs, 0, 0, opt_jobs },
-        { "--timeout", SF_OPT_FN, &o->timeout, 0, 0, opt_timeout },
+        { "--timeout", SF_OPT_FN, o, 0, 0, opt_timeout },
         { "--alternative", SF_OPT_FN, &o->alternative, 0, 0, opt_alternative },
         { "--seed", SF_OPT_FN, o, 0, 0, opt_seed },
     };
@@ -332,6 +388,24 @@ static int other_tier(const verify_opts *o, const sf_case *c)
 {
     int tier = c->spec.tier;
     return o->tier == 2 ? tier != SF_TIER_PAPER : (tier == SF_TIER_PAPER || (tier == SF_TIER_FULL && !o->tier));
+}
+
+/* A selection that matches nothing is an error (a typo in a CI filter
+ * must not give a green build): say which filter emptied it. */
+static void no_case_selected(const verify_opts *o, size_t nread, size_t skipped)
+{
+    fprintf(stderr, "slipfield verify: no case selected: ");
+    if (skipped)
+        fprintf(stderr, "the %zu matching case%s belong%s to other tiers than --tier %s\n", skipped,
+                skipped == 1 ? "" : "s", skipped == 1 ? "s" : "", o->tier == 2 ? "paper" : o->tier ? "full" : "quick");
+    else {
+        fprintf(stderr, "of the %zu case%s read, none matches", nread, nread == 1 ? "" : "s");
+        if (o->tags)
+            fprintf(stderr, " --tags %s", o->tags);
+        for (int q = 0; q < o->nonly; q++)
+            fprintf(stderr, "%s --only %s", q || o->tags ? "," : "", o->only[q]);
+        fputc('\n', stderr);
+    }
 }
 
 /* Read the case files, keep the selected ones (seed override and power
@@ -375,6 +449,11 @@ static int select_cases(const verify_opts *o, const char **files, size_t n, sf_c
         free_cases(cases, kept);
         return SF_EXIT_USAGE;
     }
+    if (!kept) {
+        no_case_selected(o, n, skipped);
+        free(cases);
+        return SF_EXIT_USAGE;
+    }
     qsort(cases, kept, sizeof *cases, cmp_case);
     for (size_t k = 1; k < kept; k++)
         if (!strcmp(cases[k].id, cases[k - 1].id)) {
@@ -387,12 +466,12 @@ static int select_cases(const verify_opts *o, const char **files, size_t n, sf_c
     return SF_EXIT_OK;
 }
 
-static void list_cases(const sf_case *cases, size_t n)
+static void list_cases(const verify_opts *o, const sf_case *cases, size_t n)
 {
     for (size_t k = 0; k < n; k++) {
         printf("%-48s tier=%-5s ", cases[k].id, sf_case_enum_name("tier", cases[k].spec.tier));
-        printf("vv=%-10s check=%s tags=%s\n", sf_case_enum_name("vv", cases[k].spec.vv), cases[k].spec.check,
-               cases[k].spec.tags);
+        printf("vv=%-10s check=%s tags=%s cpu_limit=%us wall_limit=%us\n", sf_case_enum_name("vv", cases[k].spec.vv),
+               cases[k].spec.check, cases[k].spec.tags, case_cpu_limit(o, &cases[k]), o->timeout);
     }
 }
 
@@ -445,7 +524,7 @@ static int spawn_case(const sf_case *cases, size_t next, const verify_opts *o, j
            a leak check of the case process sees only its own */
         free(run);
         free(out);
-        run_child(&cases[next], o->root, fd[1], o->timeout);
+        run_child(&cases[next], o->root, fd[1], o->timeout, case_cpu_limit(o, &cases[next]));
     }
     close(fd[1]);
     for (int s = 0; s < o->jobs; s++)
@@ -586,7 +665,7 @@ int sf_verify_main(int argc, char **argv)
     if (rc)
         return rc == SF_OPT_DONE ? SF_EXIT_OK : rc;
     if (o.list) {
-        list_cases(cases, kept);
+        list_cases(&o, cases, kept);
         free_cases(cases, kept);
         return SF_EXIT_OK;
     }

@@ -597,7 +597,7 @@ static int vs_point(const sf_case *c, sf_result *r, int plan)
         if (plan) {
             pred[k] = pl.err_total;
             sf_note(r, "| %g | %zu | %.3g | %.2g | %zu | %.2g | %.2g | %.2g | %.2g | %.1f |", x[k], sc.cells, box / sc.l,
-                    sc.rtol, sp.cells, sf_numplan_err_quad(x[k], sp.cells) + sf_numplan_err_time(sp.rtol), pred[k],
+                    sc.rtol, sp.cells, sf_numplan_err_quad(x[k], sp.mu_std / sp.mu_mean, sp.cells) + sf_numplan_err_time(sp.rtol), pred[k],
                     ach[k], worst[k], check_cpu_seconds() - t0);
             snprintf(t, sizeof t, "l/R = %g: RMS QoI error of the plan's cell averages vs the point reference <= qoi_tol",
                      x[k]);

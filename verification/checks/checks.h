@@ -15,6 +15,7 @@ extern const sf_check_def sf_checks_belt[];
 extern const sf_check_def sf_checks_limits[];
 extern const sf_check_def sf_checks_validation[];
 extern const sf_check_def sf_checks_plan[];
+extern const sf_check_def sf_checks_design[];
 extern const sf_check_def sf_checks_cellavg[];
 extern const sf_check_def sf_checks_mms[];
 extern const sf_check_def sf_checks_selftest[];

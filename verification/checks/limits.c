@@ -203,11 +203,13 @@ static int chk_small_lr(const sf_case *c, sf_result *r)
         snprintf(t, sizeof t, "%s ratio: variance larger at l/R = %g than at %g (F = %.1f; one-sided F test p-value)",
                  nm[q], lr[K - 1], lr[0], F);
         sf_check_le(r, t, pF, a4);
+        sf_result_mark_statistical(r, a4);
         double se0 = sd[q][0] / sqrt((double)n), se1 = sd[q][K - 1] / sqrt((double)n);
         double z = (fabs(mn[q][K - 1] - 1) - fabs(mn[q][0] - 1)) / hypot(se0, se1);
         snprintf(t, sizeof t, "%s ratio: |mean - 1| larger at l/R = %g than at %g (z = %.1f; one-sided z test p-value)",
                  nm[q], lr[K - 1], lr[0], z);
         sf_check_le(r, t, 1 - gsl_cdf_ugaussian_P(z), a4);
+        sf_result_mark_statistical(r, a4);
     }
     (void)lx;
     (void)ly;

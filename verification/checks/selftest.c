@@ -5,6 +5,7 @@
 #include "checks.h"
 #include "sf_error.h"
 
+#include <gsl/gsl_rng.h>
 #include <signal.h>
 #include <stdlib.h>
 #include <unistd.h>
@@ -44,6 +45,16 @@ static int chk_hang(const sf_case *c, sf_result *r)
         pause();
 }
 
+static int chk_spin(const sf_case *c, sf_result *r)
+{
+    (void)c;
+    if (!armed(r))
+        return SF_EINVAL;
+    for (volatile unsigned long k = 0;; k++)
+        ;
+    return SF_EFAIL;
+}
+
 static int chk_pass(const sf_case *c, sf_result *r)
 {
     (void)c;
@@ -67,11 +78,49 @@ static int chk_noplot(const sf_case *c, sf_result *r)
     return SF_SUCCESS;
 }
 
+/* a passing row and two misdrawn plots: gnuplot warns about the first
+ * (a flat series on a log axis: "empty y range"), the second has nothing
+ * to draw on its log axis.  The runner must call it a FAIL naming both. */
+static int chk_badplot(const sf_case *c, sf_result *r)
+{
+    (void)c;
+    if (!armed(r))
+        return SF_EINVAL;
+    sf_check_abs(r, "1 + 1", 1.0 + 1.0, 2.0, 0);
+    const double x[2] = { 1, 2 }, flat[2] = { 2, 2 }, nonpos[2] = { -1, 0 };
+    sf_plot *p = sf_result_plot(r, "flat_log", "a flat series on a log axis", "x [-]", "y [-]");
+    sf_plot_log(p, 0, 1);
+    sf_plot_series(p, "flat", SF_STYLE_LINES, 2, x, flat);
+    p = sf_result_plot(r, "nothing_to_draw", "no positive value on a log axis", "x [-]", "y [-]");
+    sf_plot_log(p, 0, 1);
+    sf_plot_series(p, "non-positive", SF_STYLE_LINES, 2, x, nonpos);
+    return SF_SUCCESS;
+}
+
+/* a uniform draw from the case's seed as a p-value: the false-alarm
+ * budget's replication of a suspect p (tests/budget) */
+static int chk_uniform_p(const sf_case *c, sf_result *r)
+{
+    if (!armed(r))
+        return SF_EINVAL;
+    gsl_rng *g = sf_case_rng(c);
+    double p = gsl_rng_uniform_pos(g);
+    gsl_rng_free(g);
+    sf_check_pvalue(r, "a uniform draw as a p-value", p, c->spec.alpha, 1);
+    const double x[2] = { 0, 1 }, y[2] = { p, p };
+    sf_plot *pl = sf_result_plot(r, "p", "the draw", "draw index (dimensionless)", "p (dimensionless)");
+    sf_plot_series(pl, "p", SF_STYLE_LINES, 2, x, y);
+    return SF_SUCCESS;
+}
+
 const sf_check_def sf_checks_selftest[] = {
     { "selftest_abort", chk_abort, "calls abort() (isolation test)" },
     { "selftest_segv", chk_segv, "raises SIGSEGV (isolation test)" },
     { "selftest_hang", chk_hang, "never returns (time-out test)" },
+    { "selftest_spin", chk_spin, "spins without end (CPU-time limit test)" },
     { "selftest_pass", chk_pass, "passes (isolation test)" },
+    { "selftest_uniform_p", chk_uniform_p, "a uniform draw as a p-value (false-alarm budget test)" },
     { "selftest_noplot", chk_noplot, "a row but no plot: an ERROR (isolation test)" },
+    { "selftest_badplot", chk_badplot, "a passing row, two misdrawn plots: a FAIL (isolation test)" },
     { NULL, NULL, NULL }
 };

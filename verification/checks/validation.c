@@ -1069,24 +1069,51 @@ static char status_letter(int s)
     return s == SF_CLAIM_CONFIRMED ? 'C' : s == SF_CLAIM_CONTRADICTED ? 'X' : 'U';
 }
 
-/* Power of the test behind the expected verdict, if the true value were
- * this run's estimate (the named alternative), at this run's standard
- * error: one-sided Phi(|est - thr| / se - z_alpha); equivalence: both
- * bounds inside (outside) the margin. */
-static double claim_power(const claim_spec *c, const claim_eval *e, double alpha)
+/* The minimum detectable effect of the test behind a verdict at this
+ * run's standard error: the distance from the threshold (an equivalence
+ * margin's nearer edge) at which the one-sided test at alpha decides with
+ * power 0.99, (z_alpha + z_0.01) se on the test's scale (log for a std).
+ * *effect gets this run's distance (NAN with the MDE when the test has no
+ * standard error: the F test). */
+#define CLAIM_MDE_POWER 0.99
+static double claim_mde(const claim_spec *c, const claim_eval *e, double alpha, double *effect)
 {
+    *effect = NAN;
     if (!isfinite(e->se) || e->se <= 0)
         return NAN;
-    double z = gsl_cdf_ugaussian_Qinv(alpha);
     double est = e->logscale ? log(e->est) : e->est;
     if (c->kind == K_MEAN_EQ || c->kind == K_DROP_EQ || c->kind == K_SD_EQ) {
         double lo = e->logscale ? log(c->lo) : c->lo, hi = e->logscale ? log(c->hi) : c->hi;
-        if (est > lo && est < hi)
-            return fmax(0, gsl_cdf_ugaussian_P((hi - est) / e->se - z) + gsl_cdf_ugaussian_P((est - lo) / e->se - z) - 1);
-        double dist = est <= lo ? lo - est : est - hi;
-        return gsl_cdf_ugaussian_P(dist / e->se - z);
+        *effect = est > lo && est < hi ? fmin(hi - est, est - lo) : est <= lo ? lo - est : est - hi;
+    } else {
+        *effect = fabs(est - e->thr);
     }
-    return gsl_cdf_ugaussian_P(fabs(est - e->thr) / e->se - z);
+    return (gsl_cdf_ugaussian_Qinv(alpha) + gsl_cdf_ugaussian_Qinv(1 - CLAIM_MDE_POWER)) * e->se;
+}
+
+static void claims_alpha_note(sf_result *r, const sf_case *c, double alpha)
+{
+    sf_note(r, "\n(Verdicts at alpha = %.3g per claim: the case's alpha %g split over the claims it gates (Bonferroni). "
+               "Effect: this run's distance from the claim's threshold (an equivalence margin's nearer edge) on the "
+               "test's scale (log for a std); MDE: the minimum detectable effect, the distance at which the test "
+               "reaches its verdict with power %.2f at this run's standard error. A gate that demands a verdict "
+               "spends its alpha only if the true effect is at least the MDE.)\n", alpha, c->spec.alpha,
+            CLAIM_MDE_POWER);
+}
+
+/* The verdict tests' alpha: the case's alpha split over the claims its
+ * tier gates (Bonferroni), so the case's gates together spend its alpha;
+ * with a sweep (pt, K; NULL for none) only the claims whose points it has. */
+static double claim_alpha(const sf_case *c, const claim_spec *spec, const cpoint *pt, size_t K)
+{
+    int paper = c->spec.tier == SF_TIER_PAPER;
+    size_t g = 0;
+    for (const claim_spec *cs = spec; cs->id; cs++) {
+        char e = paper ? cs->expp : cs->expq;
+        int here = !pt || (pick(pt, K, cs->a) >= 0 && (!cs->b || pick(pt, K, cs->b) >= 0));
+        g += e && strchr("CXcx", e) && here;
+    }
+    return c->spec.alpha / (double)(g ? g : 1);
 }
 
 static const char *kind_how(int kind)
@@ -1111,7 +1138,8 @@ static const char *kind_how(int kind)
  * is contradicted): if the expected direction is true, that verdict comes
  * up with probability at most alpha, the nominal false-alarm rate, and a
  * defect that reverses the effect is still caught.  Returns 1 if gated. */
-static int claim_gate(sf_result *r, const char *id, char exp, int status, double pw, double alpha, int nmin)
+static int claim_gate(sf_result *r, const char *id, char exp, int status, double mde, double effect, double alpha,
+                      int nmin)
 {
     char q[160], found[96];
     const char *want = exp == 'C' ? "confirmed" : exp == 'X' ? "contradicted" : exp == 'c' ? "not contradicted"
@@ -1122,10 +1150,10 @@ static int claim_gate(sf_result *r, const char *id, char exp, int status, double
         snprintf(q, sizeof q, "claim %s: verdict %s (alpha %.2g, n = %d)", id, want, alpha, nmin);
     else
         snprintf(q, sizeof q, "claim %s: verdict %s (alpha %.2g)", id, want, alpha);
-    snprintf(found, sizeof found, "verdict = %s; power %.2f", sf_claim_status_name(status), pw);
+    snprintf(found, sizeof found, "verdict = %s; effect %.3g, MDE %.3g", sf_claim_status_name(status), effect, mde);
     int ok = exp == 'C' || exp == 'X' ? status_letter(status) == exp
            : exp == 'c' ? status != SF_CLAIM_CONTRADICTED : status != SF_CLAIM_CONFIRMED;
-    sf_check_true(r, q, ok, found);
+    sf_check_verdict(r, q, ok, found, alpha);
     return 1;
 }
 
@@ -1138,11 +1166,11 @@ static const char *exp_name(char exp)
 /* Evaluate, record and gate every claim; returns the number gated. */
 static size_t claims_judge(const sf_case *c, sf_result *r, const claim_spec *spec, const cpoint *pt, size_t K)
 {
-    double alpha = c->spec.alpha;
+    double alpha = claim_alpha(c, spec, pt, K);
     int paper = c->spec.tier == SF_TIER_PAPER;
     size_t gated = 0;
-    sf_note(r, "\n| claim | statistic | ours [one-sided (1 - alpha) bounds] | verdict | expected here | power vs "
-               "this estimate | verdicts: %s / %s / %s / %s / %s / %s |\n|---|---|---|---|---|---|---|",
+    sf_note(r, "\n| claim | statistic | ours [one-sided (1 - alpha) bounds] | verdict | expected here | effect / MDE "
+               "| verdicts: %s / %s / %s / %s / %s / %s |\n|---|---|---|---|---|---|---|",
             dshort[1], dshort[2], dshort[3], dshort[4], dshort[5], dshort[6]);
     for (const claim_spec *cs = spec; cs->id; cs++) {
         claim_eval e, ed;
@@ -1176,14 +1204,12 @@ static size_t claims_judge(const sf_case *c, sf_result *r, const claim_spec *spe
         sf_claim(r, cs->id, cs->text, e.status, e.est, e.lo, e.hi, alpha, how, cs->note);
         sf_claim_defs(r, defs2);
         char exp = paper ? cs->expp : cs->expq;
-        double pw = claim_power(cs, &e, alpha);
-        sf_note(r, "| %s | %s | %.4g [%.4g, %.4g] | %s | %s | %.2f | %s |", cs->id, qname[cs->q], e.est, e.lo, e.hi,
-                sf_claim_status_name(e.status), exp_name(exp), pw, dep ? defs : "same");
-        gated += (size_t)claim_gate(r, cs->id, exp, e.status, pw, alpha, nmin);
+        double effect, mde = claim_mde(cs, &e, alpha, &effect);
+        sf_note(r, "| %s | %s | %.4g [%.4g, %.4g] | %s | %s | %.3g / %.3g | %s |", cs->id, qname[cs->q], e.est, e.lo,
+                e.hi, sf_claim_status_name(e.status), exp_name(exp), effect, mde, dep ? defs : "same");
+        gated += (size_t)claim_gate(r, cs->id, exp, e.status, mde, effect, alpha, nmin);
     }
-    sf_note(r, "\n(Verdicts at alpha = %g per claim, not corrected for multiplicity: each claim is its own "
-               "question. Power: of the test behind the expected verdict, were the true value this run's "
-               "estimate, at this run's standard error.)\n", alpha);
+    claims_alpha_note(r, c, alpha);
     return gated;
 }
 
@@ -1607,19 +1633,19 @@ static int chk_claims_mu(const sf_case *c, sf_result *r)
 
 /* Record one claim from an estimate on the test's scale and gate it when
  * the tier expects a verdict. */
-static void judge_one(const sf_case *c, sf_result *r, const claim_spec *cs, double est, double se, double df,
-                      const char *how, const char *defs)
+static void judge_one(const sf_case *c, sf_result *r, const claim_spec *all, const claim_spec *cs, double est,
+                      double se, double df, const char *how, const char *defs)
 {
     claim_eval e;
-    double alpha = c->spec.alpha;
+    double alpha = claim_alpha(c, all, NULL, 0);
     decide(&e, cs, est, se, df, alpha, 0);
     sf_claim(r, cs->id, cs->text, e.status, e.est, e.lo, e.hi, alpha, how, cs->note);
     sf_claim_defs(r, defs);
     char exp = c->spec.tier == SF_TIER_PAPER ? cs->expp : cs->expq;
-    double pw = claim_power(cs, &e, alpha);
-    sf_note(r, "| %s | %.4g [%.4g, %.4g] | %s | %s | %.2f |", cs->id, e.est, e.lo, e.hi, sf_claim_status_name(e.status),
-            exp_name(exp), pw);
-    claim_gate(r, cs->id, exp, e.status, pw, alpha, 0);
+    double effect, mde = claim_mde(cs, &e, alpha, &effect);
+    sf_note(r, "| %s | %.4g [%.4g, %.4g] | %s | %s | %.3g / %.3g |", cs->id, e.est, e.lo, e.hi,
+            sf_claim_status_name(e.status), exp_name(exp), effect, mde);
+    claim_gate(r, cs->id, exp, e.status, mde, effect, alpha, 0);
 }
 
 static const claim_spec claims_fig15[] = {
@@ -1695,7 +1721,7 @@ static int chk_claims_fig15(const sf_case *c, sf_result *r)
                "the deterministic harmonics, mean +- std over %zu realisations |\n|---|---|", period, share_det, N);
     for (size_t j = 0; j < K; j++)
         sf_note(r, "| %g | %.4f +- %.4f |", c->spec.sweep.v[j], m[j], sdv[j]);
-    sf_note(r, "\n| claim | ours [one-sided (1 - alpha) bounds] | verdict | expected here | power vs this estimate "
+    sf_note(r, "\n| claim | ours [one-sided (1 - alpha) bounds] | verdict | expected here | effect / MDE "
                "|\n|---|---|---|---|---|");
     double n = (double)N, v[3];
     for (int j = 0; j < 3; j++)
@@ -1704,12 +1730,12 @@ static int chk_claims_fig15(const sf_case *c, sf_result *r)
     /* Welch on the difference of the mean shares */
     double d1 = m[1] - m[0], se1 = sqrt(v[1] + v[0]), df1 = (v[0] + v[1]) * (v[0] + v[1]) / ((v[0] * v[0] + v[1] * v[1]) / (n - 1));
     snprintf(how, sizeof how, "one-sided Welch t test; share at l/R = 1 minus share at 0.1; n = %zu each", N);
-    judge_one(c, r, &claims_fig15[0], d1, se1, df1, how, "not cycle-based: the periodogram of x over [t_skip, T] cut to whole deterministic periods");
+    judge_one(c, r, claims_fig15, &claims_fig15[0], d1, se1, df1, how, "not cycle-based: the periodogram of x over [t_skip, T] cut to whole deterministic periods");
     double d2 = m[2] - m[1], se2 = sqrt(v[2] + v[1]), df2 = (v[2] + v[1]) * (v[2] + v[1]) / ((v[2] * v[2] + v[1] * v[1]) / (n - 1));
     snprintf(how, sizeof how, "one-sided Welch t test; share at l/R = 10 minus share at 1; n = %zu each", N);
-    judge_one(c, r, &claims_fig15[1], d2, se2, df2, how, "not cycle-based: the periodogram of x over [t_skip, T] cut to whole deterministic periods");
+    judge_one(c, r, claims_fig15, &claims_fig15[1], d2, se2, df2, how, "not cycle-based: the periodogram of x over [t_skip, T] cut to whole deterministic periods");
     snprintf(how, sizeof how, "one-sided t test; share at l/R = 0.1 minus the deterministic share; n = %zu", N);
-    judge_one(c, r, &claims_fig15[2], m[0] - share_det, sqrt(v[0]), n - 1, how, "not cycle-based: the periodogram of x over [t_skip, T] cut to whole deterministic periods");
+    judge_one(c, r, claims_fig15, &claims_fig15[2], m[0] - share_det, sqrt(v[0]), n - 1, how, "not cycle-based: the periodogram of x over [t_skip, T] cut to whole deterministic periods");
     sf_note(r, "\nT = %g s, x sampled every %g s after t_skip = %g s, window cut to whole deterministic periods; "
                "share = power within 2 bins of k / period over the total.", s0->T, dt, s0->t_skip);
     free(sh);
@@ -1790,13 +1816,13 @@ static int chk_fig3(const sf_case *c, sf_result *r)
     /* Exact for the squared-exponential Gaussian field behind it: at lag h
      * the increment variance is 2 var (1 - rho(h)), rho = exp(-h^2/l^2);
      * the claim is the fall of that with l. */
-    sf_note(r, "\n| claim | ours [one-sided (1 - alpha) bounds] | verdict | expected here | power vs this estimate "
+    sf_note(r, "\n| claim | ours [one-sided (1 - alpha) bounds] | verdict | expected here | effect / MDE "
                "|\n|---|---|---|---|---|");
     double n = (double)N, va = sv[0] * sv[0] / n, vb = sv[K - 1] * sv[K - 1] / n;
     char how[200];
     snprintf(how, sizeof how, "one-sided Welch t test; mean square increment at l/R = %g minus at %g; n = %zu draws each",
              c->spec.sweep.v[K - 1], c->spec.sweep.v[0], N);
-    judge_one(c, r, &claims_fig3[0], mm[K - 1] - mm[0], sqrt(va + vb),
+    judge_one(c, r, claims_fig3, &claims_fig3[0], mm[K - 1] - mm[0], sqrt(va + vb),
               (va + vb) * (va + vb) / ((va * va + vb * vb) / (n - 1)), how, "not a QoI of the dynamics: the field itself");
     free(xs);
     free(mu);

@@ -1,0 +1,90 @@
+#include "unum.h"
+#include "sf_error.h"
+
+#include <math.h>
+#include <string.h>
+
+void sf_unum_companion(const sf_scene *s, const sf_numplan *p, sf_scene *c, double *rho)
+{
+    *c = *s;
+    double rq = INFINITY, rt;
+    if (p->quadrature && !p->cell_average) {
+        c->cells = (2 * p->cells + 2) / 3;   /* ceil(2n/3): ~0.44 of the cells */
+        rq = ((double)p->cells / (double)c->cells) * ((double)p->cells / (double)c->cells);
+    } else {
+        c->cells = p->cells;   /* cell averages: the boxes are the cells */
+        if (p->cell_average)
+            c->cof_model = SF_COFMODEL_CELL;
+    }
+    c->layout = p->layout;
+    c->integrator = p->integrator;
+    if (p->integrator == SF_INTEG_RK4) {
+        c->rtol = p->rtol;
+        c->dt = 2 * s->dt;
+        rt = 16;   /* rk4's order 4 */
+    } else {
+        /* the same assumed ratio as the quadrature's (16 without one) */
+        double f = isfinite(rq) ? rq * rq : 16;
+        c->rtol = fmax(4 * p->rtol, fmin(f * p->rtol, SF_UNUM_MAX_RTOL));
+        rt = sqrt(c->rtol / p->rtol);   /* err_time ~ sqrt(rtol) */
+    }
+    *rho = fmin(rq, rt);
+}
+
+int sf_unum_estimate(const sf_scene *s, const sf_cof *cof, const sf_numplan *p, const sf_osc_result *res, sf_unum *u,
+                     char *err, size_t errlen)
+{
+    memset(u, 0, sizeof *u);
+    sf_scene c;
+    sf_unum_companion(s, p, &c, &u->rho);
+    u->cells = p->quadrature ? p->cells : 0;
+    u->cells_c = p->quadrature ? c.cells : 0;
+    u->rtol = p->integrator == SF_INTEG_RK4 ? s->dt : p->rtol;
+    u->rtol_c = p->integrator == SF_INTEG_RK4 ? c.dt : c.rtol;
+    u->cell_average = p->quadrature && p->cell_average;
+    u->fixed_step = p->integrator == SF_INTEG_RK4;
+    sf_osc *o = NULL;
+    sf_osc_result rc_res;
+    int rc = sf_osc_alloc(&c, cof, &o, err, errlen);
+    if (!rc)
+        rc = sf_osc_run(o, NULL, NULL, 0, &rc_res, err, errlen);
+    sf_osc_free(o);
+    if (rc)
+        return rc;
+    double q[SF_UNUM_NQ] = { res->pv_x, res->pv_F, res->stick_fraction };
+    double qc[SF_UNUM_NQ] = { rc_res.pv_x, rc_res.pv_F, rc_res.stick_fraction };
+    sf_osc_result_free(&rc_res);
+    for (int k = 0; k < SF_UNUM_NQ; k++) {
+        u->q[k] = q[k];
+        u->qc[k] = qc[k];
+        u->apriori[k] = u->cell_average ? p->err_quad * fabs(q[k]) : 0;
+        u->u[k] = SF_UNUM_FS * fabs(q[k] - qc[k]) / (u->rho - 1) + u->apriori[k];
+    }
+    return SF_SUCCESS;
+}
+
+void sf_unum_write(const sf_unum *u, FILE *f)
+{
+    static const char *const key[SF_UNUM_NQ] = { "pv_x", "pv_F", "stick_fraction" };
+    char knobs[160];
+    if (u->fixed_step)
+        snprintf(knobs, sizeof knobs, "rk4 at 2 dt, order 4");
+    else
+        snprintf(knobs, sizeof knobs, "%srtol x %.3g, err ~ sqrt(rtol)",
+                 u->cells_c && !u->cell_average ? "2/3 of the rings, err ~ rings^-2; " : "", u->rtol_c / u->rtol);
+    fprintf(f, "# numerical error u_num (ASME V&V 20) of each QoI, in its unit: two-level GCI against a coarser "
+               "companion solve of the same realisation (%s), u = %g |Q - Q_c| / (rho - 1), rho = %.4g the "
+               "companion's assumed error ratio%s\n",
+            knobs, SF_UNUM_FS, u->rho,
+            u->cell_average ? "; cell averages: the companion changes rtol only, plus the plan's a-priori cell-average "
+                              "error |Q| err_cell (u_apriori_*)"
+                            : "");
+    for (int k = 0; k < SF_UNUM_NQ; k++)
+        fprintf(f, "u_%s = %.3g\n", key[k], u->u[k]);
+    if (u->cell_average)
+        for (int k = 0; k < SF_UNUM_NQ; k++)
+            fprintf(f, "u_apriori_%s = %.3g\n", key[k], u->apriori[k]);
+    for (int k = 0; k < SF_UNUM_NQ; k++)
+        fprintf(f, "companion_%s = %.17g\n", key[k], u->qc[k]);
+    fprintf(f, "companion_cells = %zu\ncompanion_%s = %.6g\n", u->cells_c, u->fixed_step ? "dt" : "rtol", u->rtol_c);
+}

@@ -1,0 +1,144 @@
+/* Unit tests: the numerical error estimate of a run (unum.h): the
+ * companion's settings and assumed ratio for each kind of plan, the
+ * estimate equal to its formula on a companion that reruns bit for bit,
+ * and the summary lines. */
+#include "test_util.h"
+#include "cof.h"
+#include "numplan.h"
+#include "oscillator.h"
+#include "sf_error.h"
+#include "unum.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+static void companion_settings(void **state)
+{
+    (void)state;
+    sf_scene s, c;
+    sf_scene_default(&s);
+    double rho;
+    sf_numplan p = { 0 };
+    p.quadrature = 1;   /* point model, 16 rings: 11, rho = (16/11)^2, rtol x rho^2 */
+    p.cells = 16;
+    p.rtol = 1e-8;
+    p.integrator = SF_INTEG_RKCK;
+    sf_unum_companion(&s, &p, &c, &rho);
+    assert_int_equal(c.cells, 11);
+    assert_true(fabs(rho - (16.0 / 11) * (16.0 / 11)) < 1e-15);
+    assert_true(fabs(c.rtol - rho * rho * 1e-8) < 1e-22);
+    assert_int_equal(c.integrator, SF_INTEG_RKCK);
+    p.cell_average = 1;   /* cell averages: the same boxes, rtol x 16 */
+    sf_unum_companion(&s, &p, &c, &rho);
+    assert_int_equal(c.cells, 16);
+    assert_int_equal(c.cof_model, SF_COFMODEL_CELL);
+    assert_true(fabs(rho - 4) < 1e-15 && fabs(c.rtol - 16e-8) < 1e-22);
+    p.cell_average = 0;   /* no quadrature; rtol near the cap: x4 at least */
+    p.quadrature = 0;
+    p.cells = 0;
+    p.rtol = 5e-6;
+    sf_unum_companion(&s, &p, &c, &rho);
+    assert_true(fabs(c.rtol - 2e-5) < 1e-20 && fabs(rho - 2) < 1e-15);
+    p.integrator = SF_INTEG_RK4;   /* fixed step: 2 dt, order 4 */
+    s.dt = 1e-3;
+    sf_unum_companion(&s, &p, &c, &rho);
+    assert_true(c.dt == 2e-3 && rho == 16);
+}
+
+static void estimate_is_its_formula(void **state)
+{
+    (void)state;
+    sf_scene s;
+    sf_scene_default(&s);
+    s.cof = SF_COF_UNIFORM;
+    s.T = 30;
+    sf_cof *cof = NULL;
+    assert_int_equal(sf_cof_alloc_uniform(s.mu_mean, &cof), SF_SUCCESS);
+    sf_osc *o = NULL;
+    char err[256];
+    sf_osc_result r, rc;
+    assert_int_equal(sf_osc_alloc(&s, cof, &o, err, sizeof err), SF_SUCCESS);
+    assert_int_equal(sf_osc_run(o, NULL, NULL, 0, &r, err, sizeof err), SF_SUCCESS);
+    sf_unum u;
+    assert_int_equal(sf_unum_estimate(&s, cof, sf_osc_get_plan(o), &r, &u, err, sizeof err), SF_SUCCESS);
+    /* the companion, run by hand, gives the same bits */
+    sf_scene c;
+    double rho;
+    sf_unum_companion(&s, sf_osc_get_plan(o), &c, &rho);
+    sf_osc *oc = NULL;
+    assert_int_equal(sf_osc_alloc(&c, cof, &oc, err, sizeof err), SF_SUCCESS);
+    assert_int_equal(sf_osc_run(oc, NULL, NULL, 0, &rc, err, sizeof err), SF_SUCCESS);
+    double q[3] = { r.pv_x, r.pv_F, r.stick_fraction }, qc[3] = { rc.pv_x, rc.pv_F, rc.stick_fraction };
+    assert_true(u.rho == rho && u.cells == 0 && u.cells_c == 0 && !u.cell_average);
+    for (int k = 0; k < 3; k++) {
+        assert_true(u.q[k] == q[k] && u.qc[k] == qc[k] && u.apriori[k] == 0);
+        assert_true(u.u[k] == SF_UNUM_FS * fabs(q[k] - qc[k]) / (rho - 1));
+        assert_true(isfinite(u.u[k]) && u.u[k] > 0);   /* two rtols: the QoIs differ */
+    }
+    char *buf = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&buf, &len);
+    sf_unum_write(&u, f);
+    fclose(f);
+    assert_non_null(strstr(buf, "\nu_pv_x = "));
+    assert_non_null(strstr(buf, "\nu_stick_fraction = "));
+    assert_non_null(strstr(buf, "\ncompanion_rtol = "));
+    assert_null(strstr(buf, "u_apriori_"));
+    free(buf);
+    sf_osc_result_free(&r);
+    sf_osc_result_free(&rc);
+    sf_osc_free(o);
+    sf_osc_free(oc);
+    sf_cof_free(cof);
+}
+
+/* the other summary forms, and a companion that cannot run */
+static void write_forms_and_refusal(void **state)
+{
+    (void)state;
+    sf_unum u;
+    memset(&u, 0, sizeof u);
+    u.cell_average = 1;
+    u.rtol = 1e-8;
+    u.rtol_c = 1.6e-7;
+    u.rho = 4;
+    char *buf = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&buf, &len);
+    sf_unum_write(&u, f);
+    u.cell_average = 0;
+    u.fixed_step = 1;
+    sf_unum_write(&u, f);
+    fclose(f);
+    assert_non_null(strstr(buf, "\nu_apriori_pv_F = "));
+    assert_non_null(strstr(buf, "rk4 at 2 dt"));
+    assert_non_null(strstr(buf, "\ncompanion_dt = "));
+    free(buf);
+    sf_scene s;
+    sf_scene_default(&s);
+    s.dof = SF_DOF_1;   /* the 1-D model refuses a field COF */
+    double v[4] = { 0.5, 0.5, 0.5, 0.5 };
+    sf_cof *g = NULL;
+    assert_int_equal(sf_cof_alloc_grid(2, 2, -1, -1, 2, 2, v, &g), SF_SUCCESS);
+    sf_numplan p = { 0 };
+    p.rtol = 1e-8;
+    p.integrator = SF_INTEG_RK8PD;
+    sf_osc_result r;
+    memset(&r, 0, sizeof r);
+    char err[256] = "";
+    assert_int_equal(sf_unum_estimate(&s, g, &p, &r, &u, err, sizeof err), SF_EINVAL);
+    assert_true(*err != 0);
+    sf_cof_free(g);
+}
+
+int main(void)
+{
+    sf_init();
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(companion_settings),
+        cmocka_unit_test(estimate_is_its_formula),
+        cmocka_unit_test(write_forms_and_refusal),
+    };
+    return cmocka_run_group_tests_name("unum", tests, NULL, NULL);
+}

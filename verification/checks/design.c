@@ -1,0 +1,276 @@
+/* The accuracy plan's promise on a space-filling design (solution
+ * verification of numplan.c across the parameter box, not at one point).
+ *
+ * plan_design: N points of a Latin hypercube (one random permutation of
+ * the N strata per dimension, a uniform jitter inside each stratum; GSL's
+ * mt19937 seeded from the case seed) over
+ *   l/R      (sweep: lo, hi; log)        CV = mu_std / mu_mean  0.05 - 1
+ *   v_b      0.1 - 0.8 m/s               mu_mean                0.2 - 1
+ *   T        20 - 100 s                  qoi_tol (sweep2: lo, hi; log)
+ * one realisation per point (stream sf_mc_seed(seed, i)).  At each point:
+ * the plan's own settings (level 0), then 2x its rings with rtol / 10
+ * (level 1) and 3x its rings with rtol / 100 (level 2, the reference), on
+ * the same field.  Per (point, QoI): achieved = |Q0 - Q2| / |Q2|, the
+ * reference's own error estimate |Q1 - Q2| / |Q2|, the plan's predicted
+ * error, and the run's a-posteriori u_num (unum.h) / |Q0|.  A pair whose
+ * reference is not converged to the tolerance under test (|Q1 - Q2| >
+ * qoi_tol: a realisation near a grazing stick, where the levels need not
+ * converge monotonically) cannot decide the promise either way: it is
+ * listed and left out of the gates, and must be at most a quarter of the
+ * pairs (the decision does not look at level 0, the run under test).
+ *
+ * A per-realisation QoI is a mean over the complete cycles in [t_skip, T]:
+ * where the levels disagree on the number of cycles (a cycle starting or
+ * ending at the window's edge moves across it) the QoI jumps by a cycle's
+ * share whatever the accuracy; such a point is reported and kept out of
+ * the per-realisation gate (its promise is on the statistic over
+ * realisations: the jump's probability, not its size, shrinks with the
+ * error). */
+#include "checks.h"
+#include "common.h"
+#include "../stats.h"
+#include "cof.h"
+#include "montecarlo.h"
+#include "numplan.h"
+#include "oscillator.h"
+#include "sf_error.h"
+#include "sweep.h"
+#include "unum.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <gsl/gsl_randist.h>
+#include <gsl/gsl_rng.h>
+
+enum { NQ = 3, ND = 6, NLEV = 3 };
+static const char *const qname[NQ] = { "PV_x", "PV_F", "stick fraction" };
+
+/* the fraction of pairs at or below qoi_tol the plan promises */
+#define DESIGN_FRACTION 0.95
+
+/* N Latin-hypercube points in [0, 1)^ND, row-major (point i: u[ND i ..]) */
+static void lhs(gsl_rng *g, size_t n, double *u)
+{
+    size_t *perm = check_alloc(n * sizeof *perm);
+    for (int d = 0; d < ND; d++) {
+        for (size_t i = 0; i < n; i++)
+            perm[i] = i;
+        gsl_ran_shuffle(g, perm, n, sizeof *perm);
+        for (size_t i = 0; i < n; i++)
+            u[ND * i + (size_t)d] = ((double)perm[i] + gsl_rng_uniform(g)) / (double)n;
+    }
+    free(perm);
+}
+
+static double lin(double u, double a, double b) { return a + u * (b - a); }
+static double logmap(double u, double a, double b) { return exp(lin(u, log(a), log(b))); }
+
+typedef struct {
+    double q[NLEV][NQ];
+    size_t cycles[NLEV];
+    double u[NQ];          /* u_num / |Q0| */
+    sf_numplan np;
+    double cpu[NLEV], cpu_u;
+} point_run;
+
+static void qois(const sf_osc_result *res, double *q)
+{
+    q[0] = res->pv_x;
+    q[1] = res->pv_F;
+    q[2] = res->stick_fraction;
+}
+
+/* the three levels and the companion on one field */
+static int run_point(const sf_scene *s, const sf_cof *cof, point_run *pr, sf_result *r)
+{
+    char err[256] = "";
+    sf_osc *o = NULL;
+    sf_osc_result res;
+    double t0 = check_cpu_seconds();
+    int rc = sf_osc_alloc(s, cof, &o, err, sizeof err);
+    if (!rc)
+        rc = sf_osc_run(o, NULL, NULL, 0, &res, err, sizeof err);
+    if (rc) {
+        sf_note(r, "**The plan's run failed:** %s (%s).", err, sf_strerror(rc));
+        sf_osc_free(o);
+        return rc;
+    }
+    pr->np = *sf_osc_get_plan(o);
+    sf_osc_free(o);
+    pr->cpu[0] = check_cpu_seconds() - t0;
+    qois(&res, pr->q[0]);
+    pr->cycles[0] = res.ncycles;
+    sf_unum u;
+    t0 = check_cpu_seconds();
+    rc = sf_unum_estimate(s, cof, &pr->np, &res, &u, err, sizeof err);
+    pr->cpu_u = check_cpu_seconds() - t0;
+    sf_osc_result_free(&res);
+    if (rc) {
+        sf_note(r, "**The companion solve failed:** %s (%s).", err, sf_strerror(rc));
+        return rc;
+    }
+    for (int k = 0; k < NQ; k++)
+        pr->u[k] = u.u[k] / fabs(pr->q[0][k]);
+    for (int l = 1; l < NLEV && !rc; l++) {
+        sf_scene f = *s;
+        f.cells = pr->np.quadrature ? (size_t)(l + 1) * pr->np.cells : 0;
+        f.rtol = pr->np.rtol / (l == 1 ? 10 : 100);
+        t0 = check_cpu_seconds();
+        if (!(rc = check_osc_run(&f, NULL, cof, 0, &res, NULL, NULL, r))) {
+            qois(&res, pr->q[l]);
+            pr->cycles[l] = res.ncycles;
+            sf_osc_result_free(&res);
+        }
+        pr->cpu[l] = check_cpu_seconds() - t0;
+    }
+    return rc;
+}
+
+static int chk_design(const sf_case *c, sf_result *r)
+{
+    const sf_scene *s0 = &c->scene;
+    size_t n = s0->samples;
+    if (n < 2 || c->spec.sweep.n != 2 || c->spec.sweep2.n != 2 || strcmp(c->spec.sweep_param, "l_over_R") ||
+        s0->cells || s0->rtol > 0 || s0->cof != SF_COF_FIELD || !(c->spec.tolerance >= 1)) {
+        sf_note(r, "The scene must set cof = field, samples (design points, >= 2), sweep_param = l_over_R, sweep = "
+                   "the l/R range (lo, hi), sweep2 = the qoi_tol range (lo, hi), tolerance = the worst achieved / "
+                   "qoi_tol allowed (>= 1), and leave cells and rtol to the plan.");
+        return SF_EINVAL;
+    }
+    double lo[ND] = { c->spec.sweep.v[0], 0.05, 0.1, 0.2, 20, c->spec.sweep2.v[0] };
+    double hi[ND] = { c->spec.sweep.v[1], 1, 0.8, 1, 100, c->spec.sweep2.v[1] };
+    double *u = check_alloc(n * ND * sizeof *u);
+    gsl_rng *g = gsl_rng_alloc(gsl_rng_mt19937);
+    gsl_rng_set(g, sf_mc_seed(s0->seed, (size_t)-1));   /* the design's own stream */
+    lhs(g, n, u);
+    gsl_rng_free(g);
+    size_t np_ = n * NQ;
+    double *pred = check_alloc(np_ * sizeof *pred), *ach = check_alloc(np_ * sizeof *ach), *un = check_alloc(np_ * sizeof *un);
+    size_t npairs = 0, within = 0, cont_points = 0, disc_points = 0, covered = 0, undecided = 0, bounded = 0;
+    double worst = 0, worst_ref = 0, cpu_run = 0, cpu_u = 0;
+    sf_note(r, "Latin hypercube of %zu points (seed %lu): l/R %g-%g (log), CV 0.05-1, v_b 0.1-0.8 m/s, mean COF "
+               "0.2-1, T 20-100 s, qoi_tol %g-%g (log); one realisation per point. Levels on the same field: the "
+               "plan's settings (0), 2x its rings and rtol / 10 (1), 3x its rings and rtol / 100 (2, the "
+               "reference). Errors relative to level 2; 'ref' is |Q1 - Q2| / |Q2|, the reference's own error "
+               "estimate; u_num is the run's a-posteriori estimate (companion at half the rings, 16x rtol).\n\n"
+               "| # | l/R | CV | v_b | mu | T | qoi_tol | rings | rtol | cycles (0/1/2) | predicted | achieved "
+               "PV_x, PV_F, SF | ref PV_x, PV_F, SF | u_num PV_x, PV_F, SF |\n"
+               "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|",
+            n, s0->seed, lo[0], hi[0], lo[5], hi[5]);
+    int rc = SF_SUCCESS;
+    for (size_t i = 0; i < n && !rc; i++) {
+        const double *ui = u + ND * i;
+        double lr = logmap(ui[0], lo[0], hi[0]), cv = lin(ui[1], lo[1], hi[1]), vb = lin(ui[2], lo[2], hi[2]);
+        double mu = lin(ui[3], lo[3], hi[3]), T = lin(ui[4], lo[4], hi[4]), tol = logmap(ui[5], lo[5], hi[5]);
+        sf_scene s = *s0;
+        char err[256] = "";
+        if ((rc = sf_sweep_set(&s, "l_over_R", lr, err, sizeof err))) {
+            sf_note(r, "**Bad design point:** %s", err);
+            break;
+        }
+        s.mu_mean = mu;
+        s.mu_std = cv * mu;
+        s.v_b = vb;
+        s.T = T;
+        s.qoi_tol = tol;
+        sf_cof_plan *cp;
+        if ((rc = sf_cof_plan_alloc(&s, &cp, err, sizeof err))) {
+            sf_note(r, "**Cannot plan the COF at point %zu:** %s", i, err);
+            break;
+        }
+        sf_cof *cof = NULL;
+        rc = check_draw(cp, s.seed, i, &cof);
+        sf_cof_plan_free(cp);
+        point_run pr;
+        memset(&pr, 0, sizeof pr);
+        if (!rc)
+            rc = run_point(&s, cof, &pr, r);
+        sf_cof_free(cof);
+        if (rc)
+            break;
+        cpu_run += pr.cpu[0];
+        cpu_u += pr.cpu_u;
+        int disc = pr.cycles[0] != pr.cycles[2] || pr.cycles[1] != pr.cycles[2] || !pr.cycles[2];
+        double a[NQ], e1[NQ];
+        for (int k = 0; k < NQ; k++) {
+            a[k] = fabs(pr.q[0][k] - pr.q[2][k]) / fabs(pr.q[2][k]);
+            e1[k] = fabs(pr.q[1][k] - pr.q[2][k]) / fabs(pr.q[2][k]);
+        }
+        sf_note(r, "| %zu | %.3g | %.2f | %.2f | %.2f | %.0f | %.2g | %zu | %.2g | %zu/%zu/%zu%s | %.2g | %.2g, %.2g, "
+                   "%.2g | %.2g, %.2g, %.2g | %.2g, %.2g, %.2g |",
+                i, lr, cv, vb, mu, T, tol, pr.np.quadrature ? pr.np.cells : 0, pr.np.rtol, pr.cycles[0], pr.cycles[1],
+                pr.cycles[2], disc ? (pr.cycles[2] ? " (edge)" : " (no cycle)") : "", pr.np.err_total, a[0], a[1], a[2], e1[0], e1[1], e1[2], pr.u[0],
+                pr.u[1], pr.u[2]);
+        if (disc) {
+            disc_points++;
+            continue;
+        }
+        cont_points++;
+        for (int k = 0; k < NQ; k++) {
+            if (!(isfinite(a[k]) && isfinite(e1[k]) && isfinite(pr.u[k]))) {
+                rc = SF_EFAIL;   /* NaN/Inf in the data fails the case */
+                sf_note(r, "**Non-finite error at point %zu, %s.**", i, qname[k]);
+                break;
+            }
+            worst_ref = sf_max(worst_ref, e1[k] / tol);
+            if (e1[k] > tol) {   /* the reference not converged to qoi_tol: this pair cannot decide */
+                undecided++;
+                continue;
+            }
+            pred[npairs] = fmax(pr.np.err_total, 1e-17);
+            ach[npairs] = fmax(a[k], 1e-17);
+            un[npairs] = fmax(pr.u[k], 1e-17);
+            within += a[k] <= tol;
+            bounded += a[k] <= pr.np.err_total;
+            covered += a[k] <= pr.u[k];
+            worst = sf_max(worst, a[k] / tol);
+            npairs++;
+        }
+    }
+    free(u);
+    if (!rc) {
+        char t[200], found[96];
+        snprintf(found, sizeof found, "%zu points with a continuous QoI, %zu with a cycle at the window's edge or none",
+                 cont_points, disc_points);
+        sf_check_true(r, "most design points have QoIs continuous in the numerical error (at least 3/4)",
+                      4 * cont_points >= 3 * n, found);
+        double frac = npairs ? (double)within / (double)npairs : 0;
+        snprintf(t, sizeof t, "fraction of the %zu (point, QoI) pairs with achieved error <= qoi_tol (>= %.2f)", npairs,
+                 DESIGN_FRACTION);
+        sf_check_ge(r, t, frac, DESIGN_FRACTION);
+        sf_check_le(r, "worst achieved error / qoi_tol over the pairs", worst, c->spec.tolerance);
+        snprintf(t, sizeof t, "fraction of pairs with achieved error <= the plan's predicted error (>= %.2f)",
+                 DESIGN_FRACTION);
+        sf_check_ge(r, t, npairs ? (double)bounded / (double)npairs : 0, DESIGN_FRACTION);
+        snprintf(found, sizeof found, "%zu of %zu pairs with |Q1 - Q2| <= qoi_tol", npairs, npairs + undecided);
+        sf_check_true(r, "the reference is converged (level 1 within qoi_tol of level 2) for at least 3/4 of the pairs "
+                         "of continuous points; only those pairs decide the gates above",
+                      4 * npairs >= 3 * (npairs + undecided), found);
+        sf_note(r, "\nReference convergence: worst |Q1 - Q2| / |Q2| / qoi_tol = %.2g. The a-posteriori u_num of a "
+                   "run (unum.h) covers the achieved error in %zu of %zu pairs (%.0f%%); its companion cost %.0f%% of "
+                   "the plan's runs (CPU %.2f s against %.2f s, field draws excluded).",
+                worst_ref, covered, npairs, npairs ? 100.0 * (double)covered / (double)npairs : 0,
+                cpu_run > 0 ? 100 * cpu_u / cpu_run : 0, cpu_u, cpu_run);
+        sf_plot *p = sf_result_plot(r, "design_scatter", "Accuracy plan on a space-filling design: predicted vs achieved",
+                                    "predicted relative QoI error (plan) [-]", "achieved relative QoI error [-]");
+        sf_plot_log(p, 1, 1);
+        sf_plot_series(p, "(point, QoI) pairs", SF_STYLE_POINTS, npairs, pred, ach);
+        double dx[2] = { 1e-6, 1e-1 };
+        sf_plot_series(p, "achieved = predicted", SF_STYLE_LINES, 2, dx, dx);
+        sf_plot *q = sf_result_plot(r, "design_unum", "A-posteriori u_num (companion solve) vs achieved error",
+                                    "u_num / |Q| (coarser companion, Fs = 3) [-]", "achieved relative QoI error [-]");
+        sf_plot_log(q, 1, 1);
+        sf_plot_series(q, "(point, QoI) pairs", SF_STYLE_POINTS, npairs, un, ach);
+        sf_plot_series(q, "achieved = u_num", SF_STYLE_LINES, 2, dx, dx);
+    }
+    free(pred);
+    free(ach);
+    free(un);
+    return rc ? SF_EFAIL : SF_SUCCESS;
+}
+
+const sf_check_def sf_checks_design[] = {
+    { "plan_design", chk_design, "the accuracy plan's qoi_tol on a Latin hypercube over l/R, CV, v_b, mu, T, qoi_tol" },
+    { NULL, NULL, NULL }
+};

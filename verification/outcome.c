@@ -1,0 +1,6 @@
+#include "outcome.h"
+
+const char *sf_verdict_name(int v)
+{
+    return v == SF_VERDICT_PASS ? "PASS" : v == SF_VERDICT_FAIL ? "FAIL" : "ERROR";
+}
