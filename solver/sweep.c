@@ -106,7 +106,8 @@ int sf_sweep_run(const sf_scene *s, size_t n, int threads, const char *checkpoin
     out->det[SF_SWEEP_SF] = r.stick_fraction;
     sf_osc_result_free(&r);
     if (!(out->det[SF_SWEEP_PVX] > 0) || !(out->det[SF_SWEEP_SF] > 0)) {
-        return sf_seterr(err, errlen, SF_EINVAL, "the deterministic reference has no complete cycle after t_skip: raise T");
+        return sf_seterr(err, errlen, SF_EINVAL, "the deterministic reference has no %s in [t_skip, T]: raise T",
+                         s->qoi_def == SF_QOI_PAPER ? "oscillation or no stick" : "complete cycle");
     }
     out->n = n;
     out->ratio = sf_calloc(n * SF_SWEEP_NQ, sizeof *out->ratio);

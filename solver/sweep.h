@@ -2,7 +2,9 @@
  *
  * At each parameter value: the deterministic reference (uniform COF at
  * mu_mean, same T, t_skip, eps_lambda and stepper: the same QoI
- * definitions, so ratios compare like with like), then N realisations
+ * definitions over the same window [t_skip, T], so ratios compare like
+ * with like; under the default qoi_def = paper the stick-fraction ratio is
+ * the paper's T_sk,s / T_sk,d), then N realisations
  * (montecarlo.h: realisation i has its own stream, OpenMP, checkpoint),
  * each giving the ratios pv_x / pv_x,det, pv_F / pv_F,det and
  * stick_fraction / stick_fraction,det.
@@ -22,10 +24,10 @@ enum { SF_SWEEP_PVX = 0, SF_SWEEP_PVF = 1, SF_SWEEP_SF = 2, SF_SWEEP_NQ = 3 };
 typedef struct {
     double det[SF_SWEEP_NQ];    /* deterministic pv_x [m], pv_F [N], stick fraction [-] */
     double *ratio;              /* n x SF_SWEEP_NQ, realisation-major */
-    double mean[SF_SWEEP_NQ], std[SF_SWEEP_NQ];   /* over the realisations with a complete cycle */
+    double mean[SF_SWEEP_NQ], std[SF_SWEEP_NQ];   /* over the realisations with a finite ratio */
     size_t n, from_checkpoint;
-    size_t n_valid;             /* realisations with at least one complete cycle after t_skip
-                                   (the others have NaN ratios: no cycle to measure) */
+    size_t n_valid;             /* realisations with a finite PV_x ratio (paper definitions: all
+                                   but those with no whole oscillation in [t_skip, T]) */
 } sf_sweep_point;
 
 /* Apply parameter `name` = value to s (SF_EPARSE with the reason). */
