@@ -1546,7 +1546,9 @@ static const claim_spec claims_lr[] = {
     { "fig11-stable-std-sf", "... the std of the stick-duration ratio at 1000 within a factor 1.25 of that at 100",
       K_SD_EQ, Q_SF, "=1000", "=100", 0.8, 1.25, 0, '-', '-', NULL, NULL },
     { "fig11-mid-sf-bends", "l/R between 0.1 and 10: the mean stick-duration ratio bends downward from one (at l/R = 1)",
-      K_MEAN, Q_SF, "=1", NULL, 1, 0, -1, '-', '-', "A bend of a few percent at most: at the edge of N = 100.", NULL },
+      K_MEAN, Q_SF, "=1", NULL, 1, 0, -1, '-', '-', "A bend of a few percent at most, at the edge of N = 100: "
+      "not decidable under the per-cycle stick fraction ('cycles'), which leaves out the window's partial stick "
+      "spans and the realisations' longest sticks at its ends; T_sk counts them.", NULL },
     { "fig11-mid-sf-std", "The stick duration fluctuates the most for l/R between 0.1 and 10 (std at l/R = 1 above l/R > 100)",
       K_SD, Q_SF, "=1", ">=100", 1, 0, +1, '-', '-', NULL, NULL },
     { "fig16a-small-steady", "Fig. 16(a): for l/R < 0.1 the system has one steady state like the deterministic one "
