@@ -647,31 +647,23 @@ static int slip_step(sf_osc *o, double *t, double *y, double hcap, double *h, ch
 /* The QoIs: means over the oscillations and over the complete cycles
  * (NAN when there is none), T_sk over the window (NAN when it is empty),
  * and the scene's choice of them. */
+static double mean_of(const double *v, size_t n)
+{
+    double sum = 0;
+    for (size_t i = 0; i < n; i++)
+        sum += v[i];
+    return n ? sum / (double)n : NAN;
+}
+
 static void qoi_means(sf_osc_result *res, const acc *a, const sf_scene *s)
 {
-    res->osc_pv_x_mean = res->osc_pv_F_mean = NAN;
-    if (res->nosc) {
-        double sx = 0, sF = 0;
-        for (size_t i = 0; i < res->nosc; i++) {
-            sx += res->osc_pv_x[i];
-            sF += res->osc_pv_F[i];
-        }
-        res->osc_pv_x_mean = sx / (double)res->nosc;
-        res->osc_pv_F_mean = sF / (double)res->nosc;
-    }
+    res->osc_pv_x_mean = mean_of(res->osc_pv_x, res->nosc);
+    res->osc_pv_F_mean = mean_of(res->osc_pv_F, res->nosc);
     res->win_stick_fraction = s->T > s->t_skip ? res->stick_time / (s->T - s->t_skip) : NAN;
-    res->cyc_pv_x = res->cyc_pv_F = res->cyc_stick_fraction = res->period = NAN;
-    if (res->ncycles) {
-        double sx = 0, sF = 0;
-        for (size_t i = 0; i < res->ncycles; i++) {
-            sx += res->cycle_pv_x[i];
-            sF += res->cycle_pv_F[i];
-        }
-        res->cyc_pv_x = sx / (double)res->ncycles;
-        res->cyc_pv_F = sF / (double)res->ncycles;
-        res->cyc_stick_fraction = a->stick_total / a->cycle_total;
-        res->period = a->cycle_total / (double)res->ncycles;
-    }
+    res->cyc_pv_x = mean_of(res->cycle_pv_x, res->ncycles);
+    res->cyc_pv_F = mean_of(res->cycle_pv_F, res->ncycles);
+    res->cyc_stick_fraction = res->ncycles ? a->stick_total / a->cycle_total : NAN;
+    res->period = res->ncycles ? a->cycle_total / (double)res->ncycles : NAN;
     int paper = s->qoi_def == SF_QOI_PAPER;
     res->pv_x = paper ? res->osc_pv_x_mean : res->cyc_pv_x;
     res->pv_F = paper ? res->osc_pv_F_mean : res->cyc_pv_F;
