@@ -40,9 +40,15 @@ static void row_out(void *ctx, const sf_osc_row *r)
 
 static void summary(FILE *f, const sf_scene *s, const sf_osc_result *r)
 {
-    fprintf(f, "# slipfield run summary: cycles are stick onset to stick onset, complete, with onset >= t_skip\n");
+    fprintf(f, "# slipfield run summary, from rest at the origin unless the scene says otherwise; window [t_skip, T]\n"
+               "# qoi_def = %s: %s\n", s->qoi_def == SF_QOI_PAPER ? "paper" : "cycles",
+            s->qoi_def == SF_QOI_PAPER ? "stick_fraction = stick time in the window / (T - t_skip) (paper Sec. 3.1); "
+                                         "pv_x, pv_F = mean over the oscillations (maximum of x to the next), stick or not"
+                                       : "stick_fraction, pv_x, pv_F over complete cycles (stick onset to stick onset, "
+                                         "onset >= t_skip)");
     fprintf(f, "pv_x = %.17g\npv_F = %.17g\nstick_fraction = %.17g\nperiod = %.17g\n", r->pv_x, r->pv_F,
             r->stick_fraction, r->period);
+    fprintf(f, "oscillations = %zu\nstick_time = %.17g\n", r->nosc, r->stick_time);
     /* one realisation: each QoI used (finite) or excluded (nothing to measure), as in a sweep's summary */
     const char *qn[3] = { "pv_x", "pv_F", "stick_fraction" };
     const double qv[3] = { r->pv_x, r->pv_F, r->stick_fraction };

@@ -38,3 +38,14 @@ double sf_cycle1d_transition(const sf_cycle1d *c, unsigned n)
     double t = c->t_first_slip + (double)k * c->period;
     return n % 2 ? t : t + c->t_slip;
 }
+
+double sf_cycle1d_stick_time(const sf_cycle1d *c, double t0, double t1)
+{
+    double st = 0;
+    for (unsigned j = 0;; j++) {
+        double a = sf_cycle1d_transition(c, 2 * j), b = sf_cycle1d_transition(c, 2 * j + 1);
+        if (a >= t1)
+            return st;
+        st += fmax(0, fmin(b, t1) - fmax(a, t0));
+    }
+}

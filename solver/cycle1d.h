@@ -35,6 +35,11 @@ int sf_cycle1d_init(sf_cycle1d *c, const sf_scene *s, double eps);
  * slip onset after it, ...). */
 double sf_cycle1d_transition(const sf_cycle1d *c, unsigned n);
 
+/* Stick time [s] inside [t0, t1] of the motion from rest (the paper's
+ * t_sk over that window, Sec. 3.1): the stick spans between transitions
+ * 2j and 2j + 1, clipped to the window. */
+double sf_cycle1d_stick_time(const sf_cycle1d *c, double t0, double t1);
+
 #ifdef __cplusplus
 }
 #endif

@@ -420,10 +420,14 @@ double sf_osc_slip_onset(const sf_osc *o, double *y)
 typedef struct {
     sf_osc_result *r;
     double t_skip;
+    /* the open stick cycle (since the last stick onset) */
     int open;
     double t0, xmin, xmax, Fmin, Fmax, stick;
-    size_t cap_t, cap_c, cap_b;
+    size_t cap_t, cap_c, cap_b, cap_o;
     double stick_total, cycle_total;
+    /* the open oscillation (since the last maximum of x at or after t_skip) */
+    int oopen;
+    double ot0, oxmin, oxmax, oFmin, oFmax, ostick;
 } acc;
 
 /* Make room for element n in each of na parallel arrays of capacity *cap
@@ -445,12 +449,54 @@ static int grow(size_t n, size_t *cap, size_t sz, void **arrs[], size_t na)
 
 static void note(acc *a, double x, double F)
 {
-    if (!a->open)
-        return;
-    a->xmin = fmin(a->xmin, x);
-    a->xmax = fmax(a->xmax, x);
-    a->Fmin = fmin(a->Fmin, F);
-    a->Fmax = fmax(a->Fmax, F);
+    if (a->open) {
+        a->xmin = fmin(a->xmin, x);
+        a->xmax = fmax(a->xmax, x);
+        a->Fmin = fmin(a->Fmin, F);
+        a->Fmax = fmax(a->Fmax, F);
+    }
+    if (a->oopen) {
+        a->oxmin = fmin(a->oxmin, x);
+        a->oxmax = fmax(a->oxmax, x);
+        a->oFmin = fmin(a->oFmin, F);
+        a->oFmax = fmax(a->oFmax, F);
+    }
+}
+
+/* A stick span [t0, t1]: its part inside the window [t_skip, T] (the
+ * paper's T_sk) and the open cycle's and oscillation's stick time. */
+static void stick_span(acc *a, double t0, double t1)
+{
+    if (a->open)
+        a->stick += t1 - t0;
+    if (a->oopen)
+        a->ostick += t1 - t0;
+    a->r->stick_time += fmax(0, t1 - fmax(t0, a->t_skip));
+}
+
+/* A maximum of x at t (after note() saw it): it closes the open
+ * oscillation, stick or not, and opens the next one. */
+static int x_maximum(acc *a, double t, double x, double F)
+{
+    if (t < a->t_skip)
+        return SF_SUCCESS;
+    sf_osc_result *r = a->r;
+    if (a->oopen) {   /* close the open oscillation */
+        void **os[] = { (void **)&r->osc_t, (void **)&r->osc_pv_x, (void **)&r->osc_pv_F, (void **)&r->osc_stick };
+        if (grow(r->nosc, &a->cap_o, sizeof(double), os, 4))
+            return SF_ENOMEM;
+        r->osc_t[r->nosc] = a->ot0;
+        r->osc_pv_x[r->nosc] = a->oxmax - a->oxmin;
+        r->osc_pv_F[r->nosc] = a->oFmax - a->oFmin;
+        r->osc_stick[r->nosc] = a->ostick;
+        r->nosc++;
+    }
+    a->oopen = 1;
+    a->ot0 = t;
+    a->oxmin = a->oxmax = x;
+    a->oFmin = a->oFmax = F;
+    a->ostick = 0;
+    return SF_SUCCESS;
 }
 
 static int transition(acc *a, int kind, double t, double x, double kx)
@@ -598,22 +644,30 @@ static int slip_step(sf_osc *o, double *t, double *y, double hcap, double *h, ch
     return SF_SUCCESS;
 }
 
-/* The QoIs: means over the complete cycles (NAN when there is none). */
-static void cycle_means(sf_osc_result *res, const acc *a)
+/* The QoIs: means over the oscillations and over the complete cycles
+ * (NAN when there is none), T_sk over the window (NAN when it is empty),
+ * and the scene's choice of them. */
+static double mean_of(const double *v, size_t n)
 {
-    if (!res->ncycles) {
-        res->pv_x = res->pv_F = res->stick_fraction = res->period = NAN;
-        return;
-    }
-    double sx = 0, sF = 0;
-    for (size_t i = 0; i < res->ncycles; i++) {
-        sx += res->cycle_pv_x[i];
-        sF += res->cycle_pv_F[i];
-    }
-    res->pv_x = sx / (double)res->ncycles;
-    res->pv_F = sF / (double)res->ncycles;
-    res->stick_fraction = a->stick_total / a->cycle_total;
-    res->period = a->cycle_total / (double)res->ncycles;
+    double sum = 0;
+    for (size_t i = 0; i < n; i++)
+        sum += v[i];
+    return n ? sum / (double)n : NAN;
+}
+
+static void qoi_means(sf_osc_result *res, const acc *a, const sf_scene *s)
+{
+    res->osc_pv_x_mean = mean_of(res->osc_pv_x, res->nosc);
+    res->osc_pv_F_mean = mean_of(res->osc_pv_F, res->nosc);
+    res->win_stick_fraction = s->T > s->t_skip ? res->stick_time / (s->T - s->t_skip) : NAN;
+    res->cyc_pv_x = mean_of(res->cycle_pv_x, res->ncycles);
+    res->cyc_pv_F = mean_of(res->cycle_pv_F, res->ncycles);
+    res->cyc_stick_fraction = res->ncycles ? a->stick_total / a->cycle_total : NAN;
+    res->period = res->ncycles ? a->cycle_total / (double)res->ncycles : NAN;
+    int paper = s->qoi_def == SF_QOI_PAPER;
+    res->pv_x = paper ? res->osc_pv_x_mean : res->cyc_pv_x;
+    res->pv_F = paper ? res->osc_pv_F_mean : res->cyc_pv_F;
+    res->stick_fraction = paper ? res->win_stick_fraction : res->cyc_stick_fraction;
 }
 
 /* One run's state, shared by sf_osc_run's phases: the start, a stick
@@ -701,8 +755,7 @@ static int run_stick(run_state *r)
     double kq0[3] = { s->k * x0, s->k * y[Y], 0 }, kq1[3] = { s->k * x1, s->k * y[Y], 0 };
     note(&r->a, x0, kq0[0]);
     note(&r->a, x1, kq1[0]);
-    if (r->a.open)
-        r->a.stick += t1 - t;
+    stick_span(&r->a, t, t1);
     double p0[3] = { x0, s->v_b, 0 }, p1[3] = { x1, s->v_b, 0 };
     sample(r->res, &r->next, t, p0, t1, p1);
     r->t = t = t1;
@@ -770,6 +823,8 @@ static int run_slip(run_state *r)
         wrench(o, tx, yx, qx);   /* at the extremum's own time: the belt has moved on by t */
         note(&r->a, yx[X], qx[0]);
         track(o, tx, res, yx);
+        if (y0[VX] > 0 && (rc = x_maximum(&r->a, tx, yx[X], qx[0])))
+            return rc;
     }
     wrench(o, t, y, q);
     double p1[3] = { y[X], y[VX], (-s->k * y[X] + q[0]) / s->m };
@@ -806,7 +861,7 @@ static int run_end(run_state *r, int rc)
     res->wrench_evals = o->wrench_evals;
     if (!rc && res->off_strip)
         rc = sf_seterr(r->err, r->errlen, SF_EFAIL, "the disc left the belt strip of the COF field: raise strip_halfwidth");
-    cycle_means(res, &r->a);
+    qoi_means(res, &r->a, &o->s);
     return rc;
 }
 
@@ -838,6 +893,10 @@ void sf_osc_result_free(sf_osc_result *r)
     free(r->cycle_pv_F);
     free(r->cycle_stick);
     free(r->cycle_period);
+    free(r->osc_t);
+    free(r->osc_pv_x);
+    free(r->osc_pv_F);
+    free(r->osc_stick);
     free(r->bif);
     free(r->x_samples);
     memset(r, 0, sizeof *r);

@@ -35,13 +35,28 @@
  * velocity_jump = false the jump of Eq. 14 is skipped (Eq. 12 is the stick
  * kinematics itself and always holds).
  *
- * Quantities of interest are accumulated online (no history needed):
- * a cycle runs from a stick onset to the next, complete cycles with onset
- * at or after t_skip only; PV_x and PV_F (Fx) per cycle (x extrema located
- * as events vx = 0 to the same tolerance), stick fraction = stick time /
- * time of the complete cycles, x at every slip-to-stick instant after
- * t_skip (bifurcation samples), and the energy balance
- * E(t) - E(0) = W_friction + sum of the jumps' kinetic-energy changes.
+ * Quantities of interest are accumulated online (no history needed), over
+ * the window [t_skip, T] of a run that starts from the scene's initial
+ * state (default: rest at the origin; t_skip default 10 s).  Two sets of
+ * definitions, both always computed:
+ *  - the paper's (Sec. 3.1; `qoi_def = paper`, the default): stick
+ *    fraction T_sk = the sum of the stick spans inside [t_skip, T] /
+ *    (T - t_skip); an oscillation runs from one maximum of x (vx changes
+ *    sign from + to -, located as an event to SF_OSC_TIME_TOL) to the
+ *    next, both at or after t_skip, whether or not the disc sticks in
+ *    between (a disc sliding on still oscillates); PV_x = max - min of x
+ *    and PV_F = max - min of Fx over each oscillation, averaged over the
+ *    run's oscillations (NaN only when the window holds none);
+ *  - complete stick cycles (`qoi_def = cycles`): a cycle runs from a stick
+ *    onset to the next, onset at or after t_skip; PV_x and PV_F per cycle,
+ *    stick fraction = stick time / time of the complete cycles (NaN when
+ *    the window holds no complete cycle).
+ * In a periodic stick-slip motion both give the same PVs (each
+ * oscillation holds one stick phase and its break), and the stick
+ * fractions differ by the window's partial cycles.  Also: x at every
+ * slip-to-stick instant after t_skip (bifurcation samples), and the energy
+ * balance E(t) - E(0) = W_friction + sum of the jumps' kinetic-energy
+ * changes.
  */
 #ifndef SF_OSCILLATOR_H
 #define SF_OSCILLATOR_H
@@ -75,10 +90,19 @@ typedef struct {
     size_t ntrans;
     double *trans_t, *trans_x;
     int *trans_kind;
-    /* complete cycles after t_skip */
+    /* the QoIs under the scene's qoi_def: the osc_ / win_ values (paper)
+     * or the cyc_ values (cycles) */
+    double pv_x, pv_F, stick_fraction;
+    /* the paper's: oscillations (maximum of x to the next) inside
+     * [t_skip, T], their start time, PVs and stick time; the stick time
+     * inside the window and T_sk = stick_time / (T - t_skip) */
+    size_t nosc;
+    double *osc_t, *osc_pv_x, *osc_pv_F, *osc_stick;
+    double osc_pv_x_mean, osc_pv_F_mean, stick_time, win_stick_fraction;
+    /* complete stick cycles after t_skip */
     size_t ncycles;
     double *cycle_pv_x, *cycle_pv_F, *cycle_stick, *cycle_period;
-    double pv_x, pv_F, stick_fraction, period;   /* means over the cycles */
+    double cyc_pv_x, cyc_pv_F, cyc_stick_fraction, period;   /* means over the cycles */
     /* x at slip-to-stick instants after t_skip */
     size_t nbif;
     double *bif;

@@ -1,6 +1,7 @@
 /* slipfield: quantities of interest computed from a run's samples.
- * (Per-cycle PV, stick fraction, bifurcation samples and the Eq. 15 error
- * are accumulated by the integrator itself: oscillator.h.) */
+ * (PV per oscillation and per cycle, the stick fraction T_sk, bifurcation
+ * samples and the Eq. 15 error are accumulated by the integrator itself:
+ * oscillator.h.) */
 #ifndef SF_QOI_H
 #define SF_QOI_H
 #ifdef __cplusplus

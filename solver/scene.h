@@ -32,6 +32,7 @@ enum { SF_INTEG_ADAPTIVE = 0, SF_INTEG_RK4 = 1, SF_INTEG_RK8PD = 2, SF_INTEG_RKC
 enum { SF_DOF_1 = 0, SF_DOF_3 = 1 };   /* values of the `dof` key ("1", "3") */
 enum { SF_COFGEN_AUTO = 0, SF_COFGEN_CIRCULANT = 1, SF_COFGEN_TILES = 2 };   /* `cof_generator` */
 enum { SF_COFMODEL_AUTO = 0, SF_COFMODEL_POINT = 1, SF_COFMODEL_CELL = 2 };   /* `cof_model` (numplan.h) */
+enum { SF_QOI_PAPER = 0, SF_QOI_CYCLES = 1 };   /* `qoi_def`: which definitions give pv_x, pv_F, stick_fraction (oscillator.h) */
 
 typedef struct {
     /* physics (Table 1) */
@@ -57,6 +58,7 @@ typedef struct {
     int dof;                 /* SF_DOF_1: the 1-D model of Eqs. 3-4; SF_DOF_3: x, y, phi (Eq. 5) */
     double rtol, t_skip;     /* rtol 0: chosen by the plan (numplan.h) */
     double qoi_tol;          /* relative QoI error the plan aims at */
+    int qoi_def;             /* SF_QOI_PAPER (window stick fraction, PV per oscillation) or SF_QOI_CYCLES */
     double x0, y0, phi0, vx0, vy0, w0;   /* initial state (ground frame, SI): default rest at the origin */
     int velocity_jump, exact_section, history;
     int shortcuts;           /* 0: the plan computes in full (cases verifying its shortcuts) */

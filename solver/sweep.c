@@ -115,7 +115,8 @@ int sf_sweep_run(const sf_scene *s, size_t n, int threads, const char *checkpoin
     for (int q = 0; q < SF_SWEEP_NQ; q++)   /* every ratio needs its reference */
         if (!(out->det[q] > 0) || !isfinite(out->det[q]))
             return sf_seterr(err, errlen, SF_EINVAL,
-                             "the deterministic reference has no complete cycle after t_skip (%s = %g): raise T",
+                             "the deterministic reference has no %s in [t_skip, T] (%s = %g): raise T",
+                             s->qoi_def == SF_QOI_PAPER ? "oscillation or no stick" : "complete cycle",
                              qname[q], out->det[q]);
     out->n = n;
     out->qoi = sf_calloc(n * SF_SWEEP_NQ, sizeof *out->qoi);

@@ -2,7 +2,9 @@
  *
  * At each parameter value: the deterministic reference (uniform COF at
  * mu_mean, same T, t_skip, eps_lambda and stepper: the same QoI
- * definitions, so ratios compare like with like), then N realisations
+ * definitions over the same window [t_skip, T], so ratios compare like
+ * with like; under the default qoi_def = paper the stick-fraction ratio is
+ * the paper's T_sk,s / T_sk,d), then N realisations
  * (montecarlo.h: realisation i has its own stream, OpenMP, checkpoint),
  * each giving pv_x [m], pv_F [N] and the stick fraction [-], and their
  * ratios to the deterministic values.

@@ -180,7 +180,7 @@ FAMILY_TEST(stress, "cases/stress/threshold-range.md", NULL)
 FAMILY_TEST(deterministic, "cases/deterministic/eps-first-order.md", NULL)
 FAMILY_TEST(dynamics, "cases/dynamics/variable-limit.md", NULL)
 FAMILY_TEST(limits, "cases/limits/test-large-lr.md",
-            "# reduced limits_large_lr\n```scene\ncheck = limits_large_lr\ncof = field\nl = 500000\n"
+            "# reduced limits_large_lr\n```scene\ncheck = limits_large_lr\ncof = field\nl = 500000\nqoi_def = cycles\n"
             "cells = 12\nrtol = 1e-9\nT = 20\nt_skip = 5\nsamples = 60\nalpha = 1e-3\n```\n")
 FAMILY_TEST(validation, "cases/validation/test-fig16.md",
             "# reduced val_fig16\n```scene\ncheck = val_fig16\ncof = field\ncells = 12\nrtol = 1e-8\n"

@@ -46,6 +46,54 @@ static int run(sf_scene *s, sf_osc_result *r, char *err)
     return rc;
 }
 
+/* Both QoI definitions: a disc sliding on (v_b above x_e omega) has no
+ * stick cycle, so the per-cycle values are NaN, but the paper's are
+ * finite (PV per oscillation, T_sk = 0), and qoi_def picks which the
+ * headline fields carry; on the Table 1 cycle the stick time in the
+ * window is the closed form's, and PVs agree between the definitions. */
+static void qoi_definitions(void **state)
+{
+    (void)state;
+    sf_scene s;
+    sf_scene_default(&s);
+    s.cof = SF_COF_UNIFORM;
+    s.dof = SF_DOF_1;
+    s.rtol = 1e-10;
+    s.T = 40;
+    s.v_b = 3;
+    sf_osc_result r;
+    char err[200];
+    assert_int_equal(run(&s, &r, err), SF_SUCCESS);
+    assert_int_equal(r.ncycles, 0);
+    assert_true(isnan(r.cyc_pv_x) && isnan(r.cyc_stick_fraction));
+    assert_true(r.nosc > 0);
+    assert_true(isfinite(r.pv_x) && isfinite(r.pv_F));
+    assert_true(r.stick_fraction == 0 && r.stick_time == 0);
+    sf_osc_result_free(&r);
+    s.qoi_def = SF_QOI_CYCLES;
+    assert_int_equal(run(&s, &r, err), SF_SUCCESS);
+    assert_true(isnan(r.pv_x) && isnan(r.stick_fraction));
+    assert_true(isfinite(r.osc_pv_x_mean));
+    sf_osc_result_free(&r);
+    sf_scene_default(&s);
+    s.cof = SF_COF_UNIFORM;
+    s.dof = SF_DOF_1;
+    s.rtol = 1e-11;
+    sf_cycle1d c;
+    assert_int_equal(sf_cycle1d_init(&c, &s, s.eps_lambda), SF_SUCCESS);
+    assert_int_equal(run(&s, &r, err), SF_SUCCESS);
+    assert_close(r.stick_time, sf_cycle1d_stick_time(&c, s.t_skip, s.T), 1e-7);
+    assert_close(r.win_stick_fraction, r.stick_time / (s.T - s.t_skip), 1e-15);
+    assert_close(r.osc_pv_x_mean, r.cyc_pv_x, 1e-8);
+    assert_close(r.osc_pv_F_mean, r.cyc_pv_F, 1e-8);
+    assert_true(r.pv_x == r.osc_pv_x_mean && r.stick_fraction == r.win_stick_fraction);
+    sf_osc_result_free(&r);
+    s.t_skip = s.T;   /* an empty window: T_sk cannot be formed */
+    assert_int_equal(run(&s, &r, err), SF_SUCCESS);
+    assert_true(isnan(r.stick_fraction) && r.nosc == 0 && isnan(r.pv_x));
+    sf_osc_result_free(&r);
+}
+
 /* dof = 1 with a field is refused with a reason; a belt slower than the
  * threshold starts in stick; T shorter than the first stick ends cleanly. */
 static void edges(void **state)
@@ -339,6 +387,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(closed_form_table1),
         cmocka_unit_test(edges),
+        cmocka_unit_test(qoi_definitions),
         cmocka_unit_test(eq15),
         cmocka_unit_test(periodogram),
         cmocka_unit_test(leaves_strip),

@@ -836,6 +836,10 @@ static void sweep_no_cycle(void **state)
     sf_sweep_point pt;
     char err[256] = "";
     assert_int_equal(sf_sweep_run(&s, 2, 1, NULL, 0, NULL, &pt, err, sizeof err), SF_EINVAL);
+    assert_non_null(strstr(err, "no oscillation or no stick in [t_skip, T]"));
+    sf_sweep_point_free(&pt);
+    s.qoi_def = SF_QOI_CYCLES;
+    assert_int_equal(sf_sweep_run(&s, 2, 1, NULL, 0, NULL, &pt, err, sizeof err), SF_EINVAL);
     assert_non_null(strstr(err, "no complete cycle"));
     sf_sweep_point_free(&pt);
 }

@@ -11,6 +11,7 @@
 #include "sf_error.h"
 
 #include <math.h>
+#include <gsl/gsl_math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <gsl/gsl_fit.h>
@@ -62,9 +63,18 @@ static int chk_cycle(const sf_case *c, sf_result *r)
     for (size_t i = 0; i < res.ncycles; i++)
         stick += res.cycle_stick[i];
     stick /= (double)res.ncycles;
-    sf_check_rel(r, "PV_x [m]", res.pv_x, cf.pv_x, tol);
-    sf_check_rel(r, "PV_F [N]", res.pv_F, cf.pv_F, tol);
-    sf_check_rel(r, "stick fraction [-]", res.stick_fraction, cf.stick_fraction, tol);
+    sf_check_rel(r, "PV_x per complete cycle [m]", res.cyc_pv_x, cf.pv_x, tol);
+    sf_check_rel(r, "PV_F per complete cycle [N]", res.cyc_pv_F, cf.pv_F, tol);
+    sf_check_rel(r, "stick fraction of the complete cycles [-]", res.cyc_stick_fraction, cf.stick_fraction, tol);
+    /* the paper's definitions (Sec. 3.1): each oscillation (maximum of x
+     * to the next) holds one whole stick-slip cycle, so its PVs are the
+     * cycle's; T_sk over [t_skip, T] counts the window's partial stick
+     * spans, from the closed form's transition times */
+    double tsk = sf_cycle1d_stick_time(&cf, s->t_skip, s->T);
+    sf_check_rel(r, "PV_x per oscillation [m] (paper)", res.osc_pv_x_mean, cf.pv_x, tol);
+    sf_check_rel(r, "PV_F per oscillation [N] (paper)", res.osc_pv_F_mean, cf.pv_F, tol);
+    sf_check_rel(r, "stick time inside [t_skip, T] [s] (paper's t_sk)", res.stick_time, tsk, tol);
+    sf_check_rel(r, "T_sk = t_sk / (T - t_skip) [-] (paper)", res.win_stick_fraction, tsk / (s->T - s->t_skip), tol);
     sf_check_rel(r, "period [s]", res.period, cf.period, tol);
     sf_check_rel(r, "stick duration [s]", stick, cf.t_stick, tol);
     sf_check_rel(r, "slip duration [s]", res.period - stick, cf.t_slip, tol);
@@ -82,6 +92,9 @@ static int chk_cycle(const sf_case *c, sf_result *r)
             s->dof == SF_DOF_1 ? "1-D" : "3-DOF (constant COF, Contensou closed-form wrench)",
             s->integrator == SF_INTEG_RK4 ? "fixed-step RK4" : "adaptive rk8pd", s->eps_lambda, cf.delta, cf.pv_x,
             cf.period, ideal.pv_x, ideal.period, cf.pv_x / ideal.pv_x - 1, res.steps, res.event_trials);
+    sf_note(r, "Over the window [%g, %g] s: %zu oscillations, %zu complete cycles; T_sk = %.9f against the cycle's "
+               "stick fraction %.9f (the window's partial cycles: %.2e relative).", s->t_skip, s->T, res.nosc,
+            res.ncycles, res.win_stick_fraction, cf.stick_fraction, res.win_stick_fraction / cf.stick_fraction - 1);
     sf_plot *p = sf_result_plot(r, "displacement", "Displacement of the disc (1-D stick-slip cycle)", "t [s]", "x [m]");
     sf_plot_series(p, "x(t), simulated", SF_STYLE_LINES, h.n, h.t, h.x);
     sf_plot_hline(p, "x_s = mu_s m g / k", cf.xs);
@@ -99,6 +112,54 @@ static int chk_cycle(const sf_case *c, sf_result *r)
     free(err);
     check_hist_free(&h);
     sf_osc_result_free(&res);
+    return SF_SUCCESS;
+}
+
+/* A disc that never sticks (v_b - delta above x_e omega: the first slip
+ * from rest never slows to the belt) still oscillates, and the paper's
+ * PV counts each oscillation: x = x_e (1 - cos omega t) exactly (Fx =
+ * mu_k m g throughout), maxima 2 x_e at t = (2 j + 1) pi / omega, so
+ * every oscillation has PV_x = 2 x_e and PV_F = 0, their number is the
+ * maxima inside [t_skip, T] less one, and T_sk = 0.  Run with the scene's
+ * dof and with the other (3-DOF: the Contensou wrench without spin is the
+ * same force). */
+static int chk_slide_on(const sf_case *c, sf_result *r)
+{
+    const double tol = c->spec.tolerance;
+    for (int dof = 0; dof < 2; dof++) {
+        sf_scene s = c->scene;
+        s.dof = dof ? SF_DOF_3 : SF_DOF_1;
+        double N = s.m * s.g, om = sqrt(s.k / s.m), xe = s.mu_k_ratio * s.mu_mean * N / s.k;
+        double vr = s.v_b - s.eps_lambda * om * s.R;
+        char q[200];
+        snprintf(q, sizeof q, "%s: slide-on scene (v_b - delta > x_e omega)", dof ? "3-DOF" : "1-D");
+        sf_check_true(r, q, vr > xe * om, "v_b - delta vs x_e omega");
+        sf_osc_result res;
+        check_hist h = { .every = 1 };
+        if (check_osc_run(&s, NULL, NULL, 0, &res, check_hist_row, &h, r))
+            return SF_EFAIL;
+        if (!dof) {
+            sf_plot *p = sf_result_plot(r, "slide_on", "A disc sliding on (1-D): x(t) oscillates without sticking",
+                                        "t [s]", "x [m]");
+            sf_plot_series(p, "x(t), simulated", SF_STYLE_LINES, h.n, h.t, h.x);
+            sf_plot_hline(p, "2 x_e (each maximum)", 2 * xe);
+        }
+        check_hist_free(&h);
+        long j0 = (long)ceil((s.t_skip * om / M_PI - 1) / 2), j1 = (long)floor((s.T * om / M_PI - 1) / 2);
+        double nexp = (double)(j1 - j0);   /* maxima j0 .. j1 bound j1 - j0 oscillations */
+        const char *tag = dof ? "3-DOF" : "1-D";
+        snprintf(q, sizeof q, "%s: oscillations inside [t_skip, T] (maxima of x less one)", tag);
+        sf_check_abs(r, q, (double)res.nosc, nexp, 0);
+        snprintf(q, sizeof q, "%s: PV_x per oscillation = 2 x_e [m]", tag);
+        sf_check_rel(r, q, res.pv_x, 2 * xe, tol);
+        snprintf(q, sizeof q, "%s: PV_F per oscillation = 0 [N] (abs., tol x mu_k m g)", tag);
+        sf_check_abs(r, q, res.pv_F, 0, tol * s.mu_k_ratio * s.mu_mean * N);
+        snprintf(q, sizeof q, "%s: T_sk = 0 (no stick)", tag);
+        sf_check_abs(r, q, res.stick_fraction, 0, 0);
+        sf_note(r, "%s: %zu oscillations, PV_x = %.12f m (2 x_e = %.12f m), PV_F = %.3e N, %zu transitions.", tag,
+                res.nosc, res.pv_x, 2 * xe, res.pv_F, res.ntrans);
+        sf_osc_result_free(&res);
+    }
     return SF_SUCCESS;
 }
 
@@ -296,6 +357,7 @@ static int chk_energy(const sf_case *c, sf_result *r)
 
 const sf_check_def sf_checks_deterministic[] = {
     { "det_cycle", chk_cycle, "1-D cycle vs the eps-corrected closed form: PV, durations, transition times" },
+    { "det_slide_on", chk_slide_on, "a disc that never sticks: PV per oscillation 2 x_e, T_sk = 0 (the paper's definitions)" },
     { "det_eps_order", chk_eps_order, "the threshold's effect is first order in eps_lambda, as predicted" },
     { "det_step_order", chk_step_order, "observed order of the stepper (dt for RK4, rtol for rk8pd)" },
     { "det_3dof_reduces", chk_3dof_reduces, "3-DOF with a constant COF equals the 1-D model" },

@@ -646,7 +646,7 @@ static int chk_variable_limit(const sf_case *c, sf_result *r)
             return SF_EFAIL;
         }
         double d = sf_max(sf_max(fabs(res.pv_x / cf.pv_x - 1), fabs(res.pv_F / cf.pv_F - 1)),
-                        fabs(res.stick_fraction / cf.stick_fraction - 1));
+                        fabs(res.cyc_stick_fraction / cf.stick_fraction - 1));   /* the closed form's is per cycle */
         worst = sf_max(worst, d);
         mu[k] = s.mu_mean;
         pv[k] = res.pv_F;

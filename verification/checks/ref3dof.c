@@ -291,7 +291,7 @@ static int chk_ref_stats(const sf_case *c, sf_result *r)
                 sf_cof_free(cof);
                 continue;
             }
-            double va[3] = { rs.pv_x, rs.pv_F, rs.stick_fraction }, vb[3] = { ro.pv_x, ro.pv_F, ro.stick_fraction };
+            double va[3] = { rs.cyc_pv_x, rs.cyc_pv_F, rs.cyc_stick_fraction }, vb[3] = { ro.pv_x, ro.pv_F, ro.stick_fraction };
             if (rs.ncycles != ro.ncycles)
                 sf_note(r, "l/R = %g, realisation %zu: %zu complete cycles (solver), %zu (oracle).", s.l / s.R, k,
                         rs.ncycles, ro.ncycles);
