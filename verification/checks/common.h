@@ -132,14 +132,15 @@ double check_cpu_seconds(void);
 int check_osc_run(const sf_scene *s, gsl_rng *rng, const sf_cof *cof, double sample_dt, sf_osc_result *res,
                   sf_osc_row_fn row, void *ctx, sf_result *r);
 
-/* The largest relative QoI gap over PV_x, PV_F and the stick fraction of
- * run (s, cof) against the reference run (sref, cref): max_q |q - q_ref| /
- * |q_ref|, +inf when either run has no complete cycle (NaN QoIs), so such
- * a realisation fails a gate instead of passing it. */
 /* Realisation i of plan p from its own stream (seed, i) (sf_mc_seed), as
  * a Monte Carlo sweep draws it: the same field whoever asks and when. */
 int check_draw(sf_cof_plan *p, unsigned long seed, size_t i, sf_cof **out);
 
+/* The largest relative QoI gap over PV_x, PV_F and the stick fraction of
+ * run (s, cof) against the reference run (sref, cref): max_q |q - q_ref| /
+ * |q_ref|; +inf when one run has a complete cycle and the other none, so
+ * such a realisation fails a gate instead of passing it; NaN when neither
+ * has one (no QoI to compare: a caller may draw another realisation). */
 int check_qoi_gap(const sf_scene *s, const sf_cof *cof, const sf_scene *sref, const sf_cof *cref, double *gap,
                   sf_result *r);
 
