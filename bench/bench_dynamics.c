@@ -499,7 +499,7 @@ int bench_dynamics(FILE *f, const char *dir)
         if (p1[i].ntrans != nexp)
             p1[i].err = NAN;
 #if SF_HAVE_CVODE
-    point loose[2];   /* the DESIGN.md remark: events missed at rtol 1e-3 */
+    point loose[2];   /* does CVODE miss events at rtol 1e-3? */
     run_1d(&s, u, &cf, K_BDF, 1e-3, &loose[0]);
     run_1d(&s, u, &cf, K_ADAMS, 1e-3, &loose[1]);
 #endif

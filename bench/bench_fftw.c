@@ -2,7 +2,7 @@
  * the FFTW_ESTIMATE plans the field generator makes once per plan and
  * reuses for every realisation.  MEASURE picks plans by timing, so two
  * runs (or two machines) may execute different plans and differ in the
- * last bits (DESIGN.md sec. 8); ESTIMATE is deterministic.  This section
+ * last bits (docs/design.md sec. 8); ESTIMATE is deterministic.  This section
  * measures the price of that choice on the embedding sizes we use. */
 #include "bench.h"
 

@@ -309,7 +309,7 @@ static int section_padding(FILE *f, const char *dir)
     fprintf(f, "\n![Padding work-precision](field_padding_work_precision.png)\n\n"
                "The minimal embedding costs %.3g s per field with a covariance error of %.1e; the default "
                "spec pads to %zu x %zu and reaches %.1e at %.3g s per field (%.2f times the minimal time). "
-               "DESIGN sec. 3 predicts round-off eigenvalues once the half-period reaches about 5.3 l; "
+               "docs/design.md sec. 4.2 predicts round-off eigenvalues once the half-period reaches about 5.3 l; "
                "padding beyond that buys nothing but time.\n",
             tf[0], c[0].cov_err, c[NC - 1].px, c[NC - 1].py, c[NC - 1].cov_err, tf[NC - 1], tf[NC - 1] / tf[0]);
     return rc ? 1 : 0;

@@ -209,7 +209,7 @@ int bench_field_peers(FILE *f, const fb_cost *circ, const fb_cost *chol, size_t 
                "nugget). OpenTURNS factors with LAPACK (`dpotrf`, blocked) on the system libblas/liblapack; ours "
                "with `gsl_linalg_cholesky_decomp1` on GSL's reference CBLAS. Our GSL/circulant numbers are those "
                "of the Cholesky section above, measured in this run. OpenTURNS has no circulant embedding, and "
-               "its Cholesky process is the only one that gives the exact covariance (DESIGN sec. 7: HMAT "
+               "its Cholesky process is the only one that gives the exact covariance (HMAT "
                "inflates the variance, Cholesky fails with bad_alloc beyond ~100^2 points), so larger grids are "
                "not compared.\n", q.version);
     return 0;

@@ -110,7 +110,7 @@ expect 2 "left the belt strip" "$bin" run strip.scene --out strip.tsv --summary 
 printf 'cof = uniform\nT = 30\nt_skip = 10\n' > sw.scene
 expect 2 "not above t_skip" "$bin" sweep sw.scene --param T --values 40,5 --realisations 2 --out sw.tsv
 [ ! -e sw.tsv ] && ok || bad "the refused sweep left sw.tsv"
-expect 2 "no complete cycle after t_skip" "$bin" sweep sw.scene --param T --values 12 --realisations 2 --out sw.tsv
+expect 2 "in [t_skip, T] (pv_x = nan): raise T" "$bin" sweep sw.scene --param T --values 12 --realisations 2 --out sw.tsv
 # run: no QoI is said; no --out nor --summary prints the summary
 printf 'cof = uniform\nT = 5\n' > t5.scene
 expect 0 "warning: no quantity of interest" "$bin" run t5.scene

@@ -12,7 +12,7 @@
 #   cases: cases/field/*.md cases/lognormal/*.md
 #   eq: 5,7          the paper's equations it breaks (2..15, A.1; "none")
 #   moderate: yes    a defect of 10% or less (factor 1.05, a small sign, a
-#                    10% length scale): DESIGN.md sec. 9; its cases must be
+#                    10% length scale): docs/design.md sec. 7.4; its cases must be
 #                    quick-tier cases, since the quick tier must catch it
 #
 # The scratch copy takes the tree's build/ along (timestamps kept), so only

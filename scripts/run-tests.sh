@@ -3,7 +3,7 @@
 # AddressSanitizer + UBSan.  The plain build runs once more with CMocka's
 # XML output to write JUnit XML per group into BUILD/test-results/ (old
 # files are removed first: CMocka 1.1.5 does not overwrite an existing XML
-# file, DESIGN.md sec. 8).
+# file, docs/design.md sec. 10).
 set -u
 build=$1; shift
 out="$build/test-results"

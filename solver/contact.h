@@ -55,7 +55,7 @@ int sf_contact_wrench(const sf_contact *c, double xb, double yb,
  * limit surface, dimensionless). */
 double sf_contact_mean_cof(const sf_contact *c, double xb, double yb);
 
-/* Uniform COF, uniform pressure closed forms (DESIGN.md sec. 5, Contensou
+/* Uniform COF, uniform pressure closed forms (docs/design.md sec. 4.5, Contensou
  * coupling): eps = U/(|w| R); |F| = mu N f(eps), |T| = mu N R t(eps). */
 void sf_contensou(double eps, double *f, double *t);
 

@@ -1,5 +1,5 @@
 /* slipfield: the 1-D stick-slip cycle of Eqs. 3-4 in closed form
- * (DESIGN.md sec. 3), ideal (eps_lambda = 0) and with the threshold's own
+ * (docs/design.md sec. 4.7), ideal (eps_lambda = 0) and with the threshold's own
  * effect: slip starts at relative speed delta = eps_lambda omega_n R
  * (Eq. 14) and ends when it falls back to delta, on the same harmonic arcs.
  *

@@ -591,7 +591,7 @@ int sf_field_alloc(const sf_field_spec *spec, sf_field **out)
     if (!rc && !spec->defer_covariance)
         rc = measure_cov(f);
     if (!rc) {
-        /* FFTW_ESTIMATE: the same plan in every process (DESIGN sec. 8).
+        /* FFTW_ESTIMATE: the same plan in every process (docs/design.md sec. 8).
          * FFTW_MEASURE overwrites work while timing: nothing in it is
          * needed any more (measure_cov has extracted the covariance, and
          * a deferred one refills it). */

@@ -42,7 +42,7 @@ const char *sf_strerror(int code);
 int sf_seterr(char *err, size_t n, int rc, const char *fmt, ...) SF_PRINTF_LIKE(4, 5);
 
 /* Exit statuses of every slipfield program: the CLI, the verification
- * harness and its case processes (DESIGN.md sec. 2). */
+ * harness and its case processes (docs/design.md sec. 1.4). */
 enum { SF_EXIT_OK = 0, SF_EXIT_CHECK = 1, SF_EXIT_USAGE = 2, SF_EXIT_INTERNAL = 3 };
 
 /* Call once at the start of every program that uses the library (the CLI,

@@ -23,5 +23,6 @@
 #include "qoi.h"           /* quantities of interest */
 #include "montecarlo.h"    /* reproducible Monte Carlo */
 #include "sweep.h"         /* parameter sweeps */
+#include "unum.h"          /* numerical error of a run's QoIs */
 
 #endif

@@ -17,8 +17,8 @@
  *   Cov(G(i, j), G(i + p, j + q)) = Cx(p) Cy(q),  C(p) = sum_a w(a) w(a + p),
  * which sf_tiles_covariance() returns for comparison with Eq. 2
  * (cases/field/tiles-exact-covariance).  Aliasing of the sampled kernel is
- * far below round-off for spacings up to l/4 (Poisson summation; DESIGN.md
- * sec. 10).
+ * far below round-off for spacings up to l/4 (Poisson summation; docs/design.md
+ * sec. 4.3).
  *
  * Noise.  Column i of the lattice (any integer, negative included) lies in
  * tile t = floor(i / tile_cols); a tile's noise is tile_cols columns of

@@ -26,6 +26,9 @@
  * added and flagged (`apriori`). */
 #ifndef SF_UNUM_H
 #define SF_UNUM_H
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 #include <stddef.h>
 #include <stdio.h>
@@ -65,4 +68,7 @@ int sf_unum_estimate(const sf_scene *s, const sf_cof *cof, const sf_numplan *p, 
  * companion's settings) after a comment that says what the estimate is. */
 void sf_unum_write(const sf_unum *u, FILE *f);
 
+#ifdef __cplusplus
+}
+#endif
 #endif

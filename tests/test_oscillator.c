@@ -19,7 +19,7 @@ static void closed_form_table1(void **state)
     sf_scene_default(&s);
     sf_cycle1d c;
     assert_int_equal(sf_cycle1d_init(&c, &s, 0), SF_SUCCESS);
-    /* DESIGN.md sec. 3: the Table 1 numbers */
+    /* docs/design.md sec. 4.7: the Table 1 numbers */
     assert_close(c.pv_x, 0.400328, 1e-6);
     assert_close(c.pv_F, 9.81, 1e-12);
     assert_close(c.t_stick, 1.635, 1e-12);

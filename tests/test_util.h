@@ -1,5 +1,5 @@
 /* Shared helpers for the CMocka tests.
- * CMocka 1.1.5's assert_float_equal narrows to float (DESIGN.md sec. 8):
+ * CMocka 1.1.5's assert_float_equal narrows to float (docs/design.md sec. 10):
  * use assert_close, which compares doubles with an absolute+relative
  * tolerance and prints both values on failure. */
 #ifndef SF_TEST_UTIL_H

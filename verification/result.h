@@ -86,8 +86,8 @@ typedef struct {
 } sf_claim_row;
 void sf_claim(sf_result *r, const char *id, const char *text, int status, double measured, double ci_lo,
               double ci_hi, double alpha, const char *how, const char *note);
-/* The last claim's verdicts under alternative QoI definitions (DESIGN.md
- * sec. 3), e.g. "t_skip 0 s: confirmed; window stick fraction: confirmed". */
+/* The last claim's verdicts under alternative QoI definitions (docs/design.md
+ * sec. 5.3), e.g. "t_skip 0 s: confirmed; window stick fraction: confirmed". */
 void sf_claim_defs(sf_result *r, const char *defs);
 size_t sf_result_nclaims(const sf_result *r);
 const sf_claim_row *sf_result_claim(const sf_result *r, size_t i);

@@ -3,7 +3,7 @@
  * at the plan's own strip, spacing and bilinear interpolation, read through
  * sf_cof_grid_view and sf_cof_eval.  The oracle is written here and shares
  * no code with the solver: the strip geometry from the rule documented in
- * cof.h, the correlation of Eq. 2 through the Nataf map (DESIGN.md sec. 3:
+ * cof.h, the correlation of Eq. 2 through the Nataf map (docs/design.md sec. 4.1:
  * the Gaussian field has Eq. 2, ln H ~ N(mu_g, sigma_g^2)), and the bilinear
  * weights.  The same battery runs on the circulant strip (one grid per
  * draw) and on the tiled window (cof_generator = tiles: a window that

@@ -11,7 +11,7 @@
 /* The oracle's own Eq. 2, written independently of the solver. */
 double ref_sq_exp(double hx, double hy, double l);
 
-/* The oracle's own Contensou closed forms (DESIGN.md sec. 5), written from
+/* The oracle's own Contensou closed forms (docs/design.md sec. 4.5), written from
  * the formulas with GSL's complete elliptic integrals of modulus k
  * (gsl_sf_ellint_Kcomp, Ecomp) and sharing no code with sf_contensou:
  * a uniformly pressed disc of radius R under uniform COF mu, centre slip U
@@ -42,7 +42,7 @@ sf_scene check_gen_scene(const sf_case *c);
 int check_field_sample(const sf_case *c, sf_field *f, gsl_rng *rng, double *g, size_t n);
 int check_field_sample_pair(const sf_case *c, sf_field *f, gsl_rng *rng, double *re, double *im, size_t n);
 
-/* The oracle's Nataf map (DESIGN.md sec. 3), written from the target
+/* The oracle's Nataf map (docs/design.md sec. 4.1), written from the target
  * moments independently of solver/lognormal.c: ln H ~ N(mu, sigma^2) with
  * E[H] = mean, sd[H] = std. */
 typedef struct { double mu, sigma; } ref_ln_par;

@@ -608,7 +608,7 @@ static int chk_free_disc(const sf_case *c, sf_result *r)
     sf_note(r, "Free disc, uniform COF mu_k = %g (mu_s %g x %g), R = %g m, m = %g kg (J = m R^2/2 in the solver); "
                "starts at eps = %g and %g with spin 1 rad/s, integrated (GSL rk8pd, relative error %g) until "
                "|(U, w R)| fell to %g of its start: eps = %.12f and %.12f at t = %.4f and %.4f s, against the "
-               "oracle eps_0 = %.12f (f(eps_0) = 2 eps_0 t(eps_0), closed form of DESIGN.md sec. 5 evaluated "
+               "oracle eps_0 = %.12f (f(eps_0) = 2 eps_0 t(eps_0), closed form of docs/design.md sec. 4.5 evaluated "
                "by the check). Near the stop eps - eps_0 falls like w^(G'(eps_0)/(2 t(eps_0))) = w^0.615 (G = "
                "f - 2 eps t), so a start 0.45 or 4.3 off is about 1e-9 off after the speed has fallen by 1e15.",
             s.mu_k_ratio * s.mu_mean, s.mu_mean, s.mu_k_ratio, s.R, s.m, starts[0], starts[1], s.rtol, stop, fin[0],
@@ -629,7 +629,7 @@ static int chk_free_disc(const sf_case *c, sf_result *r)
     return SF_SUCCESS;
 }
 
-/* One random variable (the large-l limit, DESIGN.md sec. 3): every QoI of
+/* One random variable (the large-l limit, docs/design.md sec. 4.8): every QoI of
  * the 3-DOF run is the 1-D closed-form cycle at the drawn mu_s. */
 static int chk_variable_limit(const sf_case *c, sf_result *r)
 {

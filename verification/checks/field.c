@@ -529,7 +529,7 @@ static int chk_cholesky_agreement(const sf_case *c, sf_result *r)
  * mode 1: sweep = l/domain (domain = (nx-1) dx, dx adjusted, l fixed).
  * Claims: every plan that did not hit the cap produces Sigma to the
  * tolerance; every plan that hit it says so; minimal embedding is PSD
- * exactly while l is below ~0.19 of the domain (DESIGN.md sec. 3). */
+ * exactly while l is below ~0.19 of the domain (docs/design.md sec. 4.2). */
 static int padding_sweep(const sf_case *c, sf_result *r, int mode)
 {
     const sf_scene *s0 = &c->scene;
@@ -599,7 +599,7 @@ static int padding_sweep(const sf_case *c, sf_result *r, int mode)
                   silent_trunc ? "a truncation went unreported" : "all truncations reported");
     if (isfinite(first_bad)) {
         sf_check_le(r, "largest l/domain where minimal embedding works, below the first failure", last_ok, first_bad);
-        sf_check_true(r, "minimal-embedding threshold l/domain within [0.1, 0.3] (DESIGN.md: ~0.19)",
+        sf_check_true(r, "minimal-embedding threshold l/domain within [0.1, 0.3] (docs/design.md sec. 4.2: ~0.19)",
                       first_bad >= 0.1 && last_ok <= 0.3, "threshold located");
     }
     sf_plot *p = sf_result_plot(r, "min_eigenvalue", "Minimal embedding: most negative eigenvalue",

@@ -1,4 +1,4 @@
-/* Exact limits of the stochastic model (issue 5, DESIGN.md sec. 3):
+/* Exact limits of the stochastic model (docs/design.md sec. 4.8):
  * large l/R, where the COF is one lognormal random variable over the whole
  * strip and every QoI ratio has a closed-form distribution; small l/R,
  * where the disc averages the field and the model homogenises towards the

@@ -1,11 +1,11 @@
 /* Manufactured solutions (MMS) for the 3-DOF slip equations (Eq. 5 with
  * the wrench of Eqs. 7-8): code verification of the solver's slip
- * right-hand side and of its three steppers (DESIGN.md sec. 9).
+ * right-hand side and of its three steppers (docs/design.md sec. 7.3).
  *
  * A smooth trajectory q*(t) = (x*, y*, phi*)(t) is chosen inside one slip
  * phase, with the disc's instantaneous pole outside the disc at all times
  * (|u| > |w| R, u the centre's slip velocity), so that the slip direction
- * field over the disc is smooth (DESIGN.md sec. 5 quadrature note).  This
+ * field over the disc is smooth (docs/design.md sec. 4.5, quadrature).  This
  * check computes the source
  *     S(t) = M q*'' + K q* - Q(q*, q*')
  * WITH ITS OWN CODE from the paper: M = diag(m, m, J), J = m R^2/2, K =

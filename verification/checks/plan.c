@@ -1,4 +1,4 @@
-/* The plan's skip decisions (issue 6, DESIGN.md sec. 1): each shortcut
+/* The plan's skip decisions (docs/design.md sec. 1.2): each shortcut
  * against the full computation it replaces (scene key shortcuts = false),
  * on a grid of scenes at the shortcut's boundary.
  *  - plan_shortcut_boundary: one random variable instead of a field when

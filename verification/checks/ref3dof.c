@@ -1,5 +1,5 @@
 /* Code-to-code checks of the 3-DOF integrator against the independent
- * oracle verification/oracle/ref3dof (DESIGN.md sec. 9): trajectories up
+ * oracle verification/oracle/ref3dof (docs/design.md sec. 7.3): trajectories up
  * to the first few transitions, QoI distributions beyond, the work-energy
  * balance with the oracle's wrench along the solver's history, and Eq. 15
  * computed by both codes. */

@@ -153,7 +153,7 @@ static int chk_contensou_theta(const sf_case *c, sf_result *r)
     sf_check_le(r, "max over (theta, psi) of |T*/mu - sign(theta) t(|cot theta|)| (units of mu N R)", et, c->spec.tolerance);
     sf_note(r, "%s layout, %zu cells; %zu theta values strictly inside (-pi/2, pi/2) (Contensou ratio eps = |cot "
                "theta| from %.3g to %.3g) x %zu azimuths = %zu points; mu_s = %g. The oracle is the closed form "
-               "of DESIGN.md sec. 5 evaluated by the check (GSL complete elliptic integrals), not sf_contensou.",
+               "of docs/design.md sec. 4.5 evaluated by the check (GSL complete elliptic integrals), not sf_contensou.",
             s->layout == SF_LAYOUT_POLAR ? "polar" : "cartesian", sf_contact_ncells(d.ct), nt, emin, emax, np, n, mu);
     size_t nd = 401;
     double *td = check_alloc(nd * sizeof *td), *fd = check_alloc(nd * sizeof *fd), *tdd = check_alloc(nd * sizeof *tdd);
