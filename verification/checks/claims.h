@@ -1,7 +1,7 @@
 /* The claims engine's data model: a Monte Carlo sweep point (cpoint) with
  * its QoIs under each definition, and a claim of the paper (claim_spec)
  * judged on such points.  The paper's claims themselves (claims_paper.c)
- * are data on this header only; the engine (validation.c) tests them. */
+ * are data on this header only; the engine (claims_engine.c) tests them. */
 #ifndef SF_CHECKS_CLAIMS_H
 #define SF_CHECKS_CLAIMS_H
 

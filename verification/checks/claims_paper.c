@@ -1,7 +1,7 @@
 /* The paper's claims (Hu, Batou & Ouyang 2023, Secs. 3-4) as data: what
  * each figure says, how we read it as a test on the sweep's points, and
  * the measured causes behind the contradictions we explain.  The engine
- * that tests them is in validation.c. */
+ * that tests them is claims_engine.c. */
 #include "claims.h"
 
 #include <math.h>

@@ -1,0 +1,40 @@
+/* The claims engine (claims_engine.c) as the validation checks call it:
+ * a sweep judged against a table of claim_spec (claims.h), and a single
+ * claim judged from an estimate the check computed itself. */
+#ifndef SF_CHECKS_CLAIMS_ENGINE_H
+#define SF_CHECKS_CLAIMS_ENGINE_H
+
+#include "common.h"
+#include "claims.h"
+#include "cof.h"
+
+/* A Monte Carlo worker's state (sf_mc_ops alloc / free; ctx is a
+ * claims_ws whose plan is ignored): the scene and a COF plan of its own. */
+typedef struct {
+    const sf_scene *s;    /* the run's scene (t_skip = 0) */
+    double tskip, tlate;
+    sf_cof_plan *plan;
+} claims_ws;
+void *claims_ws_alloc(void *ctx);
+void claims_ws_free(void *p);
+/* The body of an sf_mc_ops realise on a claims_ws worker p: draws the
+ * realisation's COF from the worker's plan, gives it to run, frees it. */
+typedef int (*claims_ws_run_fn)(const claims_ws *w, const sf_cof *cof, double *out);
+int claims_ws_realise(void *p, gsl_rng *rng, double *out, claims_ws_run_fn run);
+
+/* Runs the case's sweep (c->spec.sweep over c->spec.sweep_param), notes
+ * its table, judges and gates every claim of spec (NULL-id ended) whose
+ * points it has, and plots the figure fig (x label xl, log x if logx).
+ * On success *out holds the K = *Kout points for the caller's own checks
+ * (free with claims_free); SF_EFAIL or SF_EINVAL otherwise. */
+int claims_sweep(const sf_case *c, sf_result *r, const claim_spec *spec, const char *fig, const char *xl,
+                 int logx, cpoint **out, size_t *Kout);
+void claims_free(cpoint *pt, size_t K);
+
+/* Records and gates the claim cs of the table all (for its alpha share)
+ * from an estimate est with standard error se (df degrees of freedom) on
+ * the test's scale; how and defs describe the test for the report. */
+void claims_judge_one(const sf_case *c, sf_result *r, const claim_spec *all, const claim_spec *cs, double est,
+                      double se, double df, const char *how, const char *defs);
+
+#endif
