@@ -271,7 +271,7 @@ int sf_paper_report(const sf_run_meta *meta, const sf_outcome *o, size_t n, char
         }
         fprintf(f, "# The paper's claims, figure by figure\n\n"
                    "Hu, Batou & Ouyang (2023), Secs. 2.4, 3, 4 and 5, against this run (tier %s, seeds %s). "
-                   "Each claim is a one-sided test at the stated alpha (its case's alpha split over the claims the case gates, "
+                   "Each claim is a one-sided test at the stated alpha (its case's alpha split over the claims the case judges, "
                    "Bonferroni, so that the tier's false-alarm budget holds): **confirmed** when the data reject the "
                    "opposite of the claim, **contradicted** when they reject the claim, otherwise *not decidable at "
                    "this N*. A claim about a magnitude (\"about 40%%\", \"tends to 0.2\") is an equivalence test "
