@@ -93,6 +93,47 @@ static void estimate_is_its_formula(void **state)
     sf_cof_free(cof);
 }
 
+/* the estimate's bookkeeping for a quadrature plan (point or cell
+ * averages) on a fixed-step run: its cells, step sizes and the a-priori
+ * cell-average term (the plan is given by hand; the COF is uniform, so the
+ * companion runs whatever the cells) */
+static void estimate_bookkeeping(void **state)
+{
+    (void)state;
+    sf_scene s;
+    sf_scene_default(&s);
+    s.cof = SF_COF_UNIFORM;
+    s.T = 20;
+    s.integrator = SF_INTEG_RK4;
+    s.dt = 1e-3;
+    sf_cof *cof = NULL;
+    assert_int_equal(sf_cof_alloc_uniform(s.mu_mean, &cof), SF_SUCCESS);
+    sf_osc *o = NULL;
+    char err[256];
+    sf_osc_result r;
+    assert_int_equal(sf_osc_alloc(&s, cof, &o, err, sizeof err), SF_SUCCESS);
+    assert_int_equal(sf_osc_run(o, NULL, NULL, 0, &r, err, sizeof err), SF_SUCCESS);
+    sf_numplan p = *sf_osc_get_plan(o);
+    p.quadrature = 1;
+    p.cells = 16;
+    p.err_quad = 1e-4;
+    for (int ca = 0; ca < 2; ca++) {
+        p.cell_average = ca;
+        sf_unum u;
+        int rc = sf_unum_estimate(&s, cof, &p, &r, &u, err, sizeof err);
+        assert_int_equal(rc, SF_SUCCESS);
+        assert_true(u.fixed_step && u.rtol == 1e-3 && u.rtol_c == 2e-3);
+        assert_int_equal(u.cells, 16);
+        assert_int_equal(u.cells_c, ca ? 16 : 11);
+        assert_int_equal(u.cell_average, ca);
+        for (int k = 0; k < 3; k++)
+            assert_true(u.apriori[k] == (ca ? 1e-4 * fabs(u.q[k]) : 0));
+    }
+    sf_osc_result_free(&r);
+    sf_osc_free(o);
+    sf_cof_free(cof);
+}
+
 /* the other summary forms, and a companion that cannot run */
 static void write_forms_and_refusal(void **state)
 {
@@ -138,6 +179,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(companion_settings),
         cmocka_unit_test(estimate_is_its_formula),
+        cmocka_unit_test(estimate_bookkeeping),
         cmocka_unit_test(write_forms_and_refusal),
     };
     return cmocka_run_group_tests_name("unum", tests, NULL, NULL);
