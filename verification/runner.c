@@ -650,6 +650,11 @@ static int run_and_report(const verify_opts *o, const sf_case *cases, size_t kep
     return nf ? SF_EXIT_CHECK : SF_EXIT_OK;
 }
 
+/* The selected cases, also from file scope: a forked case process
+ * _exits without unwinding, and the array must stay reachable there (an
+ * optimised frame may keep the only pointer in a register it reused). */
+static sf_case *volatile selected;   /* volatile: the store is kept though nothing reads it */
+
 int sf_verify_main(int argc, char **argv)
 {
     verify_opts o;
@@ -661,6 +666,7 @@ int sf_verify_main(int argc, char **argv)
     int rc = parse_options(argc, argv, &o, files, &n);
     if (!rc)
         rc = select_cases(&o, files, n, &cases, &kept, &skipped);
+    selected = cases;
     free(files);
     if (rc)
         return rc == SF_OPT_DONE ? SF_EXIT_OK : rc;
