@@ -276,20 +276,8 @@ static void set_grid(sf_cof_plan_info *in, double nx, double ny, double h, doubl
     in->bound = B;
 }
 
-void sf_cof_strip_bounds(const sf_scene *s, double *B0, double *W0)
-{
-    double mu_hi = s->mu_mean + 4 * s->mu_std;
-    *B0 = s->R + 2 * mu_hi * s->m * s->g / s->k;
-    *W0 = s->strip_halfwidth > 0 ? s->strip_halfwidth + s->R : *B0;
-}
-
-double sf_cof_strip_points(const sf_scene *s, double h)
-{
-    double B0, W0;
-    sf_cof_strip_bounds(s, &B0, &W0);
-    double B = B0 + 2 * h, W = W0 + 2 * h, len = s->v_b * s->T + 2 * B;
-    return (ceil(len / h) + 1) * (ceil(2 * W / h) + 1);
-}
+void sf_cof_strip_bounds(const sf_scene *s, double *B0, double *W0) { sf_plan_strip_bounds(s, B0, W0); }
+double sf_cof_strip_points(const sf_scene *s, double h) { return sf_plan_strip_points(s, h); }
 
 /* The effective field of cof_model = cell_average (cellavg.h): a
  * Gaussian field with the exact covariance of the lognormal field averaged
@@ -349,7 +337,7 @@ int sf_cof_plan_alloc(const sf_scene *s, sf_cof_plan **out, char *err, size_t er
     }
     if (p->info.kind == SF_COF_FIELD) {
         double h = s->l / 8, B0, W0;
-        sf_cof_strip_bounds(s, &B0, &W0);
+        sf_plan_strip_bounds(s, &B0, &W0);
         double E = hypot(s->v_b * s->T + 2 * B0, 2 * W0);   /* the strip the disc can visit */
         double B = B0 + 2 * h, W = W0 + 2 * h, len = s->v_b * s->T + 2 * B;
         p->info.strip_diag = E;

@@ -1,7 +1,6 @@
 #include "numplan.h"
 #include "sf_error.h"
 #include "cellavg.h"
-#include "cof.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -194,6 +193,23 @@ double sf_numplan_err_cell(double l_over_R, double cv, size_t cells)
     return cv * fmax(CA_K * l_over_R, CA_0) * q * q;
 }
 
+/* ---- The strip of belt the disc can visit (numplan.h) */
+
+void sf_plan_strip_bounds(const sf_scene *s, double *B0, double *W0)
+{
+    double mu_hi = s->mu_mean + 4 * s->mu_std;
+    *B0 = s->R + 2 * mu_hi * s->m * s->g / s->k;
+    *W0 = s->strip_halfwidth > 0 ? s->strip_halfwidth + s->R : *B0;
+}
+
+double sf_plan_strip_points(const sf_scene *s, double h)
+{
+    double B0, W0;
+    sf_plan_strip_bounds(s, &B0, &W0);
+    double B = B0 + 2 * h, W = W0 + 2 * h, len = s->v_b * s->T + 2 * B;
+    return (ceil(len / h) + 1) * (ceil(2 * W / h) + 1);
+}
+
 /* The cells per diameter the cell-average model needs for the
  * quadrature's share tq of qoi_tol: err_cell(n) = tq, at least
  * SF_PLAN_CELLAVG_CELLS; 0 when that is above SF_PLAN_CELLAVG_MAX_CELLS. */
@@ -222,7 +238,7 @@ int sf_numplan_cell_average(const sf_scene *s, size_t *cells, double *box)
          * SF_PLAN_CELLAVG_MAX_POINTS the point model's tiles (a window
          * that follows the disc) keep memory bounded instead */
         if (on)
-            on = sf_cof_strip_points(s, sf_cellavg_grid_spacing(2 * s->R / (double)n)) <= SF_PLAN_CELLAVG_MAX_POINTS;
+            on = sf_plan_strip_points(s, sf_cellavg_grid_spacing(2 * s->R / (double)n)) <= SF_PLAN_CELLAVG_MAX_POINTS;
     }
     if (!on)
         return 0;

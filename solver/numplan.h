@@ -28,6 +28,62 @@ extern "C" {
 #include <stdio.h>
 #include "scene.h"
 
+typedef enum { SF_COF_UNIFORM = 0, SF_COF_VARIABLE = 1, SF_COF_FIELD = 2 } sf_cof_kind;
+
+/* ---- The COF of a run: what cof.c builds and draws (sf_cof_plan_alloc).
+ *
+ * The plan decides what a scene needs (one place): cof = uniform draws
+ * nothing; variable draws one lognormal value; field samples a lognormal
+ * field on the belt strip the disc can visit during [0, T] (by circulant
+ * embedding of the whole strip; or, cof_generator = tiles or auto above
+ * SF_COF_AUTO_POINTS strip points, in a window of it that follows the
+ * disc: see below):
+ *   xb in [-v_b T - B, B],  yb in [-W, W],
+ *   B = R + 2 mu_hi m g / k + 2 h,  W = strip_halfwidth + R + 2 h (0: W = B),
+ * where 2 mu_hi m g / k (mu_hi = mu_mean + 4 mu_std) bounds the spring
+ * excursion |r| (the spring force never exceeds twice the largest
+ * friction force it balances).  Grid spacing h = l/8: bilinear
+ * interpolation then costs 0.7% of the field's std, RMS
+ * (cases/contact/interpolation).  A grid above SF_COF_MAX_POINTS is
+ * refused with SF_ETOOBIG and the reason in err.
+ * Shortcut: when the strip's diagonal E is so short against l that any
+ * two of its points have correlation >= 1 - 1e-6 ((E/l)^2 <= 1e-6), the
+ * field is one random variable over the run and the plan draws one
+ * (kind SF_COF_VARIABLE; info.shortcut = 1); so it does when mu_std = 0.
+ * A scene with shortcuts = false gets the field whatever l and E
+ * (cases/plan verify the shortcut against it). */
+#define SF_COF_SHORTCUT_E2 1e-6
+typedef struct {
+    sf_cof_kind kind;
+    double x0, y0, dx, dy;   /* strip origin and spacing [m] */
+    size_t nx, ny;           /* strip grid points */
+    double bound;            /* B [m] */
+    int shortcut;            /* 1: a field scene planned as one variable */
+    double strip_diag;       /* E: diagonal of the strip the disc can visit [m] (field scenes) */
+    double strip_points;     /* grid points of the whole strip (field scenes) */
+    int generator;           /* SF_COFGEN_CIRCULANT or SF_COFGEN_TILES (field scenes) */
+    double margin;           /* tiles: M [m]; nx x ny is then the window, x0 the strip's start */
+    double box;              /* > 0: cof_model = cell_average, the cells' side [m] (cellavg.h) */
+} sf_cof_plan_info;
+
+/* The strip's bounds B0 and W0 [m] before the grid's margin (above:
+ * B = B0 + 2 h, W = W0 + 2 h), and the points of a strip grid of spacing
+ * h [m] over [0, T] (the accuracy plan sizes the cell-averaged strip
+ * with it). */
+void sf_plan_strip_bounds(const sf_scene *s, double *B0, double *W0);
+double sf_plan_strip_points(const sf_scene *s, double h);
+
+/* cof_generator = auto takes the tiles above this many strip points.  The
+ * circulant's memory grows with v_b T / l^2 (286 MB at 1.7e6 strip points,
+ * l = 0.05 m, Table 1, T = 100 s; 1.1 GB at 6.8e6, l = 0.025 m); 2^21
+ * keeps every existing case on the circulant (their bits unchanged, e.g.
+ * cases/validation/fig16-bifurcation-lr at l/R = 0.1) and takes the tiles
+ * from about l = 0.045 m at Table 1 (issue 14). */
+#define SF_COF_AUTO_POINTS ((size_t)1 << 21)
+
+/* The largest number of strip (or window) grid points a plan accepts. */
+#define SF_COF_MAX_POINTS ((size_t)1 << 24)
+
 /* Cells per correlation length below which a quadrature is warned about. */
 #define SF_PLAN_CELLS_PER_L 1.0
 /* The largest ring count the plan chooses by itself. */
