@@ -85,50 +85,16 @@ int sf_cmd_run(int argc, char **argv)
         return SF_EXIT_USAGE;
     }
     char err[256] = "";
-    sf_cof_plan *plan;
-    if ((rc = sf_cof_plan_alloc(&s, &plan, err, sizeof err))) {
+    sf_plan pl;   /* the run's plan, made first: the builders below take it */
+    sf_cof_plan *plan = NULL;
+    if ((rc = sf_plan_make(&s, &pl, err, sizeof err)) || (rc = sf_cof_plan_build(&s, &pl, &plan, err, sizeof err))) {
         fprintf(stderr, "slipfield run: %s: %s\n", path, *err ? err : sf_strerror(rc));
         return sf_cli_status(rc);
     }
+    pl.history = out_path != NULL;   /* without --out, only the QoIs */
     if (explain) {
-        const sf_cof_plan_info *in = sf_cof_plan_get_info(plan);
         printf("plan for %s (shortcuts %s)\n", path, s.shortcuts ? "on" : "off: everything computed in full");
-        if (in->kind == SF_COF_UNIFORM)
-            printf("COF: uniform %g (no field, no draw)\n", s.mu_mean);
-        else if (in->kind == SF_COF_VARIABLE && !in->shortcut)
-            printf("COF: one lognormal random variable per realisation (no field)\n");
-        else if (in->kind == SF_COF_VARIABLE && s.mu_std == 0)
-            printf("COF: field with mu_std = 0, i.e. uniform %g (no field, no draw)\n", s.mu_mean);
-        else if (in->kind == SF_COF_VARIABLE)
-            printf("COF: one random variable, no field: the strip the disc can visit (diagonal E = %.4g m) is short "
-                   "against l = %.4g m, (E/l)^2 = %.3g <= %g, so any two of its points correlate at >= 1 - %g "
-                   "(cases/plan/variable-shortcut-boundary)\n",
-                   in->strip_diag, s.l, (in->strip_diag / s.l) * (in->strip_diag / s.l), SF_COF_SHORTCUT_E2,
-                   SF_COF_SHORTCUT_E2);
-        else if (in->box > 0)
-            printf("COF: cell-averaged lognormal field (cof_model = %s): the field of Eq. 2 averaged over squares of "
-                   "side %.4g m (= %.3g l), a Gaussian field with the exact box-averaged covariance and the lognormal's "
-                   "mean and variance (std %.4g), on the belt strip, %zu x %zu points, spacing %.4g m (box/3), x from "
-                   "%.4g m, |y| <= %.4g m; circulant embedding, one FFTW plan (FFTW_ESTIMATE) reused for every "
-                   "realisation (cellavg.h)\n",
-                   s.cof_model == SF_COFMODEL_CELL ? "cell_average" : "auto: the plan's choice", in->box, in->box / s.l,
-                   sf_cof_plan_cell_std(plan), in->nx, in->ny, in->dx, in->x0, -in->y0);
-        else if (in->generator == SF_COFGEN_TILES)
-            printf("COF: lognormal field generated on demand from tiles of white noise (cof_generator = %s%s): a "
-                   "window of %zu x %zu points, spacing %.4g m (l/8), |y| <= %.4g m, that follows the disc along the "
-                   "belt (footprint 2R, margin %.4g m each side, slack R ahead); the circulant strip over [0, T] "
-                   "would need %.3g points%s\n",
-                   s.cof_generator == SF_COFGEN_TILES ? "tiles" : "auto",
-                   s.cof_generator == SF_COFGEN_TILES ? "" : ", strip above 2^21 points", in->nx, in->ny, in->dx,
-                   -in->y0, in->margin, in->strip_points,
-                   in->strip_points > (double)SF_COF_MAX_POINTS ? " (above the cap of 2^24)" : "");
-        else
-            printf("COF: lognormal field on the belt strip, %zu x %zu points, spacing %.4g m (l/8), x from %.4g m, "
-                   "|y| <= %.4g m; (E/l)^2 = %.3g, above the one-variable threshold %g; one FFTW plan "
-                   "(FFTW_ESTIMATE), reused for every realisation; circulant embedding (cof_generator = %s%s)\n",
-                   in->nx, in->ny, in->dx, in->x0, -in->y0, (in->strip_diag / s.l) * (in->strip_diag / s.l),
-                   SF_COF_SHORTCUT_E2, s.cof_generator == SF_COFGEN_AUTO ? "auto" : "circulant",
-                   s.cof_generator == SF_COFGEN_AUTO ? ": strip at or below 2^21 points" : "");
+        sf_plan_explain(&pl, &s, stdout);
     }
     gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
     gsl_rng_set(rng, s.seed);
@@ -137,22 +103,20 @@ int sf_cmd_run(int argc, char **argv)
     gsl_rng_free(rng);
     sf_cof_plan_free(plan);
     sf_osc *o = NULL;
-    if (rc || (rc = sf_osc_alloc(&s, cof, &o, err, sizeof err))) {
+    if (rc || (rc = sf_osc_alloc_plan(&s, &pl, cof, &o, err, sizeof err))) {
         fprintf(stderr, "slipfield run: %s: %s\n", path, *err ? err : sf_strerror(rc));
         sf_cof_free(cof);
         return sf_cli_status(rc);
     }
     if (explain) {
-        sf_osc_explain(o, stdout);
-        printf("limit surface: not computed (the stick test needs only its T = 0 section)\n");
-        printf("history: %s\n", out_path ? "streamed to the output file (not kept in memory)"
-                                          : "none: the quantities of interest are accumulated online");
+        printf("set-up:\n");
+        sf_osc_describe(o, stdout);
         sf_osc_free(o);
         sf_cof_free(cof);
         return SF_EXIT_OK;
     }
-    if (*sf_osc_get_plan(o)->warning)
-        fprintf(stderr, "slipfield run: %s: warning: %s\n", path, sf_osc_get_plan(o)->warning);
+    if (*pl.num.warning)
+        fprintf(stderr, "slipfield run: %s: warning: %s\n", path, pl.num.warning);
     sf_out out = { 0 }, sum = { 0 };
     int st = out_path ? sf_cli_open("run", out_path, path, &out) : SF_EXIT_OK;
     if (!st && sum_path && (st = sf_cli_open("run", sum_path, path, &sum)) && out_path)

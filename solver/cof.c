@@ -264,47 +264,19 @@ struct sf_cof_plan {
     sf_field *cfield;          /* cell averages: its Gaussian field (circulant embedding) */
 };
 
-/* The plan's grid: nx x ny points (whole numbers), spacing h [m], x from
- * x0, |y| <= W, bound B (cof.h) [m]. */
-static void set_grid(sf_cof_plan_info *in, double nx, double ny, double h, double x0, double W, double B)
-{
-    in->nx = (size_t)nx;
-    in->ny = (size_t)ny;
-    in->dx = in->dy = h;
-    in->x0 = x0;
-    in->y0 = -W;
-    in->bound = B;
-}
-
 void sf_cof_strip_bounds(const sf_scene *s, double *B0, double *W0) { sf_plan_strip_bounds(s, B0, W0); }
 double sf_cof_strip_points(const sf_scene *s, double h) { return sf_plan_strip_points(s, h); }
 
 /* The effective field of cof_model = cell_average (cellavg.h): a
  * Gaussian field with the exact covariance of the lognormal field averaged
- * over boxes of side `box`, on the belt strip at spacing box/3, by
- * circulant embedding of its separable-sum kernel (field.h). */
-static int plan_cell_average(sf_cof_plan *p, const sf_scene *s, double box, double B0, double W0, char *err,
-                             size_t errlen)
+ * over boxes of side info.box, on the plan's strip grid (spacing box/3),
+ * by circulant embedding of its separable-sum kernel (field.h). */
+static int build_cell_average(sf_cof_plan *p, const sf_scene *s, char *err, size_t errlen)
 {
-    if (s->precorrect)
-        return sf_seterr(err, errlen, SF_EINVAL, "cof_model = cell_average makes the field of Eq. 2 through the "
-                                                 "Nataf map: precorrect is not supported");
-    if (!(s->mu_std > 0))
-        return sf_seterr(err, errlen, SF_EINVAL, "cof_model = cell_average needs mu_std > 0");
+    double box = p->info.box, d = p->info.dx;
     int rc = sf_cellavg_init(&p->ca, s->mu_mean, s->mu_std, s->l, box);
-    if (rc)
+    if (rc)   /* a plan made from another scene */
         return sf_seterr(err, errlen, rc, "invalid cell-average model (l = %g m, box = %g m)", s->l, box);
-    double d = sf_cellavg_grid_spacing(box);
-    double B = B0 + 2 * d, W = W0 + 2 * d, len = s->v_b * s->T + 2 * B;
-    double nx = ceil(len / d) + 1, ny = ceil(2 * W / d) + 1;
-    p->info.strip_points = nx * ny;
-    p->info.generator = SF_COFGEN_CIRCULANT;
-    p->info.box = box;
-    if (!(nx * ny <= (double)SF_COF_MAX_POINTS))
-        return sf_seterr(err, errlen, SF_ETOOBIG,
-                         "the cell-averaged belt strip needs %.3g grid points (spacing %.3g m): above the cap of 2^24; "
-                         "lower v_b T or set strip_halfwidth", nx * ny, d);
-    set_grid(&p->info, nx, ny, d, -s->v_b * s->T - B, W, B);
     sf_field_spec fs;
     sf_field_spec_default(&fs, p->info.nx, p->info.ny, d, d, s->l);
     fs.sep_terms = p->ca.nterms;
@@ -318,104 +290,62 @@ static int plan_cell_average(sf_cof_plan *p, const sf_scene *s, double box, doub
     fs.sample_real = 1;        /* one field per draw (sf_cof_plan_draw): a real FFT, half the work */
     rc = sf_field_alloc(&fs, &p->cfield);
     if (!sf_usable(rc))
-        return sf_seterr(err, errlen, rc, "cannot plan the %.0f x %.0f cell-averaged strip field", nx, ny);
+        return sf_seterr(err, errlen, rc, "cannot plan the %zu x %zu cell-averaged strip field", p->info.nx,
+                         p->info.ny);
     return SF_SUCCESS;
 }
 
-int sf_cof_plan_alloc(const sf_scene *s, sf_cof_plan **out, char *err, size_t errlen)
+/* The circulant strip of the point model, on the plan's grid. */
+static int build_strip(sf_cof_plan *p, const sf_scene *s, char *err, size_t errlen)
+{
+    sf_scene gs = *s;
+    gs.nx = p->info.nx;
+    gs.ny = p->info.ny;
+    gs.dx = gs.dy = p->info.dx;
+    int rc = sf_lnfield_alloc_sampler(&gs, &p->field);
+    if (rc == SF_ETOOBIG)   /* the embedding is over its own cap */
+        return sf_seterr(err, errlen, SF_ETOOBIG,
+                         "the %zu x %zu grid points of the belt strip need a circulant embedding above its cap "
+                         "of 2^25 points; raise l, lower v_b T or set strip_halfwidth", p->info.nx, p->info.ny);
+    if (!sf_usable(rc))
+        return sf_seterr(err, errlen, rc, "cannot plan the %zu x %zu strip field", p->info.nx, p->info.ny);
+    return SF_SUCCESS;
+}
+
+int sf_cof_plan_build(const sf_scene *s, const sf_plan *pl, sf_cof_plan **out, char *err, size_t errlen)
 {
     *out = NULL;
     sf_cof_plan *p = sf_calloc(1, sizeof *p);
     if (!p)
         return SF_ENOMEM;
-    p->info.kind = (sf_cof_kind)s->cof;
+    p->info = pl->cof;
     p->mu_mean = s->mu_mean;
     int rc = sf_lognormal_init(&p->ln, s->mu_mean, s->mu_std);
-    if (rc) {
+    if (rc) {   /* a plan made from another scene */
         free(p);
         return sf_seterr(err, errlen, rc, "invalid COF marginal (mean %g, std %g)", s->mu_mean, s->mu_std);
     }
-    if (p->info.kind == SF_COF_FIELD) {
-        double h = s->l / 8, B0, W0;
-        sf_plan_strip_bounds(s, &B0, &W0);
-        double E = hypot(s->v_b * s->T + 2 * B0, 2 * W0);   /* the strip the disc can visit */
-        double B = B0 + 2 * h, W = W0 + 2 * h, len = s->v_b * s->T + 2 * B;
-        p->info.strip_diag = E;
-        if (s->shortcuts && ((E / s->l) * (E / s->l) <= SF_COF_SHORTCUT_E2 || s->mu_std == 0)) {
-            p->info.kind = SF_COF_VARIABLE;
-            p->info.shortcut = 1;
-            *out = p;
-            return SF_SUCCESS;
-        }
-        size_t ca_cells;
-        double box;
-        if (sf_numplan_cell_average(s, &ca_cells, &box)) {
-            rc = plan_cell_average(p, s, box, B0, W0, err, errlen);
-            if (rc) {
-                sf_cof_plan_free(p);
-                return rc;
-            }
-            *out = p;
-            return SF_SUCCESS;
-        }
-        double nx = ceil(len / h) + 1, ny = ceil(2 * W / h) + 1;
-        p->info.strip_points = nx * ny;
-        int gen = s->cof_generator;
-        if (gen == SF_COFGEN_AUTO)
-            gen = nx * ny > (double)SF_COF_AUTO_POINTS && !(s->precorrect && s->mu_std > 0) ? SF_COFGEN_TILES
-                                                                                          : SF_COFGEN_CIRCULANT;
-        p->info.generator = gen;
-        if (gen == SF_COFGEN_TILES) {
-            if (s->precorrect && s->mu_std > 0) {
-                free(p);
-                return sf_seterr(err, errlen, SF_EINVAL,
-                                 "precorrect needs cof_generator = circulant (the tiles make Eq. 2 only)");
-            }
-            /* the window: the disc's footprint 2R, a margin M = R/4 each
-             * side (a step never moves the disc by more than M/2: sf_osc;
-             * a smaller M caps the steps harder), a
-             * slack R towards -x (where the belt carries the disc) so
-             * that a slide is due once per R of travel, and M towards +x */
-            double M = fmax(s->R / 4, 2 * h);
-            double mx = ceil((3 * s->R + 3 * M) / h) + 1;
-            if (!(mx * ny <= (double)SF_COF_MAX_POINTS)) {
-                free(p);
-                return sf_seterr(err, errlen, SF_ETOOBIG,
-                                 "the tiled window needs %.3g grid points (spacing l/8 = %.3g m): above the cap of "
-                                 "2^24; raise l or set strip_halfwidth", mx * ny, h);
-            }
-            set_grid(&p->info, mx, ny, h, -s->v_b * s->T - B, W, B);
-            p->info.margin = M;
-            p->l = s->l;
-            p->R = s->R;
-            *out = p;
-            return SF_SUCCESS;
-        }
-        if (!(nx * ny <= (double)SF_COF_MAX_POINTS)) {
-            free(p);
-            return sf_seterr(err, errlen, SF_ETOOBIG,
-                             "the belt strip needs %.3g grid points (spacing l/8 = %.3g m): above the cap of 2^24; "
-                             "raise l, lower v_b T or set strip_halfwidth", nx * ny, h);
-        }
-        set_grid(&p->info, nx, ny, h, -s->v_b * s->T - B, W, B);
-        sf_scene gs = *s;
-        gs.nx = p->info.nx;
-        gs.ny = p->info.ny;
-        gs.dx = gs.dy = h;
-        rc = sf_lnfield_alloc_sampler(&gs, &p->field);
-        if (rc == SF_ETOOBIG) {   /* the embedding is over its own cap */
-            free(p);
-            return sf_seterr(err, errlen, SF_ETOOBIG,
-                             "the %.0f x %.0f grid points of the belt strip need a circulant embedding above its cap "
-                             "of 2^25 points; raise l, lower v_b T or set strip_halfwidth", nx, ny);
-        }
-        if (!sf_usable(rc)) {
-            free(p);
-            return sf_seterr(err, errlen, rc, "cannot plan the %g x %g strip field", nx, ny);
-        }
+    if (p->info.kind == SF_COF_FIELD && p->info.box > 0)
+        rc = build_cell_average(p, s, err, errlen);
+    else if (p->info.kind == SF_COF_FIELD && p->info.generator == SF_COFGEN_TILES) {
+        p->l = s->l;
+        p->R = s->R;
+    } else if (p->info.kind == SF_COF_FIELD)
+        rc = build_strip(p, s, err, errlen);
+    if (rc) {
+        sf_cof_plan_free(p);
+        return rc;
     }
     *out = p;
     return SF_SUCCESS;
+}
+
+int sf_cof_plan_alloc(const sf_scene *s, sf_cof_plan **out, char *err, size_t errlen)
+{
+    sf_plan pl;
+    *out = NULL;
+    int rc = sf_plan_cof(s, &pl, err, errlen);
+    return rc ? rc : sf_cof_plan_build(s, &pl, out, err, errlen);
 }
 
 void sf_cof_plan_free(sf_cof_plan *p)
@@ -528,6 +458,14 @@ int sf_cof_plan_alloc_mt(const sf_scene *s, sf_cof_plan **out, char *err, size_t
     int rc;
 #pragma omp critical(sf_fftw_plan)
     rc = sf_cof_plan_alloc(s, out, err, errlen);
+    return rc;
+}
+
+int sf_cof_plan_build_mt(const sf_scene *s, const sf_plan *pl, sf_cof_plan **out, char *err, size_t errlen)
+{
+    int rc;
+#pragma omp critical(sf_fftw_plan)
+    rc = sf_cof_plan_build(s, pl, out, err, errlen);
     return rc;
 }
 

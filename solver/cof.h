@@ -179,6 +179,12 @@ size_t sf_cof_columns_made(const sf_cof *c);
  * and draws realisations from it. */
 typedef struct sf_cof_plan sf_cof_plan;
 
+/* The COF plan of plan pl (made from scene s: sf_plan_make), built:
+ * the field generator and its FFTW plans.  Its refusals: SF_ENOMEM, a
+ * generator that cannot be planned (the embedding over its cap:
+ * SF_ETOOBIG), a plan made from another scene (SF_EINVAL). */
+int sf_cof_plan_build(const sf_scene *s, const sf_plan *pl, sf_cof_plan **out, char *err, size_t errlen);
+/* The same, planning the COF's part of scene s first (sf_plan_cof). */
 int sf_cof_plan_alloc(const sf_scene *s, sf_cof_plan **out, char *err, size_t errlen);
 void sf_cof_plan_free(sf_cof_plan *p);
 /* The same from a thread of an OpenMP team (a Monte Carlo workspace):
@@ -186,6 +192,7 @@ void sf_cof_plan_free(sf_cof_plan *p);
  * time, in the library's one critical section for FFTW planning. */
 int sf_cof_plan_alloc_mt(const sf_scene *s, sf_cof_plan **out, char *err, size_t errlen);
 void sf_cof_plan_free_mt(sf_cof_plan *p);
+int sf_cof_plan_build_mt(const sf_scene *s, const sf_plan *pl, sf_cof_plan **out, char *err, size_t errlen);
 const sf_cof_plan_info *sf_cof_plan_get_info(const sf_cof_plan *p);
 /* cof_model = cell_average (info.box > 0): the effective field's std
  * sqrt(Var mu_h) and its Gaussian plan (field.h: covariance, target;

@@ -1,6 +1,7 @@
 #include "numplan.h"
 #include "sf_error.h"
 #include "cellavg.h"
+#include "lognormal.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -358,4 +359,174 @@ void sf_numplan_explain(const sf_numplan *p, FILE *f)
                 p->err_total <= p->qoi_tol ? "within" : "ABOVE", p->qoi_tol);
     if (*p->warning)
         fprintf(f, "plan warning: %s\n", p->warning);
+}
+
+/* ---- The plan of a run, made first (numplan.h: sf_plan) */
+
+/* The plan's grid: nx x ny points (whole numbers), spacing h [m], x from
+ * x0, |y| <= W, bound B [m]. */
+static void set_grid(sf_cof_plan_info *in, double nx, double ny, double h, double x0, double W, double B)
+{
+    in->nx = (size_t)nx;
+    in->ny = (size_t)ny;
+    in->dx = in->dy = h;
+    in->x0 = x0;
+    in->y0 = -W;
+    in->bound = B;
+}
+
+/* The effective field of cof_model = cell_average (cellavg.h) on the belt
+ * strip at spacing box/3: its grid, and the refusals of the model. */
+static int plan_cell_average(sf_plan *p, const sf_scene *s, double box, double B0, double W0, char *err,
+                             size_t errlen)
+{
+    if (s->precorrect)
+        return sf_seterr(err, errlen, SF_EINVAL, "cof_model = cell_average makes the field of Eq. 2 through the "
+                                                 "Nataf map: precorrect is not supported");
+    if (!(s->mu_std > 0))
+        return sf_seterr(err, errlen, SF_EINVAL, "cof_model = cell_average needs mu_std > 0");
+    sf_cellavg ca;
+    int rc = sf_cellavg_init(&ca, s->mu_mean, s->mu_std, s->l, box);
+    if (rc)
+        return sf_seterr(err, errlen, rc, "invalid cell-average model (l = %g m, box = %g m)", s->l, box);
+    p->cof_model = SF_PLAN_MODEL_CELL_AVERAGE;
+    p->cell_std = sqrt(sf_cellavg_var(&ca));
+    double d = sf_cellavg_grid_spacing(box);
+    double B = B0 + 2 * d, W = W0 + 2 * d, len = s->v_b * s->T + 2 * B;
+    double nx = ceil(len / d) + 1, ny = ceil(2 * W / d) + 1;
+    p->cof.strip_points = nx * ny;
+    p->cof.generator = SF_COFGEN_CIRCULANT;
+    p->cof.box = box;
+    if (!(nx * ny <= (double)SF_COF_MAX_POINTS))
+        return sf_seterr(err, errlen, SF_ETOOBIG,
+                         "the cell-averaged belt strip needs %.3g grid points (spacing %.3g m): above the cap of 2^24; "
+                         "lower v_b T or set strip_halfwidth", nx * ny, d);
+    set_grid(&p->cof, nx, ny, d, -s->v_b * s->T - B, W, B);
+    return SF_SUCCESS;
+}
+
+int sf_plan_cof(const sf_scene *s, sf_plan *p, char *err, size_t errlen)
+{
+    memset(p, 0, sizeof *p);
+    p->cof.kind = (sf_cof_kind)s->cof;
+    p->cof_model = s->cof == SF_COF_UNIFORM ? SF_PLAN_MODEL_UNIFORM : SF_PLAN_MODEL_VARIABLE;
+    sf_lognormal ln;
+    int rc = sf_lognormal_init(&ln, s->mu_mean, s->mu_std);
+    if (rc)
+        return sf_seterr(err, errlen, rc, "invalid COF marginal (mean %g, std %g)", s->mu_mean, s->mu_std);
+    if (p->cof.kind != SF_COF_FIELD)
+        return SF_SUCCESS;
+    double h = s->l / 8, B0, W0;
+    sf_plan_strip_bounds(s, &B0, &W0);
+    double E = hypot(s->v_b * s->T + 2 * B0, 2 * W0);   /* the strip the disc can visit */
+    double B = B0 + 2 * h, W = W0 + 2 * h, len = s->v_b * s->T + 2 * B;
+    p->cof.strip_diag = E;
+    if (s->shortcuts && ((E / s->l) * (E / s->l) <= SF_COF_SHORTCUT_E2 || s->mu_std == 0)) {
+        p->cof.kind = SF_COF_VARIABLE;
+        p->cof.shortcut = 1;
+        return SF_SUCCESS;
+    }
+    double box;
+    if (sf_numplan_cell_average(s, NULL, &box))
+        return plan_cell_average(p, s, box, B0, W0, err, errlen);
+    p->cof_model = SF_PLAN_MODEL_POINT;
+    double nx = ceil(len / h) + 1, ny = ceil(2 * W / h) + 1;
+    p->cof.strip_points = nx * ny;
+    int gen = s->cof_generator;
+    if (gen == SF_COFGEN_AUTO)
+        gen = nx * ny > (double)SF_COF_AUTO_POINTS && !(s->precorrect && s->mu_std > 0) ? SF_COFGEN_TILES
+                                                                                      : SF_COFGEN_CIRCULANT;
+    p->cof.generator = gen;
+    if (gen == SF_COFGEN_TILES) {
+        if (s->precorrect && s->mu_std > 0)
+            return sf_seterr(err, errlen, SF_EINVAL,
+                             "precorrect needs cof_generator = circulant (the tiles make Eq. 2 only)");
+        /* the window: the disc's footprint 2R, a margin M = R/4 each
+         * side (a step never moves the disc by more than M/2: sf_osc;
+         * a smaller M caps the steps harder), a
+         * slack R towards -x (where the belt carries the disc) so
+         * that a slide is due once per R of travel, and M towards +x */
+        double M = fmax(s->R / 4, 2 * h);
+        double mx = ceil((3 * s->R + 3 * M) / h) + 1;
+        if (!(mx * ny <= (double)SF_COF_MAX_POINTS))
+            return sf_seterr(err, errlen, SF_ETOOBIG,
+                             "the tiled window needs %.3g grid points (spacing l/8 = %.3g m): above the cap of "
+                             "2^24; raise l or set strip_halfwidth", mx * ny, h);
+        set_grid(&p->cof, mx, ny, h, -s->v_b * s->T - B, W, B);
+        p->cof.margin = M;
+        return SF_SUCCESS;
+    }
+    if (!(nx * ny <= (double)SF_COF_MAX_POINTS))
+        return sf_seterr(err, errlen, SF_ETOOBIG,
+                         "the belt strip needs %.3g grid points (spacing l/8 = %.3g m): above the cap of 2^24; "
+                         "raise l, lower v_b T or set strip_halfwidth", nx * ny, h);
+    set_grid(&p->cof, nx, ny, h, -s->v_b * s->T - B, W, B);
+    return SF_SUCCESS;
+}
+
+int sf_plan_make(const sf_scene *s, sf_plan *p, char *err, size_t errlen)
+{
+    int rc = sf_plan_cof(s, p, err, errlen);
+    if (rc)
+        return rc;
+    /* a constant COF has closed forms (Eq. 4, Contensou): no quadrature,
+     * unless the scene asks for the full computation (shortcuts = false) */
+    int quadrature = p->cof.kind == SF_COF_FIELD || (s->dof == SF_DOF_3 && !s->shortcuts);
+    if ((rc = sf_numplan_make(s, quadrature, &p->num, err, errlen)))
+        return rc;
+    p->history = s->history;
+    p->stick_test = s->exact_section ? SF_PLAN_STICK_SECTION : SF_PLAN_STICK_EQUATORIAL;
+    return SF_SUCCESS;
+}
+
+/* the COF's part of the record */
+static void explain_cof(const sf_plan *p, const sf_scene *s, FILE *f)
+{
+    const sf_cof_plan_info *in = &p->cof;
+    if (in->kind == SF_COF_UNIFORM)
+        fprintf(f, "COF: uniform %g (no field, no draw)\n", s->mu_mean);
+    else if (in->kind == SF_COF_VARIABLE && !in->shortcut)
+        fprintf(f, "COF: one lognormal random variable per realisation (no field)\n");
+    else if (in->kind == SF_COF_VARIABLE && s->mu_std == 0)
+        fprintf(f, "COF: field with mu_std = 0, i.e. uniform %g (no field, no draw)\n", s->mu_mean);
+    else if (in->kind == SF_COF_VARIABLE)
+        fprintf(f, "COF: one random variable, no field: the strip the disc can visit (diagonal E = %.4g m) is short "
+                   "against l = %.4g m, (E/l)^2 = %.3g <= %g, so any two of its points correlate at >= 1 - %g "
+                   "(cases/plan/variable-shortcut-boundary)\n",
+                in->strip_diag, s->l, (in->strip_diag / s->l) * (in->strip_diag / s->l), SF_COF_SHORTCUT_E2,
+                SF_COF_SHORTCUT_E2);
+    else if (p->cof_model == SF_PLAN_MODEL_CELL_AVERAGE)
+        fprintf(f, "COF: cell-averaged lognormal field (cof_model = %s): the field of Eq. 2 averaged over squares of "
+                   "side %.4g m (= %.3g l), a Gaussian field with the exact box-averaged covariance and the lognormal's "
+                   "mean and variance (std %.4g), on the belt strip, %zu x %zu points, spacing %.4g m (box/3), x from "
+                   "%.4g m, |y| <= %.4g m; circulant embedding, one FFTW plan (FFTW_ESTIMATE) reused for every "
+                   "realisation (cellavg.h)\n",
+                s->cof_model == SF_COFMODEL_CELL ? "cell_average" : "auto: the plan's choice", in->box, in->box / s->l,
+                p->cell_std, in->nx, in->ny, in->dx, in->x0, -in->y0);
+    else if (in->generator == SF_COFGEN_TILES)
+        fprintf(f, "COF: lognormal field generated on demand from tiles of white noise (cof_generator = %s%s): a "
+                   "window of %zu x %zu points, spacing %.4g m (l/8), |y| <= %.4g m, that follows the disc along the "
+                   "belt (footprint 2R, margin %.4g m each side, slack R ahead); the circulant strip over [0, T] "
+                   "would need %.3g points%s\n",
+                s->cof_generator == SF_COFGEN_TILES ? "tiles" : "auto",
+                s->cof_generator == SF_COFGEN_TILES ? "" : ", strip above 2^21 points", in->nx, in->ny, in->dx,
+                -in->y0, in->margin, in->strip_points,
+                in->strip_points > (double)SF_COF_MAX_POINTS ? " (above the cap of 2^24)" : "");
+    else
+        fprintf(f, "COF: lognormal field on the belt strip, %zu x %zu points, spacing %.4g m (l/8), x from %.4g m, "
+                   "|y| <= %.4g m; (E/l)^2 = %.3g, above the one-variable threshold %g; one FFTW plan "
+                   "(FFTW_ESTIMATE), reused for every realisation; circulant embedding (cof_generator = %s%s)\n",
+                in->nx, in->ny, in->dx, in->x0, -in->y0, (in->strip_diag / s->l) * (in->strip_diag / s->l),
+                SF_COF_SHORTCUT_E2, s->cof_generator == SF_COFGEN_AUTO ? "auto" : "circulant",
+                s->cof_generator == SF_COFGEN_AUTO ? ": strip at or below 2^21 points" : "");
+}
+
+void sf_plan_explain(const sf_plan *p, const sf_scene *s, FILE *f)
+{
+    explain_cof(p, s, f);
+    sf_numplan_explain(&p->num, f);
+    fprintf(f, "limit surface: not computed (the stick test needs only its T = 0 section: %s)\n",
+            p->stick_test == SF_PLAN_STICK_SECTION ? "the exact section, by bisection" : "its equatorial circle, in closed form");
+    fprintf(f, "history: %s\n", p->history ? "streamed to the output file (not kept in memory)"
+                                           : "none: the quantities of interest are accumulated online");
 }

@@ -159,6 +159,43 @@ void sf_numplan_explain(const sf_numplan *p, FILE *f);
 double sf_numplan_err_quad(double l_over_R, double cv, size_t rings);
 double sf_numplan_err_time(double rtol);
 
+/* ---- The plan of a run: one value, made from the scene before anything
+ * is built.  The builders take it: the COF plan (cof.h:
+ * sf_cof_plan_build: the field generator, its grid), the oscillator
+ * (oscillator.h: sf_osc_alloc_plan: the quadrature, the stepper) and
+ * what the run skips; `slipfield run --explain` prints it
+ * (sf_plan_explain).  The flow runs one way, scene -> plan -> builders:
+ * this module includes none of theirs (make layering). */
+enum {   /* the COF model: what the wrench sees */
+    SF_PLAN_MODEL_UNIFORM = 0,     /* one value, no draw */
+    SF_PLAN_MODEL_VARIABLE = 1,    /* one value per realisation (cof = variable, or the one-variable shortcut) */
+    SF_PLAN_MODEL_POINT = 2,       /* the field's values at the quadrature's points */
+    SF_PLAN_MODEL_CELL_AVERAGE = 3 /* the field averaged over the quadrature's cells (cellavg.h) */
+};
+enum { SF_PLAN_STICK_EQUATORIAL = 0, SF_PLAN_STICK_SECTION = 1 };   /* the stick test (scene key exact_section) */
+
+typedef struct {
+    int cof_model;           /* SF_PLAN_MODEL_* */
+    sf_cof_plan_info cof;    /* the COF: kind, generator, strip grid and bounds (what cof.c builds) */
+    double cell_std;         /* cell averages: the effective field's std sqrt(Var mu_h) [-]; 0 otherwise */
+    sf_numplan num;          /* quadrature, cells, stepper, rtol, predicted errors */
+    int history;             /* 1: the run streams its time history; 0: only the QoIs, accumulated online
+                                (scene key history; a caller asking for a statistic only clears it) */
+    int stick_test;          /* SF_PLAN_STICK_*: the limit surface is never computed in full */
+} sf_plan;
+
+/* The plan of scene s (all of it): SF_EINVAL or SF_ETOOBIG with the reason
+ * in err for a scene that cannot be planned (an invalid COF marginal, a
+ * cell-average model it does not support, a strip or window above
+ * SF_COF_MAX_POINTS, qoi_tol outside (0, 1)). */
+int sf_plan_make(const sf_scene *s, sf_plan *p, char *err, size_t errlen);
+/* Its COF part only (cof_model, cof, cell_std; the rest zero): what
+ * sf_cof_plan_alloc needs, with the same refusals. */
+int sf_plan_cof(const sf_scene *s, sf_plan *p, char *err, size_t errlen);
+/* The plan's record for `slipfield run --explain`: the COF, each numerical
+ * choice with its predicted error (sf_numplan_explain), what is skipped. */
+void sf_plan_explain(const sf_plan *p, const sf_scene *s, FILE *f);
+
 #ifdef __cplusplus
 }
 #endif

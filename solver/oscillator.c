@@ -126,7 +126,10 @@ static int rhs(double t, const double *y, double *f, void *params)
     return GSL_SUCCESS;
 }
 
-int sf_osc_alloc(const sf_scene *s, const sf_cof *cof, sf_osc **out, char *err, size_t errlen)
+/* The oscillator of scene s on cof with numerical plan np (NULL: made
+ * here from s, as sf_plan_make would). */
+static int osc_alloc(const sf_scene *s, const sf_numplan *np, const sf_cof *cof, sf_osc **out, char *err,
+                     size_t errlen)
 {
     *out = NULL;
     int constant = sf_cof_get_kind(cof) != SF_COF_FIELD;
@@ -134,10 +137,24 @@ int sf_osc_alloc(const sf_scene *s, const sf_cof *cof, sf_osc **out, char *err, 
         return sf_seterr(err, errlen, SF_EINVAL, "dof = 1 needs a spatially constant COF (cof = uniform or variable)");
     if (s->dof == SF_DOF_1 && (s->y0 != 0 || s->phi0 != 0 || s->vy0 != 0 || s->w0 != 0))
         return sf_seterr(err, errlen, SF_EINVAL, "dof = 1 moves along x only: y0, phi0, vy0 and w0 must be 0");
+    /* a constant COF has closed forms (Eq. 4, Contensou): no quadrature,
+     * unless the scene asks for the full computation (shortcuts = false) */
+    int quadrature = !constant || (s->dof == SF_DOF_3 && !s->shortcuts);
+    sf_numplan own;
+    if (!np) {
+        int rc0 = sf_numplan_make(s, quadrature, &own, err, errlen);
+        if (rc0)
+            return rc0;
+        np = &own;
+    } else if (np->quadrature != quadrature)
+        return sf_seterr(err, errlen, SF_EINVAL, "the plan %s a quadrature but the COF (%s) %s one",
+                         np->quadrature ? "runs" : "skips", constant ? "constant" : "a field",
+                         quadrature ? "needs" : "needs no");
     sf_osc *o = sf_calloc(1, sizeof *o);
     if (!o)
         return SF_ENOMEM;
     o->s = *s;
+    o->plan = *np;
     o->cof = cof;
     o->dof3 = s->dof == SF_DOF_3;
     o->mu = constant ? sf_cof_eval(cof, 0, 0) : NAN;
@@ -145,14 +162,6 @@ int sf_osc_alloc(const sf_scene *s, const sf_cof *cof, sf_osc **out, char *err, 
     o->J = 0.5 * s->m * s->R * s->R;
     o->wn = sqrt(s->k / s->m);
     o->delta = s->eps_lambda * o->wn * s->R;
-    /* a constant COF has closed forms (Eq. 4, Contensou): no quadrature,
-     * unless the scene asks for the full computation (shortcuts = false) */
-    int quadrature = !constant || (o->dof3 && !s->shortcuts);
-    int rc0 = sf_numplan_make(s, quadrature, &o->plan, err, errlen);
-    if (rc0) {
-        free(o);
-        return rc0;
-    }
     o->s.cells = o->plan.cells ? o->plan.cells : s->cells;
     o->s.rtol = o->plan.rtol;
     o->s.layout = o->plan.layout;
@@ -202,6 +211,17 @@ int sf_osc_alloc(const sf_scene *s, const sf_cof *cof, sf_osc **out, char *err, 
     return SF_SUCCESS;
 }
 
+int sf_osc_alloc(const sf_scene *s, const sf_cof *cof, sf_osc **out, char *err, size_t errlen)
+{
+    return osc_alloc(s, NULL, cof, out, err, errlen);
+}
+
+int sf_osc_alloc_plan(const sf_scene *s, const sf_plan *pl, const sf_cof *cof, sf_osc **out, char *err,
+                      size_t errlen)
+{
+    return osc_alloc(s, &pl->num, cof, out, err, errlen);
+}
+
 void sf_osc_free(sf_osc *o)
 {
     if (!o)
@@ -216,7 +236,7 @@ void sf_osc_free(sf_osc *o)
     free(o);
 }
 
-void sf_osc_explain(const sf_osc *o, FILE *f)
+void sf_osc_describe(const sf_osc *o, FILE *f)
 {
     const sf_scene *s = &o->s;
     fprintf(f, "model: %s\n", o->dof3 ? "3-DOF disc (x, y, phi), Eq. 5" : "1-D oscillator, Eqs. 3-4");
@@ -241,6 +261,11 @@ void sf_osc_explain(const sf_osc *o, FILE *f)
                                                    : "");
     fprintf(f, "events: Brent (GSL) on single trial steps, to max(%g s, 8 ulp(t)); velocity jump of Eq. 14 %s\n", SF_OSC_TIME_TOL,
             s->velocity_jump ? "on" : "off");
+}
+
+void sf_osc_explain(const sf_osc *o, FILE *f)
+{
+    sf_osc_describe(o, f);
     sf_numplan_explain(&o->plan, f);   /* the plan's own record of its choices */
 }
 

@@ -121,10 +121,19 @@ typedef struct {
  * SF_EINVAL with the reason in err for an inconsistent scene (e.g. dof = 1
  * with a field COF). */
 int sf_osc_alloc(const sf_scene *s, const sf_cof *cof, sf_osc **out, char *err, size_t errlen);
+/* The same on the run's plan pl (sf_plan_make(s), numplan.h: the
+ * quadrature, stepper and rtol it chose; cof drawn from its COF plan):
+ * nothing is re-planned.  SF_EINVAL also for a COF that does not match
+ * the plan (a constant COF where the plan runs a quadrature, or the
+ * reverse; point values where it runs cell averages). */
+int sf_osc_alloc_plan(const sf_scene *s, const sf_plan *pl, const sf_cof *cof, sf_osc **out, char *err,
+                      size_t errlen);
 void sf_osc_free(sf_osc *o);
 
-/* What the plan computes and skips, one line each (for --explain),
- * ending with the numerical plan's record (numplan.h). */
+/* What the oscillator set up, one line each (model, slip wrench, stick
+ * test, stepper, events: for --explain, after the plan's record). */
+void sf_osc_describe(const sf_osc *o, FILE *f);
+/* The same, ending with the numerical plan's record (numplan.h). */
 void sf_osc_explain(const sf_osc *o, FILE *f);
 
 /* The numerical plan the run uses: cells, rtol, stepper, predicted

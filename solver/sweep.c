@@ -39,6 +39,7 @@ int sf_sweep_set(sf_scene *s, const char *name, double value, char *err, size_t 
 
 typedef struct {
     const sf_scene *s;
+    const sf_plan *pl;       /* the scene's plan, made once (numplan.h) */
     sf_cof_plan *plan;
 } ws_t;
 
@@ -49,7 +50,7 @@ static void *ws_alloc(void *ctx)
     if (!w)
         return NULL;
     *w = *c;
-    if (sf_cof_plan_alloc_mt(c->s, &w->plan, NULL, 0)) {
+    if (sf_cof_plan_build_mt(c->s, c->pl, &w->plan, NULL, 0)) {
         free(w);
         return NULL;
     }
@@ -73,7 +74,7 @@ static int realise(void *p, size_t i, gsl_rng *rng, double *out)
         return rc;
     sf_osc *o;
     sf_osc_result r;
-    rc = sf_osc_alloc(w->s, cof, &o, NULL, 0);
+    rc = sf_osc_alloc_plan(w->s, w->pl, cof, &o, NULL, 0);
     if (!rc) {
         rc = sf_osc_run(o, NULL, NULL, 0, &r, NULL, 0);
         out[SF_SWEEP_PVX] = r.pv_x;
@@ -123,7 +124,11 @@ int sf_sweep_run(const sf_scene *s, size_t n, int threads, const char *checkpoin
     out->ratio = sf_calloc(n * SF_SWEEP_NQ, sizeof *out->ratio);
     if (!out->qoi || !out->ratio)
         return SF_ENOMEM;
-    ws_t ctx = { s, NULL };
+    sf_plan pl;
+    if ((rc = sf_plan_make(s, &pl, err, errlen)))
+        return rc;
+    pl.history = 0;   /* a sweep keeps only the QoIs */
+    ws_t ctx = { s, &pl, NULL };
     sf_mc_spec spec = { n, SF_SWEEP_NQ, s->seed, threads, checkpoint, resume, 0, label };
     /* the checkpoint's identity: what a line holds and the effective
      * scene as text (no padding bytes) */
