@@ -13,6 +13,7 @@
 #include "sf_version.h"
 
 #include <stdlib.h>
+#include <gsl/gsl_rng.h>
 #include <string.h>
 
 /* every error code has its own message; an unknown code says so */
@@ -163,6 +164,167 @@ static void plan_edges(void **state)
     assert_int_equal(sf_numplan_make(&s, 1, &p, err, sizeof err), SF_SUCCESS);
     assert_int_equal(p.cells, SF_PLAN_MAX_RINGS);
     assert_non_null(strstr(p.warning, "capped"));
+}
+
+/* ---- The plan made first (numplan.h: sf_plan) */
+
+typedef struct {
+    const sf_plan *p;
+    const sf_scene *s;
+} plan_arg;
+
+static void plan_explain_fn(const void *arg, FILE *f)
+{
+    const plan_arg *a = arg;
+    sf_plan_explain(a->p, a->s, f);
+}
+
+/* the plan of s (it must plan) and its record, which must contain want */
+static void plan_says(const sf_scene *s, int model, const char *want)
+{
+    sf_plan p;
+    char err[256] = "";
+    int rc = sf_plan_make(s, &p, err, sizeof err);
+    if (rc)
+        print_error("sf_plan_make: %s\n", err);
+    assert_int_equal(rc, SF_SUCCESS);
+    assert_int_equal(p.cof_model, model);
+    plan_arg a = { &p, s };
+    char *t = text_of(plan_explain_fn, &a);
+    if (!strstr(t, want))
+        print_error("wanted '%s' in:\n%s", want, t);
+    assert_non_null(strstr(t, want));
+    assert_non_null(strstr(t, "accuracy plan"));   /* the numerical part, in the same record */
+    free(t);
+}
+
+/* every kind of COF the plan chooses, said by its record; what it skips */
+static void plan_records(void **state)
+{
+    (void)state;
+    sf_scene s;
+    sf_scene_default(&s);
+    s.T = 5;
+    s.cof = SF_COF_UNIFORM;
+    plan_says(&s, SF_PLAN_MODEL_UNIFORM, "COF: uniform");
+    plan_says(&s, SF_PLAN_MODEL_UNIFORM, "its equatorial circle");
+    plan_says(&s, SF_PLAN_MODEL_UNIFORM, "history: streamed");
+    s.exact_section = 1;
+    s.history = 0;
+    plan_says(&s, SF_PLAN_MODEL_UNIFORM, "the exact section, by bisection");
+    plan_says(&s, SF_PLAN_MODEL_UNIFORM, "history: none");
+    sf_scene_default(&s);
+    s.cof = SF_COF_VARIABLE;
+    plan_says(&s, SF_PLAN_MODEL_VARIABLE, "one lognormal random variable per realisation");
+    s.cof = SF_COF_FIELD;
+    s.mu_std = 0;
+    plan_says(&s, SF_PLAN_MODEL_VARIABLE, "mu_std = 0, i.e. uniform");
+    sf_scene_default(&s);
+    s.l = 1e6;   /* the strip is a point against l: one variable */
+    plan_says(&s, SF_PLAN_MODEL_VARIABLE, "one random variable, no field");
+    sf_scene_default(&s);
+    s.T = 5;
+    s.l = 0.1;
+    plan_says(&s, SF_PLAN_MODEL_POINT, "cof_generator = auto: strip at or below 2^21 points");
+    s.cof_generator = SF_COFGEN_CIRCULANT;
+    plan_says(&s, SF_PLAN_MODEL_POINT, "circulant embedding (cof_generator = circulant)");
+    s.cof_generator = SF_COFGEN_TILES;
+    plan_says(&s, SF_PLAN_MODEL_POINT, "tiles of white noise (cof_generator = tiles)");
+    sf_scene_default(&s);   /* a strip far above the cap: the tiles, by auto */
+    s.l = 0.005;
+    s.T = 100;
+    s.strip_halfwidth = 0.1;
+    s.cof_model = SF_COFMODEL_POINT;
+    plan_says(&s, SF_PLAN_MODEL_POINT, "strip above 2^21 points");
+    plan_says(&s, SF_PLAN_MODEL_POINT, "(above the cap of 2^24)");
+    s.T = 20;   /* a strip the cell averages take: auto chooses them */
+    s.cof_model = SF_COFMODEL_AUTO;
+    plan_says(&s, SF_PLAN_MODEL_CELL_AVERAGE, "cof_model = auto: the plan's choice");
+    s.cof_model = SF_COFMODEL_CELL;
+    plan_says(&s, SF_PLAN_MODEL_CELL_AVERAGE, "cof_model = cell_average)");
+}
+
+/* the plan's refusals; builders given a plan of another scene refuse it;
+ * the builders on the plan give the bits of the old entry points */
+static void plan_builders(void **state)
+{
+    (void)state;
+    sf_scene s;
+    sf_plan p;
+    char err[256] = "";
+    sf_scene_default(&s);
+    s.mu_mean = -1;   /* no lognormal marginal */
+    assert_int_equal(sf_plan_make(&s, &p, err, sizeof err), SF_EINVAL);
+    assert_non_null(strstr(err, "marginal"));
+    sf_scene_default(&s);
+    s.qoi_tol = 0;   /* the numerical part refuses */
+    assert_int_equal(sf_plan_make(&s, &p, err, sizeof err), SF_EINVAL);
+    assert_non_null(strstr(err, "qoi_tol"));
+    /* a COF plan built on another scene's plan */
+    sf_scene_default(&s);
+    s.l = 0.005;
+    s.T = 2;
+    s.t_skip = 0;
+    s.strip_halfwidth = 0.01;
+    assert_int_equal(sf_plan_make(&s, &p, err, sizeof err), SF_SUCCESS);
+    assert_int_equal(p.cof_model, SF_PLAN_MODEL_CELL_AVERAGE);
+    sf_scene o = s;
+    o.mu_mean = -1;
+    sf_cof_plan *cp = (sf_cof_plan *)1;
+    assert_int_equal(sf_cof_plan_build(&o, &p, &cp, err, sizeof err), SF_EINVAL);
+    assert_null(cp);
+    o = s;
+    o.l = -1;
+    assert_int_equal(sf_cof_plan_build(&o, &p, &cp, err, sizeof err), SF_EINVAL);
+    assert_non_null(strstr(err, "cell-average"));
+    /* the oscillator refuses a COF the plan did not plan for */
+    sf_scene u = s;
+    u.cof = SF_COF_UNIFORM;
+    sf_plan pu;
+    assert_int_equal(sf_plan_make(&u, &pu, err, sizeof err), SF_SUCCESS);
+    assert_int_equal(pu.num.quadrature, 0);
+    double g[16] = { 0.5, 0.5, 0.5, 0.5, 0.5, 0.5, 0.5, 0.5, 0.5, 0.5, 0.5, 0.5, 0.5, 0.5, 0.5, 0.5 };
+    sf_cof *grid;
+    assert_int_equal(sf_cof_alloc_grid(4, 4, -2, -2, 1.3, 1.3, g, &grid), SF_SUCCESS);
+    sf_osc *osc = (sf_osc *)1;
+    assert_int_equal(sf_osc_alloc_plan(&u, &pu, grid, &osc, err, sizeof err), SF_EINVAL);
+    assert_non_null(strstr(err, "skips a quadrature"));
+    sf_cof_free(grid);
+    /* a field scene two ways: the old entry points (each plans for
+     * itself) and the plan made first, the same seed: the same bits */
+    sf_scene_default(&s);
+    s.T = 4;
+    s.t_skip = 0;
+    s.l = 0.1;
+    s.strip_halfwidth = 0.05;
+    double v[2][4];
+    for (int way = 0; way < 2; way++) {
+        gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+        gsl_rng_set(rng, 11);
+        sf_cof *cof;
+        sf_osc *x;
+        if (way == 0) {
+            assert_int_equal(sf_cof_from_scene(&s, rng, &cof), SF_SUCCESS);
+            assert_int_equal(sf_osc_alloc(&s, cof, &x, err, sizeof err), SF_SUCCESS);
+        } else {
+            assert_int_equal(sf_plan_make(&s, &p, err, sizeof err), SF_SUCCESS);
+            assert_int_equal(sf_cof_plan_build(&s, &p, &cp, err, sizeof err), SF_SUCCESS);
+            assert_int_equal(sf_cof_plan_draw(cp, rng, &cof), SF_SUCCESS);
+            sf_cof_plan_free(cp);
+            assert_int_equal(sf_osc_alloc_plan(&s, &p, cof, &x, err, sizeof err), SF_SUCCESS);
+            assert_memory_equal(sf_osc_get_plan(x), &p.num, sizeof p.num);
+        }
+        gsl_rng_free(rng);
+        sf_osc_result r;
+        assert_int_equal(sf_osc_run(x, NULL, NULL, 0, &r, err, sizeof err), SF_SUCCESS);
+        double w[4] = { r.pv_x, r.pv_F, r.stick_fraction, (double)r.steps };
+        memcpy(v[way], w, sizeof w);
+        sf_osc_result_free(&r);
+        sf_osc_free(x);
+        sf_cof_free(cof);
+    }
+    assert_true(v[0][3] > 10);
+    assert_memory_equal(v[0], v[1], sizeof v[0]);
 }
 
 /* sweep parameters: l_over_R must be positive and finite; mu_mean keeps
@@ -317,6 +479,8 @@ int main(void)
         cmocka_unit_test(key_table),
         cmocka_unit_test(explain_variants),
         cmocka_unit_test(plan_edges),
+        cmocka_unit_test(plan_records),
+        cmocka_unit_test(plan_builders),
         cmocka_unit_test(sweep_set_edges),
         cmocka_unit_test(version_agrees),
         cmocka_unit_test(stick_on_exact_section),

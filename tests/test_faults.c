@@ -508,6 +508,48 @@ static int osc(void *ctx)
     return rc;
 }
 
+/* The same run on the plan made first (numplan.h: sf_plan_make, which
+ * allocates nothing; the COF plan built from it, the oscillator on it):
+ * the same values as osc() (c->ref) */
+static int osc_planned(void *ctx)
+{
+    osc_ctx *c = ctx;
+    sf_plan pl;
+    char err[256] = "";
+    assert_int_equal(sf_plan_make(&c->s, &pl, err, sizeof err), SF_SUCCESS);
+    sf_cof_plan *p = (sf_cof_plan *)1;
+    int rc = sf_cof_plan_build(&c->s, &pl, &p, err, sizeof err);
+    if (rc) {
+        assert_null(p);
+        return rc;
+    }
+    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+    gsl_rng_set(rng, 3);
+    sf_cof *cof;
+    rc = sf_cof_plan_draw(p, rng, &cof);
+    gsl_rng_free(rng);
+    sf_cof_plan_free(p);
+    if (rc)
+        return rc;
+    sf_osc *o = (sf_osc *)1;
+    rc = sf_osc_alloc_plan(&c->s, &pl, cof, &o, err, sizeof err);
+    if (rc) {
+        assert_null(o);
+        sf_cof_free(cof);
+        return rc;
+    }
+    sf_osc_result r;
+    rc = sf_osc_run(o, NULL, NULL, 0.05, &r, err, sizeof err);
+    if (!rc) {
+        double v[3] = { r.pv_x, r.pv_F, (double)r.ntrans };
+        assert_memory_equal(v, c->ref, sizeof v);
+    }
+    sf_osc_result_free(&r);
+    sf_osc_free(o);
+    sf_cof_free(cof);
+    return rc;
+}
+
 static void oscillator(void **state)
 {
     (void)state;
@@ -525,6 +567,8 @@ static void oscillator(void **state)
     c.s.cof_generator = SF_COFGEN_CIRCULANT;
     assert_int_equal(osc(&c), SF_SUCCESS);
     assert_true(walk("oscillator, 3-DOF on a field", osc, &c, SF_SUCCESS, 0) > 20);
+    assert_int_equal(osc_planned(&c), SF_SUCCESS);   /* the old entry points' bits */
+    assert_true(walk("oscillator, 3-DOF on a field, on the plan made first", osc_planned, &c, SF_SUCCESS, 0) > 20);
     memset(&c, 0, sizeof c);
     scene_small(&c.s);   /* the exact T = 0 section: its surface is made with the oscillator */
     c.s.dof = SF_DOF_3;
@@ -543,6 +587,8 @@ static void oscillator(void **state)
     assert_int_equal(sf_numplan_cell_average(&c.s, NULL, NULL), 1);
     assert_int_equal(osc(&c), SF_SUCCESS);
     assert_true(walk("oscillator, 3-DOF on cell averages", osc, &c, SF_SUCCESS, 0) > 20);
+    assert_int_equal(osc_planned(&c), SF_SUCCESS);
+    assert_true(walk("oscillator, 3-DOF on cell averages, on the plan made first", osc_planned, &c, SF_SUCCESS, 0) > 20);
 }
 
 static void *ws_alloc(void *ctx)
