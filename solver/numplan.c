@@ -375,6 +375,17 @@ static void set_grid(sf_cof_plan_info *in, double nx, double ny, double h, doubl
     in->bound = B;
 }
 
+/* SF_ETOOBIG (the reason in err) when `what`, a grid of n points at
+ * spacing h [m], is above SF_COF_MAX_POINTS; sp names the spacing, hint
+ * what to change. */
+static int grid_cap(double n, double h, const char *what, const char *sp, const char *hint, char *err, size_t errlen)
+{
+    if (n <= (double)SF_COF_MAX_POINTS)
+        return SF_SUCCESS;
+    return sf_seterr(err, errlen, SF_ETOOBIG, "%s needs %.3g grid points (spacing %s%.3g m): above the cap of 2^24; %s",
+                     what, n, sp, h, hint);
+}
+
 /* The effective field of cof_model = cell_average (cellavg.h) on the belt
  * strip at spacing box/3: its grid, and the refusals of the model. */
 static int plan_cell_average(sf_plan *p, const sf_scene *s, double box, double B0, double W0, char *err,
@@ -397,10 +408,9 @@ static int plan_cell_average(sf_plan *p, const sf_scene *s, double box, double B
     p->cof.strip_points = nx * ny;
     p->cof.generator = SF_COFGEN_CIRCULANT;
     p->cof.box = box;
-    if (!(nx * ny <= (double)SF_COF_MAX_POINTS))
-        return sf_seterr(err, errlen, SF_ETOOBIG,
-                         "the cell-averaged belt strip needs %.3g grid points (spacing %.3g m): above the cap of 2^24; "
-                         "lower v_b T or set strip_halfwidth", nx * ny, d);
+    if ((rc = grid_cap(nx * ny, d, "the cell-averaged belt strip", "", "lower v_b T or set strip_halfwidth", err,
+                       errlen)))
+        return rc;
     set_grid(&p->cof, nx, ny, d, -s->v_b * s->T - B, W, B);
     return SF_SUCCESS;
 }
@@ -448,18 +458,15 @@ int sf_plan_cof(const sf_scene *s, sf_plan *p, char *err, size_t errlen)
          * that a slide is due once per R of travel, and M towards +x */
         double M = fmax(s->R / 4, 2 * h);
         double mx = ceil((3 * s->R + 3 * M) / h) + 1;
-        if (!(mx * ny <= (double)SF_COF_MAX_POINTS))
-            return sf_seterr(err, errlen, SF_ETOOBIG,
-                             "the tiled window needs %.3g grid points (spacing l/8 = %.3g m): above the cap of "
-                             "2^24; raise l or set strip_halfwidth", mx * ny, h);
+        if ((rc = grid_cap(mx * ny, h, "the tiled window", "l/8 = ", "raise l or set strip_halfwidth", err, errlen)))
+            return rc;
         set_grid(&p->cof, mx, ny, h, -s->v_b * s->T - B, W, B);
         p->cof.margin = M;
         return SF_SUCCESS;
     }
-    if (!(nx * ny <= (double)SF_COF_MAX_POINTS))
-        return sf_seterr(err, errlen, SF_ETOOBIG,
-                         "the belt strip needs %.3g grid points (spacing l/8 = %.3g m): above the cap of 2^24; "
-                         "raise l, lower v_b T or set strip_halfwidth", nx * ny, h);
+    if ((rc = grid_cap(nx * ny, h, "the belt strip", "l/8 = ", "raise l, lower v_b T or set strip_halfwidth", err,
+                       errlen)))
+        return rc;
     set_grid(&p->cof, nx, ny, h, -s->v_b * s->T - B, W, B);
     return SF_SUCCESS;
 }
