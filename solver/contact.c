@@ -417,13 +417,21 @@ int sf_contact_wrench(const sf_contact *c, double xb, double yb,
     return SF_SUCCESS;
 }
 
+/* A slip phase's stick tests call this once per trial step near stick:
+ * on a grid that holds the disc the look-up is inlined (sf_cof_view_eval_on:
+ * the bits of sf_cof_eval there), in the same order of the sum. */
 double sf_contact_mean_cof(const sf_contact *c, double xb, double yb)
 {
-    if (sf_cof_get_kind(c->cof) != SF_COF_FIELD)
+    sf_cof_view v;
+    if (!sf_cof_get_view(c->cof, &v))   /* uniform or one variable */
         return sf_cof_eval(c->cof, 0, 0);
     double s = 0;
-    for (size_t i = 0; i < c->n; i++)
-        s += c->wt[i] * sf_cof_eval(c->cof, xb + c->rx[i], yb + c->ry[i]);
+    if (sf_cof_view_holds(&v, xb, yb, c->spec.R))
+        for (size_t i = 0; i < c->n; i++)
+            s += c->wt[i] * sf_cof_view_eval_on(&v, xb + c->rx[i], yb + c->ry[i]);
+    else   /* near the grid's edge: clamped and counted look-ups */
+        for (size_t i = 0; i < c->n; i++)
+            s += c->wt[i] * sf_cof_eval(c->cof, xb + c->rx[i], yb + c->ry[i]);
     return s / c->spec.normal_force;
 }
 

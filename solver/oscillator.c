@@ -39,16 +39,45 @@ struct sf_osc {
     sf_surface *stick_sf;    /* exact-section stick tests: one limit surface,
                                 re-centred per test (made by sf_osc_alloc) */
     unsigned long wrench_evals;
+    /* the last wrench evaluated and its arguments' bits (wrench()) */
+    struct {
+        int valid;
+        unsigned long slides;
+        double key[6], q[3];
+    } memo;
     sf_osc_source_fn src;    /* manufactured source (sf_osc_set_source), or NULL */
     void *src_ctx;
 };
 
-/* Kinetic friction wrench on the disc at time t, state y. */
+static void wrench_eval(sf_osc *o, double t, const double *y, double q[3]);
+
+/* Kinetic friction wrench on the disc at time t, state y.  A step asks
+ * for it three times at its end (GSL's dydt_out, the next step's dydt_in,
+ * the step's own record): the last evaluation is kept and reused when the
+ * arguments it depends on (t, x, y, vx, vy, w) have the same bits and the
+ * COF window has not moved since (a slide may change the last bits of a
+ * look-up: cof.h), so the same bits at a third of the cost per step.
+ * wrench_evals counts the evaluations made. */
 static void wrench(sf_osc *o, double t, const double *y, double q[3])
+{
+    const double key[6] = { t, y[X], y[Y], y[VX], y[VY], y[W] };
+    unsigned long slides = sf_cof_slides(o->cof);
+    if (o->memo.valid && o->memo.slides == slides && !memcmp(key, o->memo.key, sizeof key)) {
+        memcpy(q, o->memo.q, sizeof o->memo.q);
+        return;
+    }
+    wrench_eval(o, t, y, q);
+    o->wrench_evals++;
+    memcpy(o->memo.key, key, sizeof key);
+    memcpy(o->memo.q, q, sizeof o->memo.q);
+    o->memo.slides = slides;
+    o->memo.valid = 1;
+}
+
+static void wrench_eval(sf_osc *o, double t, const double *y, double q[3])
 {
     const sf_scene *s = &o->s;
     double u = y[VX] - s->v_b, v = y[VY], w = y[W], muk = s->mu_k_ratio * o->mu;
-    o->wrench_evals++;
     q[0] = q[1] = q[2] = 0;
     if (!o->dof3) {   /* Eq. 4 */
         q[0] = u > 0 ? -muk * o->N : (u < 0 ? muk * o->N : 0);
@@ -311,16 +340,25 @@ double sf_osc_g_stick(const sf_osc *o, double t, const double *y)
     return isnan(m) ? NAN : fmax(c, m);   /* fmax would drop the NaN, and lambda alone would decide */
 }
 
-/* One step of the same stepper from (t0, y0) over h into yo. */
-static void advance(sf_osc *o, double t0, const double *y0, double h, double *yo)
+/* One step of the same stepper from (t0, y0) over h into yo; f0 =
+ * f(t0, y0) (the slip right-hand side) is the step's first stage, the
+ * same for every trial step from (t0, y0): the steppers take it as given
+ * (dydt_in) instead of evaluating it again, with the same bits. */
+static void advance(sf_osc *o, double t0, const double *y0, const double *f0, double h, double *yo)
 {
     double yerr[NSTATE];
     memcpy(yo, y0, sizeof(double) * NSTATE);
     gsl_odeiv2_step_reset(o->bstep);
-    gsl_odeiv2_step_apply(o->bstep, t0, h, yo, yerr, NULL, NULL, &o->sys);
+    gsl_odeiv2_step_apply(o->bstep, t0, h, yo, yerr, f0, NULL, &o->sys);
 }
 
 enum { EV_STICK, EV_VX0 };
+
+/* An event search keeps its last EV_KEEP trial steps (it takes about 8):
+ * the ends of its final bracket are points it has tried, so looking at
+ * them again needs no new trial step (one kept no longer is made again,
+ * with the same bits). */
+enum { EV_KEEP = 16 };
 
 /* The event function along a trial step of length h from (t0, y0): < 0
  * (stick) or <= 0 (vx = 0) where the event holds, > 0 before it. */
@@ -329,18 +367,36 @@ typedef struct {
     int kind;
     double t0;
     const double *y0;
+    double f0[NSTATE];   /* f(t0, y0) */
     unsigned long *count;
+    size_t n;            /* trials made; kept: trial n in slot n mod EV_KEEP */
+    double h[EV_KEEP], v[EV_KEEP], y[EV_KEEP][NSTATE];   /* length (0: empty slot), event value, state */
 } ev_par;
 
-static double ev_state(const ev_par *e, double h, double *ym)
+static double ev_fn(const ev_par *e, double h, const double *ym)
+{
+    return e->kind == EV_STICK ? sf_osc_g_stick(e->o, e->t0 + h, ym) : ym[VX] * (e->y0[VX] > 0 ? 1 : -1);
+}
+
+static double ev_state(ev_par *e, double h, double *ym)
 {
     if (h == 0) {   /* Brent's left end: the step's start, no trial step */
         memcpy(ym, e->y0, sizeof(double) * NSTATE);
-    } else {
-        advance(e->o, e->t0, e->y0, h, ym);
-        (*e->count)++;
+        return ev_fn(e, h, ym);
     }
-    return e->kind == EV_STICK ? sf_osc_g_stick(e->o, e->t0 + h, ym) : ym[VX] * (e->y0[VX] > 0 ? 1 : -1);
+    for (size_t i = 0; i < EV_KEEP; i++)
+        if (e->h[i] == h) {   /* tried before: the same state and value */
+            memcpy(ym, e->y[i], sizeof(double) * NSTATE);
+            return e->v[i];
+        }
+    advance(e->o, e->t0, e->y0, e->f0, h, ym);
+    (*e->count)++;
+    double v = ev_fn(e, h, ym);
+    size_t k = e->n++ % EV_KEEP;
+    e->h[k] = h;
+    e->v[k] = v;
+    memcpy(e->y[k], ym, sizeof(double) * NSTATE);
+    return v;
 }
 
 static double ev_value(double h, void *p)
@@ -359,7 +415,8 @@ static int ev_holds(int kind, double v) { return kind == EV_STICK ? v < 0 : v <=
 static double locate_event(sf_osc *o, int kind, double t0, const double *y0, double t1, double *ye, unsigned long *count)
 {
     double lo = 0, hi = t1 - t0, tol = fmax(SF_OSC_TIME_TOL, 8 * DBL_EPSILON * fabs(t1));
-    ev_par par = { o, kind, t0, y0, count };
+    ev_par par = { .o = o, .kind = kind, .t0 = t0, .y0 = y0, .count = count, .n = 0 };   /* slots empty */
+    sf_osc_slip_rhs(o, t0, y0, par.f0, NULL);
     gsl_function F = { ev_value, &par };
     if (hi - lo > tol && gsl_root_fsolver_set(o->root, &F, lo, hi) == GSL_SUCCESS) {
         for (int it = 0; it < 200; it++) {
@@ -376,7 +433,7 @@ static double locate_event(sf_osc *o, int kind, double t0, const double *y0, dou
         }
         return t0 + hi;
     }
-    advance(o, t0, y0, hi, ye);
+    advance(o, t0, y0, par.f0, hi, ye);
     return t0 + hi;
 }
 
@@ -733,6 +790,7 @@ static int run_start(run_state *r, double sample_dt)
             return SF_ENOMEM;
     }
     o->wrench_evals = 0;
+    o->memo.valid = 0;
     /* the scene's initial state (x0 ... w0; default rest at the origin;
      * the 1-D model keeps y, phi, vy, w at 0: sf_osc_alloc refuses others) */
     double *y = r->y;
@@ -796,6 +854,7 @@ static int run_stick(run_state *r)
     r->stick = 0;
     r->armed = 0;
     r->h = s->dt;   /* each slip phase starts from dt */
+    r->res->rejected += o->ev->failed_steps;   /* the reset clears the evolve's count */
     gsl_odeiv2_evolve_reset(o->ev);
     gsl_odeiv2_step_reset(o->step);
     wrench(o, t, y, r->q);
@@ -882,7 +941,7 @@ static int run_end(run_state *r, int rc)
     res->jump_energy = r->jumps;
     res->energy_change = energy(o, y) - r->E0;
     res->energy_residual = res->energy_change - res->friction_work - res->jump_energy;
-    res->rejected = o->ev->failed_steps;
+    res->rejected += o->ev->failed_steps;   /* the last slip phase's (earlier ones: run_stick) */
     res->wrench_evals = o->wrench_evals;
     if (!rc && res->off_strip)
         rc = sf_seterr(r->err, r->errlen, SF_EFAIL, "the disc left the belt strip of the COF field: raise strip_halfwidth");

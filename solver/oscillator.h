@@ -112,7 +112,11 @@ typedef struct {
     /* energy: E(T) - E(0) - W - J, and its parts [J] */
     double energy_change, friction_work, jump_energy, energy_residual;
     /* cost */
-    unsigned long steps, rejected, event_trials, wrench_evals;   /* event_trials: trial steps of the (Brent) event search */
+    /* rejected: attempts the error control refused, over all slip phases;
+     * event_trials: trial steps of the (Brent) event search; wrench_evals:
+     * wrench evaluations made (a repeat of the last one's arguments is
+     * reused, not made again) */
+    unsigned long steps, rejected, event_trials, wrench_evals;
     unsigned long off_strip;     /* accepted states whose contact patch left the COF strip */
     double x_min, x_max, y_absmax;
 } sf_osc_result;

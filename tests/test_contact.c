@@ -291,6 +291,20 @@ static void wrench_fast_loop(void **state)
         }
     }
     assert_int_equal(sf_cof_outside(cof), 0);
+    {   /* the disc-averaged COF: on the grid the same bits as the sum of sf_cof_eval, in its order;
+           over the edge too (clamped look-ups, counted) */
+        const double *rx, *ry, *wt;
+        sf_contact_cells(c, &rx, &ry, &wt);
+        const double at[][2] = { { 0.1, -0.05 }, { 0.9, 0 } };
+        for (int a = 0; a < 2; a++) {
+            double sum = 0;
+            for (size_t i = 0; i < sf_contact_ncells(c); i++)
+                sum += wt[i] * sf_cof_eval(cof, at[a][0] + rx[i], at[a][1] + ry[i]);
+            unsigned long out0 = sf_cof_outside(cof);
+            assert_true(sf_contact_mean_cof(c, at[a][0], at[a][1]) == sum / 98.1);
+            assert_true(a ? sf_cof_outside(cof) > out0 : sf_cof_outside(cof) == 0);
+        }
+    }
     sf_contact_wrench(c, 0.9, 0, -0.2, 0, 0.3, 1, q);   /* the disc hangs over the grid's edge */
     assert_true(sf_cof_outside(cof) > 0);
     reference_wrench(c, 0.9, 0, -0.2, 0, 0.3, r);
