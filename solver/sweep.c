@@ -225,8 +225,9 @@ void sf_sweep_summary_header(FILE *f)
     for (int q = 0; q < SF_SWEEP_NQ; q++) {
         const char *a = qname[q], *u = qunit[q];
         fprintf(f, "\t%s_n_used\t%s_n_excluded\t%s_mean[%s]\t%s_std[%s]\t%s_se[%s]\t%s_ci%d_lo[%s]\t%s_ci%d_hi[%s]"
-                   "\t%s_det[%s]\t%s_ratio_mean[-]\t%s_ratio_std[-]\t%s_ratio_se[-]",
-                a, a, a, u, a, u, a, u, a, lv, u, a, lv, u, a, u, a, a, a);
+                   "\t%s_det[%s]\t%s_ratio_mean[-]\t%s_ratio_std[-]\t%s_ratio_se[-]"
+                   "\t%s_num_n\t%s_num_bias[%s]\t%s_num_bias_se[%s]\t%s_u_num_mean[%s]",
+                a, a, a, u, a, u, a, u, a, lv, u, a, lv, u, a, u, a, a, a, a, a, u, a, u, a, u);
     }
     fputc('\n', f);
 }
@@ -238,8 +239,11 @@ void sf_sweep_summary_row(FILE *f, const char *param, double value, const sf_swe
     fprintf(f, "%s\t%s\t%zu", param, v, p->n);
     for (int q = 0; q < SF_SWEEP_NQ; q++) {
         const sf_sweep_stat *a = &p->stat[q], *b = &p->rstat[q];
-        fprintf(f, "\t%zu\t%zu\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g", a->n_used,
-                a->n_excluded, a->mean, a->std, a->se, a->ci_lo, a->ci_hi, p->det[q], b->mean, b->std, b->se);
+        const sf_sweep_num *e = &p->num[q];
+        int est = e->n_sub > 0;
+        fprintf(f, "\t%zu\t%zu\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%zu\t%.3g\t%.3g\t%.3g",
+                a->n_used, a->n_excluded, a->mean, a->std, a->se, a->ci_lo, a->ci_hi, p->det[q], b->mean, b->std,
+                b->se, e->n_used, est ? e->bias : NAN, est ? e->bias_se : NAN, est ? e->u_mean : NAN);
     }
     fputc('\n', f);
 }

@@ -1,8 +1,13 @@
 #include "unum.h"
+#include "montecarlo.h"
+#include "sf_alloc.h"
 #include "sf_error.h"
 
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
+#include <gsl/gsl_cdf.h>
+#include <gsl/gsl_statistics_double.h>
 
 void sf_unum_companion(const sf_scene *s, const sf_numplan *p, sf_scene *c, double *rho)
 {
@@ -87,4 +92,115 @@ void sf_unum_write(const sf_unum *u, FILE *f)
     for (int k = 0; k < SF_UNUM_NQ; k++)
         fprintf(f, "companion_%s = %.17g\n", key[k], u->qc[k]);
     fprintf(f, "companion_cells = %zu\ncompanion_%s = %.6g\n", u->cells_c, u->fixed_step ? "dt" : "rtol", u->rtol_c);
+}
+
+size_t sf_unum_sweep_subset(size_t n)
+{
+    size_t m = (n + 3) / 4;
+    return n < 2 ? n : m < 2 ? 2 : m;
+}
+
+int sf_unum_sweep_stats(const double *e, size_t stride, size_t m, double apriori, sf_sweep_num *num)
+{
+    double *v = sf_malloc((m ? m : 1) * sizeof *v);
+    if (!v)
+        return SF_ENOMEM;
+    size_t k = 0;
+    for (size_t i = 0; i < m; i++)
+        if (isfinite(e[i * stride]))
+            v[k++] = e[i * stride];
+    num->n_sub = m;
+    num->n_used = k;
+    num->bias = k ? gsl_stats_mean(v, 1, k) : NAN;
+    num->bias_se = num->u_mean = NAN;
+    if (k > 1) {
+        num->bias_se = gsl_stats_sd_m(v, 1, k, num->bias) / sqrt((double)k);
+        double t = gsl_cdf_tdist_Pinv(0.5 * (1 + SF_SWEEP_CI_LEVEL), (double)(k - 1));
+        num->u_mean = SF_UNUM_FS * (fabs(num->bias) + t * num->bias_se) + apriori;
+    }
+    free(v);
+    return SF_SUCCESS;
+}
+
+/* the companion of one realisation of a sweep point: its signed error
+ * estimates e_k (out[0..2]) and the plan's a-priori relative cell-average
+ * error (out[3], 0 for the point model) */
+typedef struct {
+    const sf_scene *s;
+    const double *qoi;   /* the sweep's values, n x SF_SWEEP_NQ */
+    sf_cof_plan *plan;
+} unum_ws;
+
+static void *unum_ws_alloc(void *ctx)
+{
+    const unum_ws *c = ctx;
+    unum_ws *w = sf_malloc(sizeof *w);
+    if (!w)
+        return NULL;
+    *w = *c;
+    if (sf_cof_plan_alloc_mt(c->s, &w->plan, NULL, 0)) {
+        free(w);
+        return NULL;
+    }
+    return w;
+}
+
+static void unum_ws_free(void *p)
+{
+    unum_ws *w = p;
+    sf_cof_plan_free_mt(w->plan);
+    free(w);
+}
+
+static int unum_realise(void *p, size_t i, gsl_rng *rng, double *out)
+{
+    unum_ws *w = p;
+    sf_cof *cof;
+    int rc = sf_cof_plan_draw(w->plan, rng, &cof);
+    if (rc)
+        return rc;
+    sf_osc *o = NULL;
+    rc = sf_osc_alloc(w->s, cof, &o, NULL, 0);   /* for its plan: the run itself is the sweep's */
+    if (!rc) {
+        sf_numplan np = *sf_osc_get_plan(o);
+        sf_osc_result r;
+        memset(&r, 0, sizeof r);
+        r.pv_x = w->qoi[i * SF_SWEEP_NQ + SF_SWEEP_PVX];
+        r.pv_F = w->qoi[i * SF_SWEEP_NQ + SF_SWEEP_PVF];
+        r.stick_fraction = w->qoi[i * SF_SWEEP_NQ + SF_SWEEP_SF];
+        sf_unum u;
+        rc = sf_unum_estimate(w->s, cof, &np, &r, &u, NULL, 0);
+        for (int k = 0; !rc && k < SF_UNUM_NQ; k++)
+            out[k] = (u.qc[k] - u.q[k]) / (u.rho - 1);
+        out[SF_UNUM_NQ] = u.cell_average ? np.err_quad : 0;
+    }
+    sf_osc_free(o);
+    sf_cof_free(cof);
+    return rc;
+}
+
+int sf_unum_sweep(const sf_scene *s, sf_sweep_point *p, int threads, char *err, size_t errlen)
+{
+    memset(p->num, 0, sizeof p->num);
+    size_t m = sf_unum_sweep_subset(p->n);
+    if (!m)
+        return SF_SUCCESS;
+    enum { NOUT = SF_UNUM_NQ + 1 };
+    double *e = sf_calloc(m * NOUT, sizeof *e);
+    if (!e)
+        return SF_ENOMEM;
+    unum_ws ctx = { s, p->qoi, NULL };
+    sf_mc_spec spec = { m, NOUT, s->seed, threads, NULL, 0, 0, "u_num" };
+    sf_mc_ops ops = { unum_ws_alloc, unum_ws_free, unum_realise };
+    if (err && errlen)
+        *err = 0;
+    int rc = sf_mc_run(&spec, &ops, &ctx, e, NULL, err, errlen);
+    if (rc && err && errlen && !*err)   /* a realisation's error comes without a message */
+        snprintf(err, errlen, "a companion solve failed: %s", sf_strerror(rc));
+    for (int k = 0; !rc && k < SF_UNUM_NQ; k++)
+        rc = sf_unum_sweep_stats(e + k, NOUT, m, e[SF_UNUM_NQ] * fabs(p->stat[k].mean), &p->num[k]);
+    free(e);
+    if (rc)
+        memset(p->num, 0, sizeof p->num);
+    return rc;
 }
