@@ -37,15 +37,10 @@ int sf_sweep_set(sf_scene *s, const char *name, double value, char *err, size_t 
     return rc;
 }
 
-typedef struct {
-    const sf_scene *s;
-    sf_cof_plan *plan;
-} ws_t;
-
-static void *ws_alloc(void *ctx)
+void *sf_sweep_ws_alloc(void *ctx)
 {
-    const ws_t *c = ctx;
-    ws_t *w = sf_malloc(sizeof *w);
+    const sf_sweep_ws *c = ctx;
+    sf_sweep_ws *w = sf_malloc(sizeof *w);
     if (!w)
         return NULL;
     *w = *c;
@@ -56,16 +51,16 @@ static void *ws_alloc(void *ctx)
     return w;
 }
 
-static void ws_free(void *p)
+void sf_sweep_ws_free(void *p)
 {
-    ws_t *w = p;
+    sf_sweep_ws *w = p;
     sf_cof_plan_free_mt(w->plan);
     free(w);
 }
 
 static int realise(void *p, size_t i, gsl_rng *rng, double *out)
 {
-    ws_t *w = p;
+    sf_sweep_ws *w = p;
     (void)i;
     sf_cof *cof;
     int rc = sf_cof_plan_draw(w->plan, rng, &cof);
@@ -123,7 +118,7 @@ int sf_sweep_run(const sf_scene *s, size_t n, int threads, const char *checkpoin
     out->ratio = sf_calloc(n * SF_SWEEP_NQ, sizeof *out->ratio);
     if (!out->qoi || !out->ratio)
         return SF_ENOMEM;
-    ws_t ctx = { s, NULL };
+    sf_sweep_ws ctx = { s, NULL, NULL };
     sf_mc_spec spec = { n, SF_SWEEP_NQ, s->seed, threads, checkpoint, resume, 0, label };
     /* the checkpoint's identity: what a line holds and the effective
      * scene as text (no padding bytes) */
@@ -137,7 +132,7 @@ int sf_sweep_run(const sf_scene *s, size_t n, int threads, const char *checkpoin
     fclose(m);
     spec.key = sf_mc_hash(text, len, 0);
     free(text);
-    sf_mc_ops ops = { ws_alloc, ws_free, realise };
+    sf_mc_ops ops = { sf_sweep_ws_alloc, sf_sweep_ws_free, realise };
     rc = sf_mc_run(&spec, &ops, &ctx, out->qoi, &out->from_checkpoint, err, errlen);
     return rc ? rc : sf_sweep_point_stats(out);
 }

@@ -65,6 +65,18 @@ typedef struct {
     sf_sweep_num num[SF_SWEEP_NQ];   /* numerical error of stat[q].mean (zero: not estimated) */
 } sf_sweep_point;
 
+/* A Monte Carlo workspace over a scene's COF draws (montecarlo.h's
+ * ws_alloc / ws_free): ctx is an sf_sweep_ws with s and the caller's data
+ * set; each thread gets a copy with its own COF plan. */
+struct sf_cof_plan;
+typedef struct {
+    const sf_scene *s;
+    const void *data;
+    struct sf_cof_plan *plan;
+} sf_sweep_ws;
+void *sf_sweep_ws_alloc(void *ctx);
+void sf_sweep_ws_free(void *ws);
+
 /* Apply parameter `name` = value to s (SF_EPARSE with the reason). */
 int sf_sweep_set(sf_scene *s, const char *name, double value, char *err, size_t errlen);
 

@@ -6,8 +6,6 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <gsl/gsl_cdf.h>
-#include <gsl/gsl_statistics_double.h>
 
 void sf_unum_companion(const sf_scene *s, const sf_numplan *p, sf_scene *c, double *rho)
 {
@@ -102,59 +100,27 @@ size_t sf_unum_sweep_subset(size_t n)
 
 int sf_unum_sweep_stats(const double *e, size_t stride, size_t m, double apriori, sf_sweep_num *num)
 {
-    double *v = sf_malloc((m ? m : 1) * sizeof *v);
-    if (!v)
-        return SF_ENOMEM;
-    size_t k = 0;
-    for (size_t i = 0; i < m; i++)
-        if (isfinite(e[i * stride]))
-            v[k++] = e[i * stride];
+    sf_sweep_stat st;
+    int rc = sf_sweep_stat_of(e, stride, m, &st);
+    if (rc)
+        return rc;
     num->n_sub = m;
-    num->n_used = k;
-    num->bias = k ? gsl_stats_mean(v, 1, k) : NAN;
-    num->bias_se = num->u_mean = NAN;
-    if (k > 1) {
-        num->bias_se = gsl_stats_sd_m(v, 1, k, num->bias) / sqrt((double)k);
-        double t = gsl_cdf_tdist_Pinv(0.5 * (1 + SF_SWEEP_CI_LEVEL), (double)(k - 1));
-        num->u_mean = SF_UNUM_FS * (fabs(num->bias) + t * num->bias_se) + apriori;
-    }
-    free(v);
+    num->n_used = st.n_used;
+    num->bias = st.mean;
+    num->bias_se = st.se;
+    /* ci_hi - mean = t se, the interval's half-width */
+    num->u_mean = SF_UNUM_FS * (fabs(st.mean) + (st.ci_hi - st.mean)) + apriori;
     return SF_SUCCESS;
 }
 
-/* the companion of one realisation of a sweep point: its signed error
- * estimates e_k (out[0..2]) and the plan's a-priori relative cell-average
- * error (out[3], 0 for the point model) */
-typedef struct {
-    const sf_scene *s;
-    const double *qoi;   /* the sweep's values, n x SF_SWEEP_NQ */
-    sf_cof_plan *plan;
-} unum_ws;
-
-static void *unum_ws_alloc(void *ctx)
-{
-    const unum_ws *c = ctx;
-    unum_ws *w = sf_malloc(sizeof *w);
-    if (!w)
-        return NULL;
-    *w = *c;
-    if (sf_cof_plan_alloc_mt(c->s, &w->plan, NULL, 0)) {
-        free(w);
-        return NULL;
-    }
-    return w;
-}
-
-static void unum_ws_free(void *p)
-{
-    unum_ws *w = p;
-    sf_cof_plan_free_mt(w->plan);
-    free(w);
-}
-
+/* the companion of one realisation of a sweep point (ws: the sweep's
+ * workspace, its data the sweep's values, n x SF_SWEEP_NQ): its signed
+ * error estimates e_k (out[0..2]) and the plan's a-priori relative
+ * cell-average error (out[3], 0 for the point model) */
 static int unum_realise(void *p, size_t i, gsl_rng *rng, double *out)
 {
-    unum_ws *w = p;
+    sf_sweep_ws *w = p;
+    const double *qoi = w->data;
     sf_cof *cof;
     int rc = sf_cof_plan_draw(w->plan, rng, &cof);
     if (rc)
@@ -165,9 +131,9 @@ static int unum_realise(void *p, size_t i, gsl_rng *rng, double *out)
         sf_numplan np = *sf_osc_get_plan(o);
         sf_osc_result r;
         memset(&r, 0, sizeof r);
-        r.pv_x = w->qoi[i * SF_SWEEP_NQ + SF_SWEEP_PVX];
-        r.pv_F = w->qoi[i * SF_SWEEP_NQ + SF_SWEEP_PVF];
-        r.stick_fraction = w->qoi[i * SF_SWEEP_NQ + SF_SWEEP_SF];
+        r.pv_x = qoi[i * SF_SWEEP_NQ + SF_SWEEP_PVX];
+        r.pv_F = qoi[i * SF_SWEEP_NQ + SF_SWEEP_PVF];
+        r.stick_fraction = qoi[i * SF_SWEEP_NQ + SF_SWEEP_SF];
         sf_unum u;
         rc = sf_unum_estimate(w->s, cof, &np, &r, &u, NULL, 0);
         for (int k = 0; !rc && k < SF_UNUM_NQ; k++)
@@ -189,9 +155,9 @@ int sf_unum_sweep(const sf_scene *s, sf_sweep_point *p, int threads, char *err, 
     double *e = sf_calloc(m * NOUT, sizeof *e);
     if (!e)
         return SF_ENOMEM;
-    unum_ws ctx = { s, p->qoi, NULL };
+    sf_sweep_ws ctx = { s, p->qoi, NULL };
     sf_mc_spec spec = { m, NOUT, s->seed, threads, NULL, 0, 0, "u_num" };
-    sf_mc_ops ops = { unum_ws_alloc, unum_ws_free, unum_realise };
+    sf_mc_ops ops = { sf_sweep_ws_alloc, sf_sweep_ws_free, unum_realise };
     if (err && errlen)
         *err = 0;
     int rc = sf_mc_run(&spec, &ops, &ctx, e, NULL, err, errlen);

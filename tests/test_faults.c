@@ -593,14 +593,20 @@ static int sweep(void *ctx)
     return rc;
 }
 
+/* a small field scene for the sweep's walks */
+static void scene_sweep(sf_scene *s)
+{
+    scene_small(s);
+    s->T = 20;
+    s->t_skip = 2;
+    s->cof_generator = SF_COFGEN_CIRCULANT;
+}
+
 static void sweeps(void **state)
 {
     (void)state;
     sf_scene s;
-    scene_small(&s);
-    s.T = 20;
-    s.t_skip = 2;
-    s.cof_generator = SF_COFGEN_CIRCULANT;
+    scene_sweep(&s);
     assert_true(walk("sf_sweep_run", sweep, &s, SF_SUCCESS, 0) > 20);
 }
 
@@ -627,10 +633,7 @@ static void unum_sweeps(void **state)
 {
     (void)state;
     sf_scene s;
-    scene_small(&s);
-    s.T = 20;
-    s.t_skip = 2;
-    s.cof_generator = SF_COFGEN_CIRCULANT;
+    scene_sweep(&s);
     sf_sweep_point pt;
     char err[256] = "";
     assert_int_equal(sf_sweep_run(&s, 2, 1, NULL, 0, NULL, &pt, err, sizeof err), SF_SUCCESS);
