@@ -47,13 +47,15 @@ int sf_unum_estimate(const sf_scene *s, const sf_cof *cof, const sf_numplan *p, 
     u->cell_average = p->quadrature && p->cell_average;
     u->fixed_step = p->integrator == SF_INTEG_RK4;
     sf_osc *o = NULL;
-    sf_osc_result rc_res;
+    sf_osc_result rc_res = { 0 };   /* freed also when the run fails */
     int rc = sf_osc_alloc(&c, cof, &o, err, errlen);
     if (!rc)
         rc = sf_osc_run(o, NULL, NULL, 0, &rc_res, err, errlen);
     sf_osc_free(o);
-    if (rc)
+    if (rc) {
+        sf_osc_result_free(&rc_res);
         return rc;
+    }
     double q[SF_UNUM_NQ] = { res->pv_x, res->pv_F, res->stick_fraction };
     double qc[SF_UNUM_NQ] = { rc_res.pv_x, rc_res.pv_F, rc_res.stick_fraction };
     sf_osc_result_free(&rc_res);

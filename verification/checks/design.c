@@ -22,10 +22,11 @@
  * A per-realisation QoI is a mean over the complete cycles in [t_skip, T]:
  * where the levels disagree on the number of cycles (a cycle starting or
  * ending at the window's edge moves across it) the QoI jumps by a cycle's
- * share whatever the accuracy; such a point is reported and kept out of
- * the per-realisation gate (its promise is on the statistic over
- * realisations: the jump's probability, not its size, shrinks with the
- * error). */
+ * share whatever the accuracy (and a run with a single maximum of x has
+ * a cycle but no peak-to-valley: NaN); such a point is reported and kept
+ * out of the per-realisation gate as undecidable (its promise is on the
+ * statistic over realisations: the jump's probability, not its size,
+ * shrinks with the error). */
 #include "checks.h"
 #include "common.h"
 #include "../stats.h"
@@ -259,7 +260,13 @@ static int chk_design(const sf_case *c, sf_result *r)
             break;
         cpu_run += pr.cpu[0];
         cpu_u += pr.cpu_u;
-        int disc = pr.cycles[0] != pr.cycles[2] || pr.cycles[1] != pr.cycles[2] || !pr.cycles[2];
+        /* a QoI the definition cannot measure at some level (a run with one
+         * maximum of x has a cycle but no peak-to-valley) is the same jump */
+        int nan_q = 0;
+        for (int l = 0; l < NLEV; l++)
+            for (int k = 0; k < NQ; k++)
+                nan_q |= !isfinite(pr.q[l][k]);
+        int disc = pr.cycles[0] != pr.cycles[2] || pr.cycles[1] != pr.cycles[2] || !pr.cycles[2] || nan_q;
         double a[NQ], e1[NQ];
         for (int k = 0; k < NQ; k++) {
             a[k] = fabs(pr.q[0][k] - pr.q[2][k]) / fabs(pr.q[2][k]);
@@ -268,7 +275,7 @@ static int chk_design(const sf_case *c, sf_result *r)
         sf_note(r, "| %zu | %.3g | %.2f | %.2f | %.2f | %.0f | %.2g | %zu | %.2g | %zu/%zu/%zu%s | %.2g | %.2g, %.2g, "
                    "%.2g | %.2g, %.2g, %.2g | %.2g, %.2g, %.2g | %.2f; %.2f, %.2f, %.2f |",
                 i, lr, cv, vb, mu, T, tol, pr.np.quadrature ? pr.np.cells : 0, pr.np.rtol, pr.cycles[0], pr.cycles[1],
-                pr.cycles[2], disc ? (pr.cycles[2] ? " (edge)" : " (no cycle)") : "", pr.np.err_total, a[0], a[1], a[2], e1[0], e1[1], e1[2], pr.u[0],
+                pr.cycles[2], disc ? (!pr.cycles[2] ? " (no cycle)" : nan_q ? " (no peak-to-valley)" : " (edge)") : "", pr.np.err_total, a[0], a[1], a[2], e1[0], e1[1], e1[2], pr.u[0],
                 pr.u[1], pr.u[2], t_draw, pr.cpu[0], pr.cpu[1], pr.cpu[2]);
         if (disc) {
             disc_points++;
