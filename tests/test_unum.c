@@ -249,6 +249,7 @@ static void sweep_estimate(void **state)
     s.cof = SF_COF_FIELD;
     assert_int_equal(sf_unum_sweep(&s, &p, 1, err, sizeof err), SF_EINVAL);
     assert_true(p.num[0].n_sub == 0 && *err);
+    assert_int_equal(sf_unum_sweep(&s, &p, 1, NULL, 0), SF_EINVAL);   /* no message wanted */
     buf = NULL;
     f = open_memstream(&buf, &len);
     sf_sweep_summary_row(f, "T", 30, &p);
