@@ -4,6 +4,7 @@
  * deterministic model at the same parameters. */
 #include "cli.h"
 #include "sweep.h"
+#include "unum.h"
 #include "montecarlo.h"
 #include "sf_error.h"
 
@@ -30,7 +31,12 @@ static void usage(FILE *f)
           "                    used and excluded (a non-finite value is excluded, never\n"
           "                    averaged), mean, std (n - 1), standard error of the mean,\n"
           "                    95% confidence interval (Student t), the deterministic\n"
-          "                    value, and the ratio's mean, std and standard error\n"
+          "                    value, the ratio's mean, std and standard error, and the\n"
+          "                    numerical error of the mean: a coarser companion solve\n"
+          "                    (as run --summary's u_num) of the first ceil(N/4)\n"
+          "                    realisations (at least 2), their signed error estimates'\n"
+          "                    mean (num_bias), its standard error and u_num_mean =\n"
+          "                    3 (|num_bias| + t se) (up to ~1/3 more CPU)\n"
           "  --realisations N  realisations per value (default: the scene's samples, if\n"
           "                    it sets the key)\n"
           "  --threads T       OpenMP threads (default: all); results do not depend on it\n"
@@ -187,6 +193,9 @@ int sf_cmd_sweep(int argc, char **argv)
                 fprintf(stderr, "slipfield sweep: %s = %g: %zu of %zu realisations from the checkpoint\n", param,
                         v[k], p.from_checkpoint, n);
             sf_sweep_write_rows(out.f, param, v[k], &p);
+            if (sum_path && sf_unum_sweep(&s, &p, (int)threads, err, sizeof err))
+                fprintf(stderr, "slipfield sweep: %s = %g: warning: no numerical error of the means (its companion "
+                                "failed: %s)\n", param, v[k], err);
             if (sum_path)
                 sf_sweep_summary_row(sum.f, param, v[k], &p);
         }

@@ -177,7 +177,7 @@ enum {   /* the COF model: what the wrench sees */
 };
 enum { SF_PLAN_STICK_EQUATORIAL = 0, SF_PLAN_STICK_SECTION = 1 };   /* the stick test (scene key exact_section) */
 
-typedef struct {
+typedef struct sf_plan {
     int cof_model;           /* SF_PLAN_MODEL_* */
     sf_cof_plan_info cof;    /* the COF: kind, generator, strip grid and bounds (what cof.c builds) */
     double cell_std;         /* cell averages: the effective field's std sqrt(Var mu_h) [-]; 0 otherwise */

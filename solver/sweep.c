@@ -37,16 +37,10 @@ int sf_sweep_set(sf_scene *s, const char *name, double value, char *err, size_t 
     return rc;
 }
 
-typedef struct {
-    const sf_scene *s;
-    const sf_plan *pl;       /* the scene's plan, made once (numplan.h) */
-    sf_cof_plan *plan;
-} ws_t;
-
-static void *ws_alloc(void *ctx)
+void *sf_sweep_ws_alloc(void *ctx)
 {
-    const ws_t *c = ctx;
-    ws_t *w = sf_malloc(sizeof *w);
+    const sf_sweep_ws *c = ctx;
+    sf_sweep_ws *w = sf_malloc(sizeof *w);
     if (!w)
         return NULL;
     *w = *c;
@@ -57,16 +51,16 @@ static void *ws_alloc(void *ctx)
     return w;
 }
 
-static void ws_free(void *p)
+void sf_sweep_ws_free(void *p)
 {
-    ws_t *w = p;
+    sf_sweep_ws *w = p;
     sf_cof_plan_free_mt(w->plan);
     free(w);
 }
 
 static int realise(void *p, size_t i, gsl_rng *rng, double *out)
 {
-    ws_t *w = p;
+    sf_sweep_ws *w = p;
     (void)i;
     sf_cof *cof;
     int rc = sf_cof_plan_draw(w->plan, rng, &cof);
@@ -128,7 +122,7 @@ int sf_sweep_run(const sf_scene *s, size_t n, int threads, const char *checkpoin
     if ((rc = sf_plan_make(s, &pl, err, errlen)))
         return rc;
     pl.history = 0;   /* a sweep keeps only the QoIs */
-    ws_t ctx = { s, &pl, NULL };
+    sf_sweep_ws ctx = { s, &pl, NULL, NULL };
     sf_mc_spec spec = { n, SF_SWEEP_NQ, s->seed, threads, checkpoint, resume, 0, label };
     /* the checkpoint's identity: what a line holds and the effective
      * scene as text (no padding bytes) */
@@ -142,7 +136,7 @@ int sf_sweep_run(const sf_scene *s, size_t n, int threads, const char *checkpoin
     fclose(m);
     spec.key = sf_mc_hash(text, len, 0);
     free(text);
-    sf_mc_ops ops = { ws_alloc, ws_free, realise };
+    sf_mc_ops ops = { sf_sweep_ws_alloc, sf_sweep_ws_free, realise };
     rc = sf_mc_run(&spec, &ops, &ctx, out->qoi, &out->from_checkpoint, err, errlen);
     return rc ? rc : sf_sweep_point_stats(out);
 }
@@ -230,8 +224,9 @@ void sf_sweep_summary_header(FILE *f)
     for (int q = 0; q < SF_SWEEP_NQ; q++) {
         const char *a = qname[q], *u = qunit[q];
         fprintf(f, "\t%s_n_used\t%s_n_excluded\t%s_mean[%s]\t%s_std[%s]\t%s_se[%s]\t%s_ci%d_lo[%s]\t%s_ci%d_hi[%s]"
-                   "\t%s_det[%s]\t%s_ratio_mean[-]\t%s_ratio_std[-]\t%s_ratio_se[-]",
-                a, a, a, u, a, u, a, u, a, lv, u, a, lv, u, a, u, a, a, a);
+                   "\t%s_det[%s]\t%s_ratio_mean[-]\t%s_ratio_std[-]\t%s_ratio_se[-]"
+                   "\t%s_num_n\t%s_num_bias[%s]\t%s_num_bias_se[%s]\t%s_u_num_mean[%s]",
+                a, a, a, u, a, u, a, u, a, lv, u, a, lv, u, a, u, a, a, a, a, a, u, a, u, a, u);
     }
     fputc('\n', f);
 }
@@ -243,8 +238,11 @@ void sf_sweep_summary_row(FILE *f, const char *param, double value, const sf_swe
     fprintf(f, "%s\t%s\t%zu", param, v, p->n);
     for (int q = 0; q < SF_SWEEP_NQ; q++) {
         const sf_sweep_stat *a = &p->stat[q], *b = &p->rstat[q];
-        fprintf(f, "\t%zu\t%zu\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g", a->n_used,
-                a->n_excluded, a->mean, a->std, a->se, a->ci_lo, a->ci_hi, p->det[q], b->mean, b->std, b->se);
+        const sf_sweep_num *e = &p->num[q];
+        int est = e->n_sub > 0;
+        fprintf(f, "\t%zu\t%zu\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%zu\t%.3g\t%.3g\t%.3g",
+                a->n_used, a->n_excluded, a->mean, a->std, a->se, a->ci_lo, a->ci_hi, p->det[q], b->mean, b->std,
+                b->se, e->n_used, est ? e->bias : NAN, est ? e->bias_se : NAN, est ? e->u_mean : NAN);
     }
     fputc('\n', f);
 }

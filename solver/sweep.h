@@ -40,6 +40,19 @@ typedef struct {
     double mean, std, se, ci_lo, ci_hi;
 } sf_sweep_stat;
 
+/* The numerical error of one quantity's mean over a point's realisations
+ * (unum.h, sf_unum_sweep): u_num's coarser companion on realisations
+ * 0 .. n_sub - 1 (exchangeable with the rest), each giving the signed
+ * error estimate e_i = (Q_c,i - Q_i) / (rho - 1) of its Q_i; bias = the
+ * mean of the n_used finite e_i, bias_se its standard error, u_mean =
+ * Fs (|bias| + t bias_se) (+ the a-priori cell-average part), t the
+ * Student quantile at (1 + SF_SWEEP_CI_LEVEL) / 2.  n_sub = 0: not
+ * estimated (the summary writes nan). */
+typedef struct {
+    size_t n_sub, n_used;
+    double bias, bias_se, u_mean;
+} sf_sweep_num;
+
 typedef struct {
     double det[SF_SWEEP_NQ];    /* deterministic pv_x [m], pv_F [N], stick fraction [-] */
     double *qoi;                /* n x SF_SWEEP_NQ, realisation-major: the values, in their units */
@@ -49,7 +62,22 @@ typedef struct {
     double mean[SF_SWEEP_NQ], std[SF_SWEEP_NQ];   /* of the ratios: rstat[q].mean, rstat[q].std */
     size_t n, from_checkpoint;
     size_t n_valid;             /* realisations whose every QoI is finite */
+    sf_sweep_num num[SF_SWEEP_NQ];   /* numerical error of stat[q].mean (zero: not estimated) */
 } sf_sweep_point;
+
+/* A Monte Carlo workspace over a scene's COF draws (montecarlo.h's
+ * ws_alloc / ws_free): ctx is an sf_sweep_ws with s and the caller's data
+ * set; each thread gets a copy with its own COF plan. */
+struct sf_cof_plan;
+struct sf_plan;
+typedef struct {
+    const sf_scene *s;
+    const struct sf_plan *pl;   /* the scene's plan, made once (numplan.h) */
+    const void *data;
+    struct sf_cof_plan *plan;
+} sf_sweep_ws;
+void *sf_sweep_ws_alloc(void *ctx);
+void sf_sweep_ws_free(void *ws);
 
 /* Apply parameter `name` = value to s (SF_EPARSE with the reason). */
 int sf_sweep_set(sf_scene *s, const char *name, double value, char *err, size_t errlen);

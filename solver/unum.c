@@ -1,7 +1,10 @@
 #include "unum.h"
+#include "montecarlo.h"
+#include "sf_alloc.h"
 #include "sf_error.h"
 
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 void sf_unum_companion(const sf_scene *s, const sf_numplan *p, sf_scene *c, double *rho)
@@ -44,13 +47,15 @@ int sf_unum_estimate(const sf_scene *s, const sf_cof *cof, const sf_numplan *p, 
     u->cell_average = p->quadrature && p->cell_average;
     u->fixed_step = p->integrator == SF_INTEG_RK4;
     sf_osc *o = NULL;
-    sf_osc_result rc_res;
+    sf_osc_result rc_res = { 0 };   /* freed also when the run fails */
     int rc = sf_osc_alloc(&c, cof, &o, err, errlen);
     if (!rc)
         rc = sf_osc_run(o, NULL, NULL, 0, &rc_res, err, errlen);
     sf_osc_free(o);
-    if (rc)
+    if (rc) {
+        sf_osc_result_free(&rc_res);
         return rc;
+    }
     double q[SF_UNUM_NQ] = { res->pv_x, res->pv_F, res->stick_fraction };
     double qc[SF_UNUM_NQ] = { rc_res.pv_x, rc_res.pv_F, rc_res.stick_fraction };
     sf_osc_result_free(&rc_res);
@@ -87,4 +92,90 @@ void sf_unum_write(const sf_unum *u, FILE *f)
     for (int k = 0; k < SF_UNUM_NQ; k++)
         fprintf(f, "companion_%s = %.17g\n", key[k], u->qc[k]);
     fprintf(f, "companion_cells = %zu\ncompanion_%s = %.6g\n", u->cells_c, u->fixed_step ? "dt" : "rtol", u->rtol_c);
+}
+
+size_t sf_unum_sweep_subset(size_t n)
+{
+    size_t m = (n + 3) / 4;
+    return n < 2 ? n : m < 2 ? 2 : m;
+}
+
+int sf_unum_sweep_stats(const double *e, size_t stride, size_t m, double apriori, sf_sweep_num *num)
+{
+    sf_sweep_stat st;
+    int rc = sf_sweep_stat_of(e, stride, m, &st);
+    if (rc)
+        return rc;
+    num->n_sub = m;
+    num->n_used = st.n_used;
+    num->bias = st.mean;
+    num->bias_se = st.se;
+    /* ci_hi - mean = t se, the interval's half-width */
+    num->u_mean = SF_UNUM_FS * (fabs(st.mean) + (st.ci_hi - st.mean)) + apriori;
+    return SF_SUCCESS;
+}
+
+/* the companion of one realisation of a sweep point (ws: the sweep's
+ * workspace, its data the sweep's values, n x SF_SWEEP_NQ): its signed
+ * error estimates e_k (out[0..2]) and the plan's a-priori relative
+ * cell-average error (out[3], 0 for the point model) */
+static int unum_realise(void *p, size_t i, gsl_rng *rng, double *out)
+{
+    sf_sweep_ws *w = p;
+    const double *qoi = w->data;
+    sf_cof *cof;
+    int rc = sf_cof_plan_draw(w->plan, rng, &cof);
+    if (rc)
+        return rc;
+    sf_osc *o = NULL;
+    rc = sf_osc_alloc(w->s, cof, &o, NULL, 0);   /* for its plan: the run itself is the sweep's */
+    if (!rc) {
+        sf_numplan np = *sf_osc_get_plan(o);
+        sf_osc_result r;
+        memset(&r, 0, sizeof r);
+        r.pv_x = qoi[i * SF_SWEEP_NQ + SF_SWEEP_PVX];
+        r.pv_F = qoi[i * SF_SWEEP_NQ + SF_SWEEP_PVF];
+        r.stick_fraction = qoi[i * SF_SWEEP_NQ + SF_SWEEP_SF];
+        sf_unum u;
+        rc = sf_unum_estimate(w->s, cof, &np, &r, &u, NULL, 0);
+        for (int k = 0; !rc && k < SF_UNUM_NQ; k++)
+            out[k] = (u.qc[k] - u.q[k]) / (u.rho - 1);
+        out[SF_UNUM_NQ] = u.cell_average ? np.err_quad : 0;
+    }
+    sf_osc_free(o);
+    sf_cof_free(cof);
+    return rc;
+}
+
+int sf_unum_sweep(const sf_scene *s, sf_sweep_point *p, int threads, char *err, size_t errlen)
+{
+    memset(p->num, 0, sizeof p->num);
+    size_t m = sf_unum_sweep_subset(p->n);
+    if (!m)
+        return SF_SUCCESS;
+    enum { NOUT = SF_UNUM_NQ + 1 };
+    double *e = sf_calloc(m * NOUT, sizeof *e);
+    if (!e)
+        return SF_ENOMEM;
+    sf_plan pl;
+    int rc = sf_plan_make(s, &pl, err, errlen);
+    if (rc) {
+        free(e);
+        return rc;
+    }
+    pl.history = 0;
+    sf_sweep_ws ctx = { s, &pl, p->qoi, NULL };
+    sf_mc_spec spec = { m, NOUT, s->seed, threads, NULL, 0, 0, "u_num" };
+    sf_mc_ops ops = { sf_sweep_ws_alloc, sf_sweep_ws_free, unum_realise };
+    if (err && errlen)
+        *err = 0;
+    rc = sf_mc_run(&spec, &ops, &ctx, e, NULL, err, errlen);
+    if (rc && err && errlen && !*err)   /* a realisation's error comes without a message */
+        snprintf(err, errlen, "a companion solve failed: %s", sf_strerror(rc));
+    for (int k = 0; !rc && k < SF_UNUM_NQ; k++)
+        rc = sf_unum_sweep_stats(e + k, NOUT, m, e[SF_UNUM_NQ] * fabs(p->stat[k].mean), &p->num[k]);
+    free(e);
+    if (rc)
+        memset(p->num, 0, sizeof p->num);
+    return rc;
 }

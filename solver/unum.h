@@ -36,6 +36,7 @@ extern "C" {
 #include "numplan.h"
 #include "oscillator.h"
 #include "scene.h"
+#include "sweep.h"
 
 enum { SF_UNUM_PVX = 0, SF_UNUM_PVF = 1, SF_UNUM_SF = 2, SF_UNUM_NQ = 3 };
 
@@ -67,6 +68,31 @@ int sf_unum_estimate(const sf_scene *s, const sf_cof *cof, const sf_numplan *p, 
 /* u as `key = value` lines (u_pv_x, u_pv_F, u_stick_fraction, the
  * companion's settings) after a comment that says what the estimate is. */
 void sf_unum_write(const sf_unum *u, FILE *f);
+
+/* The numerical error of a sweep point's means (sf_sweep_num, sweep.h).
+ * The companion above runs on the first sf_unum_sweep_subset(n)
+ * realisations (their streams are those of the sweep, so the same fields;
+ * realisations are exchangeable, so the first ones are a random subset):
+ * ceil(n / 4), at least 2 (all of them when n < 2).  Each gives the signed
+ * Richardson estimate of its own error, e_i = (Q_c,i - Q_i) / (rho - 1);
+ * the mean's numerical error is their mean (the random part of the errors
+ * averages out over realisations, as the QoIs' own spread does), with its
+ * standard error; u_mean = Fs (|bias| + t bias_se) bounds it with the
+ * GCI's safety factor, plus, for cell averages, the a-priori part
+ * err_cell |mean|.  Cost: ceil(n / 4) field draws and companions (a
+ * companion 0.04-0.45 of a run): at most ~0.36 of the sweep.  The
+ * companion's run is bit-identical for any thread count (montecarlo.h). */
+size_t sf_unum_sweep_subset(size_t n);
+
+/* Fill p->num for the sweep point p of scene s (p->qoi, p->n, p->stat
+ * from sf_sweep_run).  SF_SUCCESS, or the first companion's error code
+ * with the reason in err (p->num is then left zero: not estimated). */
+int sf_unum_sweep(const sf_scene *s, sf_sweep_point *p, int threads, char *err, size_t errlen);
+
+/* The statistics of one QoI's estimates e[0], e[stride], ... (m of them,
+ * non-finite ones left out) into *num; apriori: the a-priori part added
+ * to u_mean (0 for the point model).  SF_SUCCESS or SF_ENOMEM. */
+int sf_unum_sweep_stats(const double *e, size_t stride, size_t m, double apriori, sf_sweep_num *num);
 
 #ifdef __cplusplus
 }

@@ -26,6 +26,7 @@
 #include "surface.h"
 #include "sweep.h"
 #include "tiles.h"
+#include "unum.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -619,15 +620,53 @@ static int sweep(void *ctx)
     return rc;
 }
 
+/* a small field scene for the sweep's walks */
+static void scene_sweep(sf_scene *s)
+{
+    scene_small(s);
+    s->T = 20;
+    s->t_skip = 2;
+    s->cof_generator = SF_COFGEN_CIRCULANT;
+}
+
 static void sweeps(void **state)
 {
     (void)state;
     sf_scene s;
-    scene_small(&s);
-    s.T = 20;
-    s.t_skip = 2;
-    s.cof_generator = SF_COFGEN_CIRCULANT;
+    scene_sweep(&s);
     assert_true(walk("sf_sweep_run", sweep, &s, SF_SUCCESS, 0) > 20);
+}
+
+/* the numerical error of a sweep point's means: a point computed once,
+ * then the companions of its subset walked */
+typedef struct {
+    const sf_scene *s;
+    sf_sweep_point *p;
+} unum_ctx;
+
+static int unum_sweep(void *ctx)
+{
+    unum_ctx *c = ctx;
+    char err[256] = "";
+    int rc = sf_unum_sweep(c->s, c->p, 1, err, sizeof err);
+    if (!rc)
+        assert_true(c->p->num[0].n_sub == 2 && c->p->num[0].n_used == 2 && isfinite(c->p->num[0].u_mean));
+    else
+        assert_true(c->p->num[0].n_sub == 0);   /* left unestimated */
+    return rc;
+}
+
+static void unum_sweeps(void **state)
+{
+    (void)state;
+    sf_scene s;
+    scene_sweep(&s);
+    sf_sweep_point pt;
+    char err[256] = "";
+    assert_int_equal(sf_sweep_run(&s, 2, 1, NULL, 0, NULL, &pt, err, sizeof err), SF_SUCCESS);
+    unum_ctx c = { &s, &pt };
+    assert_true(walk("sf_unum_sweep", unum_sweep, &c, SF_SUCCESS, 0) > 10);
+    sf_sweep_point_free(&pt);
 }
 
 /* ---- the periodogram, text files */
@@ -678,6 +717,7 @@ int main(void)
         cmocka_unit_test(oscillator),
         cmocka_unit_test(montecarlo),
         cmocka_unit_test(sweeps),
+        cmocka_unit_test(unum_sweeps),
         cmocka_unit_test(misc),
     };
     return cmocka_run_group_tests_name("faults", tests, NULL, NULL);

@@ -7,6 +7,7 @@
 #include "numplan.h"
 #include "oscillator.h"
 #include "sf_error.h"
+#include "sweep.h"
 #include "unum.h"
 
 #include <math.h>
@@ -173,6 +174,96 @@ static void write_forms_and_refusal(void **state)
     sf_cof_free(g);
 }
 
+/* the sweep's subset: a quarter, at least 2, all of a smaller sweep */
+static void sweep_subset(void **state)
+{
+    (void)state;
+    size_t n[] = { 0, 1, 2, 3, 5, 8, 9, 100 }, m[] = { 0, 1, 2, 2, 2, 2, 3, 25 };
+    for (size_t i = 0; i < sizeof n / sizeof *n; i++)
+        assert_int_equal(sf_unum_sweep_subset(n[i]), m[i]);
+}
+
+/* the mean's statistics: non-finite estimates left out, the standard
+ * error and the bound from two on, the a-priori part added */
+static void sweep_stats(void **state)
+{
+    (void)state;
+    sf_sweep_num num;
+    double e[8] = { 1, -7, 2, -7, NAN, -7, 3, -7 };   /* stride 2: 1, 2, nan, 3 */
+    assert_int_equal(sf_unum_sweep_stats(e, 2, 4, 0.5, &num), SF_SUCCESS);
+    assert_true(num.n_sub == 4 && num.n_used == 3 && num.bias == 2);
+    assert_true(fabs(num.bias_se - 1 / sqrt(3.0)) < 1e-15);
+    double t = 4.3026527297;   /* Student t, 2 degrees of freedom, 0.975 */
+    assert_true(fabs(num.u_mean - (SF_UNUM_FS * (2 + t / sqrt(3.0)) + 0.5)) < 1e-9);
+    assert_int_equal(sf_unum_sweep_stats(e, 2, 1, 0, &num), SF_SUCCESS);   /* one: a bias, no bound */
+    assert_true(num.n_used == 1 && num.bias == 1 && isnan(num.bias_se) && isnan(num.u_mean));
+    assert_int_equal(sf_unum_sweep_stats(e + 4, 2, 1, 0, &num), SF_SUCCESS);   /* none finite */
+    assert_true(num.n_sub == 1 && num.n_used == 0 && isnan(num.bias) && isnan(num.u_mean));
+    assert_int_equal(sf_unum_sweep_stats(e, 2, 0, 0, &num), SF_SUCCESS);
+    assert_true(num.n_sub == 0 && isnan(num.bias));
+}
+
+/* a sweep point's estimate: on a uniform COF every realisation is the
+ * same run, so the bias is that run's own estimate (Q_c - Q) / (rho - 1)
+ * with standard error 0; the same bits at 1 and 2 threads; the summary
+ * row carries it; a companion that cannot run leaves it unestimated */
+static void sweep_estimate(void **state)
+{
+    (void)state;
+    sf_scene s;
+    sf_scene_default(&s);
+    s.cof = SF_COF_UNIFORM;
+    s.T = 30;
+    char err[256] = "";
+    sf_sweep_point p;
+    assert_int_equal(sf_sweep_run(&s, 5, 1, NULL, 0, NULL, &p, err, sizeof err), SF_SUCCESS);
+    assert_int_equal(sf_unum_sweep(&s, &p, 1, err, sizeof err), SF_SUCCESS);
+    sf_cof *cof = NULL;
+    assert_int_equal(sf_cof_alloc_uniform(s.mu_mean, &cof), SF_SUCCESS);
+    sf_osc *o = NULL;
+    sf_osc_result r;
+    assert_int_equal(sf_osc_alloc(&s, cof, &o, err, sizeof err), SF_SUCCESS);
+    assert_int_equal(sf_osc_run(o, NULL, NULL, 0, &r, err, sizeof err), SF_SUCCESS);
+    sf_unum u;
+    assert_int_equal(sf_unum_estimate(&s, cof, sf_osc_get_plan(o), &r, &u, err, sizeof err), SF_SUCCESS);
+    sf_sweep_num two[SF_SWEEP_NQ];
+    memcpy(two, p.num, sizeof two);
+    assert_int_equal(sf_unum_sweep(&s, &p, 2, err, sizeof err), SF_SUCCESS);
+    for (int k = 0; k < SF_SWEEP_NQ; k++) {
+        const sf_sweep_num *e = &p.num[k];
+        assert_true(e->n_sub == 2 && e->n_used == 2);
+        assert_true(e->bias == (u.qc[k] - u.q[k]) / (u.rho - 1) && e->bias != 0 && e->bias_se == 0);
+        assert_true(e->u_mean == SF_UNUM_FS * fabs(e->bias));
+        assert_memory_equal(&two[k], e, sizeof *e);
+    }
+    char *buf = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&buf, &len);
+    sf_sweep_summary_header(f);
+    sf_sweep_summary_row(f, "T", 30, &p);
+    fclose(f);
+    assert_non_null(strstr(buf, "\tpv_F_u_num_mean[N]"));
+    assert_null(strstr(buf, "nan"));
+    free(buf);
+    s.dof = SF_DOF_1;   /* the 1-D model refuses a quadrature plan's companion: unestimated */
+    s.cof = SF_COF_FIELD;
+    assert_int_equal(sf_unum_sweep(&s, &p, 1, err, sizeof err), SF_EINVAL);
+    assert_true(p.num[0].n_sub == 0 && *err);
+    assert_int_equal(sf_unum_sweep(&s, &p, 1, NULL, 0), SF_EINVAL);   /* no message wanted */
+    buf = NULL;
+    f = open_memstream(&buf, &len);
+    sf_sweep_summary_row(f, "T", 30, &p);
+    fclose(f);
+    assert_non_null(strstr(buf, "\t0\tnan\tnan\tnan"));
+    free(buf);
+    p.n = 0;   /* an empty point: nothing to estimate */
+    assert_int_equal(sf_unum_sweep(&s, &p, 1, err, sizeof err), SF_SUCCESS);
+    sf_sweep_point_free(&p);
+    sf_osc_result_free(&r);
+    sf_osc_free(o);
+    sf_cof_free(cof);
+}
+
 int main(void)
 {
     sf_init();
@@ -181,6 +272,9 @@ int main(void)
         cmocka_unit_test(estimate_is_its_formula),
         cmocka_unit_test(estimate_bookkeeping),
         cmocka_unit_test(write_forms_and_refusal),
+        cmocka_unit_test(sweep_subset),
+        cmocka_unit_test(sweep_stats),
+        cmocka_unit_test(sweep_estimate),
     };
     return cmocka_run_group_tests_name("unum", tests, NULL, NULL);
 }
