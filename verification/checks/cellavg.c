@@ -697,7 +697,7 @@ static int vs_point(const sf_case *c, sf_result *r, int plan)
         }
         if (L > 1) {
             sf_note(r, "\nl/R = %g, the reference's convergence on the same fields (rtol %.2g): RMS over the %zu "
-                       "realisations.\n\n| rings | cells/l | reference's predicted error | RMS error of the plan's run "
+                       "realisations.\n\n| rings | cell / l | reference's predicted error | RMS error of the plan's run "
                        "against it | RMS gap to the finest reference |\n|---|---|---|---|---|",
                     x[k], ref->rtol, n);
             for (size_t l = 0; l < L; l++) {
