@@ -428,7 +428,7 @@ int sf_cof_plan_draw(sf_cof_plan *p, gsl_rng *rng, sf_cof **out)
             return rc;
         }
         if (p->cfield) {   /* cell averages: mubar + sd G, G of the box-averaged correlation */
-            double sd = sqrt(sf_cellavg_var(&p->ca));
+            double sd = sf_cof_plan_cell_std(p);
             for (size_t k = 0; k < i->nx * i->ny; k++)
                 c->grid[k] = p->ca.mubar + sd * c->grid[k];
             c->box = i->box;

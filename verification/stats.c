@@ -76,6 +76,13 @@ double sf_z_pvalue(double z)
     return 2.0 * gsl_cdf_ugaussian_Q(fabs(z));
 }
 
+double sf_interval_null_p(double est, double se, double margin, double df)
+{
+    if (!(se > 0))
+        return fabs(est) <= margin ? 1 : 0;
+    return sf_min(1, gsl_cdf_tdist_Q((fabs(est) - margin) / se, df) + gsl_cdf_tdist_Q((fabs(est) + margin) / se, df));
+}
+
 double sf_chisq_pvalue(double x, double nu)
 {
     return gsl_cdf_chisq_Q(x, nu);

@@ -28,6 +28,13 @@ double sf_chisq_pvalue(double x, double nu);
  * against sigma2 (chi-square with n-1 dof, or n dof if mean_known). */
 double sf_var_pvalue(double s2, double sigma2, size_t n, int mean_known);
 
+/* The test of the interval null |theta| <= margin from an estimate est
+ * with standard error se (Student t, df): p = Q_t((|est| - margin) / se)
+ * + Q_t((|est| + margin) / se), exact for a normal estimate at the
+ * boundary and conservative inside it; a small p shows |theta| > margin.
+ * se = 0: 1 inside the margin, 0 outside. */
+double sf_interval_null_p(double est, double se, double margin, double df);
+
 /* Standard normal CDF as an sf_cdf_fn. */
 double sf_cdf_normal(double x, void *params);
 

@@ -30,6 +30,8 @@
 #include <gsl/gsl_integration.h>
 #include <gsl/gsl_math.h>
 #include <gsl/gsl_randist.h>
+#include <gsl/gsl_cdf.h>
+#include <gsl/gsl_statistics_double.h>
 
 enum { NQ = 3 };
 static const char *const qname[NQ] = { "PV_x", "PV_F", "stick fraction" };
@@ -418,13 +420,14 @@ static size_t box_weights(double a, double b, double x0, double dx, size_t m, si
 }
 
 /* The cell-average COF of the fine grid `fine` on the effective grid of
- * scene sc (spacing box/3, marked with its box).  A tiled fine field
+ * scene sc (spacing box/3, marked with its box), its deviations from the
+ * mean times `scale` (1: the exact box averages).  A tiled fine field
  * (cof_generator = tiles: a window of the belt that slides) is made to
  * hold each coarse column's support in turn (sf_cof_follow: its node
  * values are a function of the realisation and the lattice point alone,
  * so the averages are those of the one field the point model sees); the
  * columns are visited towards -x, the way the window's slack points. */
-static sf_cof *box_filter(const sf_cof *fine, const sf_scene *sc, double box, sf_result *r)
+static sf_cof *box_filter(const sf_cof *fine, const sf_scene *sc, double box, double scale, sf_result *r)
 {
     size_t m, n, mc, nc;
     double x0, y0, dx, dy;
@@ -471,6 +474,9 @@ static sf_cof *box_filter(const sf_cof *fine, const sf_scene *sc, double box, sf
             out[i + mc * j] = s;
         }
     }
+    if (scale != 1)   /* the model's spread about the mean (model_scale) */
+        for (size_t k = 0; k < mc * nc; k++)
+            out[k] = sc->mu_mean + scale * (out[k] - sc->mu_mean);
     sf_cof *cof = NULL;
     if (!rc && !sf_cof_alloc_grid(mc, nc, in.x0, in.y0, in.dx, in.dy, out, &cof))
         sf_cof_set_box(cof, box);
@@ -478,6 +484,87 @@ static sf_cof *box_filter(const sf_cof *fine, const sf_scene *sc, double box, sf
     free(tmp);
     free(out);
     return cof;
+}
+
+/* One realisation i on the same fine field (plan cp, stream (seed, i)):
+ * the cell-average run sc fed with the exact box averages of the fine
+ * field (deviations times `scale`, box_filter), and the point runs
+ * sp[0..L) on that field.  The field is drawn
+ * afresh for each use (the box filter slides a tiled window along the
+ * whole strip; a run follows the disc).  QoIs: qc (its complete cycles in
+ * *nc) and qr[3 l + q]. */
+static int pair_runs(sf_cof_plan *cp, unsigned long seed, size_t i, const sf_scene *sc, double box, double scale,
+                     const sf_scene *sp, size_t L, double *qc, size_t *nc, double *qr, sf_result *r)
+{
+    sf_cof *fine = NULL, *coarse = NULL;
+    int rc = check_draw(cp, seed, i, &fine);
+    if (!rc && !(coarse = box_filter(fine, sc, box, scale, r)))
+        rc = SF_EFAIL;
+    sf_cof_free(fine);
+    if (!rc)
+        rc = check_qoi_run(sc, coarse, qc, nc, r);
+    sf_cof_free(coarse);
+    for (size_t l = 0; l < L && !rc; l++) {
+        if (!(rc = check_draw(cp, seed, i, &fine)))
+            rc = check_qoi_run(&sp[l], fine, qr + 3 * l, NULL, r);
+        sf_cof_free(fine);
+    }
+    return rc;
+}
+
+/* The scenes of one l/R of a comparison on the same fine field: sc the
+ * cell-average run (plan: the accuracy plan's cells and rtol for the
+ * scene's qoi_tol, cof_model = auto must choose the cell averages; else
+ * the scene's cells and rtol), sp the point reference (rings `rings`, the
+ * run's rtol / rdiv; the fine field's generator).  0 or an error (noted). */
+static int pair_scenes(const sf_case *c, size_t k, int plan, size_t rings, double rdiv, sf_scene *sc, sf_scene *sp,
+                       sf_numplan *pl, sf_result *r)
+{
+    const sf_scene *s0 = &c->scene;
+    char err[256] = "";
+    *sp = *s0;
+    if (sf_sweep_set(sp, "l_over_R", c->spec.sweep.v[k], err, sizeof err)) {
+        sf_note(r, "**Bad sweep value:** %s", err);
+        return SF_EINVAL;
+    }
+    *sc = *sp;
+    if (plan) {
+        int rc = sf_numplan_make(sc, 1, pl, err, sizeof err);
+        if (rc) {
+            sf_note(r, "**No plan at l/R = %g:** %s", c->spec.sweep.v[k], err);
+            return rc;
+        }
+        char t[160];
+        snprintf(t, sizeof t, "l/R = %g: the plan takes the cell averages (cof_model = auto)", c->spec.sweep.v[k]);
+        sf_check_true(r, t, pl->cell_average, pl->cell_average ? "cell_average" : "point");
+        if (!pl->cell_average) {
+            sf_note(r, "**At l/R = %g the plan keeps the point model:** nothing to verify there.", c->spec.sweep.v[k]);
+            return SF_EFAIL;
+        }
+        sc->cells = pl->cells;
+        sc->rtol = pl->rtol;
+    }
+    sp->rtol = sc->rtol / rdiv;
+    sp->cof_model = SF_COFMODEL_POINT;
+    sp->cof_generator = s0->cof_generator == SF_COFGEN_TILES ? SF_COFGEN_TILES : SF_COFGEN_CIRCULANT;
+    sp->cells = rings;
+    sc->cof_model = SF_COFMODEL_CELL;
+    return SF_SUCCESS;
+}
+
+/* The one-sided test of an RMS against a bound b from the per-realisation
+ * errors e[0..n): H0 E e^2 <= b^2, t = (mean e^2 - b^2) / se(e^2), df =
+ * n - 1 (the mean of n squares: approximately normal at n >= 30). */
+static double rms_le_p(const double *e, size_t n, double b)
+{
+    double *e2 = check_alloc(n * sizeof *e2);
+    for (size_t i = 0; i < n; i++)
+        e2[i] = e[i] * e[i];
+    double m = gsl_stats_mean(e2, 1, n), se = gsl_stats_sd(e2, 1, n) / sqrt((double)n);
+    free(e2);
+    if (!isfinite(m) || !isfinite(se))
+        return 0;
+    return se > 0 ? gsl_cdf_tdist_Q((m - b * b) / se, (double)n - 1) : (m <= b * b ? 1 : 0);
 }
 
 /* Two uses of one comparison on the same fine field (point model,
@@ -489,29 +576,39 @@ static sf_cof *box_filter(const sf_cof *fine, const sf_scene *sc, double box, sf
  *  - plan (cellavg_plan_qoi_tol): the tested run is the accuracy plan's
  *    own choice for the scene's qoi_tol (cof_model = auto, cells and rtol
  *    left to the plan: it must choose the cell averages), the reference
- *    the point model at the rings of sweep2 and the plan's rtol / 100;
- *    gates: achieved <= tolerance (qoi_tol), achieved <= the plan's
- *    predicted total error (cell averages + time stepping), and that
- *    prediction <= qoi_tol (what the plan promises). */
+ *    the point model at the rings of sweep2 and the plan's rtol / 100
+ *    (sweep2 may give three rings per l/R, coarse to fine: the finest is
+ *    the reference, the others show its convergence); gates: the plan's
+ *    prediction (cell averages + time stepping) <= qoi_tol (what the plan
+ *    promises), each realisation's error <= tolerance, and over two or
+ *    more realisations the RMS error <= qoi_tol and <= the prediction
+ *    (deterministic; a one-sided test at the case's alpha when it sets
+ *    one: the RMS over fields is what the plan's model predicts). */
 static int vs_point(const sf_case *c, sf_result *r, int plan)
 {
     const sf_scene *s0 = &c->scene;
-    size_t K = c->spec.sweep.n, n = s0->samples;
-    if (!K || strcmp(c->spec.sweep_param, "l_over_R") || c->spec.sweep2.n != K || !n ||
-        (!plan && (!s0->cells || !(s0->rtol > 0))) ||
+    size_t K = c->spec.sweep.n, n = s0->samples, L = K ? c->spec.sweep2.n / K : 0;
+    if (!K || strcmp(c->spec.sweep_param, "l_over_R") || !n || !(L == 1 || (plan && L == 3)) ||
+        c->spec.sweep2.n != L * K || (!plan && (!s0->cells || !(s0->rtol > 0))) ||
         (plan && (s0->cells || s0->rtol > 0 || s0->cof_model != SF_COFMODEL_AUTO))) {
-        sf_note(r, plan ? "The scene must sweep l_over_R, set sweep2 (the reference's rings per l/R) and samples, and "
-                          "leave cells, rtol and cof_model to the plan."
+        sf_note(r, plan ? "The scene must sweep l_over_R, set sweep2 (the reference's rings per l/R: one, or three "
+                          "from coarse to fine) and samples, and leave cells, rtol and cof_model to the plan."
                         : "The scene must sweep l_over_R, set cells (cell-average cells per diameter), sweep2 (the "
                           "point model's rings per l/R), rtol and samples.");
         return SF_EINVAL;
     }
+    sf_keytab kt = sf_case_spec_keytab(&c->spec);
+    int stat = plan && n >= 2 && sf_keys_was_set(&kt, "alpha");
+    double arow = c->spec.alpha / (double)(2 * K);   /* Bonferroni over the RMS tests */
     int tiles = s0->cof_generator == SF_COFGEN_TILES;
     double *x = check_alloc(K * sizeof *x), *ach = check_alloc(K * sizeof *ach);
     double *worst = check_alloc(K * sizeof *worst), *pred = check_alloc(K * sizeof *pred);
+    double *e = check_alloc(n * L * sizeof *e), *g = check_alloc(n * L * sizeof *g);
+    double *qr = check_alloc(3 * L * sizeof *qr);
+    sf_scene *sp = check_alloc(L * sizeof *sp);
     if (plan)
         sf_note(r, "On the same fine field (point model, spacing l/8, %s): the reference is the point model's polar "
-                   "quadrature at the rings pinned per l/R (sweep2) and the plan's rtol / 100; the tested run is what "
+                   "quadrature at the rings pinned per l/R (sweep2%s) and the plan's rtol / 100; the tested run is what "
                    "the accuracy plan chooses for qoi_tol = %g (cof_model = auto: cell averages, its cells per diameter "
                    "and rtol), fed with the exact box averages of the fine field's bilinear interpolant on its own grid "
                    "(spacing box/3); %zu realisations per l/R (streams sf_mc_seed(seed, i)); error: the largest relative "
@@ -520,7 +617,7 @@ static int vs_point(const sf_case *c, sf_result *r, int plan)
                    "plan: rtol | reference rings | reference's predicted error | predicted (plan) | achieved (RMS) | "
                    "worst realisation | CPU [s] |\n|---|---|---|---|---|---|---|---|---|---|",
                 tiles ? "tiles of white noise, generated as the window follows the disc" : "circulant strip",
-                s0->qoi_tol, n);
+                L > 1 ? "; the finest of three, the others show its convergence" : "", s0->qoi_tol, n);
     else
         sf_note(r, "On the same fine field (point model, spacing l/8, %s): the point model's polar "
                    "quadrature (rings pinned per l/R) against the cell-average model (%zu Cartesian cells per diameter) "
@@ -532,87 +629,92 @@ static int vs_point(const sf_case *c, sf_result *r, int plan)
                 s0->rtol, n);
     int rc = SF_SUCCESS;
     for (size_t k = 0; k < K && !rc; k++) {
-        sf_scene sp = *s0, sc;
-        char err[256] = "";
-        if (sf_sweep_set(&sp, "l_over_R", c->spec.sweep.v[k], err, sizeof err)) {
-            sf_note(r, "**Bad sweep value:** %s", err);
-            rc = SF_EINVAL;
-            break;
-        }
-        sc = sp;
+        sf_scene sc;
         sf_numplan pl;
-        if (plan) {
-            if ((rc = sf_numplan_make(&sc, 1, &pl, err, sizeof err))) {
-                sf_note(r, "**No plan at l/R = %g:** %s", c->spec.sweep.v[k], err);
-                break;
-            }
-            char t[160];
-            snprintf(t, sizeof t, "l/R = %g: the plan takes the cell averages (cof_model = auto)", c->spec.sweep.v[k]);
-            sf_check_true(r, t, pl.cell_average, pl.cell_average ? "cell_average" : "point");
-            if (!pl.cell_average) {
-                sf_note(r, "**At l/R = %g the plan keeps the point model:** nothing to verify there.",
-                        c->spec.sweep.v[k]);
-                rc = SF_EFAIL;
-                break;
-            }
-            sc.cells = pl.cells;
-            sc.rtol = pl.rtol;
-            sp.rtol = pl.rtol / 100;
-        }
-        sp.cof_model = SF_COFMODEL_POINT;
-        sp.cof_generator = tiles ? SF_COFGEN_TILES : SF_COFGEN_CIRCULANT;
-        sp.cells = (size_t)c->spec.sweep2.v[k];
-        sc.cof_model = SF_COFMODEL_CELL;
+        for (size_t l = 0; l < L && !rc; l++)
+            rc = pair_scenes(c, k, plan, (size_t)c->spec.sweep2.v[k * L + l], plan ? 100 : 1, &sc, &sp[l], &pl, r);
+        if (rc)
+            break;
         double box = 2 * sc.R / (double)sc.cells;
         sf_cof_plan *cp;
-        if ((rc = sf_cof_plan_alloc(&sp, &cp, err, sizeof err))) {
+        char err[256] = "";
+        if ((rc = sf_cof_plan_alloc(&sp[L - 1], &cp, err, sizeof err))) {
             sf_note(r, "**Cannot plan the fine field at l/R = %g:** %s", c->spec.sweep.v[k], err);
             break;
         }
         double e2 = 0, ew = 0, t0 = check_cpu_seconds();
         for (size_t i = 0; i < n && !rc; i++) {
-            /* the same stream twice: one draw for the box filter (a
-             * window slides along the whole strip), one for the run */
-            sf_cof *fine = NULL, *fine2 = NULL, *coarse = NULL;
-            for (int d = 0; d < 2 && !rc; d++)
-                rc = check_draw(cp, s0->seed, i, d ? &fine : &fine2);
-            if (!rc && !(coarse = box_filter(fine2, &sc, box, r)))
-                rc = SF_EFAIL;
-            sf_cof_free(fine2);
-            double e = 0;
-            if (!rc && !(rc = check_qoi_gap(&sc, coarse, &sp, fine, &e, r))) {
-                e2 += e * e / (double)n;
-                ew = sf_max(ew, e);
+            double qc[3];
+            size_t nc;
+            if ((rc = pair_runs(cp, s0->seed, i, &sc, box, 1, sp, L, qc, &nc, qr, r)))
+                break;
+            for (size_t l = 0; l < L; l++) {
+                e[l * n + i] = check_qoi_gap_of(qc, nc, qr + 3 * l);
+                g[l * n + i] = check_qoi_gap_of(qr + 3 * l, 1, qr + 3 * (L - 1));
             }
-            sf_cof_free(fine);
-            sf_cof_free(coarse);
+            double ei = e[(L - 1) * n + i];
+            e2 += ei * ei / (double)n;
+            ew = sf_max(ew, ei);
         }
         sf_cof_plan_free(cp);
         if (rc)
             break;
+        sf_result_data(r, "QoI errors", n * L, e);
         x[k] = c->spec.sweep.v[k];
         ach[k] = fmax(sqrt(e2), 1e-17);
         worst[k] = fmax(ew, 1e-17);
         char t[160];
+        const sf_scene *ref = &sp[L - 1];
         if (plan) {
             pred[k] = pl.err_total;
             sf_note(r, "| %g | %zu | %.3g | %.2g | %zu | %.2g | %.2g | %.2g | %.2g | %.1f |", x[k], sc.cells, box / sc.l,
-                    sc.rtol, sp.cells, sf_numplan_err_quad(x[k], sp.mu_std / sp.mu_mean, sp.cells) + sf_numplan_err_time(sp.rtol), pred[k],
-                    ach[k], worst[k], check_cpu_seconds() - t0);
-            snprintf(t, sizeof t, "l/R = %g: RMS QoI error of the plan's cell averages vs the point reference <= qoi_tol",
-                     x[k]);
-            sf_check_le(r, t, ach[k], c->spec.tolerance);
-            snprintf(t, sizeof t, "l/R = %g: RMS QoI error / the plan's predicted error", x[k]);
-            sf_check_le(r, t, ach[k] / pred[k], 1);
+                    sc.rtol, ref->cells,
+                    sf_numplan_err_quad(x[k], ref->mu_std / ref->mu_mean, ref->cells) + sf_numplan_err_time(ref->rtol),
+                    pred[k], ach[k], worst[k], check_cpu_seconds() - t0);
             /* what the plan promises (--explain: "within qoi_tol") */
             snprintf(t, sizeof t, "l/R = %g: the plan's predicted error (cell averages + time stepping) <= qoi_tol", x[k]);
             sf_check_le(r, t, pred[k], s0->qoi_tol);
+            snprintf(t, sizeof t, "l/R = %g: each realisation's QoI error vs the point reference <= tolerance", x[k]);
+            sf_check_le(r, t, worst[k], c->spec.tolerance);
+            if (stat) {
+                snprintf(t, sizeof t, "l/R = %g: RMS QoI error <= qoi_tol (one-sided t test on the squares)", x[k]);
+                sf_check_pvalue(r, t, rms_le_p(e + (L - 1) * n, n, s0->qoi_tol), arow, n);
+                snprintf(t, sizeof t, "l/R = %g: RMS QoI error <= the plan's prediction (one-sided t test)", x[k]);
+                sf_check_pvalue(r, t, rms_le_p(e + (L - 1) * n, n, pred[k]), arow, n);
+            } else if (n >= 2) {
+                snprintf(t, sizeof t, "l/R = %g: RMS QoI error of the plan's cell averages vs the point reference <= "
+                                      "qoi_tol", x[k]);
+                sf_check_le(r, t, ach[k], s0->qoi_tol);
+                snprintf(t, sizeof t, "l/R = %g: RMS QoI error / the plan's predicted error", x[k]);
+                sf_check_le(r, t, ach[k] / pred[k], 1);
+            }
         } else {
             pred[k] = sf_numplan_err_cell(x[k], sc.mu_std / sc.mu_mean, sc.cells);
-            sf_note(r, "| %g | %.3g | %zu | %.2g | %.2g | %.2g |", x[k], box / sc.l, sp.cells, pred[k], ach[k], worst[k]);
+            sf_note(r, "| %g | %.3g | %zu | %.2g | %.2g | %.2g |", x[k], box / sc.l, ref->cells, pred[k], ach[k], worst[k]);
             snprintf(t, sizeof t, "l/R = %g: RMS QoI difference (cell averages vs point values, same field) / predicted",
                      x[k]);
             sf_check_le(r, t, ach[k] / pred[k], c->spec.tolerance);
+        }
+        if (L > 1) {
+            sf_note(r, "\nl/R = %g, the reference's convergence on the same fields (rtol %.2g): RMS over the %zu "
+                       "realisations.\n\n| rings | cell / l | reference's predicted error | RMS error of the plan's run "
+                       "against it | RMS gap to the finest reference |\n|---|---|---|---|---|",
+                    x[k], ref->rtol, n);
+            for (size_t l = 0; l < L; l++) {
+                double se2 = 0, sg2 = 0;
+                for (size_t i = 0; i < n; i++) {
+                    se2 += e[l * n + i] * e[l * n + i] / (double)n;
+                    sg2 += g[l * n + i] * g[l * n + i] / (double)n;
+                }
+                sf_note(r, "| %zu | %.3g | %.2g | %.2g | %.2g |", sp[l].cells, 2 * sc.R / (double)sp[l].cells / sc.l,
+                        sf_numplan_err_quad(x[k], sc.mu_std / sc.mu_mean, sp[l].cells) + sf_numplan_err_time(ref->rtol),
+                        sqrt(se2), sqrt(sg2));
+                if (l == L - 2) {
+                    /* the reference must be converged well inside what it judges */
+                    snprintf(t, sizeof t, "l/R = %g: RMS gap of the middle reference to the finest <= qoi_tol / 2", x[k]);
+                    sf_check_le(r, t, sqrt(sg2), 0.5 * s0->qoi_tol);
+                }
+            }
         }
     }
     if (!rc) {
@@ -625,7 +727,7 @@ static int vs_point(const sf_case *c, sf_result *r, int plan)
         sf_plot_series(p, "worst realisation", SF_STYLE_POINTS, K, x, worst);
         sf_plot_series(p, "predicted by the plan", SF_STYLE_LINESPOINTS, K, x, pred);
         if (plan)
-            sf_plot_hline(p, "qoi_tol", c->spec.tolerance);
+            sf_plot_hline(p, "qoi_tol", s0->qoi_tol);
         else
             sf_plot_hline(p, "qoi_tol = 1e-3 (default)", 1e-3);
     }
@@ -633,11 +735,155 @@ static int vs_point(const sf_case *c, sf_result *r, int plan)
     free(ach);
     free(worst);
     free(pred);
+    free(e);
+    free(g);
+    free(qr);
+    free(sp);
     return rc ? SF_EFAIL : SF_SUCCESS;
 }
 
 static int chk_vs_point(const sf_case *c, sf_result *r) { return vs_point(c, r, 0); }
 static int chk_plan_qoi_tol(const sf_case *c, sf_result *r) { return vs_point(c, r, 1); }
+
+/* ---- the cell-average model's effect on the QoI statistics, paired on
+ * the same fine fields: per l/R and QoI, the ratio of the means and of the
+ * stds (cell averages / point model) on the log scale, with standard
+ * errors from the influence functions of the pairs (delta method, no
+ * normality: u_i = (x_i - xbar) / xbar - (y_i - ybar) / ybar for the mean,
+ * v_i = ((x_i - xbar)^2 / s_x^2 - (y_i - ybar)^2 / s_y^2) / 2 for the std;
+ * se = sd / sqrt(n)).  Gate: the interval null |log ratio| <=
+ * log(1 + tolerance) (sf_interval_null_p) at the case's alpha split over
+ * the rows; beside it the TOST verdict (both one-sided (1 - alpha) bounds
+ * inside the margin) and the minimum detectable shift at power 0.99,
+ * margin + (t_alpha + t_0.01) se, gated <= 5% (the design's power) at
+ * QSTATS_POWER_N pairs or more. */
+#define QSTATS_MDE 0.05
+#define QSTATS_POWER_N 50   /* the power is gated from this many pairs on (a smoke run reports it) */
+static void qstats_row(sf_result *r, double lr, const char *qn, const char *what, double est, const double *u, size_t n,
+                       double margin, double alpha)
+{
+    double se = gsl_stats_sd(u, 1, n) / sqrt((double)n), df = (double)n - 1, m = log1p(margin);
+    double p = sf_interval_null_p(est, se, m, df), tq = gsl_cdf_tdist_Qinv(alpha, df);
+    double mde = expm1(m + (tq + gsl_cdf_tdist_Qinv(0.01, df)) * se);
+    int tost = est - tq * se > -m && est + tq * se < m;
+    sf_note(r, "| %g | %s | %s | %.4f | %.2g | [%.4f, %.4f] | %s | %.3g |", lr, qn, what, exp(est), se,
+            exp(est - tq * se), exp(est + tq * se), tost ? "shown" : "not shown", mde);
+    char t[160];
+    snprintf(t, sizeof t, "l/R = %g, %s: |%s ratio - 1| <= %g (interval null, paired)", lr, qn, what, margin);
+    sf_check_pvalue(r, t, p, alpha, n);
+    if (n >= QSTATS_POWER_N) {
+        snprintf(t, sizeof t, "l/R = %g, %s, %s: minimum detectable shift at power 0.99", lr, qn, what);
+        sf_check_le(r, t, mde, QSTATS_MDE);
+    }
+}
+
+/* The cell-average model's std (the generator's scale, cof.h:
+ * sf_cof_plan_cell_std) over the oracle's std of the box average (the
+ * quadrature above): 1 up to the quadrature's error when the model is
+ * right.  The paired runs feed the box averages with their deviations
+ * times this ratio, so the model's own variance enters them as it enters
+ * a drawn effective field.  NaN when the cell-average COF cannot be
+ * planned. */
+static double model_scale(const sf_scene *sc, double box)
+{
+    sf_cof_plan *cp;
+    char err[256];
+    if (sf_cof_plan_alloc(sc, &cp, err, sizeof err))
+        return NAN;
+    double sd = sf_cof_plan_cell_std(cp);
+    sf_cof_plan_free(cp);
+    ref_ln_par lp = ref_lognormal_par(sc->mu_mean, sc->mu_std);
+    oracle_par o = { sc->mu_mean, lp.sigma * lp.sigma, sc->l };
+    gsl_integration_glfixed_table *gl = gsl_integration_glfixed_table_alloc(20);
+    size_t cap = 2 * 20 * ((size_t)ceil(box / (sc->l / 2)) + 1);
+    double *u = check_alloc(cap * sizeof *u), *w = check_alloc(cap * sizeof *w);
+    size_t nn = nodes_1d(box, sc->l, gl, u, w);
+    double ov = oracle_cov(&o, box, 0, 0, u, w, nn);
+    free(u);
+    free(w);
+    gsl_integration_glfixed_table_free(gl);
+    return sd / sqrt(ov);
+}
+
+static int chk_qoi_stats(const sf_case *c, sf_result *r)
+{
+    const sf_scene *s0 = &c->scene;
+    size_t K = c->spec.sweep.n, n = s0->samples;
+    if (!K || strcmp(c->spec.sweep_param, "l_over_R") || c->spec.sweep2.n != K || n < 4 || s0->cells ||
+        s0->rtol > 0 || s0->cof_model != SF_COFMODEL_AUTO || !(c->spec.tolerance > 0)) {
+        sf_note(r, "The scene must sweep l_over_R, set sweep2 (the point model's rings per l/R), samples >= 4 and "
+                   "tolerance (the equivalence margin), and leave cells, rtol and cof_model to the plan.");
+        return SF_EINVAL;
+    }
+    double alpha = c->spec.alpha / (double)(K * NQ * 2);
+    double *q = check_alloc(2 * NQ * n * sizeof *q), *u = check_alloc(n * sizeof *u);
+    double *x = check_alloc(K * sizeof *x), *rs = check_alloc(K * sizeof *rs);
+    sf_note(r, "On the same fine field (tiles, point model spacing l/8): the cell-average model as the accuracy plan "
+               "takes it for qoi_tol = %g (its cells and rtol; fed with the exact box averages of the fine field, read "
+               "through the bilinear interpolant of its box/3 grid as in a run) against the point model at the rings of "
+               "sweep2 and the same rtol; %zu realisations per l/R (streams sf_mc_seed(seed, i)). Ratio: cell average / "
+               "point; se of its log from the pairs' influence functions; margin %g; alpha %.3g per row (the case's %g "
+               "over %zu rows); MDS: the minimum detectable shift at power 0.99 (gated <= %g).\n\n| l/R | QoI | "
+               "statistic | ratio | se (log) | %g%% interval | TOST within the margin | MDS |\n|---|---|---|---|---|---|"
+               "---|---|",
+            s0->qoi_tol, n, c->spec.tolerance, alpha, c->spec.alpha, K * NQ * 2, QSTATS_MDE, 100 * (1 - 2 * alpha));
+    int rc = SF_SUCCESS;
+    for (size_t k = 0; k < K && !rc; k++) {
+        sf_scene sc, sp;
+        sf_numplan pl;
+        if ((rc = pair_scenes(c, k, 1, (size_t)c->spec.sweep2.v[k], 1, &sc, &sp, &pl, r)))
+            break;
+        double box = 2 * sc.R / (double)sc.cells, scale = model_scale(&sc, box);
+        sf_note(r, "| %g | (the model's cell-average std / the oracle's: %.9f; cells %zu, rtol %.2g, point rings %zu) "
+                   "|||||||", c->spec.sweep.v[k], scale, sc.cells, sc.rtol, sp.cells);
+        sf_cof_plan *cp;
+        char err[256] = "";
+        if ((rc = sf_cof_plan_alloc(&sp, &cp, err, sizeof err))) {
+            sf_note(r, "**Cannot plan the fine field at l/R = %g:** %s", c->spec.sweep.v[k], err);
+            break;
+        }
+        for (size_t i = 0; i < n && !rc; i++) {
+            double qc[3], qp[3];
+            size_t nc;
+            rc = pair_runs(cp, s0->seed, i, &sc, box, scale, &sp, 1, qc, &nc, qp, r);
+            for (int j = 0; j < NQ && !rc; j++) {
+                q[j * n + i] = qc[j];
+                q[(NQ + j) * n + i] = qp[j];
+            }
+        }
+        sf_cof_plan_free(cp);
+        if (rc)
+            break;
+        sf_result_data(r, "QoIs", 2 * NQ * n, q);
+        x[k] = c->spec.sweep.v[k];
+        for (int j = 0; j < NQ; j++) {
+            const double *a = q + j * n, *b = q + (NQ + j) * n;
+            double ma = gsl_stats_mean(a, 1, n), mb = gsl_stats_mean(b, 1, n);
+            double sa = gsl_stats_sd_m(a, 1, n, ma), sb = gsl_stats_sd_m(b, 1, n, mb);
+            for (size_t i = 0; i < n; i++)
+                u[i] = (a[i] - ma) / ma - (b[i] - mb) / mb;
+            qstats_row(r, x[k], qname[j], "mean", log(ma / mb), u, n, c->spec.tolerance, alpha);
+            for (size_t i = 0; i < n; i++)
+                u[i] = 0.5 * ((a[i] - ma) * (a[i] - ma) / (sa * sa) - (b[i] - mb) * (b[i] - mb) / (sb * sb));
+            qstats_row(r, x[k], qname[j], "std", log(sa / sb), u, n, c->spec.tolerance, alpha);
+            if (j == 1)
+                rs[k] = sa / sb;
+        }
+    }
+    if (!rc) {
+        sf_plot *p = sf_result_plot(r, "cellavg-qoi-stats", "The std of PV_F, cell-average / point model, same fields",
+                                    "l/R [-]", "std ratio [-]");
+        sf_plot_log(p, 1, 0);
+        sf_plot_series(p, "std(PV_F) ratio", SF_STYLE_LINESPOINTS, K, x, rs);
+        sf_plot_hline(p, "1 - margin", 1 - c->spec.tolerance);
+        sf_plot_hline(p, "1 + margin", 1 + c->spec.tolerance);
+    }
+    free(q);
+    free(u);
+    free(x);
+    free(rs);
+    return rc ? SF_EFAIL : SF_SUCCESS;
+}
 
 /* ---- the QoI distributions of the two models (independent fields) */
 static int chk_distribution(const sf_case *c, sf_result *r)
@@ -726,6 +972,8 @@ const sf_check_def sf_checks_cellavg[] = {
     { "cellavg_vs_point", chk_vs_point, "cell-average quadrature vs point quadrature on the same fine field" },
     { "cellavg_plan_qoi_tol", chk_plan_qoi_tol,
       "the plan's cell-average choice for qoi_tol vs the point model at high resolution, same fine field" },
+    { "cellavg_qoi_stats", chk_qoi_stats,
+      "the cell-average model's effect on the QoI means and stds, paired with the point model on the same fine fields" },
     { "cellavg_distribution", chk_distribution, "QoI distributions of the cell-average and point models (KS)" },
     { "cellavg_sampler_dft", chk_sampler_dft, "the real sampler's draws against the direct sum that defines them" },
     { NULL, NULL, NULL },

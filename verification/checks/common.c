@@ -396,31 +396,43 @@ int ref_cycle(const sf_scene *s, double mu, ref_cycle1d *c)
     return 0;
 }
 
+int check_qoi_run(const sf_scene *s, const sf_cof *cof, double q[3], size_t *ncycles, sf_result *r)
+{
+    sf_osc_result a;
+    int rc = check_osc_run(s, NULL, cof, 0, &a, NULL, NULL, r);
+    if (rc)
+        return rc;
+    q[0] = a.pv_x;
+    q[1] = a.pv_F;
+    q[2] = a.stick_fraction;
+    if (ncycles)
+        *ncycles = a.ncycles;
+    sf_osc_result_free(&a);
+    return SF_SUCCESS;
+}
+
+double check_qoi_gap_of(const double q[3], size_t ncycles, const double qref[3])
+{
+    if (!ncycles && isnan(qref[0]))
+        return NAN;
+    double e = 0;
+    for (int k = 0; k < 3; k++) {
+        double d = fabs(q[k] - qref[k]) / fabs(qref[k]);
+        if (!(d <= e))   /* NaN (a complete cycle in one run only) too: it fails the case */
+            e = isnan(d) ? INFINITY : d;
+    }
+    return e;
+}
+
 int check_qoi_gap(const sf_scene *s, const sf_cof *cof, const sf_scene *sref, const sf_cof *cref, double *gap,
                   sf_result *r)
 {
-    sf_osc_result a, b;
-    int rc = check_osc_run(sref, NULL, cref, 0, &a, NULL, NULL, r);
-    if (rc)
-        return rc;
-    double qa[3] = { a.pv_x, a.pv_F, a.stick_fraction };
-    sf_osc_result_free(&a);
-    if ((rc = check_osc_run(s, NULL, cof, 0, &b, NULL, NULL, r)))
-        return rc;
-    double qb[3] = { b.pv_x, b.pv_F, b.stick_fraction }, e = 0;
-    int nb = b.ncycles == 0;
-    sf_osc_result_free(&b);
-    if (nb && isnan(qa[0])) {
-        *gap = NAN;
-        return SF_SUCCESS;
-    }
-    for (int q = 0; q < 3; q++) {
-        double d = fabs(qb[q] - qa[q]) / fabs(qa[q]);
-        if (!(d <= e))   /* NaN (no complete cycle) too: it fails the case */
-            e = isnan(d) ? INFINITY : d;
-    }
-    *gap = e;
-    return SF_SUCCESS;
+    double qa[3], qb[3];
+    size_t nb;
+    int rc = check_qoi_run(sref, cref, qa, NULL, r);
+    if (!rc && !(rc = check_qoi_run(s, cof, qb, &nb, r)))
+        *gap = check_qoi_gap_of(qb, nb, qa);
+    return rc;
 }
 
 int check_draw(sf_cof_plan *p, unsigned long seed, size_t i, sf_cof **out)

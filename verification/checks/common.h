@@ -143,5 +143,10 @@ int check_draw(sf_cof_plan *p, unsigned long seed, size_t i, sf_cof **out);
  * has one (no QoI to compare: a caller may draw another realisation). */
 int check_qoi_gap(const sf_scene *s, const sf_cof *cof, const sf_scene *sref, const sf_cof *cref, double *gap,
                   sf_result *r);
+/* One run's PV_x, PV_F and stick fraction (its complete cycles in
+ * *ncycles, when not NULL), and the gap of check_qoi_gap of such a run
+ * (q, ncycles) against a reference triple. */
+int check_qoi_run(const sf_scene *s, const sf_cof *cof, double q[3], size_t *ncycles, sf_result *r);
+double check_qoi_gap_of(const double q[3], size_t ncycles, const double qref[3]);
 
 #endif

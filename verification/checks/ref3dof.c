@@ -220,9 +220,7 @@ static double ref_paired_test(sf_result *r, const char *what, const double *a, c
     double m = fin ? gsl_stats_mean(d, 1, n) : NAN, se = fin ? gsl_stats_sd(d, 1, n) / sqrt((double)n) : NAN;
     double df = (double)n - 1, p = 0;
     if (fin)
-        p = se > 0 ? sf_min(1, gsl_cdf_tdist_Q((fabs(m) - REF_STATS_MARGIN) / se, df) +
-                                   gsl_cdf_tdist_Q((fabs(m) + REF_STATS_MARGIN) / se, df))
-                   : (fabs(m) <= REF_STATS_MARGIN ? 1 : 0);
+        p = sf_interval_null_p(m, se, REF_STATS_MARGIN, df);
     double tq = gsl_cdf_tdist_Qinv(alpha, df), lo = m - tq * se, hi = m + tq * se;
     double mde = REF_STATS_MARGIN + (tq + gsl_cdf_tdist_Qinv(0.01, df)) * se;
     char name[200];
