@@ -737,8 +737,8 @@ static int chk_mms_events(const sf_case *c, sf_result *r)
     sf_check_le(r, "runs that failed", failed, 0);
     sf_check_le(r, "runs whose transitions are not exactly (stick onset, break)", bad_events, 0);
     sf_check_le(r, "largest finest-level error (state at T [m], event times [s])", finest, c->spec.tolerance);
-    snprintf(err, sizeof err, "min event-time error in the fits / event location tolerance (%g s)", SF_OSC_TIME_TOL);
-    sf_check_ge(r, err, tmin / SF_OSC_TIME_TOL, EV_FLOOR_RATIO);
+    sf_check_ge(r, "min event-time error in the fits / event location tolerance (SF_OSC_TIME_TOL)",
+                tmin / SF_OSC_TIME_TOL, EV_FLOOR_RATIO);
     sf_check_ge(r, "min over the slip arcs of (lambda - eps_lambda) / (eps_lambda |t - t_event|) (one crossing)",
                 lam_min, 0.5);
     sf_check_ge(r, "min over the slip arcs of |u| / (|w| R) (pole outside the disc)", eps_min, 1.5);
