@@ -181,9 +181,10 @@ void sf_osc_slip_rhs(sf_osc *o, double t, const double *y, double *f, double q[3
  * x, y, phi of Eq. 5 (m x'' = -k x + Fx + S_x, m y'' = -k y + Fy + S_y,
  * J phi'' = T + S_phi).  It is not friction: the work row and the wrench q
  * sf_osc_slip_rhs returns leave it out.  fn = NULL removes it; a plan
- * without a source computes exactly as before (same bits).  Meant for
- * sf_osc_slip_integrate: sf_osc_run would also see it, but a manufactured
- * source has no meaning across stick phases. */
+ * without a source computes exactly as before (same bits).  Read by
+ * sf_osc_slip_integrate and by sf_osc_run in its slip phases (stick is
+ * exact kinematics and never reads it): a manufactured solution through
+ * events takes each slip arc's own source (cases/mms/events.md). */
 typedef void (*sf_osc_source_fn)(void *ctx, double t, double S[3]);
 void sf_osc_set_source(sf_osc *o, sf_osc_source_fn fn, void *ctx);
 

@@ -10,6 +10,7 @@
 #include <string.h>
 #include <time.h>
 #include <gsl/gsl_blas.h>
+#include <gsl/gsl_fit.h>
 #include <gsl/gsl_linalg.h>
 #include <gsl/gsl_math.h>
 #include <gsl/gsl_sf_ellint.h>
@@ -132,6 +133,19 @@ void *check_alloc(size_t n)
         exit(SF_EXIT_INTERNAL);
     }
     return p;
+}
+
+double check_loglog_slope(const double *x, const double *y, size_t n)
+{
+    double *lx = check_alloc(n * sizeof *lx), *ly = check_alloc(n * sizeof *ly), c0, c1, a, b, c, ss;
+    for (size_t i = 0; i < n; i++) {
+        lx[i] = log(x[i]);
+        ly[i] = log(y[i]);
+    }
+    int st = gsl_fit_linear(lx, 1, ly, 1, n, &c0, &c1, &a, &b, &c, &ss);
+    free(lx);
+    free(ly);
+    return st ? NAN : c1;
 }
 
 /* The alternative of a power run, or NULL in a normal run. */

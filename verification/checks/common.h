@@ -85,6 +85,10 @@ int check_field_plan(const sf_case *c, sf_result *r, sf_field **out);
 /* Allocate or die (exit 3): checks run in their own process. */
 void *check_alloc(size_t n);
 
+/* Observed order: the least-squares slope of log y against log x over n
+ * points (GSL gsl_fit_linear); NaN when the fit fails. */
+double check_loglog_slope(const double *x, const double *y, size_t n);
+
 /* Direct (no FFT) circulant eigenvalues of the squared-exponential
  * embedding of period (px, py) for spacings dx, dy: the oracle for the
  * FFT path.  lam has px*py entries, index kx + px*ky. O((px py)^2)/sep. */

@@ -31,20 +31,6 @@ static double transition_error(const sf_osc_result *res, const sf_cycle1d *cf, s
     return e;
 }
 
-/* slope of log y vs log x (least squares) */
-static double fit_order(const double *x, const double *y, size_t n)
-{
-    double *lx = check_alloc(n * sizeof *lx), *ly = check_alloc(n * sizeof *ly), c0, c1, a, b, c, ss;
-    for (size_t i = 0; i < n; i++) {
-        lx[i] = log(x[i]);
-        ly[i] = log(y[i]);
-    }
-    int st = gsl_fit_linear(lx, 1, ly, 1, n, &c0, &c1, &a, &b, &c, &ss);
-    free(lx);
-    free(ly);
-    return st ? NAN : c1;
-}
-
 /* The simulated cycle vs the eps-corrected closed form: PV_x, PV_F, stick
  * fraction, period, stick and slip durations, and every transition time. */
 static int chk_cycle(const sf_case *c, sf_result *r)
@@ -199,7 +185,7 @@ static int chk_eps_order(const sf_case *c, sf_result *r)
                 res.period - stick - ideal.t_slip, cf.t_slip - ideal.t_slip);
         sf_osc_result_free(&res);
     }
-    double op = fit_order(e, dp, K), os = fit_order(e, ds, K);
+    double op = check_loglog_slope(e, dp, K), os = check_loglog_slope(e, ds, K);
     sf_check_abs(r, "observed order of the PV_x deviation in eps_lambda", op, 1, c->spec.tolerance);
     sf_check_abs(r, "observed order of the slip-duration deviation in eps_lambda", os, 1, c->spec.tolerance);
     sf_check_le(r, "max relative gap between each deviation and the corrected closed form's prediction",
@@ -244,7 +230,7 @@ static int chk_step_order(const sf_case *c, sf_result *r)
         sf_note(r, "| %g | %.3e | %.3e | %lu |", h[k], err[k], res.pv_x / cf.pv_x - 1, res.steps);
         sf_osc_result_free(&res);
     }
-    double ord = fit_order(h, err, K);
+    double ord = check_loglog_slope(h, err, K);
     sf_check_ge(r, rk4 ? "observed order of RK4 in dt (transition times)" : "observed order of the error in rtol",
                 ord, c->spec.tolerance);
     sf_note(r, "\nObserved order %.3f (least squares over the sweep). Expected: %s.\n", ord,

@@ -30,7 +30,6 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <gsl/gsl_fit.h>
 #include <gsl/gsl_integration.h>
 #include <gsl/gsl_math.h>
 
@@ -104,7 +103,23 @@ typedef struct {
     size_t nr, na;
     double *x, *y, *dS;
     unsigned long evals;
+    /* the manufactured trajectory: the sines above (NULL) or the
+     * stick-slip one of mms_events */
+    const struct evtraj *ev;
 } mms_ref;
+
+static void ev_eval(const struct evtraj *e, double t, double d[3][3]);
+
+/* value, first and second derivative of x*, y*, phi* at t */
+static void traj_at(const mms_ref *q, double t, double d[3][3])
+{
+    if (q->ev) {
+        ev_eval(q->ev, t, d);
+        return;
+    }
+    for (int i = 0; i < 3; i++)
+        traj_eval(i, t, d[i]);
+}
 
 static void ref_quad(mms_ref *q, size_t nr, size_t na)
 {
@@ -184,8 +199,7 @@ static void ref_eq8(mms_ref *q, double xb, double yb, double xd, double yd, doub
 static void ref_Q(mms_ref *q, double t, double Q[3])
 {
     double d[3][3], Fs[3];
-    for (int i = 0; i < 3; i++)
-        traj_eval(i, t, d[i]);
+    traj_at(q, t, d);
     ref_eq8(q, d[0][0] - q->v_b * t, d[1][0], d[0][1], d[1][1], d[2][1], Fs);
     for (int i = 0; i < 3; i++)
         Q[i] = -Fs[i];
@@ -196,8 +210,7 @@ static void ref_source(void *ctx, double t, double S[3])
 {
     mms_ref *q = ctx;
     double d[3][3], Q[3];
-    for (int i = 0; i < 3; i++)
-        traj_eval(i, t, d[i]);
+    traj_at(q, t, d);
     ref_Q(q, t, Q);
     S[0] = q->m * d[0][2] + q->k * d[0][0] - Q[0];
     S[1] = q->m * d[1][2] + q->k * d[1][0] - Q[1];
@@ -217,16 +230,6 @@ static double state_error(const mms_ref *q, const double *y, const double *ys, d
     for (int i = 0; i < 6; i++)
         e = isnan(comp[i]) || isnan(e) ? NAN : fmax(e, comp[i]);
     return e;
-}
-
-static double fit_slope(const double *x, const double *y, size_t n)
-{
-    double lx[SF_LIST_MAX], ly[SF_LIST_MAX], c0, c1, a, b, c, ss;
-    for (size_t i = 0; i < n; i++) {
-        lx[i] = log(x[i]);
-        ly[i] = log(y[i]);
-    }
-    return gsl_fit_linear(lx, 1, ly, 1, n, &c0, &c1, &a, &b, &c, &ss) ? NAN : c1;
 }
 
 /* the reference's own quadrature resolution (rings x angles) and the
@@ -381,7 +384,7 @@ static int chk_mms_slip(const sf_case *c, sf_result *r)
         sf_osc_free(o);
         size_t n = hl->n;
         finest_min = isnan(finest_min) || isnan(es[n - 1]) ? NAN : fmin(finest_min, es[n - 1]);
-        double slope = fit_slope(hs, es, n), last = log(es[n - 2] / es[n - 1]) / log(hs[n - 2] / hs[n - 1]);
+        double slope = check_loglog_slope(hs, es, n), last = log(es[n - 2] / es[n - 1]) / log(hs[n - 2] / hs[n - 1]);
         char qn[160], line[1024];
         snprintf(qn, sizeof qn, "%s: observed order (least squares, h = %g..%g s), not below %g - %g", names[k],
                  hs[0], hs[n - 1], order[k], ORDER_BELOW);
@@ -446,7 +449,313 @@ static int chk_mms_slip(const sf_case *c, sf_result *r)
     return SF_SUCCESS;
 }
 
+/* ---- Manufactured stick-slip (mms_events): sf_osc_run itself, events
+ * and all, against a trajectory that slips, sticks and slips again.
+ *
+ * Arc A, slip on [0, t1], s = t1 - t: u = xdot - v_b = -delta cos a (1 + c s),
+ * ydot = -delta (sin a (1 + c s) + e s^2), phidot = wa s,
+ * delta = eps_lambda omega_n R; lambda^2 >= eps^2 (1 + c s)^2, so lambda
+ * falls through eps_lambda exactly once, at t1, transversally (slope
+ * -eps c), with the stick wrench k (x1, y1) inside the circle of radius
+ * mu m g: the slip-to-stick event is t1, by construction.  Eq. 12 there.
+ * Stick on [t1, t2]: x = x1 + v_b (t - t1), y = y1, phi = phi1 (exact
+ * kinematics) until k |(x, y)| = mu m g, the equatorial circle:
+ * t2 = t1 + (sqrt(rmax^2 - y1^2) - x1) / v_b, rmax = mu m g / k.
+ * Eq. 14 at t2: relative velocity delta (cos psi, sin psi) backwards,
+ * psi = atan2(y1, x2), spin 0.
+ * Arc C, slip on [t2, T], sg = t - t2: u = -delta cos psi (1 + c2 sg),
+ * ydot = -delta (sin psi (1 + c2 sg) + e2 sg^2), phidot = wc sg: it starts
+ * from Eq. 14's state exactly and lambda grows (no second stick).
+ * Positions are the integrals (polynomials).  The source of each arc is
+ * M q*'' + K q* - Q(q*, q*') with this file's Eq. 8 quadrature; the run
+ * takes arc A's for t < (t1 + t2)/2 and arc C's after (stick ignores it).
+ * The disc's pole stays outside it (|w| R < |u|), so the quadrature is
+ * spectral, as for mms_slip. */
+struct evtraj {
+    double v_b, delta, t1, t2, x1, y1, phi1, x2;
+    double ca, sa, c, e, wa;     /* arc A */
+    double cp, sp, c2, e2, wc;   /* arc C */
+};
+
+static void ev_eval(const struct evtraj *v, double t, double d[3][3])
+{
+    double D = v->delta;
+    if (t < 0.5 * (v->t1 + v->t2)) {
+        double s = v->t1 - t;
+        d[0][0] = v->x1 - v->v_b * s + D * v->ca * (s + 0.5 * v->c * s * s);
+        d[0][1] = v->v_b - D * v->ca * (1 + v->c * s);
+        d[0][2] = D * v->ca * v->c;
+        d[1][0] = v->y1 + D * (v->sa * (s + 0.5 * v->c * s * s) + v->e * s * s * s / 3);
+        d[1][1] = -D * (v->sa * (1 + v->c * s) + v->e * s * s);
+        d[1][2] = D * (v->sa * v->c + 2 * v->e * s);
+        d[2][0] = v->phi1 - 0.5 * v->wa * s * s;
+        d[2][1] = v->wa * s;
+        d[2][2] = -v->wa;
+    } else {
+        double g = t - v->t2;
+        d[0][0] = v->x2 + v->v_b * g - D * v->cp * (g + 0.5 * v->c2 * g * g);
+        d[0][1] = v->v_b - D * v->cp * (1 + v->c2 * g);
+        d[0][2] = -D * v->cp * v->c2;
+        d[1][0] = v->y1 - D * (v->sp * (g + 0.5 * v->c2 * g * g) + v->e2 * g * g * g / 3);
+        d[1][1] = -D * (v->sp * (1 + v->c2 * g) + v->e2 * g * g);
+        d[1][2] = -D * (v->sp * v->c2 + 2 * v->e2 * g);
+        d[2][0] = v->phi1 + 0.5 * v->wc * g * g;
+        d[2][1] = v->wc * g;
+        d[2][2] = v->wc;
+    }
+}
+
+/* the trajectory's shape: A: a = 0.5 rad, c = 1.5 1/s, e = 0.8 1/s^2
+ * (in units of delta), wa = 0.15 rad/s^2; C: c2 = 1 1/s, e2 = 0.5 1/s^2,
+ * wc = 0.1 rad/s^2; the stick onset at t1 = 1.2 s at (x1, y1, phi1) =
+ * (-0.8 m, 0.3 m, 0.1 rad) */
+#define EV_T1 1.2
+#define EV_X1 (-0.8)
+#define EV_Y1 0.3
+
+/* one run of sf_osc_run from q*(0): the state at T (its last history
+ * row) and the transitions */
+typedef struct {
+    double y[SF_OSC_NSTATE], tend, t1, t2;
+    size_t ntrans;
+    int kinds_ok;
+    unsigned long steps, trials;
+} ev_run;
+
+static void ev_last_row(void *ctx, const sf_osc_row *row)
+{
+    ev_run *r = ctx;
+    const double y[SF_OSC_NSTATE] = { row->x, row->y, row->phi, row->vx, row->vy, row->w, 0 };
+    memcpy(r->y, y, sizeof y);
+    r->tend = row->t;
+}
+
+static int ev_solve(const sf_scene *s, const sf_cof *cof, mms_ref *q, int integ, double dt, double rtol, ev_run *out,
+                    char *err, size_t errlen)
+{
+    sf_scene sk = *s;
+    double d[3][3];
+    traj_at(q, 0, d);
+    sk.integrator = integ;
+    sk.dt = dt;
+    sk.rtol = rtol;
+    sk.x0 = d[0][0];
+    sk.y0 = d[1][0];
+    sk.phi0 = d[2][0];
+    sk.vx0 = d[0][1];
+    sk.vy0 = d[1][1];
+    sk.w0 = d[2][1];
+    sk.t_skip = 0;
+    sf_osc *o = NULL;
+    sf_osc_result res;
+    int rc = sf_osc_alloc(&sk, cof, &o, err, errlen);
+    if (rc)
+        return rc;
+    sf_osc_set_source(o, ref_source, q);
+    rc = sf_osc_run(o, ev_last_row, out, 0, &res, err, errlen);
+    sf_osc_free(o);
+    if (!rc) {
+        out->ntrans = res.ntrans;
+        out->kinds_ok = res.ntrans == 2 && res.trans_kind[0] == SF_OSC_STICK_ONSET &&
+                        res.trans_kind[1] == SF_OSC_SLIP_ONSET;
+        out->t1 = res.ntrans > 0 ? res.trans_t[0] : NAN;
+        out->t2 = res.ntrans > 1 ? res.trans_t[1] : NAN;
+        out->steps = res.steps;
+        out->trials = res.event_trials;
+    }
+    sf_osc_result_free(&res);
+    return rc;
+}
+
+/* errors of one run against the manufactured solution: the state at T
+ * (state_error's measure, m), the two event times [s] */
+static void ev_errors(const mms_ref *q, const ev_run *u, const double *ystarT, double T, double e[3])
+{
+    double comp[6];
+    e[0] = u->tend == T ? state_error(q, u->y, ystarT, comp) : NAN;
+    e[1] = fabs(u->t1 - q->ev->t1);
+    e[2] = fabs(u->t2 - q->ev->t2);
+}
+
+static const char *EV_NAMES[3] = { "state at T [m]", "stick onset t1 [s]", "break t2 [s]" };
+
+/* Observed orders.  rk4 (fixed dt): [4 - ORDER_BELOW, 4 + ORDER_ABOVE] as
+ * for mms_slip, for the state and for both event times (an event time's
+ * error is the state's error at it over the event function's slope).
+ * Adaptive (error against rtol): the error control holds the local error
+ * of the propagated solution to about rtol per unit step, so the global
+ * error is proportional to rtol: slope 1; measured 0.88-0.99 on this case
+ * (rk8pd's event times wobble: 2-4 steps per arc land differently from
+ * one rtol to the next), hence EV_RTOL_BAND around 1.  A
+ * defect in an event (a jump 5% off, a wrong stick radius) leaves an
+ * O(1) error: slope near 0. */
+#define EV_RTOL_BAND 0.25
+/* the event times must stand this far above the event location's own
+ * tolerance (SF_OSC_TIME_TOL) in every fitted point, or the fit measures
+ * the root finder, not the stepper */
+#define EV_FLOOR_RATIO 10
+
+static int chk_mms_events(const sf_case *c, sf_result *r)
+{
+    const sf_scene *s = &c->scene;
+    if (s->dof != SF_DOF_3 || s->cof != SF_COF_UNIFORM || !s->velocity_jump || s->exact_section ||
+        c->spec.sweep.n < 3 || c->spec.sweep2.n < 3 || !(c->spec.tolerance > 0)) {
+        sf_note(r, "mms_events needs dof = 3, cof = uniform, velocity_jump = true, exact_section = false, "
+                   "tolerance > 0, sweep (rk4 steps, >= 3) and sweep2 (rtols of rkck and rk8pd, >= 3).");
+        return SF_EINVAL;
+    }
+    mms_ref q = { .m = s->m, .k = s->k, .R = s->R, .N = s->m * s->g, .J = 0.5 * s->m * s->R * s->R,
+                  .v_b = s->v_b, .muk_ratio = s->mu_k_ratio, .mu = s->mu_mean };
+    /* the events in closed form */
+    double wn = sqrt(s->k / s->m), rmax = s->mu_mean * q.N / s->k;
+    struct evtraj ev = { .v_b = s->v_b, .delta = s->eps_lambda * wn * s->R, .t1 = EV_T1, .x1 = EV_X1,
+                         .y1 = EV_Y1, .phi1 = 0.1, .ca = cos(0.5), .sa = sin(0.5), .c = 1.5, .e = 0.8,
+                         .wa = 0.15, .c2 = 1, .e2 = 0.5, .wc = 0.1 };
+    if (!(hypot(EV_X1, EV_Y1) < rmax)) {
+        sf_note(r, "the stick onset (%g, %g) m lies outside the stick circle of radius mu m g / k = %g m", EV_X1,
+                EV_Y1, rmax);
+        return SF_EINVAL;
+    }
+    ev.x2 = sqrt(rmax * rmax - EV_Y1 * EV_Y1);
+    ev.t2 = EV_T1 + (ev.x2 - EV_X1) / s->v_b;
+    ev.cp = ev.x2 / rmax;
+    ev.sp = EV_Y1 / rmax;
+    if (!(s->T > ev.t2 + 0.5)) {
+        sf_note(r, "T must exceed the break t2 = %.6g s by 0.5 s (a slip arc after it)", ev.t2);
+        return SF_EINVAL;
+    }
+    q.ev = &ev;
+    sf_cof *cof = NULL;
+    char err[256] = "";
+    if (sf_cof_alloc_uniform(s->mu_mean, &cof)) {
+        sf_note(r, "could not build the uniform COF");
+        return SF_EFAIL;
+    }
+    ref_quad(&q, REF_NR, REF_NA);
+
+    /* ---- the path's own conditions and the wrench floor, along both
+     * slip arcs: lambda above eps_lambda inside them (one event each
+     * way), the pole outside the disc, solver's wrench = reference */
+    sf_scene s0 = *s;
+    s0.integrator = SF_INTEG_RK4;
+    sf_osc *o0 = NULL;
+    if (sf_osc_alloc(&s0, cof, &o0, err, sizeof err)) {
+        sf_note(r, "sf_osc_alloc: %s", err);
+        ref_quad_free(&q);
+        sf_cof_free(cof);
+        return SF_EFAIL;
+    }
+    double lam_min = INFINITY, eps_min = INFINITY, solvd = 0, fs = s->mu_mean * q.N, ts = fs * s->R;
+    for (int i = 0; i < NFLOOR; i++) {
+        /* arc A on [0, t1), arc C on (t2, T]: interior points */
+        double t = i < NFLOOR / 2 ? ev.t1 * (i + 0.5) / (NFLOOR / 2)
+                                  : ev.t2 + (s->T - ev.t2) * (i - NFLOOR / 2 + 0.5) / (NFLOOR - NFLOOR / 2);
+        double d[3][3], y[SF_OSC_NSTATE] = { 0 }, f[SF_OSC_NSTATE], qs[3], Q[3];
+        traj_at(&q, t, d);
+        for (int j = 0; j < 3; j++) {
+            y[j] = d[j][0];
+            y[SF_OSC_VX + j] = d[j][1];
+        }
+        double u = hypot(y[SF_OSC_VX] - s->v_b, y[SF_OSC_VY]);
+        double lam = hypot(u / (wn * s->R), y[SF_OSC_W] / wn);
+        double gap = (lam - s->eps_lambda) / (s->eps_lambda * fabs(i < NFLOOR / 2 ? ev.t1 - t : t - ev.t2));
+        lam_min = isnan(lam_min) || isnan(gap) ? NAN : fmin(lam_min, gap);
+        double e = y[SF_OSC_W] == 0 ? INFINITY : u / (fabs(y[SF_OSC_W]) * s->R);
+        eps_min = isnan(eps_min) || isnan(e) ? NAN : fmin(eps_min, e);
+        ref_Q(&q, t, Q);
+        sf_osc_slip_rhs(o0, t, y, f, qs);
+        double dd = sf_max(sf_max(fabs(qs[0] - Q[0]), fabs(qs[1] - Q[1])) / fs, fabs(qs[2] - Q[2]) / ts);
+        solvd = isnan(solvd) || isnan(dd) ? NAN : fmax(solvd, dd);
+    }
+    sf_osc_free(o0);
+
+    /* ---- the runs */
+    double ystarT[SF_OSC_NSTATE], yc[3][3];
+    traj_at(&q, s->T, yc);
+    memset(ystarT, 0, sizeof ystarT);
+    for (int j = 0; j < 3; j++) {
+        ystarT[j] = yc[j][0];
+        ystarT[SF_OSC_VX + j] = yc[j][1];
+    }
+    static const int integ[3] = { SF_INTEG_RK4, SF_INTEG_RKCK, SF_INTEG_RK8PD };
+    static const char *names[3] = { "rk4", "rkck", "rk8pd" };
+    int bad_events = 0, failed = 0;
+    double tmin = INFINITY, finest = 0;
+    for (int k = 0; k < 3; k++) {
+        const sf_list *L = k == 0 ? &c->spec.sweep : &c->spec.sweep2;
+        size_t n = L->n;
+        double xs[SF_LIST_MAX], es[3][SF_LIST_MAX];
+        unsigned long steps = 0, trials = 0;
+        for (size_t i = 0; i < n; i++) {
+            ev_run u = { .tend = NAN };
+            xs[i] = L->v[i];
+            int rc = ev_solve(s, cof, &q, integ[k], k == 0 ? xs[i] : s->dt, k == 0 ? s->rtol : xs[i], &u, err,
+                              sizeof err);
+            if (rc) {
+                sf_note(r, "%s at %g: sf_osc_run failed: %s\n\n", names[k], xs[i], err);
+                failed++;
+                u.t1 = u.t2 = u.tend = NAN;
+            }
+            bad_events += !rc && !u.kinds_ok;
+            double e3[3];
+            ev_errors(&q, &u, ystarT, s->T, e3);
+            for (int j = 0; j < 3; j++)
+                es[j][i] = e3[j];
+            tmin = isnan(tmin) || isnan(e3[1]) || isnan(e3[2]) ? NAN : fmin(tmin, fmin(e3[1], e3[2]));
+            steps += u.steps;
+            trials += u.trials;
+        }
+        for (int j = 0; j < 3; j++)
+            finest = isnan(finest) || isnan(es[j][n - 1]) ? NAN : fmax(finest, es[j][n - 1]);
+        char title[160], qn[200], line[1200];
+        snprintf(title, sizeof title, "MMS through events: %s", names[k]);
+        sf_plot *p = sf_result_plot(r, k == 0 ? "mms_events_rk4" : k == 1 ? "mms_events_rkck" : "mms_events_rk8pd",
+                                    title, k == 0 ? "fixed step dt [s]" : "rtol", "error (state at T [m], times [s])");
+        sf_plot_log(p, 1, 1);
+        for (int j = 0; j < 3; j++) {
+            double slope = check_loglog_slope(xs, es[j], n), want = k == 0 ? 4 : 1;
+            double lo = k == 0 ? want - ORDER_BELOW : want - EV_RTOL_BAND;
+            double hi = k == 0 ? want + ORDER_ABOVE : want + EV_RTOL_BAND;
+            snprintf(qn, sizeof qn, "%s: observed order of the %s error against %s (%g..%g), not below", names[k],
+                     EV_NAMES[j], k == 0 ? "dt" : "rtol", xs[0], xs[n - 1]);
+            sf_check_ge(r, qn, slope, lo);
+            snprintf(qn, sizeof qn, "%s: observed order of the %s error, not above", names[k], EV_NAMES[j]);
+            sf_check_le(r, qn, slope, hi);
+            int len = snprintf(line, sizeof line, "%s, %s errors for %s =", names[k], EV_NAMES[j],
+                               k == 0 ? "dt [s]" : "rtol");
+            for (size_t i = 0; i < n && len > 0 && (size_t)len < sizeof line; i++)
+                len += snprintf(line + len, sizeof line - (size_t)len, "%s %g: %.3e", i ? "," : "", xs[i], es[j][i]);
+            sf_note(r, "%s; order %.3f.\n\n", line, slope);
+            char lab[80];
+            snprintf(lab, sizeof lab, "%s (order %.2f)", EV_NAMES[j], slope);
+            sf_plot_series(p, lab, SF_STYLE_LINESPOINTS, n, xs, es[j]);
+        }
+        sf_plot_hline(p, "event location tolerance (1e-12 s)", SF_OSC_TIME_TOL);
+        sf_note(r, "%s: %lu accepted slip steps, %lu event trial steps over the %zu runs.\n\n", names[k], steps,
+                trials, n);
+    }
+    sf_check_le(r, "runs that failed", failed, 0);
+    sf_check_le(r, "runs whose transitions are not exactly (stick onset, break)", bad_events, 0);
+    sf_check_le(r, "largest finest-level error (state at T [m], event times [s])", finest, c->spec.tolerance);
+    sf_check_ge(r, "min event-time error in the fits / event location tolerance (SF_OSC_TIME_TOL)",
+                tmin / SF_OSC_TIME_TOL, EV_FLOOR_RATIO);
+    sf_check_ge(r, "min over the slip arcs of (lambda - eps_lambda) / (eps_lambda |t - t_event|) (one crossing)",
+                lam_min, 0.5);
+    sf_check_ge(r, "min over the slip arcs of |u| / (|w| R) (pole outside the disc)", eps_min, 1.5);
+    sf_check_le(r, "max |solver wrench - reference| along the slip arcs / (mu N, mu N R)", solvd, WRENCH_TOL);
+    sf_note(r, "Manufactured events (closed form): stick onset t1 = %.6g s at (%g, %g) m; Eq. 12; stick until "
+               "k |(x, y)| = mu m g, rmax = %.6g m: break t2 = t1 + (sqrt(rmax^2 - y1^2) - x1)/v_b = %.9g s; "
+               "Eq. 14 jump of delta = eps_lambda omega_n R = %.6g m/s at psi = %.4f rad; slip to T = %g s. "
+               "Smallest event-time error in the fits: %.2e s.\n",
+            ev.t1, EV_X1, EV_Y1, rmax, ev.t2, ev.delta, atan2(EV_Y1, ev.x2), s->T, tmin);
+    ref_quad_free(&q);
+    sf_cof_free(cof);
+    return SF_SUCCESS;
+}
+
 const sf_check_def sf_checks_mms[] = {
     { "mms_slip", chk_mms_slip, "manufactured solution of the 3-DOF slip equations: observed order of every stepper" },
+    { "mms_events", chk_mms_events,
+      "manufactured stick-slip solution through sf_osc_run (Eqs. 12, 14, event location): observed orders" },
     { NULL, NULL, NULL }
 };

@@ -647,8 +647,110 @@ static int chk_ref_eq15(const sf_case *c, sf_result *r)
     return SF_SUCCESS;
 }
 
+/* The paired difference as both codes refine together, on the same COF:
+ * level i runs the solver at rtol_i = rtol (dt_i / dt_0)^4 (its error is
+ * proportional to rtol: cases/mms/events) and the oracle's RK4 at dt_i
+ * (error ~ dt^4) with 2^i x (cells/2) Gauss-Legendre radii x 4x as many
+ * angles (its quadrature error falls ~2^3.2 per doubling where the disc's
+ * pole comes inside it near a stick onset).  Both errors then fall at
+ * least ~2^3 per level, so the difference d_i = max over the first
+ * transitions |solver_i - oracle_i| of each quantity falls at an order
+ * of about 3 or more in dt, whatever the two codes' error constants, if
+ * and only if they solve the same equations; a difference D in the model
+ * (a term, a jump, an event test) is a plateau under which d cannot fall,
+ * and the least-squares order over three levels drops below the case's
+ * `tolerance` (2.5) once D exceeds about twice the finest level's
+ * numerical difference (at a true order of 3.2).  The gate is on that order, not on a
+ * multiple of either code's own error.  (A floor, such as the event
+ * location's 1e-12 s, can only lower an order: it cannot make a row pass.)
+ * Quantities identically equal in both codes (d = 0 at every level, e.g.
+ * the post-jump spin) are reported, not fitted. */
+static int chk_ref_converge(const sf_case *c, sf_result *r)
+{
+    const sf_scene *s0 = &c->scene;
+    const sf_list *L = &c->spec.sweep;
+    size_t K = s0->samples, nl = L->n;
+    if (nl < 3 || !(s0->rtol > 0) || !(c->spec.tolerance > 0)) {
+        sf_note(r, "ref_converge needs sweep (the oracle's steps, >= 3, coarse first), rtol > 0 and tolerance (the "
+                   "minimum order) > 0.");
+        return SF_EINVAL;
+    }
+    sf_cof *cof = check_case_cof(c, s0, r);
+    if (!cof)
+        return SF_EFAIL;
+    size_t nr = oracle_nr(s0), na = 4 * nr;
+    double *S = check_alloc(nl * K * NQ * sizeof(double)), *O = check_alloc(nl * K * NQ * sizeof(double));
+    size_t nS[SF_LIST_MAX], nO[SF_LIST_MAX];
+    double tK, dts[SF_LIST_MAX], rt[SF_LIST_MAX];
+    sf_scene sc = *s0;
+    int rc = solver_transitions(&sc, cof, K, S, &nS[0], &tK, r);
+    sc.T = fmin(s0->T, tK + 1);   /* the window: 1 s after the first run's K-th transition */
+    for (size_t i = 0; !rc && i < nl; i++) {
+        sf_scene si = sc, so = sc;
+        dts[i] = L->v[i];
+        rt[i] = s0->rtol * pow(dts[i] / dts[0], 4);
+        si.rtol = rt[i];
+        si.cells = s0->cells << i;   /* a field's quadrature (a constant COF's closed form ignores it) */
+        rc = solver_transitions(&si, cof, K, S + i * K * NQ, &nS[i], NULL, r) ||
+             oracle_transitions(&so, cof, dts[i], nr << i, na << i, K, O + i * K * NQ, NULL, &nO[i], NULL);
+    }
+    sf_cof_free(cof);
+    if (rc) {
+        free(S);
+        free(O);
+        return SF_EFAIL;
+    }
+    size_t nmin = K;
+    for (size_t i = 0; i < nl; i++)
+        nmin = sf_min(nmin, sf_min(nS[i], nO[i]));
+    char cnt[64];
+    snprintf(cnt, sizeof cnt, "%zu of %zu", nmin, K);
+    sf_check_true(r, "every run (both codes, every level) has the transitions compared", nmin == K && K > 0, cnt);
+    sf_note(r, "Window %g s; %zu transitions. Oracle: RK4 at dt, Gauss-Legendre %zu x trapezoid %zu nodes at the "
+               "first level, doubled each way per level; solver: rtol = %g (dt/dt_0)^4, %zu cells at the first level, "
+               "doubled per level.\n\n| quantity | d at each level (dt [s], solver rtol) | order |\n|---|---|---|",
+            sc.T, nmin, nr, na, s0->rtol, s0->cells);
+    sf_plot *p = sf_result_plot(r, "ref_converge", "Paired difference solver - oracle as both refine",
+                                "oracle step dt [s] (solver rtol = rtol_0 (dt/dt_0)^4)", "max |solver - oracle|");
+    sf_plot_log(p, 1, 1);
+    for (int q = 0; q < NQ; q++) {
+        double d[SF_LIST_MAX], dmax = 0;
+        for (size_t i = 0; i < nl; i++) {
+            d[i] = 0;
+            for (size_t j = 0; j < nmin; j++) {
+                double a = S[(i * K + j) * NQ + q], b = O[(i * K + j) * NQ + q];
+                d[i] = isnan(d[i]) || !isfinite(a) || !isfinite(b) ? NAN : fmax(d[i], fabs(a - b));
+            }
+            dmax = isnan(dmax) || isnan(d[i]) ? NAN : fmax(dmax, d[i]);
+        }
+        char line[600], name[160];
+        int len = 0;
+        for (size_t i = 0; i < nl && len >= 0 && (size_t)len < sizeof line; i++)
+            len += snprintf(line + len, sizeof line - (size_t)len, "%s%.3g (%g, %g)", i ? ", " : "", d[i], dts[i], rt[i]);
+        if (dmax == 0) {   /* identical in both codes at every level */
+            sf_note(r, "| %s | 0 at every level | (exact) |", qname[q]);
+            continue;
+        }
+        double xs[SF_LIST_MAX], ys[SF_LIST_MAX];
+        for (size_t i = 0; i < nl; i++) {
+            xs[i] = dts[i];
+            ys[i] = d[i];
+        }
+        double slope = check_loglog_slope(xs, ys, nl);
+        snprintf(name, sizeof name, "%s: observed order in dt of max |solver - oracle| (both refined together)", qname[q]);
+        sf_check_ge(r, name, slope, c->spec.tolerance);
+        sf_note(r, "| %s | %s | %.2f |", qname[q], line, slope);
+        sf_plot_series(p, qname[q], SF_STYLE_LINESPOINTS, nl, xs, ys);
+    }
+    free(S);
+    free(O);
+    return SF_SUCCESS;
+}
+
 const sf_check_def sf_checks_ref3dof[] = {
     { "ref_trajectory", chk_ref_trajectory, "independent 3-DOF oracle: first transitions, trajectory by trajectory" },
+    { "ref_converge", chk_ref_converge,
+      "independent 3-DOF oracle: the paired difference falls at order 4 as both codes refine together" },
     { "ref_stats", chk_ref_stats, "independent 3-DOF oracle: paired tests on PV_x, PV_F, stick fraction (margin 1%)" },
     { "ref_energy", chk_ref_energy, "work-energy balance with the oracle's wrench along the solver's history" },
     { "ref_eq15", chk_ref_eq15, "Eq. 15 by the solver and by the oracle" },
