@@ -1,5 +1,6 @@
 #include "sweep.h"
 #include "cof.h"
+#include "mcstop.h"
 #include "montecarlo.h"
 #include "oscillator.h"
 #include "sf_alloc.h"
@@ -86,8 +87,9 @@ static int realise(void *p, size_t i, gsl_rng *rng, double *out)
     return rc;
 }
 
-int sf_sweep_run(const sf_scene *s, size_t n, int threads, const char *checkpoint, int resume,
-                 const char *label, sf_sweep_point *out, char *err, size_t errlen)
+/* n realisations, or two stages up to n with target_se > 0 */
+static int run(const sf_scene *s, size_t n, double target_se, size_t n_pilot, int threads, const char *checkpoint,
+               int resume, const char *label, sf_sweep_point *out, char *err, size_t errlen)
 {
     memset(out, 0, sizeof *out);
     /* the deterministic reference, same definitions */
@@ -138,8 +140,37 @@ int sf_sweep_run(const sf_scene *s, size_t n, int threads, const char *checkpoin
     spec.key = sf_mc_hash(text, len, 0);
     free(text);
     sf_mc_ops ops = { ws_alloc, ws_free, realise };
-    rc = sf_mc_run(&spec, &ops, &ctx, out->qoi, &out->from_checkpoint, err, errlen);
+    if (target_se > 0) {
+        double target[SF_SWEEP_NQ];
+        for (int q = 0; q < SF_SWEEP_NQ; q++)
+            target[q] = target_se * out->det[q];
+        sf_mcstop_spec st = { n_pilot, n, target };
+        out->n_pilot = n_pilot;
+        rc = sf_mcstop_run(&spec, &st, &ops, &ctx, out->qoi, &out->n, &out->stop, &out->from_checkpoint, err,
+                           errlen);
+    } else {
+        rc = sf_mc_run(&spec, &ops, &ctx, out->qoi, &out->from_checkpoint, err, errlen);
+    }
     return rc ? rc : sf_sweep_point_stats(out);
+}
+
+int sf_sweep_run(const sf_scene *s, size_t n, int threads, const char *checkpoint, int resume, const char *label,
+                 sf_sweep_point *out, char *err, size_t errlen)
+{
+    return run(s, n, 0, 0, threads, checkpoint, resume, label, out, err, errlen);
+}
+
+int sf_sweep_run_target(const sf_scene *s, double target_se, size_t n_pilot, size_t n_max, int threads,
+                        const char *checkpoint, int resume, const char *label, sf_sweep_point *out, char *err,
+                        size_t errlen)
+{
+    if (!(target_se > 0) || !isfinite(target_se) || n_pilot < 2 || n_max < n_pilot) {
+        memset(out, 0, sizeof *out);
+        return sf_seterr(err, errlen, SF_EINVAL,
+                         "two-stage sweep: target_se must be finite and > 0 (got %g), 2 <= pilot (%zu) <= cap (%zu)",
+                         target_se, n_pilot, n_max);
+    }
+    return run(s, n_max, target_se, n_pilot, threads, checkpoint, resume, label, out, err, errlen);
 }
 
 int sf_sweep_stat_of(const double *x, size_t stride, size_t n, sf_sweep_stat *st)
@@ -184,6 +215,16 @@ int sf_sweep_point_stats(sf_sweep_point *p)
             return rc;
         p->mean[q] = p->rstat[q].mean;
         p->std[q] = p->rstat[q].std;
+        p->rci_lo[q] = p->rstat[q].ci_lo;
+        p->rci_hi[q] = p->rstat[q].ci_hi;
+        if (p->n_pilot) {   /* two stages: Stein's interval from the pilot's spread */
+            sf_sweep_stat pilot;
+            if ((rc = sf_sweep_stat_of(p->ratio + q, SF_SWEEP_NQ, p->n_pilot < p->n ? p->n_pilot : p->n, &pilot)))
+                return rc;
+            double hw = sf_mcstop_halfwidth(pilot.std, pilot.n_used, p->rstat[q].n_used, SF_SWEEP_CI_LEVEL);
+            p->rci_lo[q] = p->rstat[q].mean - hw;
+            p->rci_hi[q] = p->rstat[q].mean + hw;
+        }
     }
     return SF_SUCCESS;
 }
@@ -228,6 +269,10 @@ void sf_sweep_summary_header(FILE *f)
                    "\t%s_det[%s]\t%s_ratio_mean[-]\t%s_ratio_std[-]\t%s_ratio_se[-]",
                 a, a, a, u, a, u, a, u, a, lv, u, a, lv, u, a, u, a, a, a);
     }
+    /* appended: the design (why the point stopped) and the interval it guarantees */
+    fputs("\tstop\tn_pilot", f);
+    for (int q = 0; q < SF_SWEEP_NQ; q++)
+        fprintf(f, "\t%s_ratio_ci%d_lo[-]\t%s_ratio_ci%d_hi[-]", qname[q], lv, qname[q], lv);
     fputc('\n', f);
 }
 
@@ -241,6 +286,9 @@ void sf_sweep_summary_row(FILE *f, const char *param, double value, const sf_swe
         fprintf(f, "\t%zu\t%zu\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g", a->n_used,
                 a->n_excluded, a->mean, a->std, a->se, a->ci_lo, a->ci_hi, p->det[q], b->mean, b->std, b->se);
     }
+    fprintf(f, "\t%s\t%zu", sf_mcstop_reason(p->stop), p->n_pilot);
+    for (int q = 0; q < SF_SWEEP_NQ; q++)
+        fprintf(f, "\t%.17g\t%.17g", p->rci_lo[q], p->rci_hi[q]);
     fputc('\n', f);
 }
 

@@ -49,6 +49,16 @@ typedef struct {
     double mean[SF_SWEEP_NQ], std[SF_SWEEP_NQ];   /* of the ratios: rstat[q].mean, rstat[q].std */
     size_t n, from_checkpoint;
     size_t n_valid;             /* realisations whose every QoI is finite */
+    /* The design: a fixed N (n_pilot 0, stop SF_MCSTOP_FIXED), or two
+     * stages (mcstop.h: the first n_pilot realisations decide N; stop
+     * says whether every target was met or N hit the cap).  [rci_lo,
+     * rci_hi]: the ratio mean's interval at SF_SWEEP_CI_LEVEL that the
+     * design guarantees: rstat's Student interval for a fixed N; Stein's,
+     * mean -+ t_{m0-1} s0 / sqrt(n_used) with the pilot's s0 over its m0
+     * finite ratios, for two stages. */
+    size_t n_pilot;
+    int stop;
+    double rci_lo[SF_SWEEP_NQ], rci_hi[SF_SWEEP_NQ];
 } sf_sweep_point;
 
 /* Apply parameter `name` = value to s (SF_EPARSE with the reason). */
@@ -59,10 +69,19 @@ int sf_sweep_run(const sf_scene *s, size_t n, int threads, const char *checkpoin
                  const char *label, sf_sweep_point *out, char *err, size_t errlen);
 void sf_sweep_point_free(sf_sweep_point *p);
 
+/* A two-stage sweep point (mcstop.h): n_pilot realisations (the floor),
+ * then as many more as the pilot says every ratio mean needs for a
+ * standard error of target_se [-] (each QoI's target in its unit:
+ * target_se x its deterministic value), at most n_max in all.  The rest
+ * as sf_sweep_run. */
+int sf_sweep_run_target(const sf_scene *s, double target_se, size_t n_pilot, size_t n_max, int threads,
+                        const char *checkpoint, int resume, const char *label, sf_sweep_point *out, char *err,
+                        size_t errlen);
+
 /* The statistics of x[0], x[stride], ... x[(n - 1) stride]. */
 int sf_sweep_stat_of(const double *x, size_t stride, size_t n, sf_sweep_stat *st);
 
-/* From p->qoi, p->det and p->n: the ratios and every statistic above
+/* From p->qoi, p->det, p->n and p->n_pilot: the ratios and every statistic above
  * (sf_sweep_run calls it; so may a caller that changed p->qoi). */
 int sf_sweep_point_stats(sf_sweep_point *p);
 
