@@ -21,24 +21,37 @@ size_t sf_mcstop_size(double s0, double target)
     return r < 1 ? 1 : (size_t)r;
 }
 
-int sf_mcstop_decide(const sf_mcstop_spec *st, size_t nout, const double *pilot, size_t *n, int *reason)
+/* The mean and sd of the finite values among x[0 .. n) (stride), into *m. */
+static int finite_stats(const double *x, size_t stride, size_t n, size_t *m, double *mean, double *sd)
 {
-    double *v = sf_malloc((st->n_pilot ? st->n_pilot : 1) * sizeof *v);
+    double *v = sf_malloc((n ? n : 1) * sizeof *v);
     if (!v)
         return SF_ENOMEM;
+    *m = 0;
+    for (size_t i = 0; i < n; i++)
+        if (isfinite(x[i * stride]))
+            v[(*m)++] = x[i * stride];
+    *mean = *m ? gsl_stats_mean(v, 1, *m) : NAN;
+    *sd = *m > 1 ? gsl_stats_sd_m(v, 1, *m, *mean) : NAN;
+    free(v);
+    return SF_SUCCESS;
+}
+
+int sf_mcstop_decide(const sf_mcstop_spec *st, size_t nout, const double *pilot, size_t *n, int *reason)
+{
     size_t need = st->n_pilot;
     for (size_t q = 0; q < nout; q++) {
+        size_t m;
+        double mean, s0;
         if (!(st->target_se[q] > 0))
             continue;
-        size_t m = 0;
-        for (size_t i = 0; i < st->n_pilot; i++)
-            if (isfinite(pilot[i * nout + q]))
-                v[m++] = pilot[i * nout + q];
-        size_t nq = m < 2 ? SIZE_MAX : sf_mcstop_size(gsl_stats_sd(v, 1, m), st->target_se[q]);
+        int rc = finite_stats(pilot + q, nout, st->n_pilot, &m, &mean, &s0);
+        if (rc)
+            return rc;
+        size_t nq = m < 2 ? SIZE_MAX : sf_mcstop_size(s0, st->target_se[q]);
         if (nq > need)
             need = nq;
     }
-    free(v);
     *reason = need > st->n_max ? SF_MCSTOP_CAP : SF_MCSTOP_TARGET;
     *n = need > st->n_max ? st->n_max : need;
     return SF_SUCCESS;
@@ -49,6 +62,20 @@ double sf_mcstop_halfwidth(double s0, size_t m0, size_t m, double level)
     if (m0 < 2 || m < 1)
         return NAN;
     return gsl_cdf_tdist_Pinv(0.5 * (1 + level), (double)(m0 - 1)) * s0 / sqrt((double)m);
+}
+
+int sf_mcstop_interval(const double *x, size_t stride, size_t n_pilot, size_t n, double level, double *lo,
+                       double *hi)
+{
+    size_t m0, m;
+    double mean0, s0, mean, sd;
+    int rc = finite_stats(x, stride, n_pilot < n ? n_pilot : n, &m0, &mean0, &s0);
+    if (!rc)
+        rc = finite_stats(x, stride, n, &m, &mean, &sd);
+    double hw = rc ? NAN : sf_mcstop_halfwidth(s0, m0, m, level);
+    *lo = mean - hw;
+    *hi = mean + hw;
+    return rc;
 }
 
 int sf_mcstop_run(const sf_mc_spec *spec, const sf_mcstop_spec *st, const sf_mc_ops *ops, void *ctx, double *out,

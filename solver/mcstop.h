@@ -18,9 +18,10 @@
  *
  * covers the true mean with probability `level` exactly, for whichever N
  * the rule picked, the cap's included (the interval is then wider than
- * the target).  A rule that stops as soon as the running standard error
- * falls below X stops preferentially on samples whose spread came out
- * small, and its interval under-covers.
+ * the target).  A rule that stops when the running standard error falls
+ * below X has no such guarantee: its N depends on the spread of the very
+ * values the interval is made of.  Skewed values under-cover a little, as
+ * any Student interval over tens of values does.
  */
 #ifndef SF_MCSTOP_H
 #define SF_MCSTOP_H
@@ -57,6 +58,14 @@ int sf_mcstop_decide(const sf_mcstop_spec *st, size_t nout, const double *pilot,
 /* Stein's half-width t_{m0-1, (1 + level)/2} s0 / sqrt(m): NAN when
  * m0 < 2 or m < 1. */
 double sf_mcstop_halfwidth(double s0, size_t m0, size_t m, double level);
+
+/* Stein's interval [*lo, *hi] at `level` for the mean of x[0], x[stride],
+ * ... x[(n - 1) stride], of which the first n_pilot were the pilot
+ * (non-finite values left out of both): the mean -+ the half-width above
+ * with the pilot's s0 and m0 and m the finite values of all n.  NAN when
+ * too few are finite. */
+int sf_mcstop_interval(const double *x, size_t stride, size_t n_pilot, size_t n, double level, double *lo,
+                       double *hi);
 
 /* Both stages: spec->n is set to st->n_max (the checkpoint's size: a
  * resumed run finds either stage's realisations), out has room for

@@ -217,14 +217,9 @@ int sf_sweep_point_stats(sf_sweep_point *p)
         p->std[q] = p->rstat[q].std;
         p->rci_lo[q] = p->rstat[q].ci_lo;
         p->rci_hi[q] = p->rstat[q].ci_hi;
-        if (p->n_pilot) {   /* two stages: Stein's interval from the pilot's spread */
-            sf_sweep_stat pilot;
-            if ((rc = sf_sweep_stat_of(p->ratio + q, SF_SWEEP_NQ, p->n_pilot < p->n ? p->n_pilot : p->n, &pilot)))
-                return rc;
-            double hw = sf_mcstop_halfwidth(pilot.std, pilot.n_used, p->rstat[q].n_used, SF_SWEEP_CI_LEVEL);
-            p->rci_lo[q] = p->rstat[q].mean - hw;
-            p->rci_hi[q] = p->rstat[q].mean + hw;
-        }
+        if (p->n_pilot && (rc = sf_mcstop_interval(p->ratio + q, SF_SWEEP_NQ, p->n_pilot, p->n, SF_SWEEP_CI_LEVEL,
+                                                   &p->rci_lo[q], &p->rci_hi[q])))
+            return rc;   /* two stages: Stein's interval from the pilot's spread */
     }
     return SF_SUCCESS;
 }

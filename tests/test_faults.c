@@ -25,6 +25,7 @@
 #include "sf_error.h"
 #include "surface.h"
 #include "sweep.h"
+#include "mcstop.h"
 #include "tiles.h"
 
 #include <stdlib.h>
@@ -592,6 +593,17 @@ static int sweep(void *ctx)
     return rc;
 }
 
+static int sweep2(void *ctx)
+{
+    sf_sweep_point pt;
+    char err[256] = "";
+    int rc = sf_sweep_run_target(ctx, 1e-6, 2, 3, 1, NULL, 0, NULL, &pt, err, sizeof err);
+    if (!rc)
+        assert_true(pt.n == 3 && pt.stop == SF_MCSTOP_CAP);
+    sf_sweep_point_free(&pt);
+    return rc;
+}
+
 static void sweeps(void **state)
 {
     (void)state;
@@ -601,6 +613,7 @@ static void sweeps(void **state)
     s.t_skip = 2;
     s.cof_generator = SF_COFGEN_CIRCULANT;
     assert_true(walk("sf_sweep_run", sweep, &s, SF_SUCCESS, 0) > 20);
+    assert_true(walk("sf_sweep_run_target", sweep2, &s, SF_SUCCESS, 0) > 20);
 }
 
 /* ---- the periodogram, text files */

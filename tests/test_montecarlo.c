@@ -4,6 +4,10 @@
 #include "test_util.h"
 #include "montecarlo.h"
 #include "sweep.h"
+#include "mcstop.h"
+#include "scene.h"
+#include "cof.h"
+#include <stdint.h>
 #include "sf_error.h"
 
 #include <math.h>
@@ -187,6 +191,128 @@ static void summary_counts_finite_values(void **state)
     sf_sweep_point_free(&p);
 }
 
+/* ---- the two-stage design (mcstop.h) */
+
+static void stein_pieces(void **state)
+{
+    (void)state;
+    assert_string_equal(sf_mcstop_reason(SF_MCSTOP_FIXED), "fixed");
+    assert_string_equal(sf_mcstop_reason(SF_MCSTOP_TARGET), "target");
+    assert_string_equal(sf_mcstop_reason(SF_MCSTOP_CAP), "cap");
+    assert_int_equal(sf_mcstop_size(1, 0.1), 100);
+    assert_int_equal(sf_mcstop_size(1.05, 0.1), 111);   /* ceil(110.25) */
+    assert_int_equal(sf_mcstop_size(0, 0.1), 1);
+    assert_true(sf_mcstop_size(NAN, 0.1) == SIZE_MAX);
+    assert_true(sf_mcstop_size(1e300, 1e-300) == SIZE_MAX);
+    /* t_{0.975, 9} = 2.262157162798205 (tables) */
+    assert_true(fabs(sf_mcstop_halfwidth(2, 10, 100, 0.95) - 2.262157162798205 * 2 / 10) < 1e-14);
+    assert_true(isnan(sf_mcstop_halfwidth(2, 1, 100, 0.95)));
+    assert_true(isnan(sf_mcstop_halfwidth(2, 10, 0, 0.95)));
+    /* the interval: the pilot's spread, every value's mean; NaN left out */
+    double x[12] = { 1, 3, NAN, 5, 7, 2, 2, 2, 2, 2, 2, 2 }, lo, hi;
+    assert_int_equal(sf_mcstop_interval(x, 1, 5, 12, 0.95, &lo, &hi), SF_SUCCESS);
+    double mean = 30.0 / 11, s0 = sqrt(20.0 / 3), hw = sf_mcstop_halfwidth(s0, 4, 11, 0.95);
+    assert_true(fabs(0.5 * (lo + hi) - mean) < 1e-14 && fabs(0.5 * (hi - lo) - hw) < 1e-14);
+    /* decisions: no target asks for the pilot only; a pilot without two
+       finite values, or a target beyond the cap, stops at the cap */
+    double pilot[8] = { 1, NAN, 2, NAN, 3, 5, 4, NAN };   /* 4 x 2 */
+    double none[2] = { 0, NAN }, t1[2] = { 0.1, 0 }, t2[2] = { 0, 0.1 }, t3[2] = { 10, 0 };
+    size_t n;
+    int why;
+    sf_mcstop_spec st = { 4, 1000, none };
+    assert_int_equal(sf_mcstop_decide(&st, 2, pilot, &n, &why), SF_SUCCESS);
+    assert_true(n == 4 && why == SF_MCSTOP_TARGET);
+    st.target_se = t1;   /* sd of 1..4 = sqrt(5/3): ceil(166.67) */
+    assert_int_equal(sf_mcstop_decide(&st, 2, pilot, &n, &why), SF_SUCCESS);
+    assert_true(n == 167 && why == SF_MCSTOP_TARGET);
+    st.n_max = 100;
+    assert_int_equal(sf_mcstop_decide(&st, 2, pilot, &n, &why), SF_SUCCESS);
+    assert_true(n == 100 && why == SF_MCSTOP_CAP);
+    st.target_se = t2;   /* one finite value */
+    assert_int_equal(sf_mcstop_decide(&st, 2, pilot, &n, &why), SF_SUCCESS);
+    assert_true(n == 100 && why == SF_MCSTOP_CAP);
+    st.target_se = t3;   /* met by the pilot: the floor */
+    assert_int_equal(sf_mcstop_decide(&st, 2, pilot, &n, &why), SF_SUCCESS);
+    assert_true(n == 4 && why == SF_MCSTOP_TARGET);
+}
+
+static void stein_runs(void **state)
+{
+    (void)state;
+    double *a = malloc(200 * 2 * sizeof *a), *b = malloc(200 * 2 * sizeof *b), *c = malloc(200 * 2 * sizeof *c);
+    double target[2] = { 1.0, 0 };   /* sd of a sum of 50 normals ~ 7: N ~ 50 */
+    sf_mcstop_spec st = { 10, 200, target };
+    sf_mc_ops ops = { NULL, NULL, realise };
+    sf_mc_spec s = { 0, 2, 42, 1, NULL, 0, 0, NULL };
+    size_t na, nb, nc, before;
+    int wa, wb, wc;
+    char err[200];
+    assert_int_equal(sf_mcstop_run(&s, &st, &ops, NULL, a, &na, &wa, NULL, err, sizeof err), SF_SUCCESS);
+    assert_true(na > 10 && na < 200 && wa == SF_MCSTOP_TARGET);
+    s.threads = 2;   /* the same N and bits on two threads */
+    assert_int_equal(sf_mcstop_run(&s, &st, &ops, NULL, b, &nb, &wb, NULL, err, sizeof err), SF_SUCCESS);
+    assert_true(nb == na && wb == wa);
+    assert_memory_equal(a, b, 2 * na * sizeof *a);
+    /* with a checkpoint: a resumed run takes every realisation from it */
+    char ck[64];
+    snprintf(ck, sizeof ck, "/tmp/sf-test-stein-%ld.ck", (long)getpid());
+    s.checkpoint = ck;
+    assert_int_equal(sf_mcstop_run(&s, &st, &ops, NULL, c, &nc, &wc, &before, err, sizeof err), SF_SUCCESS);
+    assert_true(nc == na && before == 0);
+    s.resume = 1;
+    int calls = 0;
+    assert_int_equal(sf_mcstop_run(&s, &st, &ops, &calls, c, &nc, &wc, &before, err, sizeof err), SF_SUCCESS);
+    assert_true(nc == na && before == na && calls == 0);
+    assert_memory_equal(a, c, 2 * na * sizeof *a);
+    unlink(ck);
+    /* a realisation's error stops the run; a bad spec is refused */
+    sf_mc_ops bad = { NULL, NULL, fail_at_7 };
+    s.checkpoint = NULL;
+    s.resume = 0;
+    assert_int_equal(sf_mcstop_run(&s, &st, &bad, NULL, a, &na, &wa, NULL, err, sizeof err), SF_EFAIL);
+    st.n_pilot = 1;
+    assert_int_equal(sf_mcstop_run(&s, &st, &ops, NULL, a, &na, &wa, NULL, err, sizeof err), SF_EINVAL);
+    st.n_pilot = 300;
+    assert_int_equal(sf_mcstop_run(&s, &st, &ops, NULL, a, &na, &wa, NULL, err, sizeof err), SF_EINVAL);
+    free(a);
+    free(b);
+    free(c);
+}
+
+static void stein_sweep(void **state)
+{
+    (void)state;
+    sf_scene s;
+    sf_scene_default(&s);
+    s.cof = SF_COF_VARIABLE;
+    s.T = 14;
+    s.t_skip = 4;
+    sf_sweep_point a, b;
+    char err[200];
+    assert_int_equal(sf_sweep_run_target(&s, 0.05, 4, 30, 1, NULL, 0, NULL, &a, err, sizeof err), SF_SUCCESS);
+    assert_int_equal(sf_sweep_run_target(&s, 0.05, 4, 30, 2, NULL, 0, NULL, &b, err, sizeof err), SF_SUCCESS);
+    assert_true(a.n == b.n && a.n >= 4 && a.n_pilot == 4 && a.stop != SF_MCSTOP_FIXED);
+    assert_memory_equal(a.qoi, b.qoi, a.n * SF_SWEEP_NQ * sizeof *a.qoi);
+    for (int q = 0; q < SF_SWEEP_NQ; q++)   /* Stein's interval is not the Student one */
+        assert_true(a.rci_lo[q] < a.rstat[q].mean && a.rstat[q].mean < a.rci_hi[q] && a.rci_lo[q] != a.rstat[q].ci_lo);
+    char *text = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&text, &len);
+    sf_sweep_summary_header(f);
+    sf_sweep_summary_row(f, "v_b", 0.2, &a);
+    fclose(f);
+    assert_true(summary_field(text, "n_pilot") == 4);
+    assert_true(summary_field(text, "pv_F_ratio_ci95_lo[-]") == a.rci_lo[SF_SWEEP_PVF]);
+    assert_non_null(strstr(text, a.stop == SF_MCSTOP_CAP ? "\tcap\t4\t" : "\ttarget\t4\t"));
+    free(text);
+    sf_sweep_point_free(&a);
+    sf_sweep_point_free(&b);
+    assert_int_equal(sf_sweep_run_target(&s, 0, 4, 30, 1, NULL, 0, NULL, &a, err, sizeof err), SF_EINVAL);
+    assert_int_equal(sf_sweep_run_target(&s, 0.1, 1, 30, 1, NULL, 0, NULL, &a, err, sizeof err), SF_EINVAL);
+    assert_int_equal(sf_sweep_run_target(&s, 0.1, 40, 30, 1, NULL, 0, NULL, &a, err, sizeof err), SF_EINVAL);
+    assert_int_equal(sf_sweep_run_target(&s, NAN, 4, 30, 1, NULL, 0, NULL, &a, err, sizeof err), SF_EINVAL);
+}
+
 static void shortest_text(void **state)
 {
     (void)state;
@@ -210,6 +336,9 @@ int main(void)
         cmocka_unit_test(checkpoint_resume),
         cmocka_unit_test(summary_counts_finite_values),
         cmocka_unit_test(shortest_text),
+        cmocka_unit_test(stein_pieces),
+        cmocka_unit_test(stein_runs),
+        cmocka_unit_test(stein_sweep),
     };
     return cmocka_run_group_tests_name("montecarlo", tests, NULL, NULL);
 }
