@@ -22,6 +22,7 @@ extern "C" {
 #include <stddef.h>
 #include <stdio.h>
 #include "scene.h"
+#include "cof.h"
 
 enum { SF_SWEEP_PVX = 0, SF_SWEEP_PVF = 1, SF_SWEEP_SF = 2, SF_SWEEP_NQ = 3 };
 
@@ -59,6 +60,24 @@ typedef struct {
     size_t n_pilot;
     int stop;
     double rci_lo[SF_SWEEP_NQ], rci_hi[SF_SWEEP_NQ];
+    /* The control variate (sf_sweep_run_cv; companion NULL otherwise):
+     * companion[i] = C_i, realisation i's COF averaged over fixed belt
+     * points on the disc's nominal path (sf_sweep_companion), whose mean
+     * is known: mu_mean (cv_known), since every point of the field, and
+     * every interpolation between its nodes, has that mean.  Per ratio,
+     * cv[q] is the regression estimator: the intercept of the least-
+     * squares line of the ratio on C - mu_mean (GSL gsl_fit_linear), its
+     * standard error with the residual variance over m - 2 (the slope
+     * costs a degree of freedom), the Student interval at m - 2, the
+     * slope, and the variance reduction factor vrf = (plain se / cv se)^2
+     * on the same m realisations.  NaN where C is not formed (a window
+     * of tiles: no companion there) or m < 3. */
+    double *companion;
+    double cv_known;
+    struct {
+        size_t m;
+        double mean, se, ci_lo, ci_hi, beta, vrf;
+    } cv[SF_SWEEP_NQ];
 } sf_sweep_point;
 
 /* Apply parameter `name` = value to s (SF_EPARSE with the reason). */
@@ -68,6 +87,19 @@ int sf_sweep_set(sf_scene *s, const char *name, double value, char *err, size_t 
 int sf_sweep_run(const sf_scene *s, size_t n, int threads, const char *checkpoint, int resume,
                  const char *label, sf_sweep_point *out, char *err, size_t errlen);
 void sf_sweep_point_free(sf_sweep_point *p);
+
+/* A sweep point with the control variate above: n realisations, each
+ * with its companion C (for a window of tiles, which keeps only the
+ * stretch of belt under the disc, C is NaN and cv[] NaN). */
+int sf_sweep_run_cv(const sf_scene *s, size_t n, int threads, const char *checkpoint, int resume, const char *label,
+                    sf_sweep_point *out, char *err, size_t errlen);
+
+/* The companion of a COF drawn for scene s: the mean of mu_s over
+ * SF_SWEEP_CV_POINTS belt points on the nominal path of the disc's
+ * centre line and two lines R/2 to its sides, xb = -v_b t for t evenly
+ * spread over [t_skip, T]; NaN for a window (sf_cof_window_margin > 0). */
+#define SF_SWEEP_CV_POINTS 600
+double sf_sweep_companion(const sf_cof *cof, const sf_scene *s);
 
 /* A two-stage sweep point (mcstop.h): n_pilot realisations (the floor),
  * then as many more as the pilot says every ratio mean needs for a
