@@ -604,6 +604,17 @@ static int sweep2(void *ctx)
     return rc;
 }
 
+static int sweep_cv(void *ctx)
+{
+    sf_sweep_point pt;
+    char err[256] = "";
+    int rc = sf_sweep_run_cv(ctx, 3, 1, NULL, 0, NULL, &pt, err, sizeof err);
+    if (!rc)
+        assert_true(pt.companion && isfinite(pt.cv[0].mean));
+    sf_sweep_point_free(&pt);
+    return rc;
+}
+
 static void sweeps(void **state)
 {
     (void)state;
@@ -614,6 +625,7 @@ static void sweeps(void **state)
     s.cof_generator = SF_COFGEN_CIRCULANT;
     assert_true(walk("sf_sweep_run", sweep, &s, SF_SUCCESS, 0) > 20);
     assert_true(walk("sf_sweep_run_target", sweep2, &s, SF_SUCCESS, 0) > 20);
+    assert_true(walk("sf_sweep_run_cv", sweep_cv, &s, SF_SUCCESS, 0) > 20);
 }
 
 /* ---- the periodogram, text files */

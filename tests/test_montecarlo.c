@@ -313,6 +313,77 @@ static void stein_sweep(void **state)
     assert_int_equal(sf_sweep_run_target(&s, NAN, 4, 30, 1, NULL, 0, NULL, &a, err, sizeof err), SF_EINVAL);
 }
 
+/* ---- the control variate */
+
+static void cv_estimator(void **state)
+{
+    (void)state;
+    size_t n = 50;
+    sf_sweep_point p = { .det = { 1, 2, 4 }, .n = n, .cv_known = 0.5 };
+    p.qoi = calloc(n * SF_SWEEP_NQ, sizeof *p.qoi);
+    p.ratio = calloc(n * SF_SWEEP_NQ, sizeof *p.ratio);
+    p.companion = calloc(n, sizeof *p.companion);
+    for (size_t i = 0; i < n; i++) {   /* ratio = 1.5 + 3 (C - 0.5) + a wiggle; C NaN once */
+        double c = 0.5 + 0.1 * cos(1.7 * (double)i), e = 0.01 * sin(2.9 * (double)i);
+        p.companion[i] = i == 7 ? NAN : c;
+        for (int q = 0; q < SF_SWEEP_NQ; q++)
+            p.qoi[i * SF_SWEEP_NQ + q] = p.det[q] * (1.5 + 3 * (c - 0.5) + e);
+    }
+    assert_int_equal(sf_sweep_point_stats(&p), SF_SUCCESS);
+    for (int q = 0; q < SF_SWEEP_NQ; q++) {
+        assert_int_equal(p.cv[q].m, n - 1);
+        assert_true(fabs(p.cv[q].beta - 3) < 0.05 && fabs(p.cv[q].mean - 1.5) < 3 * p.cv[q].se);
+        assert_true(p.cv[q].ci_lo < p.cv[q].mean && p.cv[q].mean < p.cv[q].ci_hi);
+        assert_true(p.cv[q].vrf > 50);   /* the wiggle is 1/30 of C's part */
+    }
+    char *text = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&text, &len);
+    sf_sweep_summary_header(f);
+    sf_sweep_summary_row(f, "l_over_R", 100, &p);
+    fclose(f);
+    assert_true(summary_field(text, "pv_F_cv_ratio_mean[-]") == p.cv[SF_SWEEP_PVF].mean);
+    assert_true(summary_field(text, "stick_fraction_cv_vrf[-]") == p.cv[SF_SWEEP_SF].vrf);
+    free(text);
+    p.n = 2;   /* too few for a line with a residual */
+    assert_int_equal(sf_sweep_point_stats(&p), SF_SUCCESS);
+    assert_true(isnan(p.cv[0].mean) && isnan(p.cv[0].vrf));
+    sf_sweep_point_free(&p);
+    assert_null(p.companion);
+    /* the companion: the COF itself when uniform; none for a window of tiles */
+    sf_scene s;
+    sf_scene_default(&s);
+    sf_cof *u;
+    assert_int_equal(sf_cof_alloc_uniform(0.37, &u), SF_SUCCESS);
+    assert_true(fabs(sf_sweep_companion(u, &s) - 0.37) < 1e-13);
+    sf_cof_free(u);
+    s.l = 0.05;
+    s.strip_halfwidth = 0.05;
+    s.cof_generator = SF_COFGEN_TILES;
+    sf_cof_plan *pl;
+    char err[200];
+    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+    assert_int_equal(sf_cof_plan_alloc(&s, &pl, err, sizeof err), SF_SUCCESS);
+    assert_int_equal(sf_cof_plan_draw(pl, rng, &u), SF_SUCCESS);
+    assert_true(isnan(sf_sweep_companion(u, &s)));
+    sf_cof_free(u);
+    sf_cof_plan_free(pl);
+    gsl_rng_free(rng);
+    /* a sweep with it: the same bits on two threads, C near mu_mean */
+    sf_scene_default(&s);
+    s.T = 14;
+    s.t_skip = 4;
+    s.l = 5;
+    sf_sweep_point a, b;
+    assert_int_equal(sf_sweep_run_cv(&s, 6, 1, NULL, 0, NULL, &a, err, sizeof err), SF_SUCCESS);
+    assert_int_equal(sf_sweep_run_cv(&s, 6, 2, NULL, 0, NULL, &b, err, sizeof err), SF_SUCCESS);
+    assert_memory_equal(a.companion, b.companion, 6 * sizeof *a.companion);
+    assert_memory_equal(a.qoi, b.qoi, 6 * SF_SWEEP_NQ * sizeof *a.qoi);
+    assert_true(fabs(a.companion[0] - 0.5) < 0.5 && a.cv_known == s.mu_mean && isfinite(a.cv[0].mean));
+    sf_sweep_point_free(&a);
+    sf_sweep_point_free(&b);
+}
+
 static void shortest_text(void **state)
 {
     (void)state;
@@ -339,6 +410,7 @@ int main(void)
         cmocka_unit_test(stein_pieces),
         cmocka_unit_test(stein_runs),
         cmocka_unit_test(stein_sweep),
+        cmocka_unit_test(cv_estimator),
     };
     return cmocka_run_group_tests_name("montecarlo", tests, NULL, NULL);
 }
