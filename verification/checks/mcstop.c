@@ -204,7 +204,103 @@ static int chk_stein_coverage(const sf_case *c, sf_result *r)
     return SF_SUCCESS;
 }
 
+/* ---- the control variate (sweep.h: sf_sweep_run_cv) ----
+ *
+ * Per sweep point: (1) the companion's sample mean against the field's
+ * mean mu_mean (Student t, n - 1): the estimator is unbiased exactly when
+ * E[C] = mu_mean; (2) exact, per ratio: the estimate minus the plain mean
+ * is -beta (mean C - mu_mean) (the least-squares intercept), recomputed
+ * here from the companions and the oracle's mu_mean; (3) the variance
+ * reduction factor per QoI and point, reported, and gated at the large
+ * l/R where the companion all but fixes the QoIs (>= 2). */
+static int chk_cv_unbiased(const sf_case *c, sf_result *r)
+{
+    const sf_scene *s0 = &c->scene;
+    size_t K = c->spec.sweep.n;
+    if (!K || !*c->spec.sweep_param)
+        return SF_EINVAL;
+    static const char *const rq[3] = { "PV_x", "PV_F", "stick fraction" };
+    size_t nrow = 3 + 1;
+    double *lr = check_alloc(K * sizeof *lr), *vrf = check_alloc(K * 3 * sizeof *vrf);
+    char tab[4096];
+    size_t used = 0;
+    int rc = SF_SUCCESS;
+    double alpha = c->spec.alpha / (double)K;   /* one t-test per point */
+    for (size_t k = 0; k < K && !rc; k++) {
+        sf_scene s = *s0;
+        sf_sweep_point p;
+        char err[256] = "";
+        rc = sf_sweep_set(&s, c->spec.sweep_param, c->spec.sweep.v[k], err, sizeof err);
+        if (!rc)
+            rc = sf_sweep_run_cv(&s, s0->samples, 0, NULL, 0, NULL, &p, err, sizeof err);
+        if (rc) {
+            sf_note(r, "**Sweep failed at %s = %g:** %s\n", c->spec.sweep_param, c->spec.sweep.v[k], err);
+            break;
+        }
+        lr[k] = s.l / s.R;
+        sf_result_data(r, "the companions", p.n, p.companion);
+        double cm = gsl_stats_mean(p.companion, 1, p.n), cs = gsl_stats_sd(p.companion, 1, p.n);
+        double t = (cm - s0->mu_mean) / (cs / sqrt((double)p.n));
+        char what[200];
+        snprintf(what, sizeof what, "l/R = %g: companion's mean %.6g = mu_mean %g (Student t, %zu - 1 dof)", lr[k], cm,
+                 s0->mu_mean, p.n);
+        sf_check_pvalue(r, what, 2 * gsl_cdf_tdist_Q(fabs(t), (double)(p.n - 1)), alpha, p.n);
+        double gap = 0;   /* |(cv - plain) + beta (mean C - mu_mean)| over the ratios */
+        for (int q = 0; q < 3; q++) {
+            double cmq = 0, ym = 0;
+            size_t m = 0;
+            for (size_t i = 0; i < p.n; i++) {
+                double y = p.ratio[i * SF_SWEEP_NQ + q], cc = p.companion[i];
+                if (isfinite(y) && isfinite(cc)) {
+                    cmq += cc;
+                    ym += y;
+                    m++;
+                }
+            }
+            cmq /= (double)m;
+            ym /= (double)m;
+            gap = sf_max(gap, fabs((p.cv[q].mean - ym) + p.cv[q].beta * (cmq - s0->mu_mean)));
+            vrf[k * 3 + q] = p.cv[q].vrf;
+            used += (size_t)snprintf(tab + used, sizeof tab - used,
+                                     "| %g | %s | %.5f +- %.5f | %.5f +- %.5f | %.3g | %.3g |\n", lr[k], rq[q],
+                                     p.rstat[q].mean, p.rstat[q].se, p.cv[q].mean, p.cv[q].se, p.cv[q].beta,
+                                     p.cv[q].vrf);
+        }
+        snprintf(what, sizeof what, "l/R = %g: |cv - plain + beta (mean C - mu_mean)|, max over the ratios", lr[k]);
+        sf_check_le(r, what, gap, 1e-12);
+        if (lr[k] >= 100)
+            for (int q = 0; q < 3; q++) {
+                snprintf(what, sizeof what, "l/R = %g: %s variance reduction factor", lr[k], rq[q]);
+                sf_check_ge(r, what, vrf[k * 3 + q], 2);
+            }
+        sf_sweep_point_free(&p);
+    }
+    (void)nrow;
+    if (!rc) {
+        sf_note(r, "%zu realisations per point (seed %lu). Ratio means, plain and with the control variate "
+                   "(+- standard error), the slope beta and the variance reduction factor:\n\n"
+                   "| l/R | QoI | plain | control variate | beta | reduction |\n|---|---|---|---|---|---|\n%s\n",
+                s0->samples, s0->seed, tab);
+        sf_plot *pl = sf_result_plot(r, "vrf", "Variance reduction of the control variate", "l/R [-]",
+                                     "variance reduction factor [-]");
+        sf_plot_log(pl, 1, 1);
+        for (int q = 0; q < 3; q++) {
+            double *y = check_alloc(K * sizeof *y);
+            for (size_t k = 0; k < K; k++)
+                y[k] = vrf[k * 3 + q];
+            sf_plot_series(pl, rq[q], SF_STYLE_LINESPOINTS, K, lr, y);
+            free(y);
+        }
+        sf_plot_hline(pl, "no reduction", 1);
+    }
+    free(lr);
+    free(vrf);
+    return rc;
+}
+
 const sf_check_def sf_checks_mcstop[] = {
+    { "mc_cv_unbiased", chk_cv_unbiased,
+      "control variate: the companion's mean is mu_mean, the estimator is the regression one, its reduction" },
     { "mc_stein_coverage", chk_stein_coverage,
       "two-stage sample size: the interval covers a known mean at its level, fresh seeds" },
     { NULL, NULL, NULL }
