@@ -142,6 +142,18 @@ static double summary_field(const char *text, const char *col)
 /* 16 realisations, 8 of them without a stick fraction (NaN) and one
  * without a PV_x (+Inf): every count and statistic the summary prints
  * is that of the finite values (the summary once said n = 16 over 8). */
+/* The summary (header and one row) that `sweep --summary` writes for p. */
+static char *summary_text(const char *param, double value, const sf_sweep_point *p)
+{
+    char *text = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&text, &len);
+    sf_sweep_summary_header(f);
+    sf_sweep_summary_row(f, param, value, p);
+    fclose(f);
+    return text;
+}
+
 static void summary_counts_finite_values(void **state)
 {
     (void)state;
@@ -158,12 +170,7 @@ static void summary_counts_finite_values(void **state)
             sf[m++] = p.qoi[3 * i + 2];
     }
     assert_int_equal(sf_sweep_point_stats(&p), SF_SUCCESS);
-    char *text = NULL;
-    size_t len = 0;
-    FILE *f = open_memstream(&text, &len);
-    sf_sweep_summary_header(f);
-    sf_sweep_summary_row(f, "v_b", 0.6, &p);
-    fclose(f);
+    char *text = summary_text("v_b", 0.6, &p);
     assert_true(summary_field(text, "n") == 16);
     assert_true(summary_field(text, "stick_fraction_n_used") == 8);
     assert_true(summary_field(text, "stick_fraction_n_excluded") == 8);
@@ -295,12 +302,7 @@ static void stein_sweep(void **state)
     assert_memory_equal(a.qoi, b.qoi, a.n * SF_SWEEP_NQ * sizeof *a.qoi);
     for (int q = 0; q < SF_SWEEP_NQ; q++)   /* Stein's interval is not the Student one */
         assert_true(a.rci_lo[q] < a.rstat[q].mean && a.rstat[q].mean < a.rci_hi[q] && a.rci_lo[q] != a.rstat[q].ci_lo);
-    char *text = NULL;
-    size_t len = 0;
-    FILE *f = open_memstream(&text, &len);
-    sf_sweep_summary_header(f);
-    sf_sweep_summary_row(f, "v_b", 0.2, &a);
-    fclose(f);
+    char *text = summary_text("v_b", 0.2, &a);
     assert_true(summary_field(text, "n_pilot") == 4);
     assert_true(summary_field(text, "pv_F_ratio_ci95_lo[-]") == a.rci_lo[SF_SWEEP_PVF]);
     assert_non_null(strstr(text, a.stop == SF_MCSTOP_CAP ? "\tcap\t4\t" : "\ttarget\t4\t"));
@@ -336,12 +338,7 @@ static void cv_estimator(void **state)
         assert_true(p.cv[q].ci_lo < p.cv[q].mean && p.cv[q].mean < p.cv[q].ci_hi);
         assert_true(p.cv[q].vrf > 50);   /* the wiggle is 1/30 of C's part */
     }
-    char *text = NULL;
-    size_t len = 0;
-    FILE *f = open_memstream(&text, &len);
-    sf_sweep_summary_header(f);
-    sf_sweep_summary_row(f, "l_over_R", 100, &p);
-    fclose(f);
+    char *text = summary_text("l_over_R", 100, &p);
     assert_true(summary_field(text, "pv_F_cv_ratio_mean[-]") == p.cv[SF_SWEEP_PVF].mean);
     assert_true(summary_field(text, "stick_fraction_cv_vrf[-]") == p.cv[SF_SWEEP_SF].vrf);
     free(text);
