@@ -185,7 +185,7 @@ static int run(const sf_scene *s, size_t n, double target_se, size_t n_pilot, in
         rc = sf_mc_run(&spec, &ops, &ctx, vals, &out->from_checkpoint, err, errlen);
     }
     if (vals != out->qoi) {   /* split the QoIs from the companion */
-        for (size_t i = 0; i < n; i++) {
+        for (size_t i = 0; i < out->n; i++) {
             memcpy(out->qoi + i * SF_SWEEP_NQ, vals + i * nout, SF_SWEEP_NQ * sizeof *vals);
             out->companion[i] = vals[i * nout + SF_SWEEP_NQ];
         }
