@@ -272,6 +272,15 @@ static void stein_runs(void **state)
     assert_true(nc == na && before == na && calls == 0);
     assert_memory_equal(a, c, 2 * na * sizeof *a);
     unlink(ck);
+    /* a range past n is clipped to n; an empty one (first > upto) runs nothing */
+    sf_mc_spec r = { 12, 2, 42, 1, NULL, 0, 0, NULL };
+    calls = 0;
+    assert_int_equal(sf_mc_run_range(&r, 10, 50, &ops, &calls, c, &before, err, sizeof err), SF_SUCCESS);
+    assert_int_equal(calls, 2);
+    assert_memory_equal(a + 20, c + 20, 4 * sizeof *a);
+    calls = 0;
+    assert_int_equal(sf_mc_run_range(&r, 9, 5, &ops, &calls, c, &before, err, sizeof err), SF_SUCCESS);
+    assert_int_equal(calls, 0);
     /* a realisation's error stops the run; a bad spec is refused */
     sf_mc_ops bad = { NULL, NULL, fail_at_7 };
     s.checkpoint = NULL;
