@@ -41,5 +41,6 @@ int bench_fftw(FILE *f, const char *dir);
 int bench_plan(FILE *f, const char *dir);
 int bench_realisation(FILE *f, const char *dir);
 int bench_unum(FILE *f, const char *dir);
+int bench_estimators(FILE *f, const char *dir);
 
 #endif

@@ -1,9 +1,11 @@
 /* slipfield sweep SCENE --param NAME --values A,B,C --realisations N
  *                 --out FILE [--summary FILE] [--threads T] [--resume]
+ *                 [--target-se X [--pilot N0]]
  * Monte Carlo over realisations at each parameter value; ratios to the
  * deterministic model at the same parameters. */
 #include "cli.h"
 #include "sweep.h"
+#include "mcstop.h"
 #include "unum.h"
 #include "montecarlo.h"
 #include "sf_error.h"
@@ -20,6 +22,7 @@ static void usage(FILE *f)
 {
     fputs("usage: slipfield sweep SCENE --param NAME --values A,B,C --realisations N --out FILE\n"
           "                       [--summary FILE] [--threads T] [--resume]\n"
+          "                       [--target-se X [--pilot N0] | --control-variate]\n"
           "Monte Carlo sweep: at each value of NAME, N realisations of the scene.\n"
           "  --param NAME      a numeric scene key, or l_over_R (l = value x R), or\n"
           "                    mu_mean (at the scene's CV: mu_std scales with it)\n"
@@ -31,14 +34,31 @@ static void usage(FILE *f)
           "                    used and excluded (a non-finite value is excluded, never\n"
           "                    averaged), mean, std (n - 1), standard error of the mean,\n"
           "                    95% confidence interval (Student t), the deterministic\n"
-          "                    value, the ratio's mean, std and standard error, and the\n"
-          "                    numerical error of the mean: a coarser companion solve\n"
+          "                    value, and the ratio's mean, std and standard error;\n"
+          "                    the numerical error of the mean: a coarser companion solve\n"
           "                    (as run --summary's u_num) of the first ceil(N/4)\n"
           "                    realisations (at least 2), their signed error estimates'\n"
           "                    mean (num_bias), its standard error and u_num_mean =\n"
-          "                    3 (|num_bias| + t se) (up to ~1/3 more CPU)\n"
+          "                    3 (|num_bias| + t se) (up to ~1/3 more CPU);\n"
+          "                    then why the point stopped (stop: fixed, target or cap),\n"
+          "                    the pilot's size (n_pilot, 0 for a fixed N) and per QoI\n"
+          "                    the ratio mean's 95% interval the design guarantees\n"
+          "                    (Student t for a fixed N, Stein's for two stages)\n"
           "  --realisations N  realisations per value (default: the scene's samples, if\n"
           "                    it sets the key)\n"
+          "  --target-se X     two stages (Stein): N0 realisations, then as many more as\n"
+          "                    the pilot's spread says every ratio mean needs for a\n"
+          "                    standard error of X (> 0, dimensionless), at most N\n"
+          "                    (--realisations is then the cap); the interval uses the\n"
+          "                    pilot's spread and keeps its 95% coverage\n"
+          "  --pilot N0        the first stage, the floor on N (2 <= N0 <= N; default\n"
+          "                    min(20, N)); only with --target-se\n"
+          "  --control-variate each realisation also gives its COF averaged over fixed\n"
+          "                    points on the disc's nominal path (known mean: mu_mean);\n"
+          "                    the summary adds per QoI the regression estimator of the\n"
+          "                    ratio mean (cv_ratio_mean, se, 95% interval at n - 2\n"
+          "                    degrees of freedom) and its variance reduction factor\n"
+          "                    (cv_vrf); nan for a tiled field (no companion)\n"
           "  --threads T       OpenMP threads (default: all); results do not depend on it\n"
           "  --resume          continue from FILE.ckpt<k> checkpoints of an interrupted run\n"
           "                    (and remove the temporary files a killed run left)\n"
@@ -98,9 +118,11 @@ static void remove_stale_tmp(const char *out)
 int sf_cmd_sweep(int argc, char **argv)
 {
     const char *path, *param = NULL, *values = NULL, *out_path = NULL, *sum_path = NULL;
-    size_t n = 0, threads = 0;
-    int resume = 0;
+    size_t n = 0, threads = 0, pilot = 0;
+    double target_se = NAN;
+    int resume = 0, cv = 0;
     const sf_opt opts[] = {
+        { "--control-variate", SF_OPT_FLAG, &cv, 0, 0, NULL },
         { "--param", SF_OPT_STRING, &param, 0, 0, NULL },
         { "--values", SF_OPT_STRING, &values, 0, 0, NULL },
         { "--realisations", SF_OPT_SIZE, &n, 1, 10000000, NULL },
@@ -108,8 +130,10 @@ int sf_cmd_sweep(int argc, char **argv)
         { "--summary", SF_OPT_STRING, &sum_path, 0, 0, NULL },
         { "--threads", SF_OPT_SIZE, &threads, 1, 1024, NULL },
         { "--resume", SF_OPT_FLAG, &resume, 0, 0, NULL },
+        { "--target-se", SF_OPT_DOUBLE, &target_se, 0, 0, NULL },
+        { "--pilot", SF_OPT_SIZE, &pilot, 2, 10000000, NULL },
     };
-    int rc = sf_cli_parse("sweep", argc, argv, opts, 7, &path, usage);
+    int rc = sf_cli_parse("sweep", argc, argv, opts, sizeof opts / sizeof opts[0], &path, usage);
     if (rc)
         return rc == SF_CLI_HELP ? SF_EXIT_OK : rc;
     double v[SF_LIST_MAX];
@@ -132,6 +156,26 @@ int sf_cmd_sweep(int argc, char **argv)
         n = s0.samples;
     else {
         fprintf(stderr, "slipfield sweep: --realisations is required (or the scene's samples key)\n");
+        return SF_EXIT_USAGE;
+    }
+    int staged = !isnan(target_se);
+    if (staged && !(target_se > 0)) {
+        fprintf(stderr, "slipfield sweep: --target-se takes a standard error > 0 (got %g)\n", target_se);
+        return SF_EXIT_USAGE;
+    }
+    if (pilot && !staged) {
+        fprintf(stderr, "slipfield sweep: --pilot needs --target-se\n");
+        return SF_EXIT_USAGE;
+    }
+    if (staged && cv) {
+        fprintf(stderr, "slipfield sweep: --control-variate and --target-se do not combine\n");
+        return SF_EXIT_USAGE;
+    }
+    if (staged && !pilot)
+        pilot = n < 20 ? n : 20;
+    if (staged && (pilot < 2 || pilot > n)) {
+        fprintf(stderr, "slipfield sweep: --pilot %zu: the pilot needs 2 to %zu (the cap, --realisations) realisations\n",
+                pilot, n);
         return SF_EXIT_USAGE;
     }
     char err[300];
@@ -179,19 +223,26 @@ int sf_cmd_sweep(int argc, char **argv)
         snprintf(ck, sizeof ck, "%s.ckpt%zu", out_path, k);
         snprintf(label, sizeof label, "%s = %g", param, v[k]);
         sf_sweep_point p;
-        rc = sf_sweep_run(&s, n, (int)threads, strcmp(out_path, "-") ? ck : NULL, resume, label, &p, err, sizeof err);
+        const char *ckp = strcmp(out_path, "-") ? ck : NULL;
+        rc = staged ? sf_sweep_run_target(&s, target_se, pilot, n, (int)threads, ckp, resume, label, &p, err, sizeof err)
+             : cv   ? sf_sweep_run_cv(&s, n, (int)threads, ckp, resume, label, &p, err, sizeof err)
+                    : sf_sweep_run(&s, n, (int)threads, ckp, resume, label, &p, err, sizeof err);
         if (rc) {
             fprintf(stderr, "slipfield sweep: %s = %g: %s\n", param, v[k], *err ? err : sf_strerror(rc));
             ok = 0;
             fail = rc;
         } else {
-            if (p.n_valid < n)
+            if (p.n_valid < p.n)
                 fprintf(stderr, "slipfield sweep: %s = %g: warning: %zu of %zu realisations formed no quantity of "
                                 "interest (no complete cycle after t_skip: nan ratios, left out of the means)\n",
-                        param, v[k], n - p.n_valid, n);
+                        param, v[k], p.n - p.n_valid, p.n);
             if (p.from_checkpoint)
                 fprintf(stderr, "slipfield sweep: %s = %g: %zu of %zu realisations from the checkpoint\n", param,
-                        v[k], p.from_checkpoint, n);
+                        v[k], p.from_checkpoint, p.n);
+            if (staged && p.stop == SF_MCSTOP_CAP)
+                fprintf(stderr, "slipfield sweep: %s = %g: the cap of %zu realisations is below what the pilot says "
+                                "--target-se %g needs: the interval is wider than the target\n",
+                        param, v[k], n, target_se);
             sf_sweep_write_rows(out.f, param, v[k], &p);
             if (sum_path && sf_unum_sweep(&s, &p, (int)threads, err, sizeof err))
                 fprintf(stderr, "slipfield sweep: %s = %g: warning: no numerical error of the means (its companion "

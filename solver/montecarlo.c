@@ -41,9 +41,8 @@ unsigned long sf_mc_hash(const void *p, size_t n, unsigned long h)
 }
 
 /* Read the complete lines of a checkpoint into out/done. */
-static int ck_read(const sf_mc_spec *s, double *out, unsigned char *done, size_t *count, char *err, size_t errlen)
+static int ck_read(const sf_mc_spec *s, double *out, unsigned char *done, char *err, size_t errlen)
 {
-    *count = 0;
     FILE *f = fopen(s->checkpoint, "r");
     if (!f)
         return SF_SUCCESS;   /* nothing to resume */
@@ -80,8 +79,6 @@ static int ck_read(const sf_mc_spec *s, double *out, unsigned char *done, size_t
         if (k < s->nout)
             continue;
         memcpy(out + i * s->nout, v, s->nout * sizeof *v);
-        if (!done[i])
-            (*count)++;
         done[i] = 1;
     }
     free(v);
@@ -108,9 +105,11 @@ int sf_mc_rank(int *size)
 
 /* MPI: realisation i belongs to rank i mod size; the others are marked
  * done (they are not this rank's), computed elsewhere and gathered. */
-static int gather(const sf_mc_spec *s, double *out, int rc)
+static int gather(const sf_mc_spec *s0, size_t n, double *out, int rc)
 {
 #ifdef SF_MPI
+    sf_mc_spec sn = *s0, *s = &sn;
+    sn.n = n;   /* the realisations computed so far */
     int size, rank = sf_mc_rank(&size);
     if (size == 1)
         return rc;
@@ -147,7 +146,8 @@ static int gather(const sf_mc_spec *s, double *out, int rc)
     free(send); free(recv); free(cnt); free(dsp);
     return SF_SUCCESS;
 #else
-    (void)s;
+    (void)s0;
+    (void)n;
     (void)out;
     return rc;
 #endif
@@ -162,15 +162,15 @@ static void ck_line(FILE *ck, size_t i, const double *v, size_t nout)
     fputc('\n', ck);
 }
 
-/* Start the checkpoint: read what a resumed run already has (done, *before)
- * and rewrite exactly those lines through a temporary file, so the file
- * only ever holds complete lines of this work; *ck is left open to append. */
-static int ck_start(const sf_mc_spec *s, double *out, unsigned char *done, size_t *before, FILE **ck,
-                    char *err, size_t errlen)
+/* Start the checkpoint: read what a resumed run already has (done) and
+ * rewrite exactly those lines, and those already in out (done too),
+ * through a temporary file, so the file only ever holds complete lines of
+ * this work; *ck is left open to append. */
+static int ck_start(const sf_mc_spec *s, double *out, unsigned char *done, FILE **ck, char *err, size_t errlen)
 {
     int rc;
     *ck = NULL;
-    if (s->resume && (rc = ck_read(s, out, done, before, err, errlen)))
+    if (s->resume && (rc = ck_read(s, out, done, err, errlen)))
         return rc;
     char tmp[4096];
     snprintf(tmp, sizeof tmp, "%s.tmp", s->checkpoint);
@@ -204,6 +204,7 @@ static void rank_spec(sf_mc_spec *s, int rank, int size, char *ckpath, size_t le
 /* The realisation loop's shared state. */
 typedef struct {
     const sf_mc_spec *s;
+    size_t first, upto;                   /* the realisations to run */
     double *out;
     const unsigned char *done, *theirs;   /* resumed; another rank's */
     FILE *ck;                             /* the checkpoint, open to append (or NULL) */
@@ -237,8 +238,8 @@ static void record(mc_loop *L, size_t i, int r)
     }
     L->finished++;
     if (L->tty) {   /* ETA: this run's mean time per realisation so far */
-        double dt = now_s() - L->t0, eta = dt / (double)(L->finished - L->started) * (double)(s->n - L->finished);
-        fprintf(stderr, "\r%s: %zu/%zu realisations, ETA %02d:%02d:%02d  ", s->label, L->finished, s->n,
+        double dt = now_s() - L->t0, eta = dt / (double)(L->finished - L->started) * (double)(L->upto - L->finished);
+        fprintf(stderr, "\r%s: %zu/%zu realisations, ETA %02d:%02d:%02d  ", s->label, L->finished, L->upto,
                 (int)(eta / 3600), (int)fmod(eta / 60, 60), (int)fmod(eta, 60));
     }
 }
@@ -264,7 +265,7 @@ static void realise_all(mc_loop *L, const sf_mc_ops *ops, void *ctx)
             }
         }
 #pragma omp for schedule(dynamic, 1)
-        for (size_t i = 0; i < s->n; i++) {
+        for (size_t i = L->first; i < L->upto; i++) {
             int stop;
 #pragma omp atomic read
             stop = L->failed;
@@ -281,10 +282,20 @@ static void realise_all(mc_loop *L, const sf_mc_ops *ops, void *ctx)
     }
 }
 
-int sf_mc_run(const sf_mc_spec *s0, const sf_mc_ops *ops, void *ctx, double *out,
-              size_t *done_before, char *err, size_t errlen)
+int sf_mc_run(const sf_mc_spec *spec, const sf_mc_ops *ops, void *ctx, double *out, size_t *done_before, char *err,
+              size_t errlen)
+{
+    return sf_mc_run_range(spec, 0, spec->n, ops, ctx, out, done_before, err, errlen);
+}
+
+int sf_mc_run_range(const sf_mc_spec *s0, size_t first, size_t upto, const sf_mc_ops *ops, void *ctx, double *out,
+                    size_t *done_before, char *err, size_t errlen)
 {
     sf_mc_spec sl = *s0, *s = &sl;
+    if (upto > s->n)
+        upto = s->n;
+    if (first > upto)
+        first = upto;
     int size, rank = sf_mc_rank(&size);
     char ckpath[4200];
     rank_spec(s, rank, size, ckpath, sizeof ckpath);
@@ -295,17 +306,22 @@ int sf_mc_run(const sf_mc_spec *s0, const sf_mc_ops *ops, void *ctx, double *out
         free(theirs);
         return SF_ENOMEM;
     }
-    for (size_t i = 0; i < s->n; i++)
+    for (size_t i = 0; i < s->n; i++) {
         theirs[i] = size > 1 && (int)(i % (size_t)size) != rank;
-    size_t before = 0;
+        done[i] = i < first;   /* already in out (gathered) */
+    }
     FILE *ck = NULL;
     int rc = SF_SUCCESS;
-    if (s->checkpoint && (rc = ck_start(s, out, done, &before, &ck, err, errlen))) {
+    if (s->checkpoint && (rc = ck_start(s, out, done, &ck, err, errlen))) {
         free(done);
         free(theirs);
         return rc;
     }
-    mc_loop L = { s, out, done, theirs, ck, before, 0, SF_SUCCESS, s->label && isatty(2), before, now_s() };
+    size_t before = 0;   /* of this range, from the checkpoint */
+    for (size_t i = first; i < upto; i++)
+        before += done[i];
+    mc_loop L = { s, first, upto, out, done, theirs, ck, first + before, 0, SF_SUCCESS, s->label && isatty(2),
+                  first + before, now_s() };
     realise_all(&L, ops, ctx);
     rc = L.rc;
     if (L.tty)
@@ -317,5 +333,5 @@ int sf_mc_run(const sf_mc_spec *s0, const sf_mc_ops *ops, void *ctx, double *out
         *done_before = before;
     free(done);
     free(theirs);
-    return gather(s, out, rc);
+    return gather(s, upto, out, rc);
 }

@@ -58,6 +58,14 @@ unsigned long sf_mc_hash(const void *p, size_t n, unsigned long h);
 int sf_mc_run(const sf_mc_spec *spec, const sf_mc_ops *ops, void *ctx, double *out,
               size_t *done_before, char *err, size_t errlen);
 
+/* The same for realisations first .. upto-1 of the n of spec (upto is
+ * clipped to n): those below first are taken as already in out (a
+ * previous stage's, kept in the checkpoint, whose header still says n);
+ * *done_before counts the range's realisations taken from the checkpoint.
+ * Sample sizes decided in stages (mcstop.h) run through it. */
+int sf_mc_run_range(const sf_mc_spec *spec, size_t first, size_t upto, const sf_mc_ops *ops, void *ctx,
+                    double *out, size_t *done_before, char *err, size_t errlen);
+
 #ifdef __cplusplus
 }
 #endif

@@ -22,6 +22,7 @@
 #include "oscillator.h"    /* the stick-slip integrators */
 #include "qoi.h"           /* quantities of interest */
 #include "montecarlo.h"    /* reproducible Monte Carlo */
+#include "mcstop.h"        /* two-stage sample sizes (Stein) */
 #include "sweep.h"         /* parameter sweeps */
 #include "unum.h"          /* numerical error of a run's QoIs */
 

@@ -1,5 +1,6 @@
 #include "sweep.h"
 #include "cof.h"
+#include "mcstop.h"
 #include "montecarlo.h"
 #include "oscillator.h"
 #include "sf_alloc.h"
@@ -10,6 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <gsl/gsl_cdf.h>
+#include <gsl/gsl_fit.h>
 #include <gsl/gsl_statistics_double.h>
 
 static const char *const qname[SF_SWEEP_NQ] = { "pv_x", "pv_F", "stick_fraction" };
@@ -35,6 +37,20 @@ int sf_sweep_set(sf_scene *s, const char *name, double value, char *err, size_t 
     if (!rc && !strcmp(name, "mu_mean"))
         s->mu_std = cv * s->mu_mean;   /* fixed CV (Fig. 13) */
     return rc;
+}
+
+double sf_sweep_companion(const sf_cof *cof, const sf_scene *s)
+{
+    if (sf_cof_window_margin(cof) > 0)
+        return NAN;
+    enum { LINES = 3, K = SF_SWEEP_CV_POINTS / LINES };
+    double sum = 0;
+    for (int j = 0; j < LINES; j++)
+        for (int k = 0; k < K; k++) {
+            double t = s->t_skip + (k + 0.5) * (s->T - s->t_skip) / K;
+            sum += sf_cof_eval(cof, -s->v_b * t, 0.5 * s->R * (j - 1));
+        }
+    return sum / (LINES * K);
 }
 
 void *sf_sweep_ws_alloc(void *ctx)
@@ -76,13 +92,17 @@ static int realise(void *p, size_t i, gsl_rng *rng, double *out)
         out[SF_SWEEP_SF] = r.stick_fraction;
         sf_osc_result_free(&r);
         sf_osc_free(o);
+        if (w->companion)   /* after the run: its window stays where the run left it */
+            out[SF_SWEEP_NQ] = sf_sweep_companion(cof, w->s);
     }
     sf_cof_free(cof);
     return rc;
 }
 
-int sf_sweep_run(const sf_scene *s, size_t n, int threads, const char *checkpoint, int resume,
-                 const char *label, sf_sweep_point *out, char *err, size_t errlen)
+/* n realisations, or two stages up to n with target_se > 0; with the
+ * companion C of each (cv) */
+static int run(const sf_scene *s, size_t n, double target_se, size_t n_pilot, int cv, int threads,
+               const char *checkpoint, int resume, const char *label, sf_sweep_point *out, char *err, size_t errlen)
 {
     memset(out, 0, sizeof *out);
     /* the deterministic reference, same definitions */
@@ -122,23 +142,79 @@ int sf_sweep_run(const sf_scene *s, size_t n, int threads, const char *checkpoin
     if ((rc = sf_plan_make(s, &pl, err, errlen)))
         return rc;
     pl.history = 0;   /* a sweep keeps only the QoIs */
-    sf_sweep_ws ctx = { s, &pl, NULL, NULL };
-    sf_mc_spec spec = { n, SF_SWEEP_NQ, s->seed, threads, checkpoint, resume, 0, label };
+    sf_sweep_ws ctx = { s, &pl, NULL, NULL, cv };
+    size_t nout = SF_SWEEP_NQ + (cv != 0);
+    double *vals = out->qoi;   /* n x nout: the QoIs, and C when cv */
+    if (cv) {
+        out->cv_known = s->mu_mean;
+        out->companion = sf_calloc(n, sizeof *out->companion);
+        vals = sf_calloc(n * nout, sizeof *vals);
+        if (!out->companion || !vals) {
+            free(vals);
+            return SF_ENOMEM;
+        }
+    }
+    sf_mc_spec spec = { n, nout, s->seed, threads, checkpoint, resume, 0, label };
     /* the checkpoint's identity: what a line holds and the effective
      * scene as text (no padding bytes) */
     char *text = NULL;
     size_t len = 0;
     FILE *m = SF_FALLIBLE(open_memstream(&text, &len));
-    if (!m)
+    if (!m) {
+        if (vals != out->qoi)
+            free(vals);
         return SF_ENOMEM;
-    fputs("sweep v2: pv_x pv_F stick_fraction\n", m);
+    }
+    fputs(cv ? "sweep v2: pv_x pv_F stick_fraction companion\n" : "sweep v2: pv_x pv_F stick_fraction\n", m);
     sf_scene_write(s, m);
     fclose(m);
     spec.key = sf_mc_hash(text, len, 0);
     free(text);
     sf_mc_ops ops = { sf_sweep_ws_alloc, sf_sweep_ws_free, realise };
-    rc = sf_mc_run(&spec, &ops, &ctx, out->qoi, &out->from_checkpoint, err, errlen);
+    if (target_se > 0) {
+        double target[SF_SWEEP_NQ];
+        for (int q = 0; q < SF_SWEEP_NQ; q++)
+            target[q] = target_se * out->det[q];
+        sf_mcstop_spec st = { n_pilot, n, target };
+        out->n_pilot = n_pilot;
+        rc = sf_mcstop_run(&spec, &st, &ops, &ctx, out->qoi, &out->n, &out->stop, &out->from_checkpoint, err,
+                           errlen);
+    } else {
+        rc = sf_mc_run(&spec, &ops, &ctx, vals, &out->from_checkpoint, err, errlen);
+    }
+    if (vals != out->qoi) {   /* split the QoIs from the companion */
+        for (size_t i = 0; i < out->n; i++) {
+            memcpy(out->qoi + i * SF_SWEEP_NQ, vals + i * nout, SF_SWEEP_NQ * sizeof *vals);
+            out->companion[i] = vals[i * nout + SF_SWEEP_NQ];
+        }
+        free(vals);
+    }
     return rc ? rc : sf_sweep_point_stats(out);
+}
+
+int sf_sweep_run(const sf_scene *s, size_t n, int threads, const char *checkpoint, int resume, const char *label,
+                 sf_sweep_point *out, char *err, size_t errlen)
+{
+    return run(s, n, 0, 0, 0, threads, checkpoint, resume, label, out, err, errlen);
+}
+
+int sf_sweep_run_cv(const sf_scene *s, size_t n, int threads, const char *checkpoint, int resume, const char *label,
+                    sf_sweep_point *out, char *err, size_t errlen)
+{
+    return run(s, n, 0, 0, 1, threads, checkpoint, resume, label, out, err, errlen);
+}
+
+int sf_sweep_run_target(const sf_scene *s, double target_se, size_t n_pilot, size_t n_max, int threads,
+                        const char *checkpoint, int resume, const char *label, sf_sweep_point *out, char *err,
+                        size_t errlen)
+{
+    if (!(target_se > 0) || !isfinite(target_se) || n_pilot < 2 || n_max < n_pilot) {
+        memset(out, 0, sizeof *out);
+        return sf_seterr(err, errlen, SF_EINVAL,
+                         "two-stage sweep: target_se must be finite and > 0 (got %g), 2 <= pilot (%zu) <= cap (%zu)",
+                         target_se, n_pilot, n_max);
+    }
+    return run(s, n_max, target_se, n_pilot, 0, threads, checkpoint, resume, label, out, err, errlen);
 }
 
 int sf_sweep_stat_of(const double *x, size_t stride, size_t n, sf_sweep_stat *st)
@@ -165,6 +241,41 @@ int sf_sweep_stat_of(const double *x, size_t stride, size_t n, sf_sweep_stat *st
     return SF_SUCCESS;
 }
 
+/* The regression estimator of ratio q (sweep.h: cv[q]). */
+static int cv_stats(sf_sweep_point *p, int q)
+{
+    double *x = sf_malloc((p->n ? p->n : 1) * sizeof *x), *y = sf_malloc((p->n ? p->n : 1) * sizeof *y);
+    if (!x || !y) {
+        free(x);
+        free(y);
+        return SF_ENOMEM;
+    }
+    size_t m = 0;
+    for (size_t i = 0; i < p->n; i++) {
+        double c = p->companion[i], r = p->ratio[i * SF_SWEEP_NQ + q];
+        if (isfinite(c) && isfinite(r)) {
+            x[m] = c - p->cv_known;
+            y[m++] = r;
+        }
+    }
+    p->cv[q].m = m;
+    p->cv[q].mean = p->cv[q].se = p->cv[q].ci_lo = p->cv[q].ci_hi = p->cv[q].beta = p->cv[q].vrf = NAN;
+    double c0, c1, v00, v01, v11, ss;
+    if (m > 2 && !gsl_fit_linear(x, 1, y, 1, m, &c0, &c1, &v00, &v01, &v11, &ss)) {
+        double t = gsl_cdf_tdist_Pinv(0.5 * (1 + SF_SWEEP_CI_LEVEL), (double)(m - 2));
+        double plain = gsl_stats_variance(y, 1, m) / (double)m;
+        p->cv[q].mean = c0;
+        p->cv[q].se = sqrt(v00);
+        p->cv[q].ci_lo = c0 - t * p->cv[q].se;
+        p->cv[q].ci_hi = c0 + t * p->cv[q].se;
+        p->cv[q].beta = c1;
+        p->cv[q].vrf = plain / v00;
+    }
+    free(x);
+    free(y);
+    return SF_SUCCESS;
+}
+
 int sf_sweep_point_stats(sf_sweep_point *p)
 {
     p->n_valid = 0;
@@ -183,6 +294,13 @@ int sf_sweep_point_stats(sf_sweep_point *p)
             return rc;
         p->mean[q] = p->rstat[q].mean;
         p->std[q] = p->rstat[q].std;
+        p->rci_lo[q] = p->rstat[q].ci_lo;
+        p->rci_hi[q] = p->rstat[q].ci_hi;
+        if (p->n_pilot && (rc = sf_mcstop_interval(p->ratio + q, SF_SWEEP_NQ, p->n_pilot, p->n, SF_SWEEP_CI_LEVEL,
+                                                   &p->rci_lo[q], &p->rci_hi[q])))
+            return rc;   /* two stages: Stein's interval from the pilot's spread */
+        if (p->companion && (rc = cv_stats(p, q)))
+            return rc;
     }
     return SF_SUCCESS;
 }
@@ -228,6 +346,13 @@ void sf_sweep_summary_header(FILE *f)
                    "\t%s_num_n\t%s_num_bias[%s]\t%s_num_bias_se[%s]\t%s_u_num_mean[%s]",
                 a, a, a, u, a, u, a, u, a, lv, u, a, lv, u, a, u, a, a, a, a, a, u, a, u, a, u);
     }
+    /* appended: the design (why the point stopped) and the interval it guarantees */
+    fputs("\tstop\tn_pilot", f);
+    for (int q = 0; q < SF_SWEEP_NQ; q++)
+        fprintf(f, "\t%s_ratio_ci%d_lo[-]\t%s_ratio_ci%d_hi[-]", qname[q], lv, qname[q], lv);
+    for (int q = 0; q < SF_SWEEP_NQ; q++)   /* the control variate (nan without it) */
+        fprintf(f, "\t%s_cv_ratio_mean[-]\t%s_cv_ratio_se[-]\t%s_cv_ratio_ci%d_lo[-]\t%s_cv_ratio_ci%d_hi[-]\t%s_cv_vrf[-]",
+                qname[q], qname[q], qname[q], lv, qname[q], lv, qname[q]);
     fputc('\n', f);
 }
 
@@ -244,6 +369,16 @@ void sf_sweep_summary_row(FILE *f, const char *param, double value, const sf_swe
                 a->n_used, a->n_excluded, a->mean, a->std, a->se, a->ci_lo, a->ci_hi, p->det[q], b->mean, b->std,
                 b->se, e->n_used, est ? e->bias : NAN, est ? e->bias_se : NAN, est ? e->u_mean : NAN);
     }
+    fprintf(f, "\t%s\t%zu", sf_mcstop_reason(p->stop), p->n_pilot);
+    for (int q = 0; q < SF_SWEEP_NQ; q++)
+        fprintf(f, "\t%.17g\t%.17g", p->rci_lo[q], p->rci_hi[q]);
+    for (int q = 0; q < SF_SWEEP_NQ; q++) {
+        double nan = NAN;
+        const double *c = p->companion ? &p->cv[q].mean : &nan;
+        fprintf(f, "\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g", c[0], p->companion ? p->cv[q].se : nan,
+                p->companion ? p->cv[q].ci_lo : nan, p->companion ? p->cv[q].ci_hi : nan,
+                p->companion ? p->cv[q].vrf : nan);
+    }
     fputc('\n', f);
 }
 
@@ -251,5 +386,6 @@ void sf_sweep_point_free(sf_sweep_point *p)
 {
     free(p->qoi);
     free(p->ratio);
-    p->qoi = p->ratio = NULL;
+    free(p->companion);
+    p->qoi = p->ratio = p->companion = NULL;
 }

@@ -22,6 +22,7 @@ extern "C" {
 #include <stddef.h>
 #include <stdio.h>
 #include "scene.h"
+#include "cof.h"
 
 enum { SF_SWEEP_PVX = 0, SF_SWEEP_PVF = 1, SF_SWEEP_SF = 2, SF_SWEEP_NQ = 3 };
 
@@ -63,6 +64,34 @@ typedef struct {
     size_t n, from_checkpoint;
     size_t n_valid;             /* realisations whose every QoI is finite */
     sf_sweep_num num[SF_SWEEP_NQ];   /* numerical error of stat[q].mean (zero: not estimated) */
+    /* The design: a fixed N (n_pilot 0, stop SF_MCSTOP_FIXED), or two
+     * stages (mcstop.h: the first n_pilot realisations decide N; stop
+     * says whether every target was met or N hit the cap).  [rci_lo,
+     * rci_hi]: the ratio mean's interval at SF_SWEEP_CI_LEVEL that the
+     * design guarantees: rstat's Student interval for a fixed N; Stein's,
+     * mean -+ t_{m0-1} s0 / sqrt(n_used) with the pilot's s0 over its m0
+     * finite ratios, for two stages. */
+    size_t n_pilot;
+    int stop;
+    double rci_lo[SF_SWEEP_NQ], rci_hi[SF_SWEEP_NQ];
+    /* The control variate (sf_sweep_run_cv; companion NULL otherwise):
+     * companion[i] = C_i, realisation i's COF averaged over fixed belt
+     * points on the disc's nominal path (sf_sweep_companion), whose mean
+     * is known: mu_mean (cv_known), since every point of the field, and
+     * every interpolation between its nodes, has that mean.  Per ratio,
+     * cv[q] is the regression estimator: the intercept of the least-
+     * squares line of the ratio on C - mu_mean (GSL gsl_fit_linear), its
+     * standard error with the residual variance over m - 2 (the slope
+     * costs a degree of freedom), the Student interval at m - 2, the
+     * slope, and the variance reduction factor vrf = (plain se / cv se)^2
+     * on the same m realisations.  NaN where C is not formed (a window
+     * of tiles: no companion there) or m < 3. */
+    double *companion;
+    double cv_known;
+    struct {
+        size_t m;
+        double mean, se, ci_lo, ci_hi, beta, vrf;
+    } cv[SF_SWEEP_NQ];
 } sf_sweep_point;
 
 /* A Monte Carlo workspace over a scene's COF draws (montecarlo.h's
@@ -75,6 +104,7 @@ typedef struct {
     const struct sf_plan *pl;   /* the scene's plan, made once (numplan.h) */
     const void *data;
     struct sf_cof_plan *plan;
+    int companion;              /* 1: out[SF_SWEEP_NQ] = sf_sweep_companion */
 } sf_sweep_ws;
 void *sf_sweep_ws_alloc(void *ctx);
 void sf_sweep_ws_free(void *ws);
@@ -87,10 +117,32 @@ int sf_sweep_run(const sf_scene *s, size_t n, int threads, const char *checkpoin
                  const char *label, sf_sweep_point *out, char *err, size_t errlen);
 void sf_sweep_point_free(sf_sweep_point *p);
 
+/* A sweep point with the control variate above: n realisations, each
+ * with its companion C (for a window of tiles, which keeps only the
+ * stretch of belt under the disc, C is NaN and cv[] NaN). */
+int sf_sweep_run_cv(const sf_scene *s, size_t n, int threads, const char *checkpoint, int resume, const char *label,
+                    sf_sweep_point *out, char *err, size_t errlen);
+
+/* The companion of a COF drawn for scene s: the mean of mu_s over
+ * SF_SWEEP_CV_POINTS belt points on the nominal path of the disc's
+ * centre line and two lines R/2 to its sides, xb = -v_b t for t evenly
+ * spread over [t_skip, T]; NaN for a window (sf_cof_window_margin > 0). */
+#define SF_SWEEP_CV_POINTS 600
+double sf_sweep_companion(const sf_cof *cof, const sf_scene *s);
+
+/* A two-stage sweep point (mcstop.h): n_pilot realisations (the floor),
+ * then as many more as the pilot says every ratio mean needs for a
+ * standard error of target_se [-] (each QoI's target in its unit:
+ * target_se x its deterministic value), at most n_max in all.  The rest
+ * as sf_sweep_run. */
+int sf_sweep_run_target(const sf_scene *s, double target_se, size_t n_pilot, size_t n_max, int threads,
+                        const char *checkpoint, int resume, const char *label, sf_sweep_point *out, char *err,
+                        size_t errlen);
+
 /* The statistics of x[0], x[stride], ... x[(n - 1) stride]. */
 int sf_sweep_stat_of(const double *x, size_t stride, size_t n, sf_sweep_stat *st);
 
-/* From p->qoi, p->det and p->n: the ratios and every statistic above
+/* From p->qoi, p->det, p->n and p->n_pilot: the ratios and every statistic above
  * (sf_sweep_run calls it; so may a caller that changed p->qoi). */
 int sf_sweep_point_stats(sf_sweep_point *p);
 

@@ -164,7 +164,7 @@ int sf_unum_sweep(const sf_scene *s, sf_sweep_point *p, int threads, char *err, 
         return rc;
     }
     pl.history = 0;
-    sf_sweep_ws ctx = { s, &pl, p->qoi, NULL };
+    sf_sweep_ws ctx = { s, &pl, p->qoi, NULL, 0 };
     sf_mc_spec spec = { m, NOUT, s->seed, threads, NULL, 0, 0, "u_num" };
     sf_mc_ops ops = { sf_sweep_ws_alloc, sf_sweep_ws_free, unum_realise };
     if (err && errlen)

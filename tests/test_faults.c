@@ -25,6 +25,7 @@
 #include "sf_error.h"
 #include "surface.h"
 #include "sweep.h"
+#include "mcstop.h"
 #include "tiles.h"
 #include "unum.h"
 
@@ -620,6 +621,28 @@ static int sweep(void *ctx)
     return rc;
 }
 
+static int sweep2(void *ctx)
+{
+    sf_sweep_point pt;
+    char err[256] = "";
+    int rc = sf_sweep_run_target(ctx, 1e-6, 2, 3, 1, NULL, 0, NULL, &pt, err, sizeof err);
+    if (!rc)
+        assert_true(pt.n == 3 && pt.stop == SF_MCSTOP_CAP);
+    sf_sweep_point_free(&pt);
+    return rc;
+}
+
+static int sweep_cv(void *ctx)
+{
+    sf_sweep_point pt;
+    char err[256] = "";
+    int rc = sf_sweep_run_cv(ctx, 3, 1, NULL, 0, NULL, &pt, err, sizeof err);
+    if (!rc)
+        assert_true(pt.companion && isfinite(pt.cv[0].mean));
+    sf_sweep_point_free(&pt);
+    return rc;
+}
+
 /* a small field scene for the sweep's walks */
 static void scene_sweep(sf_scene *s)
 {
@@ -635,6 +658,8 @@ static void sweeps(void **state)
     sf_scene s;
     scene_sweep(&s);
     assert_true(walk("sf_sweep_run", sweep, &s, SF_SUCCESS, 0) > 20);
+    assert_true(walk("sf_sweep_run_target", sweep2, &s, SF_SUCCESS, 0) > 20);
+    assert_true(walk("sf_sweep_run_cv", sweep_cv, &s, SF_SUCCESS, 0) > 20);
 }
 
 /* the numerical error of a sweep point's means: a point computed once,

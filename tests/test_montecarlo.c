@@ -4,6 +4,10 @@
 #include "test_util.h"
 #include "montecarlo.h"
 #include "sweep.h"
+#include "mcstop.h"
+#include "scene.h"
+#include "cof.h"
+#include <stdint.h>
 #include "sf_error.h"
 
 #include <math.h>
@@ -138,6 +142,18 @@ static double summary_field(const char *text, const char *col)
 /* 16 realisations, 8 of them without a stick fraction (NaN) and one
  * without a PV_x (+Inf): every count and statistic the summary prints
  * is that of the finite values (the summary once said n = 16 over 8). */
+/* The summary (header and one row) that `sweep --summary` writes for p. */
+static char *summary_text(const char *param, double value, const sf_sweep_point *p)
+{
+    char *text = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&text, &len);
+    sf_sweep_summary_header(f);
+    sf_sweep_summary_row(f, param, value, p);
+    fclose(f);
+    return text;
+}
+
 static void summary_counts_finite_values(void **state)
 {
     (void)state;
@@ -154,12 +170,7 @@ static void summary_counts_finite_values(void **state)
             sf[m++] = p.qoi[3 * i + 2];
     }
     assert_int_equal(sf_sweep_point_stats(&p), SF_SUCCESS);
-    char *text = NULL;
-    size_t len = 0;
-    FILE *f = open_memstream(&text, &len);
-    sf_sweep_summary_header(f);
-    sf_sweep_summary_row(f, "v_b", 0.6, &p);
-    fclose(f);
+    char *text = summary_text("v_b", 0.6, &p);
     assert_true(summary_field(text, "n") == 16);
     assert_true(summary_field(text, "stick_fraction_n_used") == 8);
     assert_true(summary_field(text, "stick_fraction_n_excluded") == 8);
@@ -187,6 +198,198 @@ static void summary_counts_finite_values(void **state)
     sf_sweep_point_free(&p);
 }
 
+/* ---- the two-stage design (mcstop.h) */
+
+static void stein_pieces(void **state)
+{
+    (void)state;
+    assert_string_equal(sf_mcstop_reason(SF_MCSTOP_FIXED), "fixed");
+    assert_string_equal(sf_mcstop_reason(SF_MCSTOP_TARGET), "target");
+    assert_string_equal(sf_mcstop_reason(SF_MCSTOP_CAP), "cap");
+    assert_int_equal(sf_mcstop_size(1, 0.1), 100);
+    assert_int_equal(sf_mcstop_size(1.05, 0.1), 111);   /* ceil(110.25) */
+    assert_int_equal(sf_mcstop_size(0, 0.1), 1);
+    assert_true(sf_mcstop_size(NAN, 0.1) == SIZE_MAX);
+    assert_true(sf_mcstop_size(1e300, 1e-300) == SIZE_MAX);
+    /* t_{0.975, 9} = 2.262157162798205 (tables) */
+    assert_true(fabs(sf_mcstop_halfwidth(2, 10, 100, 0.95) - 2.262157162798205 * 2 / 10) < 1e-14);
+    assert_true(isnan(sf_mcstop_halfwidth(2, 1, 100, 0.95)));
+    assert_true(isnan(sf_mcstop_halfwidth(2, 10, 0, 0.95)));
+    /* the interval: the pilot's spread, every value's mean; NaN left out */
+    double x[12] = { 1, 3, NAN, 5, 7, 2, 2, 2, 2, 2, 2, 2 }, lo, hi;
+    assert_int_equal(sf_mcstop_interval(x, 1, 5, 12, 0.95, &lo, &hi), SF_SUCCESS);
+    double mean = 30.0 / 11, s0 = sqrt(20.0 / 3), hw = sf_mcstop_halfwidth(s0, 4, 11, 0.95);
+    assert_true(fabs(0.5 * (lo + hi) - mean) < 1e-14 && fabs(0.5 * (hi - lo) - hw) < 1e-14);
+    /* decisions: no target asks for the pilot only; a pilot without two
+       finite values, or a target beyond the cap, stops at the cap */
+    double pilot[8] = { 1, NAN, 2, NAN, 3, 5, 4, NAN };   /* 4 x 2 */
+    double none[2] = { 0, NAN }, t1[2] = { 0.1, 0 }, t2[2] = { 0, 0.1 }, t3[2] = { 10, 0 };
+    size_t n;
+    int why;
+    sf_mcstop_spec st = { 4, 1000, none };
+    assert_int_equal(sf_mcstop_decide(&st, 2, pilot, &n, &why), SF_SUCCESS);
+    assert_true(n == 4 && why == SF_MCSTOP_TARGET);
+    st.target_se = t1;   /* sd of 1..4 = sqrt(5/3): ceil(166.67) */
+    assert_int_equal(sf_mcstop_decide(&st, 2, pilot, &n, &why), SF_SUCCESS);
+    assert_true(n == 167 && why == SF_MCSTOP_TARGET);
+    st.n_max = 100;
+    assert_int_equal(sf_mcstop_decide(&st, 2, pilot, &n, &why), SF_SUCCESS);
+    assert_true(n == 100 && why == SF_MCSTOP_CAP);
+    st.target_se = t2;   /* one finite value */
+    assert_int_equal(sf_mcstop_decide(&st, 2, pilot, &n, &why), SF_SUCCESS);
+    assert_true(n == 100 && why == SF_MCSTOP_CAP);
+    st.target_se = t3;   /* met by the pilot: the floor */
+    assert_int_equal(sf_mcstop_decide(&st, 2, pilot, &n, &why), SF_SUCCESS);
+    assert_true(n == 4 && why == SF_MCSTOP_TARGET);
+}
+
+static void stein_runs(void **state)
+{
+    (void)state;
+    double *a = malloc(200 * 2 * sizeof *a), *b = malloc(200 * 2 * sizeof *b), *c = malloc(200 * 2 * sizeof *c);
+    double target[2] = { 1.0, 0 };   /* sd of a sum of 50 normals ~ 7: N ~ 50 */
+    sf_mcstop_spec st = { 10, 200, target };
+    sf_mc_ops ops = { NULL, NULL, realise };
+    sf_mc_spec s = { 0, 2, 42, 1, NULL, 0, 0, NULL };
+    size_t na, nb, nc, before;
+    int wa, wb, wc;
+    char err[200];
+    assert_int_equal(sf_mcstop_run(&s, &st, &ops, NULL, a, &na, &wa, NULL, err, sizeof err), SF_SUCCESS);
+    assert_true(na > 10 && na < 200 && wa == SF_MCSTOP_TARGET);
+    s.threads = 2;   /* the same N and bits on two threads */
+    assert_int_equal(sf_mcstop_run(&s, &st, &ops, NULL, b, &nb, &wb, NULL, err, sizeof err), SF_SUCCESS);
+    assert_true(nb == na && wb == wa);
+    assert_memory_equal(a, b, 2 * na * sizeof *a);
+    /* with a checkpoint: a resumed run takes every realisation from it */
+    char ck[64];
+    snprintf(ck, sizeof ck, "/tmp/sf-test-stein-%ld.ck", (long)getpid());
+    s.checkpoint = ck;
+    assert_int_equal(sf_mcstop_run(&s, &st, &ops, NULL, c, &nc, &wc, &before, err, sizeof err), SF_SUCCESS);
+    assert_true(nc == na && before == 0);
+    s.resume = 1;
+    int calls = 0;
+    assert_int_equal(sf_mcstop_run(&s, &st, &ops, &calls, c, &nc, &wc, &before, err, sizeof err), SF_SUCCESS);
+    assert_true(nc == na && before == na && calls == 0);
+    assert_memory_equal(a, c, 2 * na * sizeof *a);
+    unlink(ck);
+    /* a range past n is clipped to n; an empty one (first > upto) runs nothing */
+    sf_mc_spec r = { 12, 2, 42, 1, NULL, 0, 0, NULL };
+    calls = 0;
+    assert_int_equal(sf_mc_run_range(&r, 10, 50, &ops, &calls, c, &before, err, sizeof err), SF_SUCCESS);
+    assert_int_equal(calls, 2);
+    assert_memory_equal(a + 20, c + 20, 4 * sizeof *a);
+    calls = 0;
+    assert_int_equal(sf_mc_run_range(&r, 9, 5, &ops, &calls, c, &before, err, sizeof err), SF_SUCCESS);
+    assert_int_equal(calls, 0);
+    /* a realisation's error stops the run; a bad spec is refused */
+    sf_mc_ops bad = { NULL, NULL, fail_at_7 };
+    s.checkpoint = NULL;
+    s.resume = 0;
+    assert_int_equal(sf_mcstop_run(&s, &st, &bad, NULL, a, &na, &wa, NULL, err, sizeof err), SF_EFAIL);
+    st.n_pilot = 1;
+    assert_int_equal(sf_mcstop_run(&s, &st, &ops, NULL, a, &na, &wa, NULL, err, sizeof err), SF_EINVAL);
+    st.n_pilot = 300;
+    assert_int_equal(sf_mcstop_run(&s, &st, &ops, NULL, a, &na, &wa, NULL, err, sizeof err), SF_EINVAL);
+    free(a);
+    free(b);
+    free(c);
+}
+
+static void stein_sweep(void **state)
+{
+    (void)state;
+    sf_scene s;
+    sf_scene_default(&s);
+    s.cof = SF_COF_VARIABLE;
+    s.T = 14;
+    s.t_skip = 4;
+    sf_sweep_point a, b;
+    char err[200];
+    assert_int_equal(sf_sweep_run_target(&s, 0.05, 4, 30, 1, NULL, 0, NULL, &a, err, sizeof err), SF_SUCCESS);
+    assert_int_equal(sf_sweep_run_target(&s, 0.05, 4, 30, 2, NULL, 0, NULL, &b, err, sizeof err), SF_SUCCESS);
+    assert_true(a.n == b.n && a.n >= 4 && a.n_pilot == 4 && a.stop != SF_MCSTOP_FIXED);
+    assert_memory_equal(a.qoi, b.qoi, a.n * SF_SWEEP_NQ * sizeof *a.qoi);
+    for (int q = 0; q < SF_SWEEP_NQ; q++)   /* Stein's interval is not the Student one */
+        assert_true(a.rci_lo[q] < a.rstat[q].mean && a.rstat[q].mean < a.rci_hi[q] && a.rci_lo[q] != a.rstat[q].ci_lo);
+    char *text = summary_text("v_b", 0.2, &a);
+    assert_true(summary_field(text, "n_pilot") == 4);
+    assert_true(summary_field(text, "pv_F_ratio_ci95_lo[-]") == a.rci_lo[SF_SWEEP_PVF]);
+    assert_non_null(strstr(text, a.stop == SF_MCSTOP_CAP ? "\tcap\t4\t" : "\ttarget\t4\t"));
+    free(text);
+    sf_sweep_point_free(&a);
+    sf_sweep_point_free(&b);
+    assert_int_equal(sf_sweep_run_target(&s, 0, 4, 30, 1, NULL, 0, NULL, &a, err, sizeof err), SF_EINVAL);
+    assert_int_equal(sf_sweep_run_target(&s, 0.1, 1, 30, 1, NULL, 0, NULL, &a, err, sizeof err), SF_EINVAL);
+    assert_int_equal(sf_sweep_run_target(&s, 0.1, 40, 30, 1, NULL, 0, NULL, &a, err, sizeof err), SF_EINVAL);
+    assert_int_equal(sf_sweep_run_target(&s, NAN, 4, 30, 1, NULL, 0, NULL, &a, err, sizeof err), SF_EINVAL);
+}
+
+/* ---- the control variate */
+
+static void cv_estimator(void **state)
+{
+    (void)state;
+    size_t n = 50;
+    sf_sweep_point p = { .det = { 1, 2, 4 }, .n = n, .cv_known = 0.5 };
+    p.qoi = calloc(n * SF_SWEEP_NQ, sizeof *p.qoi);
+    p.ratio = calloc(n * SF_SWEEP_NQ, sizeof *p.ratio);
+    p.companion = calloc(n, sizeof *p.companion);
+    for (size_t i = 0; i < n; i++) {   /* ratio = 1.5 + 3 (C - 0.5) + a wiggle; C NaN once */
+        double c = 0.5 + 0.1 * cos(1.7 * (double)i), e = 0.01 * sin(2.9 * (double)i);
+        p.companion[i] = i == 7 ? NAN : c;
+        for (int q = 0; q < SF_SWEEP_NQ; q++)
+            p.qoi[i * SF_SWEEP_NQ + q] = p.det[q] * (1.5 + 3 * (c - 0.5) + e);
+    }
+    assert_int_equal(sf_sweep_point_stats(&p), SF_SUCCESS);
+    for (int q = 0; q < SF_SWEEP_NQ; q++) {
+        assert_int_equal(p.cv[q].m, n - 1);
+        assert_true(fabs(p.cv[q].beta - 3) < 0.05 && fabs(p.cv[q].mean - 1.5) < 3 * p.cv[q].se);
+        assert_true(p.cv[q].ci_lo < p.cv[q].mean && p.cv[q].mean < p.cv[q].ci_hi);
+        assert_true(p.cv[q].vrf > 50);   /* the wiggle is 1/30 of C's part */
+    }
+    char *text = summary_text("l_over_R", 100, &p);
+    assert_true(summary_field(text, "pv_F_cv_ratio_mean[-]") == p.cv[SF_SWEEP_PVF].mean);
+    assert_true(summary_field(text, "stick_fraction_cv_vrf[-]") == p.cv[SF_SWEEP_SF].vrf);
+    free(text);
+    p.n = 2;   /* too few for a line with a residual */
+    assert_int_equal(sf_sweep_point_stats(&p), SF_SUCCESS);
+    assert_true(isnan(p.cv[0].mean) && isnan(p.cv[0].vrf));
+    sf_sweep_point_free(&p);
+    assert_null(p.companion);
+    /* the companion: the COF itself when uniform; none for a window of tiles */
+    sf_scene s;
+    sf_scene_default(&s);
+    sf_cof *u;
+    assert_int_equal(sf_cof_alloc_uniform(0.37, &u), SF_SUCCESS);
+    assert_true(fabs(sf_sweep_companion(u, &s) - 0.37) < 1e-13);
+    sf_cof_free(u);
+    s.l = 0.05;
+    s.strip_halfwidth = 0.05;
+    s.cof_generator = SF_COFGEN_TILES;
+    sf_cof_plan *pl;
+    char err[200];
+    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+    assert_int_equal(sf_cof_plan_alloc(&s, &pl, err, sizeof err), SF_SUCCESS);
+    assert_int_equal(sf_cof_plan_draw(pl, rng, &u), SF_SUCCESS);
+    assert_true(isnan(sf_sweep_companion(u, &s)));
+    sf_cof_free(u);
+    sf_cof_plan_free(pl);
+    gsl_rng_free(rng);
+    /* a sweep with it: the same bits on two threads, C near mu_mean */
+    sf_scene_default(&s);
+    s.T = 14;
+    s.t_skip = 4;
+    s.l = 5;
+    sf_sweep_point a, b;
+    assert_int_equal(sf_sweep_run_cv(&s, 6, 1, NULL, 0, NULL, &a, err, sizeof err), SF_SUCCESS);
+    assert_int_equal(sf_sweep_run_cv(&s, 6, 2, NULL, 0, NULL, &b, err, sizeof err), SF_SUCCESS);
+    assert_memory_equal(a.companion, b.companion, 6 * sizeof *a.companion);
+    assert_memory_equal(a.qoi, b.qoi, 6 * SF_SWEEP_NQ * sizeof *a.qoi);
+    assert_true(fabs(a.companion[0] - 0.5) < 0.5 && a.cv_known == s.mu_mean && isfinite(a.cv[0].mean));
+    sf_sweep_point_free(&a);
+    sf_sweep_point_free(&b);
+}
+
 static void shortest_text(void **state)
 {
     (void)state;
@@ -210,6 +413,10 @@ int main(void)
         cmocka_unit_test(checkpoint_resume),
         cmocka_unit_test(summary_counts_finite_values),
         cmocka_unit_test(shortest_text),
+        cmocka_unit_test(stein_pieces),
+        cmocka_unit_test(stein_runs),
+        cmocka_unit_test(stein_sweep),
+        cmocka_unit_test(cv_estimator),
     };
     return cmocka_run_group_tests_name("montecarlo", tests, NULL, NULL);
 }

@@ -60,7 +60,7 @@ static int table_read(const char *text, table *t)
             row[k] = strtod(c, &end);
             if (k < 2)   /* param, value: the row's point, as printed */
                 snprintf(key + strlen(key), sizeof key - strlen(key), "%s%s", k ? "\t" : "", c);
-            else if (*end)
+            else if (*end && strcmp(t->name[k], "stop"))   /* the summary's one text column */
                 rc = SF_EPARSE;
         }
         if (k != t->ncol || c)
