@@ -23,6 +23,8 @@
 #include "qoi.h"           /* quantities of interest */
 #include "montecarlo.h"    /* reproducible Monte Carlo */
 #include "sweep.h"         /* parameter sweeps */
+#include "sobol.h"         /* Sobol' indices by pick-freeze */
+#include "sensitivity.h"   /* Sobol' indices of the QoI ratios */
 #include "unum.h"          /* numerical error of a run's QoIs */
 
 #endif

@@ -63,17 +63,15 @@ static void ws_free(void *p)
     free(w);
 }
 
-static int realise(void *p, size_t i, gsl_rng *rng, double *out)
+int sf_sweep_realise(const sf_scene *s, sf_cof_plan *plan, gsl_rng *rng, double out[SF_SWEEP_NQ])
 {
-    ws_t *w = p;
-    (void)i;
     sf_cof *cof;
-    int rc = sf_cof_plan_draw(w->plan, rng, &cof);
+    int rc = sf_cof_plan_draw(plan, rng, &cof);
     if (rc)
         return rc;
     sf_osc *o;
     sf_osc_result r;
-    rc = sf_osc_alloc(w->s, cof, &o, NULL, 0);
+    rc = sf_osc_alloc(s, cof, &o, NULL, 0);
     if (!rc) {
         rc = sf_osc_run(o, NULL, NULL, 0, &r, NULL, 0);
         out[SF_SWEEP_PVX] = r.pv_x;
@@ -86,11 +84,15 @@ static int realise(void *p, size_t i, gsl_rng *rng, double *out)
     return rc;
 }
 
-int sf_sweep_run(const sf_scene *s, size_t n, int threads, const char *checkpoint, int resume,
-                 const char *label, sf_sweep_point *out, char *err, size_t errlen)
+static int realise(void *p, size_t i, gsl_rng *rng, double *out)
 {
-    memset(out, 0, sizeof *out);
-    /* the deterministic reference, same definitions */
+    ws_t *w = p;
+    (void)i;
+    return sf_sweep_realise(w->s, w->plan, rng, out);
+}
+
+int sf_sweep_det(const sf_scene *s, double det[SF_SWEEP_NQ], char *err, size_t errlen)
+{
     sf_scene d = *s;
     d.cof = SF_COF_UNIFORM;
     sf_cof *u;
@@ -108,16 +110,27 @@ int sf_sweep_run(const sf_scene *s, size_t n, int threads, const char *checkpoin
         sf_osc_result_free(&r);
         return rc;
     }
-    out->det[SF_SWEEP_PVX] = r.pv_x;
-    out->det[SF_SWEEP_PVF] = r.pv_F;
-    out->det[SF_SWEEP_SF] = r.stick_fraction;
+    det[SF_SWEEP_PVX] = r.pv_x;
+    det[SF_SWEEP_PVF] = r.pv_F;
+    det[SF_SWEEP_SF] = r.stick_fraction;
     sf_osc_result_free(&r);
     for (int q = 0; q < SF_SWEEP_NQ; q++)   /* every ratio needs its reference */
-        if (!(out->det[q] > 0) || !isfinite(out->det[q]))
+        if (!(det[q] > 0) || !isfinite(det[q]))
             return sf_seterr(err, errlen, SF_EINVAL,
                              "the deterministic reference has no %s in [t_skip, T] (%s = %g): raise T",
                              s->qoi_def == SF_QOI_PAPER ? "oscillation or no stick" : "complete cycle",
-                             qname[q], out->det[q]);
+                             qname[q], det[q]);
+    return SF_SUCCESS;
+}
+
+int sf_sweep_run(const sf_scene *s, size_t n, int threads, const char *checkpoint, int resume,
+                 const char *label, sf_sweep_point *out, char *err, size_t errlen)
+{
+    memset(out, 0, sizeof *out);
+    /* the deterministic reference, same definitions */
+    int rc = sf_sweep_det(s, out->det, err, errlen);
+    if (rc)
+        return rc;
     out->n = n;
     out->qoi = sf_calloc(n * SF_SWEEP_NQ, sizeof *out->qoi);
     out->ratio = sf_calloc(n * SF_SWEEP_NQ, sizeof *out->ratio);
