@@ -136,6 +136,9 @@ int sf_sens_run(const sf_scene *base, const sf_sens_ranges *r, size_t n, size_t 
     rc = SF_ENOMEM;
     if (!S->x || !S->y)
         goto fail;
+    for (int q = 0; q < SF_SWEEP_NQ; q++)
+        if (!(S->boot[q] = sf_malloc((nboot ? nboot : 1) * 2 * SF_SENS_D * sizeof *S->boot[q])))
+            goto fail;
     ctx_t c = { base, r, S->D, S->x, NULL };
     sf_mc_spec spec = { ne, NOUT, base->seed, threads, NULL, 0, 0, label };
     sf_mc_ops ops = { ws_alloc, ws_free, evaluate };
@@ -146,7 +149,7 @@ int sf_sens_run(const sf_scene *base, const sf_sens_ranges *r, size_t n, size_t 
     }
     for (int q = 0; q < SF_SWEEP_NQ; q++)
         if ((rc = sf_sobol_estimate(S->D, S->y + q, NOUT, nboot, level, sf_mc_seed(base->seed, 2 * n + (size_t)q),
-                                    &S->res[q]))) {
+                                    &S->res[q], S->boot[q]))) {
             sf_seterr(err, errlen, rc, "%s: no indices: a constant ratio, or fewer than 2 rows whose runs are all "
                       "finite", qname[q]);
             goto fail;
@@ -165,6 +168,8 @@ void sf_sens_free(sf_sens *S)
     sf_sobol_design_free(S->D);
     free(S->x);
     free(S->y);
+    for (int q = 0; q < SF_SWEEP_NQ; q++)
+        free(S->boot[q]);
     free(S);
 }
 

@@ -61,6 +61,7 @@ typedef struct {
     double *x;               /* nevals x SF_SENS_NPAR: the parameters of each evaluation */
     double *y;               /* nevals x 2 SF_SWEEP_NQ: the ratios, then the QoIs in their units */
     sf_sobol_result res[SF_SWEEP_NQ];   /* of the ratios */
+    double *boot[SF_SWEEP_NQ];          /* their bootstrap resamples (sf_sobol_estimate's boot) */
 } sf_sens;
 
 /* The study of scene base (cof = field) over r with n rows: n (SF_SENS_D

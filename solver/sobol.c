@@ -94,7 +94,7 @@ static int indices(const sf_sobol_design *D, const double *y, size_t stride, con
 }
 
 int sf_sobol_estimate(const sf_sobol_design *D, const double *y, size_t stride, size_t nboot, double level,
-                      unsigned long seed, sf_sobol_result *res)
+                      unsigned long seed, sf_sobol_result *res, double *boot)
 {
     memset(res, 0, sizeof *res);
     if (!(level > 0 && level < 1))
@@ -137,8 +137,13 @@ int sf_sobol_estimate(const sf_sobol_design *D, const double *y, size_t stride, 
             bs[(2 * i) * nboot + nb] = u1[i];
             bs[(2 * i + 1) * nboot + nb] = ut[i];
         }
+        if (boot) {
+            memcpy(boot + nb * 2 * d, u1, d * sizeof *u1);
+            memcpy(boot + nb * 2 * d + d, ut, d * sizeof *ut);
+        }
         nb++;
     }
+    res->nboot_used = nb;
     double lo = 0.5 * (1 - level), hi = 0.5 * (1 + level);
     for (size_t i = 0; i < d; i++) {
         sf_sobol_index *x = &res->idx[i];

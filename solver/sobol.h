@@ -67,17 +67,21 @@ typedef struct {
 typedef struct {
     size_t n_used, n_excluded;      /* rows */
     double mean, var;               /* of f over A and B (var: n - 1 divisor over the 2 n_used values) */
-    size_t nboot;
+    size_t nboot, nboot_used;       /* resamples asked for, and those with V > 0 (the intervals') */
     double level;
     sf_sobol_index idx[SF_SOBOL_MAXD];
 } sf_sobol_result;
 
 /* The indices of one output: y[e stride] is f at evaluation e.  nboot
  * bootstrap resamples (0: no interval, NAN ends) at level in (0, 1).
+ * boot (NULL: not wanted) receives the resamples, nboot x 2d: row b holds
+ * S_1..S_d then S_T1..S_Td of resample b, for b < res->nboot_used (a
+ * statistic of several indices, e.g. a difference, has its interval from
+ * these paired rows).
  * SF_EINVAL for a bad level or fewer than 2 usable rows; SF_EFAIL when
  * V is 0 (a constant output has no indices); SF_ENOMEM. */
 int sf_sobol_estimate(const sf_sobol_design *D, const double *y, size_t stride, size_t nboot, double level,
-                      unsigned long seed, sf_sobol_result *res);
+                      unsigned long seed, sf_sobol_result *res, double *boot);
 
 #ifdef __cplusplus
 }

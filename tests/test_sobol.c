@@ -13,6 +13,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <gsl/gsl_sort.h>
+#include <gsl/gsl_statistics_double.h>
 
 static sf_sobol_design *design(size_t n, size_t d, unsigned long seed)
 {
@@ -74,12 +76,12 @@ static void refusals(void **state)
     sf_sobol_result r;
     for (int e = 0; e < 32; e++)
         y[e] = 2.5;
-    assert_int_equal(sf_sobol_estimate(D, y, 1, 10, 0.95, 1, &r), SF_EFAIL);   /* constant: no V */
-    assert_int_equal(sf_sobol_estimate(D, y, 1, 10, 1.0, 1, &r), SF_EINVAL);
-    assert_int_equal(sf_sobol_estimate(D, y, 1, 10, NAN, 1, &r), SF_EINVAL);
+    assert_int_equal(sf_sobol_estimate(D, y, 1, 10, 0.95, 1, &r, NULL), SF_EFAIL);   /* constant: no V */
+    assert_int_equal(sf_sobol_estimate(D, y, 1, 10, 1.0, 1, &r, NULL), SF_EINVAL);
+    assert_int_equal(sf_sobol_estimate(D, y, 1, 10, NAN, 1, &r, NULL), SF_EINVAL);
     for (int j = 0; j < 7; j++)   /* rows 0..6 excluded: one row left */
         y[2 * 8 + j] = NAN;
-    assert_int_equal(sf_sobol_estimate(D, y, 1, 10, 0.95, 1, &r), SF_EINVAL);
+    assert_int_equal(sf_sobol_estimate(D, y, 1, 10, 0.95, 1, &r, NULL), SF_EINVAL);
     assert_int_equal(r.n_used, 1);
     assert_int_equal(r.n_excluded, 7);
     sf_sobol_design_free(D);
@@ -94,7 +96,7 @@ static void exact_zeros(void **state)
     const double c[2] = { 3, 0 };
     double *y = linear(D, c);
     sf_sobol_result r;
-    assert_int_equal(sf_sobol_estimate(D, y, 1, 0, 0.9, 1, &r), SF_SUCCESS);
+    assert_int_equal(sf_sobol_estimate(D, y, 1, 0, 0.9, 1, &r, NULL), SF_SUCCESS);
     assert_true(r.idx[1].s1 == 0 && r.idx[1].st == 0);
     assert_true(isnan(r.idx[0].s1_lo) && isnan(r.idx[0].st_hi) && isnan(r.idx[0].s1_se));
     double t = 0;
@@ -122,7 +124,14 @@ static void linear_model(void **state)
     }
     y[2 * (3 * n + 5)] = NAN;   /* row 5 of A_B^(1) */
     sf_sobol_result r, r2;
-    assert_int_equal(sf_sobol_estimate(D, y, 2, 200, 0.95, 9, &r), SF_SUCCESS);
+    double *boot = malloc(200 * 6 * sizeof *boot), col[200];
+    assert_int_equal(sf_sobol_estimate(D, y, 2, 200, 0.95, 9, &r, boot), SF_SUCCESS);
+    assert_int_equal(r.nboot_used, 200);
+    for (int b = 0; b < 200; b++)   /* the paired resamples give the intervals: S_T2's */
+        col[b] = boot[b * 6 + 3 + 2];
+    gsl_sort(col, 1, 200);
+    assert_true(gsl_stats_quantile_from_sorted_data(col, 1, 200, 0.025) == r.idx[2].st_lo);
+    free(boot);
     assert_int_equal(r.n_used, n - 1);
     assert_int_equal(r.n_excluded, 1);
     assert_int_equal(r.nboot, 200);
@@ -135,9 +144,9 @@ static void linear_model(void **state)
         assert_true(x->s1_se > 0 && x->st_se > 0 && x->s1_se < 0.03 && x->st_se < 0.03);
     }
     /* same seed, same bits; another seed, other intervals, same estimates */
-    assert_int_equal(sf_sobol_estimate(D, y, 2, 200, 0.95, 9, &r2), SF_SUCCESS);
+    assert_int_equal(sf_sobol_estimate(D, y, 2, 200, 0.95, 9, &r2, NULL), SF_SUCCESS);
     assert_memory_equal(&r, &r2, sizeof r);
-    assert_int_equal(sf_sobol_estimate(D, y, 2, 200, 0.95, 10, &r2), SF_SUCCESS);
+    assert_int_equal(sf_sobol_estimate(D, y, 2, 200, 0.95, 10, &r2, NULL), SF_SUCCESS);
     assert_true(r2.idx[0].s1 == r.idx[0].s1 && r2.idx[0].s1_lo != r.idx[0].s1_lo);
     free(y);
     free(y1);
@@ -152,10 +161,10 @@ static void degenerate_resamples(void **state)
     sf_sobol_design *D = design(2, 1, 5);
     double y[6] = { 1, 4, 1, 0, 2, 3 };   /* A: 1 4, B: 1 0, A_B: 2 3 */
     sf_sobol_result r;
-    assert_int_equal(sf_sobol_estimate(D, y, 1, 50, 0.95, 3, &r), SF_SUCCESS);
+    assert_int_equal(sf_sobol_estimate(D, y, 1, 50, 0.95, 3, &r, NULL), SF_SUCCESS);
     assert_true(isfinite(r.idx[0].s1_lo) && r.idx[0].s1_lo <= r.idx[0].s1_hi);
     /* nboot = 1: fewer than 2 resamples, no interval */
-    assert_int_equal(sf_sobol_estimate(D, y, 1, 1, 0.95, 3, &r), SF_SUCCESS);
+    assert_int_equal(sf_sobol_estimate(D, y, 1, 1, 0.95, 3, &r, NULL), SF_SUCCESS);
     assert_true(isnan(r.idx[0].st_lo));
     sf_sobol_design_free(D);
 }
