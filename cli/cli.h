@@ -59,5 +59,6 @@ int sf_cmd_surface(int argc, char **argv);
 int sf_cmd_wrench(int argc, char **argv);
 int sf_cmd_run(int argc, char **argv);
 int sf_cmd_sweep(int argc, char **argv);
+int sf_cmd_sensitivity(int argc, char **argv);
 
 #endif

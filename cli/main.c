@@ -28,6 +28,7 @@ static const command commands[] = {
     { "field", sf_cmd_field, "sample lognormal COF random fields to TSV" },
     { "run", sf_cmd_run, "integrate the stick-slip oscillator: history TSV and QoI summary" },
     { "sweep", sf_cmd_sweep, "Monte Carlo sweep over a parameter: QoI ratios to the deterministic model" },
+    { "sensitivity", sf_cmd_sensitivity, "Sobol' indices of the QoI ratios over l/R, CV, v_b and the mean COF" },
     { "surface", sf_cmd_surface, "the static limit surface (Eq. 11) to TSV" },
     { "wrench", sf_cmd_wrench, "the friction force and torque at one motion (Eqs. 7-8)" },
     { "help", cmd_help, "help on a command or on scene keys: 'slipfield help run', 'help scene'" },
@@ -40,7 +41,7 @@ static void usage(FILE *f)
                "Stick-slip oscillator with a random-field friction coefficient, and its\n"
                "verification suite (Hu, Batou & Ouyang, MSSP 183 (2023) 109572).\n\ncommands:\n");
     for (size_t i = 0; i < NCMD; i++)
-        fprintf(f, "  %-8s %s\n", commands[i].name, commands[i].summary);
+        fprintf(f, "  %-11s %s\n", commands[i].name, commands[i].summary);
     fprintf(f, "\noptions:\n"
                "  -h, --help  this text ('slipfield help COMMAND' or 'slipfield COMMAND --help':\n"
                "              a command's options)\n"

@@ -146,8 +146,26 @@ rm -f cut.tsv.ckpt0   # (a different sweep follows: its checkpoint would not mat
 expect 0 "left by an interrupted run" $sweep --realisations 3 --resume --values 2
 [ -z "$(ls | grep 'cut\.tsv\.tmp')" ] && ok || bad "--resume left: $(ls | grep 'cut\.tsv\.tmp')"
 
+# ---- sensitivity: refusals leave nothing; bytes do not depend on the threads ---
+printf 'cof = field\nT = 20\nt_skip = 2\ncells = 6\nrtol = 1e-6\nstrip_halfwidth = 0.05\n' > sa.scene
+narrow="--log-lr -0.3,-0.2 --cv 0.15,0.25 --vb 0.2,0.25 --mu 0.45,0.55 --bootstrap 20"
+expect 2 "--rows takes a whole number from 2" "$bin" sensitivity sa.scene --rows 1 --out sa.tsv
+expect 2 "--level must be in (0, 1)" "$bin" sensitivity sa.scene --rows 2 --level 1.5 --out sa.tsv
+expect 2 "expected a range LO,HI" "$bin" sensitivity sa.scene --rows 2 --cv 0.3,0.1 --out sa.tsv
+expect 2 "expected a range LO,HI" "$bin" sensitivity sa.scene --rows 2 --vb 0.1 --out sa.tsv
+expect 2 "mu_mean: the range must be positive" "$bin" sensitivity sa.scene --rows 2 --mu 0,1 --out sa.tsv
+expect 2 "--rows and --out are required" "$bin" sensitivity sa.scene --rows 2
+expect 2 "needs cof = field" "$bin" sensitivity sw.scene --rows 2 --out sa.tsv
+printf 'cof = field\nT = 1.5\nt_skip = 1\n' > sshort.scene
+expect 2 "raise T" "$bin" sensitivity sshort.scene --rows 2 $narrow --out sa.tsv
+[ ! -e sa.tsv ] && [ -z "$(ls | grep 'sa\.tsv')" ] && ok || bad "a refused sensitivity study left $(ls | grep sa.tsv)"
+expect 0 "" "$bin" sensitivity sa.scene --rows 2 $narrow --threads 1 --out sa1.tsv --evals se1.tsv
+expect 0 "" "$bin" sensitivity sa.scene --rows 2 $narrow --threads 2 --out sa2.tsv --evals se2.tsv
+cmp -s sa1.tsv sa2.tsv && cmp -s se1.tsv se2.tsv && [ "$(wc -l < sa1.tsv)" -eq 16 ] && [ "$(wc -l < se1.tsv)" -eq 15 ] \
+    && ok || bad "sensitivity: 1 and 2 threads differ, or rows missing ($(wc -l < sa1.tsv), $(wc -l < se1.tsv))"
+
 # ---- help -------------------------------------------------------------------
-for c in verify field run sweep surface wrench; do
+for c in verify field run sweep sensitivity surface wrench; do
     expect 0 "" "$bin" help $c
     grep -q "^usage: slipfield $c" "$tmp/out" && ok || bad "help $c: $(head -1 "$tmp/out")"
 done

@@ -160,6 +160,15 @@ A Monte Carlo sweep over the correlation length, resumable:
 .ft R
 .fi
 .PP
+First-order and total Sobol' indices of the QoI ratios over l/R, the COF's
+CV, v_b and the mean COF (448 runs):
+.PP
+.nf
+.ft CR
+    slipfield sensitivity examples/disc.scene \-\-rows 64 \-\-out sobol.tsv
+.ft R
+.fi
+.PP
 Run verification cases, writing the reports to a folder of your own:
 .PP
 .nf

@@ -74,17 +74,19 @@ void sf_sweep_ws_free(void *p)
     free(w);
 }
 
-static int realise(void *p, size_t i, gsl_rng *rng, double *out)
+/* one realisation: a COF drawn from plan, the run on the scene's plan pl
+ * (NULL: the oscillator plans it, the same bits), its QoIs into out and,
+ * with companion, C into out[SF_SWEEP_NQ] */
+static int realise_on(const sf_scene *s, const sf_plan *pl, sf_cof_plan *plan, int companion, gsl_rng *rng,
+                      double *out)
 {
-    sf_sweep_ws *w = p;
-    (void)i;
     sf_cof *cof;
-    int rc = sf_cof_plan_draw(w->plan, rng, &cof);
+    int rc = sf_cof_plan_draw(plan, rng, &cof);
     if (rc)
         return rc;
     sf_osc *o;
     sf_osc_result r;
-    rc = sf_osc_alloc_plan(w->s, w->pl, cof, &o, NULL, 0);
+    rc = pl ? sf_osc_alloc_plan(s, pl, cof, &o, NULL, 0) : sf_osc_alloc(s, cof, &o, NULL, 0);
     if (!rc) {
         rc = sf_osc_run(o, NULL, NULL, 0, &r, NULL, 0);
         out[SF_SWEEP_PVX] = r.pv_x;
@@ -92,20 +94,27 @@ static int realise(void *p, size_t i, gsl_rng *rng, double *out)
         out[SF_SWEEP_SF] = r.stick_fraction;
         sf_osc_result_free(&r);
         sf_osc_free(o);
-        if (w->companion)   /* after the run: its window stays where the run left it */
-            out[SF_SWEEP_NQ] = sf_sweep_companion(cof, w->s);
+        if (companion)   /* after the run: its window stays where the run left it */
+            out[SF_SWEEP_NQ] = sf_sweep_companion(cof, s);
     }
     sf_cof_free(cof);
     return rc;
 }
 
-/* n realisations, or two stages up to n with target_se > 0; with the
- * companion C of each (cv) */
-static int run(const sf_scene *s, size_t n, double target_se, size_t n_pilot, int cv, int threads,
-               const char *checkpoint, int resume, const char *label, sf_sweep_point *out, char *err, size_t errlen)
+int sf_sweep_realise(const sf_scene *s, sf_cof_plan *plan, gsl_rng *rng, double out[SF_SWEEP_NQ])
 {
-    memset(out, 0, sizeof *out);
-    /* the deterministic reference, same definitions */
+    return realise_on(s, NULL, plan, 0, rng, out);
+}
+
+static int realise(void *p, size_t i, gsl_rng *rng, double *out)
+{
+    sf_sweep_ws *w = p;
+    (void)i;
+    return realise_on(w->s, w->pl, w->plan, w->companion, rng, out);
+}
+
+int sf_sweep_det(const sf_scene *s, double det[SF_SWEEP_NQ], char *err, size_t errlen)
+{
     sf_scene d = *s;
     d.cof = SF_COF_UNIFORM;
     sf_cof *u;
@@ -123,16 +132,29 @@ static int run(const sf_scene *s, size_t n, double target_se, size_t n_pilot, in
         sf_osc_result_free(&r);
         return rc;
     }
-    out->det[SF_SWEEP_PVX] = r.pv_x;
-    out->det[SF_SWEEP_PVF] = r.pv_F;
-    out->det[SF_SWEEP_SF] = r.stick_fraction;
+    det[SF_SWEEP_PVX] = r.pv_x;
+    det[SF_SWEEP_PVF] = r.pv_F;
+    det[SF_SWEEP_SF] = r.stick_fraction;
     sf_osc_result_free(&r);
     for (int q = 0; q < SF_SWEEP_NQ; q++)   /* every ratio needs its reference */
-        if (!(out->det[q] > 0) || !isfinite(out->det[q]))
+        if (!(det[q] > 0) || !isfinite(det[q]))
             return sf_seterr(err, errlen, SF_EINVAL,
                              "the deterministic reference has no %s in [t_skip, T] (%s = %g): raise T",
                              s->qoi_def == SF_QOI_PAPER ? "oscillation or no stick" : "complete cycle",
-                             qname[q], out->det[q]);
+                             qname[q], det[q]);
+    return SF_SUCCESS;
+}
+
+/* n realisations, or two stages up to n with target_se > 0; with the
+ * companion C of each (cv) */
+static int run(const sf_scene *s, size_t n, double target_se, size_t n_pilot, int cv, int threads,
+               const char *checkpoint, int resume, const char *label, sf_sweep_point *out, char *err, size_t errlen)
+{
+    memset(out, 0, sizeof *out);
+    /* the deterministic reference, same definitions */
+    int rc = sf_sweep_det(s, out->det, err, errlen);
+    if (rc)
+        return rc;
     out->n = n;
     out->qoi = sf_calloc(n * SF_SWEEP_NQ, sizeof *out->qoi);
     out->ratio = sf_calloc(n * SF_SWEEP_NQ, sizeof *out->ratio);

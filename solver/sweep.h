@@ -21,6 +21,8 @@ extern "C" {
 
 #include <stddef.h>
 #include <stdio.h>
+#include <gsl/gsl_rng.h>
+#include "cof.h"
 #include "scene.h"
 #include "cof.h"
 
@@ -111,6 +113,15 @@ void sf_sweep_ws_free(void *ws);
 
 /* Apply parameter `name` = value to s (SF_EPARSE with the reason). */
 int sf_sweep_set(sf_scene *s, const char *name, double value, char *err, size_t errlen);
+
+/* The deterministic reference of s (uniform COF at mu_mean, same T,
+ * t_skip, eps_lambda and stepper): det[q] for each QoI.  SF_EINVAL with the
+ * reason when one is not positive (no ratio can be formed: raise T). */
+int sf_sweep_det(const sf_scene *s, double det[SF_SWEEP_NQ], char *err, size_t errlen);
+
+/* One realisation of s: a COF drawn from plan (made for s) with rng, the
+ * run, its QoIs (pv_x [m], pv_F [N], stick fraction [-]) into out. */
+int sf_sweep_realise(const sf_scene *s, sf_cof_plan *plan, gsl_rng *rng, double out[SF_SWEEP_NQ]);
 
 /* Run one sweep point. checkpoint may be NULL. threads 0: default. */
 int sf_sweep_run(const sf_scene *s, size_t n, int threads, const char *checkpoint, int resume,

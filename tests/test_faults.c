@@ -22,7 +22,9 @@
 #include "qoi.h"
 #include "scene.h"
 #include "sf_alloc.h"
+#include "sensitivity.h"
 #include "sf_error.h"
+#include "sobol.h"
 #include "surface.h"
 #include "sweep.h"
 #include "mcstop.h"
@@ -694,6 +696,74 @@ static void unum_sweeps(void **state)
     sf_sweep_point_free(&pt);
 }
 
+/* ---- Sobol' indices */
+
+static int sobol_design(void *ctx)
+{
+    (void)ctx;
+    gsl_rng *g = gsl_rng_alloc(gsl_rng_mt19937);
+    sf_sobol_design *D = (sf_sobol_design *)1;
+    int rc = sf_sobol_design_alloc(4, 2, g, &D);
+    gsl_rng_free(g);
+    if (rc)
+        assert_null(D);
+    sf_sobol_design_free(D);
+    return rc;
+}
+
+static int sobol_estimate(void *ctx)
+{
+    const sf_sobol_design *D = ctx;
+    double y[16];
+    for (int e = 0; e < 16; e++)
+        y[e] = sin(e);
+    sf_sobol_result r;
+    return sf_sobol_estimate(D, y, 1, 5, 0.9, 1, &r, NULL);
+}
+
+static int sens(void *ctx)
+{
+    sf_sens_ranges r;
+    sf_sens_ranges_default(&r);
+    r.lo[SF_SENS_LOGLR] = 2;   /* one COF value per run: cheap runs */
+    r.hi[SF_SENS_LOGLR] = 2.1;
+    sf_sens *S = (sf_sens *)1;
+    char err[300];
+    int rc = sf_sens_run(ctx, &r, 2, 4, 0.9, 1, NULL, &S, err, sizeof err);
+    if (rc)
+        assert_null(S);
+    sf_sens_free(S);
+    return rc;
+}
+
+static void sobol(void **state)
+{
+    (void)state;
+    assert_int_equal(walk("sf_sobol_design_alloc", sobol_design, NULL, SF_SUCCESS, 0), 3);
+    gsl_rng *g = gsl_rng_alloc(gsl_rng_mt19937);
+    sf_sobol_design *D;
+    assert_int_equal(sf_sobol_design_alloc(4, 2, g, &D), SF_SUCCESS);
+    gsl_rng_free(g);
+    assert_int_equal(walk("sf_sobol_estimate", sobol_estimate, D, SF_SUCCESS, 0), 5);
+    sf_sobol_design_free(D);
+    sf_scene s;
+    sf_scene_default(&s);
+    s.cof = SF_COF_FIELD;
+    s.T = 60;
+    s.t_skip = 1;
+    /* the study's own allocations and its first runs' (a full walk would
+     * repeat the 14 runs some 1500 times: each run's own allocations are
+     * walked by the oscillator's and the plan's walks above) */
+    for (long k = 0; k < 40; k++) {
+        sf_fault_arm(k);
+        int rc = sens(&s);
+        assert_true(sf_fault_fired());
+        assert_int_equal(rc, SF_ENOMEM);
+    }
+    sf_fault_arm(-1);
+    assert_int_equal(sens(&s), SF_SUCCESS);
+}
+
 /* ---- the periodogram, text files */
 
 static int periodogram(void *ctx)
@@ -743,6 +813,7 @@ int main(void)
         cmocka_unit_test(montecarlo),
         cmocka_unit_test(sweeps),
         cmocka_unit_test(unum_sweeps),
+        cmocka_unit_test(sobol),
         cmocka_unit_test(misc),
     };
     return cmocka_run_group_tests_name("faults", tests, NULL, NULL);

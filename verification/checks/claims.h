@@ -90,5 +90,6 @@ extern const claim_spec claims_vb[];     /* Figs. 12, 16(b): the belt speed */
 extern const claim_spec claims_mu[];     /* Figs. 13, 16(c): the mean COF at fixed CV */
 extern const claim_spec claims_fig15[];  /* Fig. 15: the spectra */
 extern const claim_spec claims_fig3[];   /* Fig. 3: the fields */
+extern const claim_spec claims_sobol[];  /* the abstract's "dominantly responsible": Sobol' indices */
 
 #endif

@@ -1,0 +1,84 @@
+/* slipfield: Sobol' indices of the QoI ratios over the model's parameters
+ * (sobol.h estimators, sweep.h QoIs).
+ *
+ * Inputs, independent and uniform on their ranges: log10 l/R, the COF's
+ * CV (mu_std = CV mu_mean), the belt speed v_b [m/s], the mean COF
+ * mu_mean; and the random field itself as a fifth input.  The field is
+ * keyed by the design's row (sf_sobol_source_row): evaluation e draws its
+ * field from the stream sf_mc_seed(seed, r), r the row its field column
+ * comes from, so A_B^(i) for a parameter i sees A's field (as A's other
+ * inputs) and A_B^(field) sees B's.  The map from stream to field depends
+ * on the parameters (the plan's grid does), which is no matter: f(x, r)
+ * is a fixed function of independent inputs and the decomposition holds.
+ * Every index is then of the same variance, the field's included: S_field
+ * is what the field alone explains, 1 - sum S_i what the field and the
+ * interactions do.
+ *
+ * QoIs: the ratios of PV_x, PV_F and the stick fraction to the
+ * deterministic reference at the same parameters (sf_sweep_det: uniform
+ * COF at mu_mean, same v_b, T, t_skip), as `slipfield sweep` defines them.
+ * The evaluations run through sf_mc_run: bit-identical for any thread
+ * count.
+ */
+#ifndef SF_SENSITIVITY_H
+#define SF_SENSITIVITY_H
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#include <stddef.h>
+#include <stdio.h>
+#include "scene.h"
+#include "sobol.h"
+#include "sweep.h"
+
+enum { SF_SENS_LOGLR = 0, SF_SENS_CV, SF_SENS_VB, SF_SENS_MU, SF_SENS_NPAR, SF_SENS_FIELD = SF_SENS_NPAR, SF_SENS_D };
+
+/* The name of input i ("log10_l_over_R", "cv", "v_b", "mu_mean", "field"). */
+const char *sf_sens_input_name(int i);
+
+/* The parameters' ranges [lo[i], hi[i]]. */
+typedef struct {
+    double lo[SF_SENS_NPAR], hi[SF_SENS_NPAR];
+} sf_sens_ranges;
+
+/* The paper's ranges: log10 l/R in [-2, 3] (Fig. 11's grid, 0.01 to
+ * 1000), CV in [0.1, 0.3] (the paper holds it at 0.2; 0.3 is where it
+ * bounds the Nataf map's use), v_b in [0.1, 0.6] m/s (Fig. 12), mu_mean
+ * in [0.2, 1] (Fig. 13). */
+void sf_sens_ranges_default(sf_sens_ranges *r);
+
+/* Check r: finite, lo < hi, CV and v_b and mu_mean positive.  SF_EINVAL
+ * with the reason. */
+int sf_sens_ranges_check(const sf_sens_ranges *r, char *err, size_t errlen);
+
+/* The scene of unit-cube point u (its first SF_SENS_NPAR entries), and
+ * the parameters x[SF_SENS_NPAR] it sets (log10 l/R, CV, v_b, mu_mean). */
+void sf_sens_scene(const sf_scene *base, const sf_sens_ranges *r, const double *u, sf_scene *s, double *x);
+
+typedef struct {
+    sf_sobol_design *D;      /* n rows, SF_SENS_D inputs */
+    double *x;               /* nevals x SF_SENS_NPAR: the parameters of each evaluation */
+    double *y;               /* nevals x 2 SF_SWEEP_NQ: the ratios, then the QoIs in their units */
+    sf_sobol_result res[SF_SWEEP_NQ];   /* of the ratios */
+    double *boot[SF_SWEEP_NQ];          /* their bootstrap resamples (sf_sobol_estimate's boot) */
+} sf_sens;
+
+/* The study of scene base (cof = field) over r with n rows: n (SF_SENS_D
+ * + 2) evaluations, then the indices of each ratio with nboot bootstrap
+ * resamples at level.  threads 0: OpenMP's default; label: progress on a
+ * terminal (NULL: none).  SF_EINVAL (bad ranges, n < 2, a scene without
+ * a field) or an evaluation's error, with err set. */
+int sf_sens_run(const sf_scene *base, const sf_sens_ranges *r, size_t n, size_t nboot, double level,
+                int threads, const char *label, sf_sens **out, char *err, size_t errlen);
+void sf_sens_free(sf_sens *S);
+
+/* The indices as TSV: a header, then one row per QoI and input. */
+void sf_sens_write_indices(FILE *f, const sf_sens *S);
+/* The evaluations as TSV: block, row, the parameters, the ratios, the QoIs. */
+void sf_sens_write_evals(FILE *f, const sf_sens *S);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

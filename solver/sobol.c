@@ -1,0 +1,174 @@
+#include "sobol.h"
+#include "sf_alloc.h"
+#include "sf_error.h"
+
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+#include <gsl/gsl_sort.h>
+#include <gsl/gsl_statistics_double.h>
+
+int sf_sobol_design_alloc(size_t n, size_t d, gsl_rng *rng, sf_sobol_design **out)
+{
+    *out = NULL;
+    if (n < 2 || d == 0 || d > SF_SOBOL_MAXD)
+        return SF_EINVAL;
+    if (n > SIZE_MAX / (d + 2) / sizeof(double))
+        return SF_ETOOBIG;
+    sf_sobol_design *D = sf_calloc(1, sizeof *D);
+    if (!D)
+        return SF_ENOMEM;
+    D->n = n;
+    D->d = d;
+    D->a = sf_malloc(n * d * sizeof *D->a);
+    D->b = sf_malloc(n * d * sizeof *D->b);
+    if (!D->a || !D->b) {
+        sf_sobol_design_free(D);
+        return SF_ENOMEM;
+    }
+    for (size_t k = 0; k < n * d; k++)
+        D->a[k] = gsl_rng_uniform(rng);
+    for (size_t k = 0; k < n * d; k++)
+        D->b[k] = gsl_rng_uniform(rng);
+    *out = D;
+    return SF_SUCCESS;
+}
+
+void sf_sobol_design_free(sf_sobol_design *D)
+{
+    if (!D)
+        return;
+    free(D->a);
+    free(D->b);
+    free(D);
+}
+
+size_t sf_sobol_nevals(const sf_sobol_design *D)
+{
+    return D->n * (D->d + 2);
+}
+
+void sf_sobol_point(const sf_sobol_design *D, size_t e, double *u)
+{
+    size_t k = e / D->n, j = e % D->n;
+    const double *a = D->a + j * D->d, *b = D->b + j * D->d;
+    memcpy(u, k == 1 ? b : a, D->d * sizeof *u);
+    if (k >= 2)
+        u[k - 2] = b[k - 2];
+}
+
+size_t sf_sobol_source_row(const sf_sobol_design *D, size_t e, size_t i)
+{
+    size_t k = e / D->n, j = e % D->n;
+    return k == 1 || k == 2 + i ? D->n + j : j;
+}
+
+/* The estimators over rows[0..m) (repeats allowed: a bootstrap resample);
+ * buf holds 2 m doubles.  SF_EFAIL when V = 0. */
+static int indices(const sf_sobol_design *D, const double *y, size_t stride, const size_t *rows, size_t m,
+                   double *buf, double *s1, double *st, double *mean, double *var)
+{
+    size_t n = D->n;
+#define Y(k, j) y[((k) * n + (j)) * stride]
+    for (size_t r = 0; r < m; r++) {
+        buf[r] = Y(0, rows[r]);
+        buf[m + r] = Y(1, rows[r]);
+    }
+    *mean = gsl_stats_mean(buf, 1, 2 * m);
+    *var = gsl_stats_variance_m(buf, 1, 2 * m, *mean);
+    if (!(*var > 0))
+        return SF_EFAIL;
+    for (size_t i = 0; i < D->d; i++) {
+        double f = 0, t = 0;
+        for (size_t r = 0; r < m; r++) {
+            double fa = Y(0, rows[r]), fb = Y(1, rows[r]), fi = Y(2 + i, rows[r]);
+            f += (fb - *mean) * (fi - fa);
+            t += (fa - fi) * (fa - fi);
+        }
+        s1[i] = f / (double)m / *var;
+        st[i] = t / (2.0 * (double)m) / *var;
+    }
+#undef Y
+    return SF_SUCCESS;
+}
+
+int sf_sobol_estimate(const sf_sobol_design *D, const double *y, size_t stride, size_t nboot, double level,
+                      unsigned long seed, sf_sobol_result *res, double *boot)
+{
+    memset(res, 0, sizeof *res);
+    if (!(level > 0 && level < 1))
+        return SF_EINVAL;
+    size_t n = D->n, d = D->d, m = 0;
+    size_t *rows = sf_malloc(n * sizeof *rows), *pick = sf_malloc(n * sizeof *pick);
+    double *buf = sf_malloc(2 * n * sizeof *buf);
+    double *bs = sf_malloc((nboot ? nboot : 1) * 2 * d * sizeof *bs);
+    gsl_rng *rng = SF_FALLIBLE(gsl_rng_alloc(gsl_rng_mt19937));
+    int rc = SF_ENOMEM;
+    if (!rows || !pick || !buf || !bs || !rng)
+        goto done;
+    for (size_t j = 0; j < n; j++) {
+        int ok = 1;
+        for (size_t k = 0; k < d + 2; k++)
+            ok = ok && isfinite(y[(k * n + j) * stride]);
+        if (ok)
+            rows[m++] = j;
+    }
+    res->n_used = m;
+    res->n_excluded = n - m;
+    res->nboot = nboot;
+    res->level = level;
+    rc = SF_EINVAL;
+    if (m < 2)
+        goto done;
+    double s1[SF_SOBOL_MAXD], st[SF_SOBOL_MAXD], mean, var;
+    if ((rc = indices(D, y, stride, rows, m, buf, s1, st, &res->mean, &res->var)))
+        goto done;
+    gsl_rng_set(rng, seed);
+    /* bs: the nboot values of S_i, then of S_Ti, per input (contiguous for the sort) */
+    size_t nb = 0;
+    for (size_t b = 0; b < nboot; b++) {
+        for (size_t r = 0; r < m; r++)
+            pick[r] = rows[gsl_rng_uniform_int(rng, m)];
+        double u1[SF_SOBOL_MAXD], ut[SF_SOBOL_MAXD];
+        if (indices(D, y, stride, pick, m, buf, u1, ut, &mean, &var))
+            continue;   /* a resample of constant values: no ratio (counted out of nb) */
+        for (size_t i = 0; i < d; i++) {
+            bs[(2 * i) * nboot + nb] = u1[i];
+            bs[(2 * i + 1) * nboot + nb] = ut[i];
+        }
+        if (boot) {
+            memcpy(boot + nb * 2 * d, u1, d * sizeof *u1);
+            memcpy(boot + nb * 2 * d + d, ut, d * sizeof *ut);
+        }
+        nb++;
+    }
+    res->nboot_used = nb;
+    double lo = 0.5 * (1 - level), hi = 0.5 * (1 + level);
+    for (size_t i = 0; i < d; i++) {
+        sf_sobol_index *x = &res->idx[i];
+        x->s1 = s1[i];
+        x->st = st[i];
+        double *v1 = bs + 2 * i * nboot, *vt = bs + (2 * i + 1) * nboot;
+        if (nb < 2) {
+            x->s1_lo = x->s1_hi = x->st_lo = x->st_hi = x->s1_se = x->st_se = NAN;
+            continue;
+        }
+        x->s1_se = gsl_stats_sd(v1, 1, nb);
+        x->st_se = gsl_stats_sd(vt, 1, nb);
+        gsl_sort(v1, 1, nb);
+        gsl_sort(vt, 1, nb);
+        x->s1_lo = gsl_stats_quantile_from_sorted_data(v1, 1, nb, lo);
+        x->s1_hi = gsl_stats_quantile_from_sorted_data(v1, 1, nb, hi);
+        x->st_lo = gsl_stats_quantile_from_sorted_data(vt, 1, nb, lo);
+        x->st_hi = gsl_stats_quantile_from_sorted_data(vt, 1, nb, hi);
+    }
+    rc = SF_SUCCESS;
+done:
+    gsl_rng_free(rng);
+    free(rows);
+    free(pick);
+    free(buf);
+    free(bs);
+    return rc;
+}

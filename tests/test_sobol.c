@@ -1,0 +1,325 @@
+/* Unit tests: the pick-freeze design and estimators (sobol.h) and the
+ * sensitivity study of the QoI ratios (sensitivity.h): the design's
+ * blocks, exact zeros of the estimators, a linear model's known indices,
+ * the bootstrap's intervals, excluded rows, every refusal, and a small
+ * study bit-identical on 1 and 2 threads. */
+#include "test_util.h"
+#include "sobol.h"
+#include "sensitivity.h"
+#include "sf_error.h"
+
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <gsl/gsl_sort.h>
+#include <gsl/gsl_statistics_double.h>
+
+static sf_sobol_design *design(size_t n, size_t d, unsigned long seed)
+{
+    gsl_rng *g = gsl_rng_alloc(gsl_rng_mt19937);
+    gsl_rng_set(g, seed);
+    sf_sobol_design *D;
+    assert_int_equal(sf_sobol_design_alloc(n, d, g, &D), SF_SUCCESS);
+    gsl_rng_free(g);
+    return D;
+}
+
+/* f = sum c_i u_i over every evaluation, stride 1 */
+static double *linear(const sf_sobol_design *D, const double *c)
+{
+    size_t ne = sf_sobol_nevals(D);
+    double *y = malloc(ne * sizeof *y), u[SF_SOBOL_MAXD];
+    for (size_t e = 0; e < ne; e++) {
+        sf_sobol_point(D, e, u);
+        y[e] = 0;
+        for (size_t i = 0; i < D->d; i++)
+            y[e] += c[i] * u[i];
+    }
+    return y;
+}
+
+static void blocks(void **state)
+{
+    (void)state;
+    sf_sobol_design *D = design(5, 3, 7);
+    assert_int_equal(sf_sobol_nevals(D), 25);
+    double u[3];
+    for (size_t e = 0; e < 25; e++) {
+        size_t k = e / 5, j = e % 5;
+        sf_sobol_point(D, e, u);
+        for (size_t i = 0; i < 3; i++) {
+            int from_b = k == 1 || k == 2 + i;
+            assert_true(u[i] == (from_b ? D->b : D->a)[j * 3 + i]);
+            assert_true(u[i] >= 0 && u[i] < 1);
+            assert_int_equal(sf_sobol_source_row(D, e, i), from_b ? 5 + j : j);
+        }
+    }
+    sf_sobol_design_free(D);
+    sf_sobol_design_free(NULL);
+}
+
+static void refusals(void **state)
+{
+    (void)state;
+    gsl_rng *g = gsl_rng_alloc(gsl_rng_mt19937);
+    sf_sobol_design *D = (sf_sobol_design *)1;
+    assert_int_equal(sf_sobol_design_alloc(1, 2, g, &D), SF_EINVAL);
+    assert_null(D);
+    assert_int_equal(sf_sobol_design_alloc(4, 0, g, &D), SF_EINVAL);
+    assert_int_equal(sf_sobol_design_alloc(4, SF_SOBOL_MAXD + 1, g, &D), SF_EINVAL);
+    assert_int_equal(sf_sobol_design_alloc(SIZE_MAX / 4, 3, g, &D), SF_ETOOBIG);
+    gsl_rng_free(g);
+    D = design(8, 2, 1);
+    double y[32];
+    sf_sobol_result r;
+    for (int e = 0; e < 32; e++)
+        y[e] = 2.5;
+    assert_int_equal(sf_sobol_estimate(D, y, 1, 10, 0.95, 1, &r, NULL), SF_EFAIL);   /* constant: no V */
+    assert_int_equal(sf_sobol_estimate(D, y, 1, 10, 1.0, 1, &r, NULL), SF_EINVAL);
+    assert_int_equal(sf_sobol_estimate(D, y, 1, 10, NAN, 1, &r, NULL), SF_EINVAL);
+    for (int j = 0; j < 7; j++)   /* rows 0..6 excluded: one row left */
+        y[2 * 8 + j] = NAN;
+    assert_int_equal(sf_sobol_estimate(D, y, 1, 10, 0.95, 1, &r, NULL), SF_EINVAL);
+    assert_int_equal(r.n_used, 1);
+    assert_int_equal(r.n_excluded, 7);
+    sf_sobol_design_free(D);
+}
+
+/* f = c0 u0: the other input's indices are exactly 0, and S_T0 is the
+ * Jansen sum itself */
+static void exact_zeros(void **state)
+{
+    (void)state;
+    sf_sobol_design *D = design(50, 2, 3);
+    const double c[2] = { 3, 0 };
+    double *y = linear(D, c);
+    sf_sobol_result r;
+    assert_int_equal(sf_sobol_estimate(D, y, 1, 0, 0.9, 1, &r, NULL), SF_SUCCESS);
+    assert_true(r.idx[1].s1 == 0 && r.idx[1].st == 0);
+    assert_true(isnan(r.idx[0].s1_lo) && isnan(r.idx[0].st_hi) && isnan(r.idx[0].s1_se));
+    double t = 0;
+    for (size_t j = 0; j < 50; j++)
+        t += (y[j] - y[100 + j]) * (y[j] - y[100 + j]);
+    assert_close(r.idx[0].st, t / 100 / r.var, 1e-14);
+    assert_int_equal(r.n_used, 50);
+    free(y);
+    sf_sobol_design_free(D);
+}
+
+/* f = sum c_i u_i: S_i = S_Ti = c_i^2 / sum c^2; bootstrap intervals
+ * around the estimates; a row with a NaN is excluded; every index on a
+ * strided column */
+static void linear_model(void **state)
+{
+    (void)state;
+    const size_t n = 4000;
+    sf_sobol_design *D = design(n, 3, 11);
+    const double c[3] = { 1, 2, 0.5 }, cc = 1 + 4 + 0.25;
+    double *y1 = linear(D, c), *y = malloc(2 * sf_sobol_nevals(D) * sizeof *y);
+    for (size_t e = 0; e < sf_sobol_nevals(D); e++) {
+        y[2 * e] = y1[e];
+        y[2 * e + 1] = -1;
+    }
+    y[2 * (3 * n + 5)] = NAN;   /* row 5 of A_B^(1) */
+    sf_sobol_result r, r2;
+    double *boot = malloc(200 * 6 * sizeof *boot), col[200];
+    assert_int_equal(sf_sobol_estimate(D, y, 2, 200, 0.95, 9, &r, boot), SF_SUCCESS);
+    assert_int_equal(r.nboot_used, 200);
+    for (int b = 0; b < 200; b++)   /* the paired resamples give the intervals: S_T2's */
+        col[b] = boot[b * 6 + 3 + 2];
+    gsl_sort(col, 1, 200);
+    assert_true(gsl_stats_quantile_from_sorted_data(col, 1, 200, 0.025) == r.idx[2].st_lo);
+    free(boot);
+    assert_int_equal(r.n_used, n - 1);
+    assert_int_equal(r.n_excluded, 1);
+    assert_int_equal(r.nboot, 200);
+    for (int i = 0; i < 3; i++) {
+        const sf_sobol_index *x = &r.idx[i];
+        assert_true(fabs(x->s1 - c[i] * c[i] / cc) < 5 * x->s1_se);
+        assert_true(fabs(x->st - c[i] * c[i] / cc) < 5 * x->st_se);
+        assert_true(x->s1_lo <= x->s1 && x->s1 <= x->s1_hi);
+        assert_true(x->st_lo <= x->st && x->st <= x->st_hi);
+        assert_true(x->s1_se > 0 && x->st_se > 0 && x->s1_se < 0.03 && x->st_se < 0.03);
+    }
+    /* same seed, same bits; another seed, other intervals, same estimates */
+    assert_int_equal(sf_sobol_estimate(D, y, 2, 200, 0.95, 9, &r2, NULL), SF_SUCCESS);
+    assert_memory_equal(&r, &r2, sizeof r);
+    assert_int_equal(sf_sobol_estimate(D, y, 2, 200, 0.95, 10, &r2, NULL), SF_SUCCESS);
+    assert_true(r2.idx[0].s1 == r.idx[0].s1 && r2.idx[0].s1_lo != r.idx[0].s1_lo);
+    free(y);
+    free(y1);
+    sf_sobol_design_free(D);
+}
+
+/* Two rows, one whose A and B values are equal: a resample that draws it
+ * twice has V = 0 and is left out of the intervals. */
+static void degenerate_resamples(void **state)
+{
+    (void)state;
+    sf_sobol_design *D = design(2, 1, 5);
+    double y[6] = { 1, 4, 1, 0, 2, 3 };   /* A: 1 4, B: 1 0, A_B: 2 3 */
+    sf_sobol_result r;
+    assert_int_equal(sf_sobol_estimate(D, y, 1, 50, 0.95, 3, &r, NULL), SF_SUCCESS);
+    assert_true(isfinite(r.idx[0].s1_lo) && r.idx[0].s1_lo <= r.idx[0].s1_hi);
+    /* nboot = 1: fewer than 2 resamples, no interval */
+    assert_int_equal(sf_sobol_estimate(D, y, 1, 1, 0.95, 3, &r, NULL), SF_SUCCESS);
+    assert_true(isnan(r.idx[0].st_lo));
+    sf_sobol_design_free(D);
+}
+
+/* ---- the study */
+
+static void small_scene(sf_scene *s)
+{
+    sf_scene_default(s);
+    s->cof = SF_COF_FIELD;
+    s->T = 20;
+    s->t_skip = 2;
+    s->strip_halfwidth = 0.05;
+    s->cells = 6;
+    s->rtol = 1e-6;
+}
+
+static void narrow(sf_sens_ranges *r)
+{
+    const double lo[SF_SENS_NPAR] = { -0.3, 0.15, 0.2, 0.45 }, hi[SF_SENS_NPAR] = { -0.2, 0.25, 0.25, 0.55 };
+    memcpy(r->lo, lo, sizeof lo);
+    memcpy(r->hi, hi, sizeof hi);
+}
+
+static void ranges(void **state)
+{
+    (void)state;
+    sf_sens_ranges r;
+    char err[200];
+    sf_sens_ranges_default(&r);
+    assert_int_equal(sf_sens_ranges_check(&r, err, sizeof err), SF_SUCCESS);
+    assert_true(r.lo[SF_SENS_LOGLR] == -2 && r.hi[SF_SENS_LOGLR] == 3 && r.hi[SF_SENS_VB] == 0.6);
+    r.lo[SF_SENS_LOGLR] = -5;   /* log10 l/R may be negative */
+    assert_int_equal(sf_sens_ranges_check(&r, err, sizeof err), SF_SUCCESS);
+    r.lo[SF_SENS_CV] = 0.4;
+    assert_int_equal(sf_sens_ranges_check(&r, err, sizeof err), SF_EINVAL);
+    assert_non_null(strstr(err, "cv"));
+    r.lo[SF_SENS_CV] = 0.1;
+    r.hi[SF_SENS_MU] = INFINITY;
+    assert_int_equal(sf_sens_ranges_check(&r, err, sizeof err), SF_EINVAL);
+    r.hi[SF_SENS_MU] = 1;
+    r.lo[SF_SENS_MU] = NAN;
+    assert_int_equal(sf_sens_ranges_check(&r, err, sizeof err), SF_EINVAL);
+    r.lo[SF_SENS_MU] = 0;
+    assert_int_equal(sf_sens_ranges_check(&r, err, sizeof err), SF_EINVAL);
+    assert_non_null(strstr(err, "positive"));
+    assert_string_equal(sf_sens_input_name(SF_SENS_FIELD), "field");
+    assert_string_equal(sf_sens_input_name(SF_SENS_LOGLR), "log10_l_over_R");
+    assert_string_equal(sf_sens_input_name(-1), "?");
+    assert_string_equal(sf_sens_input_name(SF_SENS_D), "?");
+    /* the scene of a point */
+    sf_sens_ranges_default(&r);
+    sf_scene b, s;
+    sf_scene_default(&b);
+    double u[SF_SENS_D] = { 0.6, 0.5, 0, 1, 0.3 }, x[SF_SENS_NPAR];
+    sf_sens_scene(&b, &r, u, &s, x);
+    assert_close(s.l / s.R, 10.0, 1e-14);
+    assert_close(s.mu_std / s.mu_mean, 0.2, 1e-14);
+    assert_true(s.v_b == 0.1 && s.mu_mean == 1 && x[SF_SENS_LOGLR] == 1 && x[SF_SENS_MU] == 1);
+}
+
+static void study_refusals(void **state)
+{
+    (void)state;
+    sf_scene s;
+    sf_sens_ranges r;
+    sf_sens *S = (sf_sens *)1;
+    char err[300];
+    small_scene(&s);
+    narrow(&r);
+    r.hi[SF_SENS_VB] = 0.1;
+    assert_int_equal(sf_sens_run(&s, &r, 2, 0, 0.95, 1, NULL, &S, err, sizeof err), SF_EINVAL);
+    assert_null(S);
+    narrow(&r);
+    s.cof = SF_COF_VARIABLE;
+    assert_int_equal(sf_sens_run(&s, &r, 2, 0, 0.95, 1, NULL, &S, err, sizeof err), SF_EINVAL);
+    assert_non_null(strstr(err, "cof = field"));
+    s.cof = SF_COF_FIELD;
+    assert_int_equal(sf_sens_run(&s, &r, 1, 0, 0.95, 1, NULL, &S, err, sizeof err), SF_EINVAL);
+    assert_int_equal(sf_sens_run(&s, &r, 2, 0, 0, 1, NULL, &S, err, sizeof err), SF_EINVAL);
+    /* a window without an oscillation: the deterministic reference fails */
+    s.T = 1.5;
+    assert_int_equal(sf_sens_run(&s, &r, 2, 0, 0.95, 1, NULL, &S, err, sizeof err), SF_EINVAL);
+    assert_non_null(strstr(err, "raise T"));
+    assert_null(S);
+    /* per-cycle QoIs on a short window: NaN ratios, every row excluded */
+    small_scene(&s);
+    s.qoi_def = SF_QOI_CYCLES;
+    s.T = 4;
+    s.t_skip = 3;
+    int rc = sf_sens_run(&s, &r, 2, 0, 0.95, 1, NULL, &S, err, sizeof err);
+    if (rc != SF_EINVAL)   /* (the reference itself may have no cycle: the same refusal) */
+        fail_msg("per-cycle run: %d %s", rc, err);
+    assert_null(S);
+    sf_sens_free(NULL);
+}
+
+static char *text_of(void (*w)(FILE *, const sf_sens *), const sf_sens *S)
+{
+    char *t = NULL;
+    size_t n = 0;
+    FILE *f = open_memstream(&t, &n);
+    w(f, S);
+    fclose(f);
+    return t;
+}
+
+static void study_threads(void **state)
+{
+    (void)state;
+    sf_scene s;
+    sf_sens_ranges r;
+    sf_sens *S1, *S2;
+    char err[300] = "";
+    small_scene(&s);
+    narrow(&r);
+    int rc = sf_sens_run(&s, &r, 3, 20, 0.9, 1, NULL, &S1, err, sizeof err);
+    if (rc)
+        fail_msg("%d: %s", rc, err);
+    assert_int_equal(sf_sens_run(&s, &r, 3, 20, 0.9, 2, NULL, &S2, err, sizeof err), SF_SUCCESS);
+    size_t ne = sf_sobol_nevals(S1->D);
+    assert_int_equal(ne, 21);
+    assert_memory_equal(S1->y, S2->y, ne * 2 * SF_SWEEP_NQ * sizeof *S1->y);
+    assert_memory_equal(S1->res, S2->res, sizeof S1->res);
+    /* the field input: A_B^(field) is A's parameters with B's field */
+    for (size_t j = 0; j < 3; j++) {
+        size_t e = (2 + SF_SENS_FIELD) * 3 + j;
+        assert_memory_equal(S1->x + e * SF_SENS_NPAR, S1->x + j * SF_SENS_NPAR, SF_SENS_NPAR * sizeof(double));
+        assert_true(S1->y[e * 2 * SF_SWEEP_NQ] != S1->y[j * 2 * SF_SWEEP_NQ]);
+        for (int q = 0; q < SF_SWEEP_NQ; q++)
+            assert_true(S1->y[j * 2 * SF_SWEEP_NQ + q] > 0);
+    }
+    char *a = text_of(sf_sens_write_indices, S1), *b = text_of(sf_sens_write_evals, S1);
+    assert_non_null(strstr(a, "qoi\tinput\tS1\tS1_ci90_lo"));
+    assert_non_null(strstr(a, "stick_fraction_ratio\tfield\t"));
+    assert_non_null(strstr(b, "\nAB_field\t2\t5\t"));
+    assert_non_null(strstr(b, "\nB\t0\t3\t"));
+    free(a);
+    free(b);
+    sf_sens_free(S1);
+    sf_sens_free(S2);
+}
+
+int main(void)
+{
+    sf_init();
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(blocks),
+        cmocka_unit_test(refusals),
+        cmocka_unit_test(exact_zeros),
+        cmocka_unit_test(linear_model),
+        cmocka_unit_test(degenerate_resamples),
+        cmocka_unit_test(ranges),
+        cmocka_unit_test(study_refusals),
+        cmocka_unit_test(study_threads),
+    };
+    return cmocka_run_group_tests_name("sobol", tests, NULL, NULL);
+}
