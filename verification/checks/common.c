@@ -10,6 +10,7 @@
 #include <string.h>
 #include <time.h>
 #include <gsl/gsl_blas.h>
+#include <gsl/gsl_fit.h>
 #include <gsl/gsl_linalg.h>
 #include <gsl/gsl_math.h>
 #include <gsl/gsl_sf_ellint.h>
@@ -282,6 +283,18 @@ double check_cpu_seconds(void)
     struct timespec ts;
     clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+double check_loglog_slope(const double *x, const double *y, size_t n)
+{
+    double lx[SF_LIST_MAX], ly[SF_LIST_MAX], c0, c1, a, b, c, ss;
+    if (n > SF_LIST_MAX)
+        return NAN;
+    for (size_t i = 0; i < n; i++) {
+        lx[i] = log(x[i]);
+        ly[i] = log(y[i]);
+    }
+    return gsl_fit_linear(lx, 1, ly, 1, n, &c0, &c1, &a, &b, &c, &ss) ? NAN : c1;
 }
 
 int check_osc_run(const sf_scene *s, gsl_rng *rng, const sf_cof *cof, double sample_dt, sf_osc_result *res,

@@ -129,6 +129,10 @@ sf_cof *check_case_cof(const sf_case *c, const sf_scene *s, sf_result *r);
  * check's own runs, for its report, whatever else the process runs. */
 double check_cpu_seconds(void);
 
+/* The least-squares slope of log y against log x over n <= SF_LIST_MAX
+ * points (an observed order of convergence); NaN when the fit fails. */
+double check_loglog_slope(const double *x, const double *y, size_t n);
+
 int check_osc_run(const sf_scene *s, gsl_rng *rng, const sf_cof *cof, double sample_dt, sf_osc_result *res,
                   sf_osc_row_fn row, void *ctx, sf_result *r);
 

@@ -30,7 +30,6 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <gsl/gsl_fit.h>
 #include <gsl/gsl_integration.h>
 #include <gsl/gsl_math.h>
 
@@ -219,16 +218,6 @@ static double state_error(const mms_ref *q, const double *y, const double *ys, d
     return e;
 }
 
-static double fit_slope(const double *x, const double *y, size_t n)
-{
-    double lx[SF_LIST_MAX], ly[SF_LIST_MAX], c0, c1, a, b, c, ss;
-    for (size_t i = 0; i < n; i++) {
-        lx[i] = log(x[i]);
-        ly[i] = log(y[i]);
-    }
-    return gsl_fit_linear(lx, 1, ly, 1, n, &c0, &c1, &a, &b, &c, &ss) ? NAN : c1;
-}
-
 /* the reference's own quadrature resolution (rings x angles) and the
  * doubled one its floor is measured against */
 #define REF_NR 16
@@ -381,7 +370,7 @@ static int chk_mms_slip(const sf_case *c, sf_result *r)
         sf_osc_free(o);
         size_t n = hl->n;
         finest_min = isnan(finest_min) || isnan(es[n - 1]) ? NAN : fmin(finest_min, es[n - 1]);
-        double slope = fit_slope(hs, es, n), last = log(es[n - 2] / es[n - 1]) / log(hs[n - 2] / hs[n - 1]);
+        double slope = check_loglog_slope(hs, es, n), last = log(es[n - 2] / es[n - 1]) / log(hs[n - 2] / hs[n - 1]);
         char qn[160], line[1024];
         snprintf(qn, sizeof qn, "%s: observed order (least squares, h = %g..%g s), not below %g - %g", names[k],
                  hs[0], hs[n - 1], order[k], ORDER_BELOW);
