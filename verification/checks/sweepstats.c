@@ -21,7 +21,7 @@
 #include <gsl/gsl_statistics_double.h>
 
 #define NQ SF_SWEEP_NQ
-#define MAXCOL 64
+#define MAXCOL 128   /* the summary has 71 columns (3 QoIs x 15, the design's and the control variate's) */
 static const char *const qn[NQ] = { "pv_x", "pv_F", "stick_fraction" };
 
 /* A TSV table read back: the header's names and the cells as numbers
@@ -51,6 +51,8 @@ static int table_read(const char *text, table *t)
             for (; c && k < MAXCOL; c = strtok_r(NULL, "\t", &s2), k++)
                 snprintf(t->name[k], sizeof t->name[k], "%s", c);
             t->ncol = k;
+            if (c)   /* more columns than the reader holds */
+                rc = SF_EPARSE;
             continue;
         }
         double *row = t->cell + t->nrow * MAXCOL;
