@@ -128,9 +128,9 @@ static double summary_field(const char *text, const char *col)
     char *head = strtok_r(t, "\n", &save1), *row = strtok_r(NULL, "\n", &save1);
     double v = NAN;
     char *h = strtok_r(head, "\t", &save2);
-    char *cells[64];
+    char *cells[128];
     size_t nc = 0;
-    for (char *c = strtok_r(row, "\t", &save1); c && nc < 64; c = strtok_r(NULL, "\t", &save1))
+    for (char *c = strtok_r(row, "\t", &save1); c && nc < 128; c = strtok_r(NULL, "\t", &save1))
         cells[nc++] = c;
     for (size_t k = 0; h && k < nc; k++, h = strtok_r(NULL, "\t", &save2))
         if (!strcmp(h, col))
