@@ -235,7 +235,34 @@ static void sweep_estimate(void **state)
         assert_true(e->bias == (u.qc[k] - u.q[k]) / (u.rho - 1) && e->bias != 0 && e->bias_se == 0);
         assert_true(e->u_mean == SF_UNUM_FS * fabs(e->bias));
         assert_memory_equal(&two[k], e, sizeof *e);
+        /* what it is made of, kept: realisations 0, 1's companions */
+        assert_true(p.num_m == 2 && p.num_qc[SF_SWEEP_NQ + k] == u.qc[k] && p.num_rho[1] == u.rho);
+        assert_true(p.num_apriori[0] == 0);
     }
+    /* num recomputed from what the point keeps: the same bits; nothing
+     * kept (or more than the point has): not estimated */
+    assert_int_equal(sf_unum_sweep_num(&p), SF_SUCCESS);
+    assert_memory_equal(two, p.num, sizeof two);
+    p.num_m = p.n + 1;
+    assert_int_equal(sf_unum_sweep_num(&p), SF_SUCCESS);
+    assert_true(p.num[0].n_sub == 0);
+    p.num_m = 2;
+    assert_int_equal(sf_unum_sweep_num(&p), SF_SUCCESS);
+    /* the per-realisation table carries the companions: realisation 1's
+     * row its pv_x_coarse .. unum_apriori, realisation 2's nan */
+    char *tv = NULL;
+    size_t tvlen = 0;
+    FILE *fv = open_memstream(&tv, &tvlen);
+    sf_sweep_write_header(fv);
+    sf_sweep_write_rows(fv, "T", 30, &p);
+    fclose(fv);
+    assert_non_null(strstr(tv, "\tstick_fraction[-]\tpv_x_coarse[m]\tpv_F_coarse[N]\tstick_fraction_coarse[-]\tunum_rho[-]"
+                               "\tunum_apriori[-]\n"));
+    char want[128];   /* realisation 1's row ends with rho and the a-priori 0 */
+    snprintf(want, sizeof want, "\t%.17g\t0\nT\t30\t2\t", u.rho);
+    assert_non_null(strstr(tv, want));
+    assert_non_null(strstr(tv, "\tnan\tnan\tnan\tnan\tnan\nT\t30\t3\t"));
+    free(tv);
     char *buf = NULL;
     size_t len = 0;
     FILE *f = open_memstream(&buf, &len);
@@ -261,7 +288,9 @@ static void sweep_estimate(void **state)
     s.dof = SF_DOF_1;   /* the 1-D model refuses a quadrature plan's companion: unestimated */
     s.cof = SF_COF_FIELD;
     assert_int_equal(sf_unum_sweep(&s, &p, 1, err, sizeof err), SF_EINVAL);
-    assert_true(p.num[0].n_sub == 0 && *err);
+    assert_true(p.num[0].n_sub == 0 && *err && !p.num_qc && !p.num_m);
+    assert_int_equal(sf_unum_sweep_num(&p), SF_SUCCESS);   /* nothing kept: not estimated */
+    assert_true(p.num[0].n_sub == 0);
     assert_int_equal(sf_unum_sweep(&s, &p, 1, NULL, 0), SF_EINVAL);   /* no message wanted */
     buf = NULL;
     f = open_memstream(&buf, &len);
