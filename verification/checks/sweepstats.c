@@ -409,6 +409,8 @@ static int chk_sweep_aggregation(const sf_case *c, sf_result *r)
     for (size_t k = 0; k < made && !rc; k++)
         for (int q = 0; q < NQ; q++)
             natural += pt[k].stat[q].n_excluded;
+    for (size_t k = 0; k < made && !rc; k++)   /* results.json and the report's sweep table */
+        check_sweep_record(r, c->spec.sweep_param, c->spec.sweep.v[k], &pt[k]);
     if (!rc && (rc = plant(&pt[K - 1], &pt[K])) == SF_SUCCESS)
         made++;
     /* the two tables, as `slipfield sweep --out --summary` writes them */
@@ -504,6 +506,12 @@ static int chk_sweep_aggregation(const sf_case *c, sf_result *r)
         sf_plot_band(pl, "printed interval", K + 1, x, lo, hi);
         sf_plot_series(pl, "printed mean", SF_STYLE_POINTS, K + 1, x, mr);
         sf_plot_series(pl, "sf_sweep_point mean", SF_STYLE_LINES, K + 1, x, mp);
+        for (size_t k = 0; k <= K; k++) {   /* the mean -+ its printed numerical error u_num_mean */
+            double u = cell(&ts, k, "pv_F_u_num_mean[N]", &miss);
+            lo[k] = mr[k] - u;
+            hi[k] = mr[k] + u;
+        }
+        sf_plot_errorbars(pl, "printed mean -+ u_num_mean (numerical error)", K + 1, x, mr, lo, hi);
         free(x); free(mp); free(mr); free(lo); free(hi);
     }
     table_free(&tv);
