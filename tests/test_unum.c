@@ -203,6 +203,24 @@ static void sweep_stats(void **state)
     assert_true(num.n_sub == 0 && isnan(num.bias));
 }
 
+/* point p's per-realisation table (summary 0) or summary as text, T = 30 */
+static char *table_text(const sf_sweep_point *p, int summary)
+{
+    char *buf = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&buf, &len);
+    assert_non_null(f);
+    if (summary) {
+        sf_sweep_summary_header(f);
+        sf_sweep_summary_row(f, "T", 30, p);
+    } else {
+        sf_sweep_write_header(f);
+        sf_sweep_write_rows(f, "T", 30, p);
+    }
+    fclose(f);
+    return buf;
+}
+
 /* a sweep point's estimate: on a uniform COF every realisation is the
  * same run, so the bias is that run's own estimate (Q_c - Q) / (rho - 1)
  * with standard error 0; the same bits at 1 and 2 threads; the summary
@@ -250,12 +268,7 @@ static void sweep_estimate(void **state)
     assert_int_equal(sf_unum_sweep_num(&p), SF_SUCCESS);
     /* the per-realisation table carries the companions: realisation 1's
      * row its pv_x_coarse .. unum_apriori, realisation 2's nan */
-    char *tv = NULL;
-    size_t tvlen = 0;
-    FILE *fv = open_memstream(&tv, &tvlen);
-    sf_sweep_write_header(fv);
-    sf_sweep_write_rows(fv, "T", 30, &p);
-    fclose(fv);
+    char *tv = table_text(&p, 0);
     assert_non_null(strstr(tv, "\tstick_fraction[-]\tpv_x_coarse[m]\tpv_F_coarse[N]\tstick_fraction_coarse[-]\tunum_rho[-]"
                                "\tunum_apriori[-]\n"));
     char want[128];   /* realisation 1's row ends with rho and the a-priori 0 */
@@ -263,12 +276,7 @@ static void sweep_estimate(void **state)
     assert_non_null(strstr(tv, want));
     assert_non_null(strstr(tv, "\tnan\tnan\tnan\tnan\tnan\nT\t30\t3\t"));
     free(tv);
-    char *buf = NULL;
-    size_t len = 0;
-    FILE *f = open_memstream(&buf, &len);
-    sf_sweep_summary_header(f);
-    sf_sweep_summary_row(f, "T", 30, &p);
-    fclose(f);
+    char *buf = table_text(&p, 1);
     assert_non_null(strstr(buf, "\tpv_F_u_num_mean[N]"));
     /* every numerical-error cell is estimated (the control variate's,
      * not asked for, are the row's only nan) */
@@ -292,10 +300,7 @@ static void sweep_estimate(void **state)
     assert_int_equal(sf_unum_sweep_num(&p), SF_SUCCESS);   /* nothing kept: not estimated */
     assert_true(p.num[0].n_sub == 0);
     assert_int_equal(sf_unum_sweep(&s, &p, 1, NULL, 0), SF_EINVAL);   /* no message wanted */
-    buf = NULL;
-    f = open_memstream(&buf, &len);
-    sf_sweep_summary_row(f, "T", 30, &p);
-    fclose(f);
+    buf = table_text(&p, 1);
     assert_non_null(strstr(buf, "\t0\tnan\tnan\tnan"));
     free(buf);
     p.n = 0;   /* an empty point: nothing to estimate */

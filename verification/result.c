@@ -386,49 +386,38 @@ static series *add_series(sf_plot *p, const char *label, int style, size_t n)
     return s;
 }
 
+/* A series' columns copied in (y2, y3 may be NULL: not that kind), each
+ * counted among the check's data. */
+static void fill(sf_plot *p, series *s, const double *x, const double *y, const double *y2, const double *y3)
+{
+    const double *src[4] = { x, y, y2, y3 };
+    double **dst[4] = { &s->x, &s->y, &s->y2, &s->y3 };
+    for (int k = 0; k < 4 && s->n; k++) {
+        if (!src[k])
+            continue;
+        if (!*dst[k])
+            *dst[k] = xrealloc(NULL, s->n * sizeof **dst[k]);
+        memcpy(*dst[k], src[k], s->n * sizeof *src[k]);
+        count_values(p->owner, s->label, s->n, src[k]);
+    }
+}
+
 void sf_plot_series(sf_plot *p, const char *label, int style, size_t n,
                     const double *x, const double *y)
 {
-    series *s = add_series(p, label, style, n);
-    if (n) {
-        memcpy(s->x, x, n * sizeof *x);
-        memcpy(s->y, y, n * sizeof *y);
-        count_values(p->owner, s->label, n, x);
-        count_values(p->owner, s->label, n, y);
-    }
+    fill(p, add_series(p, label, style, n), x, y, NULL, NULL);
 }
 
 void sf_plot_band(sf_plot *p, const char *label, size_t n, const double *x,
                   const double *lo, const double *hi)
 {
-    series *s = add_series(p, label, -1, n);
-    if (n) {
-        s->y2 = xrealloc(NULL, n * sizeof *s->y2);
-        memcpy(s->x, x, n * sizeof *x);
-        memcpy(s->y, lo, n * sizeof *lo);
-        memcpy(s->y2, hi, n * sizeof *hi);
-        count_values(p->owner, s->label, n, x);
-        count_values(p->owner, s->label, n, lo);
-        count_values(p->owner, s->label, n, hi);
-    }
+    fill(p, add_series(p, label, -1, n), x, lo, hi, NULL);
 }
 
 void sf_plot_errorbars(sf_plot *p, const char *label, size_t n, const double *x, const double *y,
                        const double *lo, const double *hi)
 {
-    series *s = add_series(p, label, -3, n);
-    if (n) {
-        s->y2 = xrealloc(NULL, n * sizeof *s->y2);
-        s->y3 = xrealloc(NULL, n * sizeof *s->y3);
-        memcpy(s->x, x, n * sizeof *x);
-        memcpy(s->y, y, n * sizeof *y);
-        memcpy(s->y2, lo, n * sizeof *lo);
-        memcpy(s->y3, hi, n * sizeof *hi);
-        count_values(p->owner, s->label, n, x);
-        count_values(p->owner, s->label, n, y);
-        count_values(p->owner, s->label, n, lo);
-        count_values(p->owner, s->label, n, hi);
-    }
+    fill(p, add_series(p, label, -3, n), x, y, lo, hi);
 }
 
 void sf_plot_hline(sf_plot *p, const char *label, double y)

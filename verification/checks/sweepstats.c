@@ -171,56 +171,65 @@ static void upd(double *w, double x)
         *w = x;
 }
 
-/* The recomputation of one (point, QoI) from the finite values of column
- * cx of the rows rows[0..n); printed values in the summary row srow. */
+/* The statistics of the finite values buf[0..used) (GSL): mean, sd, se,
+ * the Student interval [lo, hi] = mean -+ t se at level; scale max|x|,
+ * dscale max|x - mean| for the round-off allowances. */
 typedef struct {
-    double mean, sd, se, lo, hi;
+    double mean, sd, se, lo, hi, t;
     size_t used;
     double scale, dscale;   /* max |x|, max |x - mean| */
 } recomp;
 
-static recomp recompute(const table *tv, const size_t *rows, size_t n, int cx, double level, double *buf)
+static recomp stats_of(const double *buf, size_t used, double level)
 {
-    recomp o = { NAN, NAN, NAN, NAN, NAN, 0, 0, 0 };
-    for (size_t i = 0; i < n; i++) {
-        double x = tv->cell[rows[i] * MAXCOL + (size_t)cx];
-        if (isfinite(x))
-            buf[o.used++] = x;
-    }
-    if (!o.used)
+    recomp o = { NAN, NAN, NAN, NAN, NAN, NAN, used, 0, 0 };
+    if (!used)
         return o;
-    o.mean = gsl_stats_mean(buf, 1, o.used);
-    for (size_t i = 0; i < o.used; i++) {
+    o.mean = gsl_stats_mean(buf, 1, used);
+    for (size_t i = 0; i < used; i++) {
         o.scale = fmax(o.scale, fabs(buf[i]));
         o.dscale = fmax(o.dscale, fabs(buf[i] - o.mean));
     }
-    if (o.used > 1) {
-        o.sd = gsl_stats_sd(buf, 1, o.used);
-        o.se = o.sd / sqrt((double)o.used);
-        double t = gsl_cdf_tdist_Pinv(0.5 * (1 + level), (double)(o.used - 1));
-        o.lo = o.mean - t * o.se;
-        o.hi = o.mean + t * o.se;
+    if (used > 1) {
+        o.sd = gsl_stats_sd(buf, 1, used);
+        o.se = o.sd / sqrt((double)used);
+        o.t = gsl_cdf_tdist_Pinv(0.5 * (1 + level), (double)(used - 1));
+        o.lo = o.mean - o.t * o.se;
+        o.hi = o.mean + o.t * o.se;
     }
     return o;
+}
+
+/* The recomputation of one (point, QoI) from the finite values of column
+ * cx of the rows rows[0..n). */
+static recomp recompute(const table *tv, const size_t *rows, size_t n, int cx, double level, double *buf)
+{
+    size_t used = 0;
+    for (size_t i = 0; i < n; i++) {
+        double x = tv->cell[rows[i] * MAXCOL + (size_t)cx];
+        if (isfinite(x))
+            buf[used++] = x;
+    }
+    return stats_of(buf, used, level);
 }
 
 /* The numerical error of QoI column cx's mean over rows[0..n), from the
  * companion columns (ccx its QoI's, crho, capr): the realisations that
  * have a companion must be 0 .. m - 1, m = ceil(n / 4) but at least 2
  * (all of n < 2) as documented; e_i = (Q_c,i - Q_i) / (rho_i - 1), the
- * finite ones averaged (gsl_stats_mean, gsl_stats_sd / sqrt), u_num_mean
- * = 3 (|bias| + t se) + a-priori(row 0) |mean|, t Student's at (1 +
- * level) / 2 and used - 1 degrees of freedom. */
+ * finite ones' statistics (e: bias = e.mean, its se), u_num_mean = 3
+ * (|bias| + t se) + a-priori(row 0) |mean|. */
 typedef struct {
-    double bias, se, u, scale_b, scale_s, scale_u;
-    size_t used, sub, off_subset;
+    recomp e;
+    double u, scale_u;
+    size_t sub, off_subset;
 } renum;
 
 static renum recompute_num(const table *tv, const size_t *rows, size_t n, int cx, int ccx, int crho, int capr,
                            double mean, double mean_scale, double level, double *buf)
 {
-    renum o = { NAN, NAN, NAN, 0, 0, 0, 0, 0, 0 };
-    size_t want = n < 2 ? n : (n + 3) / 4 < 2 ? 2 : (n + 3) / 4;
+    renum o = { .u = NAN };
+    size_t want = n < 2 ? n : (n + 3) / 4 < 2 ? 2 : (n + 3) / 4, used = 0;
     double apr = NAN;
     for (size_t i = 0; i < n; i++) {
         const double *row = tv->cell + rows[i] * MAXCOL;
@@ -232,20 +241,12 @@ static renum recompute_num(const table *tv, const size_t *rows, size_t n, int cx
             apr = row[capr];
         double e = (row[ccx] - row[cx]) / (row[crho] - 1);
         if (isfinite(e))
-            buf[o.used++] = e;
+            buf[used++] = e;
     }
-    if (!o.used)
-        return o;
-    o.bias = gsl_stats_mean(buf, 1, o.used);
-    for (size_t i = 0; i < o.used; i++) {
-        o.scale_b = fmax(o.scale_b, fabs(buf[i]));
-        o.scale_s = fmax(o.scale_s, fabs(buf[i] - o.bias));
-    }
-    if (o.used > 1) {
-        o.se = gsl_stats_sd(buf, 1, o.used) / sqrt((double)o.used);
-        double t = gsl_cdf_tdist_Pinv(0.5 * (1 + level), (double)(o.used - 1));
-        o.u = FS * (fabs(o.bias) + t * o.se) + apr * fabs(mean);
-        o.scale_u = FS * (o.scale_b + t * o.scale_s) + fabs(apr) * mean_scale;
+    o.e = stats_of(buf, used, level);
+    if (used > 1) {
+        o.u = FS * (fabs(o.e.mean) + o.e.t * o.e.se) + apr * fabs(mean);
+        o.scale_u = FS * (o.e.scale + o.e.t * o.e.dscale) + fabs(apr) * mean_scale;
     }
     return o;
 }
@@ -314,18 +315,18 @@ static void compare_point(sf_result *r, const table *tv, const table *ts, size_t
          * and the reports read it) to round-off, the printed to its digits */
         const sf_sweep_num *num = &pt->num[q];
         upd(&w->num_rows, (double)e.off_subset + fabs((double)num->n_sub - (double)e.sub));
-        upd(&w->num_rows, fabs((double)num->n_used - (double)e.used));
-        upd(&w->num_rows, fabs(S("num_n%.0s") - (double)e.used));
+        upd(&w->num_rows, fabs((double)num->n_used - (double)e.e.used));
+        upd(&w->num_rows, fabs(S("num_n%.0s") - (double)e.e.used));
         int est = num->n_sub > 0;
-        upd(&w->num_bias, off(est ? num->bias : NAN, e.bias, e.used, e.scale_b));
-        upd(&w->num_se, off(est ? num->bias_se : NAN, e.se, e.used, e.scale_s));
-        upd(&w->num_u, off(est ? num->u_mean : NAN, e.u, e.used, e.scale_u));
-        upd(&w->num_printed, off3(S("num_bias[%s]"), e.bias, e.used, e.scale_b));
-        upd(&w->num_printed, off3(S("num_bias_se[%s]"), e.se, e.used, e.scale_s));
+        upd(&w->num_bias, off(est ? num->bias : NAN, e.e.mean, e.e.used, e.e.scale));
+        upd(&w->num_se, off(est ? num->bias_se : NAN, e.e.se, e.e.used, e.e.dscale));
+        upd(&w->num_u, off(est ? num->u_mean : NAN, e.u, e.e.used, e.scale_u));
+        upd(&w->num_printed, off3(S("num_bias[%s]"), e.e.mean, e.e.used, e.e.scale));
+        upd(&w->num_printed, off3(S("num_bias_se[%s]"), e.e.se, e.e.used, e.e.dscale));
         double u_printed = S("u_num_mean[%s]");
-        upd(&w->num_printed, off3(u_printed, e.u, e.used, e.scale_u));
-        w->num_compared += e.used;
-        w->num_excluded += e.sub - e.used;
+        upd(&w->num_printed, off3(u_printed, e.u, e.e.used, e.scale_u));
+        w->num_compared += e.e.used;
+        w->num_excluded += e.sub - e.e.used;
 #undef S
         /* what the validation cases read: sf_sweep_point's ratio statistics */
         upd(&w->rmean, off(pt->mean[q], b.mean, b.used, b.scale));
@@ -339,8 +340,8 @@ static void compare_point(sf_result *r, const table *tv, const table *ts, size_t
                 *maxratio = fmax(*maxratio, y);
         }
         sf_note(r, "| %s | %s | %.0f / %.0f | %.6g | %.6g | %.4g | %.4g | [%.6g, %.6g] | %.6g +- %.3g | %zu / %zu | %.3g | "
-                   "%.3g |", point, qn[q], used, excl, mean, a.mean, sd, se, a.lo, a.hi, rmean, rse, e.used, e.sub,
-                e.bias, u_printed);
+                   "%.3g |", point, qn[q], used, excl, mean, a.mean, sd, se, a.lo, a.hi, rmean, rse, e.e.used, e.sub,
+                e.e.mean, u_printed);
     }
     free(rows);
     free(buf);
@@ -513,6 +514,14 @@ static int chk_sweep_aggregation(const sf_case *c, sf_result *r)
         }
         sf_plot_errorbars(pl, "printed mean -+ u_num_mean (numerical error)", K + 1, x, mr, lo, hi);
         free(x); free(mp); free(mr); free(lo); free(hi);
+        /* the sweep's ratios as the validation cases plot them (the planted point aside) */
+        char xl[96];
+        snprintf(xl, sizeof xl, "%s [-]", c->spec.sweep_param);
+        sf_plot *pr = sf_result_plot(r, "ratios", "Ratio means: 95% Monte Carlo intervals and numerical errors", xl,
+                                     "ratio to the deterministic model [-]");
+        sf_plot_log(pr, 1, 0);
+        check_plot_sweep_bands(pr, K, c->spec.sweep.v, pt);
+        sf_plot_hline(pr, "1 (deterministic)", 1);
     }
     table_free(&tv);
     table_free(&ts);
