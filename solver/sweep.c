@@ -354,7 +354,7 @@ void sf_sweep_write_rows(FILE *f, const char *param, double value, const sf_swee
     sf_sweep_fmt(v, sizeof v, value);
     for (size_t i = 0; i < p->n; i++) {
         const double *r = p->ratio + i * SF_SWEEP_NQ, *x = p->qoi + i * SF_SWEEP_NQ;
-        int c = i < p->num_m && p->num_qc;
+        int c = i < p->num_m;   /* (num_m > 0: the companion arrays are held) */
         const double *qc = c ? p->num_qc + i * SF_SWEEP_NQ : NULL;
         fprintf(f, "%s\t%s\t%zu\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\n", param,
                 v, i, r[0], r[1], r[2], x[0], x[1], x[2], c ? qc[0] : NAN, c ? qc[1] : NAN, c ? qc[2] : NAN,

@@ -71,8 +71,9 @@ typedef struct {
      * setting, their QoIs num_qc (num_m x SF_SWEEP_NQ, in their units),
      * each companion's assumed error ratio num_rho and the plan's relative
      * a-priori cell-average error num_apriori (0 for the point model).
-     * The per-realisation table writes them, so num[] can be recomputed
-     * from it. */
+     * num_m > 0 exactly when the three arrays are held.  The
+     * per-realisation table writes them, so num[] can be recomputed from
+     * it. */
     size_t num_m;
     double *num_qc, *num_rho, *num_apriori;
     /* The design: a fixed N (n_pilot 0, stop SF_MCSTOP_FIXED), or two

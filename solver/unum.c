@@ -153,7 +153,7 @@ int sf_unum_sweep_num(sf_sweep_point *p)
 {
     memset(p->num, 0, sizeof p->num);
     size_t m = p->num_m;
-    if (!m || !p->num_qc || m > p->n)
+    if (!m || m > p->n)   /* (num_m > 0: the companion arrays are held) */
         return SF_SUCCESS;
     double *e = sf_malloc(m * sizeof *e);
     if (!e)
