@@ -29,7 +29,11 @@ static void usage(FILE *f)
           "  --out FILE        TSV: param value realisation, the ratios pv_x_ratio pv_F_ratio\n"
           "                    stick_fraction_ratio to the deterministic model (uniform COF\n"
           "                    at mu_mean, same T, t_skip and stepper), then pv_x [m],\n"
-          "                    pv_F [N], stick_fraction [-]\n"
+          "                    pv_F [N], stick_fraction [-]; with --summary, the companion\n"
+          "                    solve of u_num (below) of realisations 0 .. ceil(N/4) - 1:\n"
+          "                    its pv_x_coarse [m], pv_F_coarse [N], stick_fraction_coarse\n"
+          "                    [-], its assumed error ratio unum_rho and the plan's\n"
+          "                    a-priori relative error unum_apriori (nan for the others)\n"
           "  --summary FILE    TSV, one row per value: n, and per QoI the realisations\n"
           "                    used and excluded (a non-finite value is excluded, never\n"
           "                    averaged), mean, std (n - 1), standard error of the mean,\n"
@@ -243,10 +247,10 @@ int sf_cmd_sweep(int argc, char **argv)
                 fprintf(stderr, "slipfield sweep: %s = %g: the cap of %zu realisations is below what the pilot says "
                                 "--target-se %g needs: the interval is wider than the target\n",
                         param, v[k], n, target_se);
-            sf_sweep_write_rows(out.f, param, v[k], &p);
             if (sum_path && sf_unum_sweep(&s, &p, (int)threads, err, sizeof err))
                 fprintf(stderr, "slipfield sweep: %s = %g: warning: no numerical error of the means (its companion "
                                 "failed: %s)\n", param, v[k], err);
+            sf_sweep_write_rows(out.f, param, v[k], &p);   /* with the companions u_num_mean is made of */
             if (sum_path)
                 sf_sweep_summary_row(sum.f, param, v[k], &p);
         }

@@ -42,6 +42,20 @@ if validate "$work/a/results.json"; then ok "results.json validates against veri
 else bad "results.json does not validate"; fi
 grep -q 'results.json' "$work/a/index.md" && ok "the index links results.json" || bad "the index does not link results.json"
 
+# a sweep case's statistics per point and QoI (u_num not estimated there:
+# null, named in nonfinite), valid, and tabulated in its report
+"$bin" verify --reports "$work/s" cases/validation/fig10-convergence.md > "$work/s.log" 2>&1
+if validate "$work/s/results.json" && $py - "$work/s/results.json" <<'EOF'
+import json, sys
+sw = json.load(open(sys.argv[1]))["cases"][0]["sweep"]
+sys.exit(not (len(sw) == 3 and all(x["u_num"] is None and x["nonfinite"]["u_num"] == "nan"
+                                   and x["u_num_realisations"] == 0 and x["level"] == 0.95 for x in sw)))
+EOF
+then ok "a sweep case's results.json carries its points' statistics (u_num null: not estimated) and validates"
+else bad "a sweep case's results.json: no valid sweep statistics"; fi
+grep -q '^## Sweep statistics' "$work/s/validation/fig10-convergence/report.md" && ok "its report tabulates them" \
+    || bad "its report has no sweep table"
+
 "$bin" verify --reports "$work/b" --baseline "$work/a/results.json" $cases > "$work/b.log" 2>&1
 rc=$?
 [ $rc -eq 0 ] && ok "the same run against itself exits 0" || bad "the same run against itself exits $rc"

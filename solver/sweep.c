@@ -343,7 +343,9 @@ void sf_sweep_write_header(FILE *f)
     fputs("param\tvalue\trealisation\tpv_x_ratio\tpv_F_ratio\tstick_fraction_ratio", f);
     for (int q = 0; q < SF_SWEEP_NQ; q++)
         fprintf(f, "\t%s[%s]", qname[q], qunit[q]);
-    fputc('\n', f);
+    for (int q = 0; q < SF_SWEEP_NQ; q++)   /* u_num's companion (sf_unum_sweep) */
+        fprintf(f, "\t%s_coarse[%s]", qname[q], qunit[q]);
+    fputs("\tunum_rho[-]\tunum_apriori[-]\n", f);
 }
 
 void sf_sweep_write_rows(FILE *f, const char *param, double value, const sf_sweep_point *p)
@@ -352,8 +354,11 @@ void sf_sweep_write_rows(FILE *f, const char *param, double value, const sf_swee
     sf_sweep_fmt(v, sizeof v, value);
     for (size_t i = 0; i < p->n; i++) {
         const double *r = p->ratio + i * SF_SWEEP_NQ, *x = p->qoi + i * SF_SWEEP_NQ;
-        fprintf(f, "%s\t%s\t%zu\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\n", param, v, i, r[0], r[1], r[2], x[0],
-                x[1], x[2]);
+        int c = i < p->num_m;   /* (num_m > 0: the companion arrays are held) */
+        const double *qc = c ? p->num_qc + i * SF_SWEEP_NQ : NULL;
+        fprintf(f, "%s\t%s\t%zu\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\n", param,
+                v, i, r[0], r[1], r[2], x[0], x[1], x[2], c ? qc[0] : NAN, c ? qc[1] : NAN, c ? qc[2] : NAN,
+                c ? p->num_rho[i] : NAN, c ? p->num_apriori[i] : NAN);
     }
 }
 
@@ -409,5 +414,9 @@ void sf_sweep_point_free(sf_sweep_point *p)
     free(p->qoi);
     free(p->ratio);
     free(p->companion);
-    p->qoi = p->ratio = p->companion = NULL;
+    free(p->num_qc);
+    free(p->num_rho);
+    free(p->num_apriori);
+    p->qoi = p->ratio = p->companion = p->num_qc = p->num_rho = p->num_apriori = NULL;
+    p->num_m = 0;
 }

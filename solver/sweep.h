@@ -66,6 +66,16 @@ typedef struct {
     size_t n, from_checkpoint;
     size_t n_valid;             /* realisations whose every QoI is finite */
     sf_sweep_num num[SF_SWEEP_NQ];   /* numerical error of stat[q].mean (zero: not estimated) */
+    /* What num[] is made of (sf_unum_sweep; NULL and 0: not estimated):
+     * realisations 0 .. num_m - 1 solved again at the coarser companion
+     * setting, their QoIs num_qc (num_m x SF_SWEEP_NQ, in their units),
+     * each companion's assumed error ratio num_rho and the plan's relative
+     * a-priori cell-average error num_apriori (0 for the point model).
+     * num_m > 0 exactly when the three arrays are held.  The
+     * per-realisation table writes them, so num[] can be recomputed from
+     * it. */
+    size_t num_m;
+    double *num_qc, *num_rho, *num_apriori;
     /* The design: a fixed N (n_pilot 0, stop SF_MCSTOP_FIXED), or two
      * stages (mcstop.h: the first n_pilot realisations decide N; stop
      * says whether every target was met or N hit the cap).  [rci_lo,
@@ -163,7 +173,10 @@ void sf_sweep_fmt(char *buf, size_t len, double x);
 
 /* The sweep's two tables (TSV, a header line, then the rows of each
  * point): per realisation, and the summary per point.  `slipfield sweep`
- * writes them with --out and --summary. */
+ * writes them with --out and --summary.  A realisation's row ends with
+ * its companion's QoIs (pv_x_coarse[m], pv_F_coarse[N],
+ * stick_fraction_coarse[-]), rho (unum_rho[-]) and the a-priori relative
+ * error (unum_apriori[-]): nan where the realisation had no companion. */
 void sf_sweep_write_header(FILE *f);
 void sf_sweep_write_rows(FILE *f, const char *param, double value, const sf_sweep_point *p);
 void sf_sweep_summary_header(FILE *f);

@@ -116,9 +116,10 @@ int sf_unum_sweep_stats(const double *e, size_t stride, size_t m, double apriori
 }
 
 /* the companion of one realisation of a sweep point (ws: the sweep's
- * workspace, its data the sweep's values, n x SF_SWEEP_NQ): its signed
- * error estimates e_k (out[0..2]) and the plan's a-priori relative
- * cell-average error (out[3], 0 for the point model) */
+ * workspace, its data the sweep's values, n x SF_SWEEP_NQ): its QoIs
+ * (out[0..2]), its rho (out[3]) and the plan's a-priori relative
+ * cell-average error (out[4], 0 for the point model) */
+enum { UNUM_RHO = SF_UNUM_NQ, UNUM_APRIORI, UNUM_NOUT };
 static int unum_realise(void *p, size_t i, gsl_rng *rng, double *out)
 {
     sf_sweep_ws *w = p;
@@ -139,22 +140,54 @@ static int unum_realise(void *p, size_t i, gsl_rng *rng, double *out)
         sf_unum u;
         rc = sf_unum_estimate(w->s, cof, &np, &r, &u, NULL, 0);
         for (int k = 0; !rc && k < SF_UNUM_NQ; k++)
-            out[k] = (u.qc[k] - u.q[k]) / (u.rho - 1);
-        out[SF_UNUM_NQ] = u.cell_average ? np.err_quad : 0;
+            out[k] = u.qc[k];
+        out[UNUM_RHO] = u.rho;
+        out[UNUM_APRIORI] = u.cell_average ? np.err_quad : 0;
     }
     sf_osc_free(o);
     sf_cof_free(cof);
     return rc;
 }
 
-int sf_unum_sweep(const sf_scene *s, sf_sweep_point *p, int threads, char *err, size_t errlen)
+int sf_unum_sweep_num(sf_sweep_point *p)
 {
     memset(p->num, 0, sizeof p->num);
+    size_t m = p->num_m;
+    if (!m || m > p->n)   /* (num_m > 0: the companion arrays are held) */
+        return SF_SUCCESS;
+    double *e = sf_malloc(m * sizeof *e);
+    if (!e)
+        return SF_ENOMEM;
+    int rc = SF_SUCCESS;
+    for (int k = 0; !rc && k < SF_UNUM_NQ; k++) {
+        for (size_t i = 0; i < m; i++)   /* Richardson: the run's error from the companion's difference */
+            e[i] = (p->num_qc[i * SF_SWEEP_NQ + k] - p->qoi[i * SF_SWEEP_NQ + k]) / (p->num_rho[i] - 1);
+        rc = sf_unum_sweep_stats(e, 1, m, p->num_apriori[0] * fabs(p->stat[k].mean), &p->num[k]);
+    }
+    free(e);
+    if (rc)
+        memset(p->num, 0, sizeof p->num);
+    return rc;
+}
+
+/* p's companion arrays freed and zeroed (not estimated) */
+static void unum_clear(sf_sweep_point *p)
+{
+    free(p->num_qc);
+    free(p->num_rho);
+    free(p->num_apriori);
+    p->num_qc = p->num_rho = p->num_apriori = NULL;
+    p->num_m = 0;
+    memset(p->num, 0, sizeof p->num);
+}
+
+int sf_unum_sweep(const sf_scene *s, sf_sweep_point *p, int threads, char *err, size_t errlen)
+{
+    unum_clear(p);
     size_t m = sf_unum_sweep_subset(p->n);
     if (!m)
         return SF_SUCCESS;
-    enum { NOUT = SF_UNUM_NQ + 1 };
-    double *e = sf_calloc(m * NOUT, sizeof *e);
+    double *e = sf_calloc(m * UNUM_NOUT, sizeof *e);
     if (!e)
         return SF_ENOMEM;
     sf_plan pl;
@@ -165,17 +198,31 @@ int sf_unum_sweep(const sf_scene *s, sf_sweep_point *p, int threads, char *err, 
     }
     pl.history = 0;
     sf_sweep_ws ctx = { s, &pl, p->qoi, NULL, 0 };
-    sf_mc_spec spec = { m, NOUT, s->seed, threads, NULL, 0, 0, "u_num" };
+    sf_mc_spec spec = { m, UNUM_NOUT, s->seed, threads, NULL, 0, 0, "u_num" };
     sf_mc_ops ops = { sf_sweep_ws_alloc, sf_sweep_ws_free, unum_realise };
     if (err && errlen)
         *err = 0;
     rc = sf_mc_run(&spec, &ops, &ctx, e, NULL, err, errlen);
     if (rc && err && errlen && !*err)   /* a realisation's error comes without a message */
         snprintf(err, errlen, "a companion solve failed: %s", sf_strerror(rc));
-    for (int k = 0; !rc && k < SF_UNUM_NQ; k++)
-        rc = sf_unum_sweep_stats(e + k, NOUT, m, e[SF_UNUM_NQ] * fabs(p->stat[k].mean), &p->num[k]);
+    if (!rc) {
+        p->num_qc = sf_malloc(m * SF_SWEEP_NQ * sizeof *p->num_qc);
+        p->num_rho = sf_malloc(m * sizeof *p->num_rho);
+        p->num_apriori = sf_malloc(m * sizeof *p->num_apriori);
+        rc = p->num_qc && p->num_rho && p->num_apriori ? SF_SUCCESS : SF_ENOMEM;
+    }
+    for (size_t i = 0; !rc && i < m; i++) {
+        for (int k = 0; k < SF_UNUM_NQ; k++)
+            p->num_qc[i * SF_SWEEP_NQ + k] = e[i * UNUM_NOUT + k];
+        p->num_rho[i] = e[i * UNUM_NOUT + UNUM_RHO];
+        p->num_apriori[i] = e[i * UNUM_NOUT + UNUM_APRIORI];
+    }
     free(e);
+    if (!rc) {
+        p->num_m = m;
+        rc = sf_unum_sweep_num(p);
+    }
     if (rc)
-        memset(p->num, 0, sizeof p->num);
+        unum_clear(p);
     return rc;
 }

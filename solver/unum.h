@@ -84,10 +84,18 @@ void sf_unum_write(const sf_unum *u, FILE *f);
  * companion's run is bit-identical for any thread count (montecarlo.h). */
 size_t sf_unum_sweep_subset(size_t n);
 
-/* Fill p->num for the sweep point p of scene s (p->qoi, p->n, p->stat
- * from sf_sweep_run).  SF_SUCCESS, or the first companion's error code
- * with the reason in err (p->num is then left zero: not estimated). */
+/* Run the companions of the sweep point p of scene s (p->qoi, p->n,
+ * p->stat from sf_sweep_run), keep them (p->num_m, num_qc, num_rho,
+ * num_apriori: sweep.h) and fill p->num from them (sf_unum_sweep_num).
+ * SF_SUCCESS, or the first companion's error code with the reason in err
+ * (p->num is then left zero and no companion kept: not estimated). */
 int sf_unum_sweep(const sf_scene *s, sf_sweep_point *p, int threads, char *err, size_t errlen);
+
+/* p->num from the companions p keeps (and p->qoi, p->stat): per QoI the
+ * estimates e_i = (Q_c,i - Q_i) / (rho_i - 1) of realisations 0 .. num_m
+ * - 1 into sf_unum_sweep_stats, with the a-priori part num_apriori[0]
+ * |stat.mean|.  Zero when p keeps none.  SF_SUCCESS or SF_ENOMEM. */
+int sf_unum_sweep_num(sf_sweep_point *p);
 
 /* The statistics of one QoI's estimates e[0], e[stride], ... (m of them,
  * non-finite ones left out) into *num; apriori: the a-priori part added

@@ -203,6 +203,24 @@ static void sweep_stats(void **state)
     assert_true(num.n_sub == 0 && isnan(num.bias));
 }
 
+/* point p's per-realisation table (summary 0) or summary as text, T = 30 */
+static char *table_text(const sf_sweep_point *p, int summary)
+{
+    char *buf = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&buf, &len);
+    assert_non_null(f);
+    if (summary) {
+        sf_sweep_summary_header(f);
+        sf_sweep_summary_row(f, "T", 30, p);
+    } else {
+        sf_sweep_write_header(f);
+        sf_sweep_write_rows(f, "T", 30, p);
+    }
+    fclose(f);
+    return buf;
+}
+
 /* a sweep point's estimate: on a uniform COF every realisation is the
  * same run, so the bias is that run's own estimate (Q_c - Q) / (rho - 1)
  * with standard error 0; the same bits at 1 and 2 threads; the summary
@@ -235,13 +253,30 @@ static void sweep_estimate(void **state)
         assert_true(e->bias == (u.qc[k] - u.q[k]) / (u.rho - 1) && e->bias != 0 && e->bias_se == 0);
         assert_true(e->u_mean == SF_UNUM_FS * fabs(e->bias));
         assert_memory_equal(&two[k], e, sizeof *e);
+        /* what it is made of, kept: realisations 0, 1's companions */
+        assert_true(p.num_m == 2 && p.num_qc[SF_SWEEP_NQ + k] == u.qc[k] && p.num_rho[1] == u.rho);
+        assert_true(p.num_apriori[0] == 0);
     }
-    char *buf = NULL;
-    size_t len = 0;
-    FILE *f = open_memstream(&buf, &len);
-    sf_sweep_summary_header(f);
-    sf_sweep_summary_row(f, "T", 30, &p);
-    fclose(f);
+    /* num recomputed from what the point keeps: the same bits; nothing
+     * kept (or more than the point has): not estimated */
+    assert_int_equal(sf_unum_sweep_num(&p), SF_SUCCESS);
+    assert_memory_equal(two, p.num, sizeof two);
+    p.num_m = p.n + 1;
+    assert_int_equal(sf_unum_sweep_num(&p), SF_SUCCESS);
+    assert_true(p.num[0].n_sub == 0);
+    p.num_m = 2;
+    assert_int_equal(sf_unum_sweep_num(&p), SF_SUCCESS);
+    /* the per-realisation table carries the companions: realisation 1's
+     * row its pv_x_coarse .. unum_apriori, realisation 2's nan */
+    char *tv = table_text(&p, 0);
+    assert_non_null(strstr(tv, "\tstick_fraction[-]\tpv_x_coarse[m]\tpv_F_coarse[N]\tstick_fraction_coarse[-]\tunum_rho[-]"
+                               "\tunum_apriori[-]\n"));
+    char want[128];   /* realisation 1's row ends with rho and the a-priori 0 */
+    snprintf(want, sizeof want, "\t%.17g\t0\nT\t30\t2\t", u.rho);
+    assert_non_null(strstr(tv, want));
+    assert_non_null(strstr(tv, "\tnan\tnan\tnan\tnan\tnan\nT\t30\t3\t"));
+    free(tv);
+    char *buf = table_text(&p, 1);
     assert_non_null(strstr(buf, "\tpv_F_u_num_mean[N]"));
     /* every numerical-error cell is estimated (the control variate's,
      * not asked for, are the row's only nan) */
@@ -261,12 +296,11 @@ static void sweep_estimate(void **state)
     s.dof = SF_DOF_1;   /* the 1-D model refuses a quadrature plan's companion: unestimated */
     s.cof = SF_COF_FIELD;
     assert_int_equal(sf_unum_sweep(&s, &p, 1, err, sizeof err), SF_EINVAL);
-    assert_true(p.num[0].n_sub == 0 && *err);
+    assert_true(p.num[0].n_sub == 0 && *err && !p.num_qc && !p.num_m);
+    assert_int_equal(sf_unum_sweep_num(&p), SF_SUCCESS);   /* nothing kept: not estimated */
+    assert_true(p.num[0].n_sub == 0);
     assert_int_equal(sf_unum_sweep(&s, &p, 1, NULL, 0), SF_EINVAL);   /* no message wanted */
-    buf = NULL;
-    f = open_memstream(&buf, &len);
-    sf_sweep_summary_row(f, "T", 30, &p);
-    fclose(f);
+    buf = table_text(&p, 1);
     assert_non_null(strstr(buf, "\t0\tnan\tnan\tnan"));
     free(buf);
     p.n = 0;   /* an empty point: nothing to estimate */

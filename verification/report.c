@@ -139,6 +139,40 @@ int sf_report_plots(const char *root, const sf_case *c, sf_result *r, char *err,
     return sf_result_render_plots(r, tmp, err, errlen) < 0 ? SF_EIO : SF_SUCCESS;
 }
 
+/* The sweep's statistics per point and QoI (result.h: sf_sweep_row), as
+ * results.json carries them. */
+static void write_sweep_table(FILE *f, const sf_result *r)
+{
+    if (!sf_result_nsweep(r))
+        return;
+    fprintf(f, "## Sweep statistics\n\nPer point and QoI: the realisations used / excluded (a value the QoI's "
+               "definition cannot form is excluded, never averaged), the mean, std (n - 1), Monte Carlo standard "
+               "error, the Student confidence interval, and u_num, the numerical error of the mean (companion solves "
+               "at a coarser setting on the first realisations: how many are given; — where not estimated).\n\n"
+               "| point | QoI | used / excluded | mean | std | se | interval | u_num of the mean (on) |\n"
+               "|---|---|---|---|---|---|---|---|\n");
+    for (size_t i = 0; i < sf_result_nsweep(r); i++) {
+        const sf_sweep_row *x = sf_result_sweep_at(r, i);
+        char v[5][48];
+        fmt_num(v[0], sizeof v[0], x->mean);
+        fmt_num(v[1], sizeof v[1], x->std);
+        fmt_num(v[2], sizeof v[2], x->se);
+        fmt_num(v[3], sizeof v[3], x->ci_lo);
+        fmt_num(v[4], sizeof v[4], x->ci_hi);
+        fputs("| ", f);
+        sf_md_text(f, x->param);
+        fprintf(f, " = %g | ", x->value);
+        sf_md_text(f, x->qoi);
+        fprintf(f, " [%s] | %zu / %zu | %s | %s | %s | [%s, %s] (%g%%) | ", x->unit, x->n_used, x->n_excluded, v[0],
+                v[1], v[2], v[3], v[4], 100 * x->level);
+        if (x->u_num_subset && isfinite(x->u_num))
+            fprintf(f, "%.3g (%zu of realisations 0-%zu) |\n", x->u_num, x->u_num_used, x->u_num_subset - 1);
+        else
+            fprintf(f, "— |\n");
+    }
+    fputc('\n', f);
+}
+
 int sf_report_case(const char *root, const sf_case *c, const sf_result *r,
                    const sf_outcome *o, const char *error, char *err, size_t errlen)
 {
@@ -172,6 +206,7 @@ int sf_report_case(const char *root, const sf_case *c, const sf_result *r,
     fputc('\n', f);
     if (error && *error)
         fprintf(f, "**Error:** %s\n\n", error);
+    write_sweep_table(f, r);
     sf_paper_case_claims(f, r);
     if (*sf_result_notes(r))
         fprintf(f, "## Findings\n\n%s\n", sf_result_notes(r));

@@ -14,9 +14,9 @@
 
 typedef struct {
     char label[96];
-    int style;       /* SF_STYLE_*, or -1 band, -2 hline */
+    int style;       /* SF_STYLE_*, or -1 band, -2 hline, -3 error bars */
     size_t n;
-    double *x, *y, *y2;
+    double *x, *y, *y2, *y3;   /* band: y..y2; error bars: y from y2 to y3 */
 } series;
 
 struct sf_plot {
@@ -42,6 +42,8 @@ struct sf_result {
     size_t nclaims;
     sf_sample_row *samples;
     size_t nsamples;
+    sf_sweep_row *sweep;
+    size_t nsweep;
 };
 
 static void count_values(sf_result *r, const char *where, size_t n, const double *x)
@@ -84,6 +86,7 @@ void sf_result_free(sf_result *r)
             free(p->s[j].x);
             free(p->s[j].y);
             free(p->s[j].y2);
+            free(p->s[j].y3);
         }
         free(p->s);
         free(p);
@@ -91,6 +94,7 @@ void sf_result_free(sf_result *r)
     free(r->plots);
     free(r->claims);
     free(r->samples);
+    free(r->sweep);
     free(r->rows);
     free(r->notes);
     free(r);
@@ -277,6 +281,15 @@ void sf_result_sample(sf_result *r, const char *what, size_t n_used, size_t n_ex
 size_t sf_result_nsamples(const sf_result *r) { return r->nsamples; }
 const sf_sample_row *sf_result_sample_at(const sf_result *r, size_t i) { return &r->samples[i]; }
 
+void sf_result_sweep(sf_result *r, const sf_sweep_row *row)
+{
+    r->sweep = xrealloc(r->sweep, (r->nsweep + 1) * sizeof *r->sweep);
+    r->sweep[r->nsweep++] = *row;
+}
+
+size_t sf_result_nsweep(const sf_result *r) { return r->nsweep; }
+const sf_sweep_row *sf_result_sweep_at(const sf_result *r, size_t i) { return &r->sweep[i]; }
+
 size_t sf_result_nclaims(const sf_result *r) { return r->nclaims; }
 const sf_claim_row *sf_result_claim(const sf_result *r, size_t i) { return &r->claims[i]; }
 const char *sf_claim_status_name(int s)
@@ -373,31 +386,38 @@ static series *add_series(sf_plot *p, const char *label, int style, size_t n)
     return s;
 }
 
+/* A series' columns copied in (y2, y3 may be NULL: not that kind), each
+ * counted among the check's data. */
+static void fill(sf_plot *p, series *s, const double *x, const double *y, const double *y2, const double *y3)
+{
+    const double *src[4] = { x, y, y2, y3 };
+    double **dst[4] = { &s->x, &s->y, &s->y2, &s->y3 };
+    for (int k = 0; k < 4 && s->n; k++) {
+        if (!src[k])
+            continue;
+        if (!*dst[k])
+            *dst[k] = xrealloc(NULL, s->n * sizeof **dst[k]);
+        memcpy(*dst[k], src[k], s->n * sizeof *src[k]);
+        count_values(p->owner, s->label, s->n, src[k]);
+    }
+}
+
 void sf_plot_series(sf_plot *p, const char *label, int style, size_t n,
                     const double *x, const double *y)
 {
-    series *s = add_series(p, label, style, n);
-    if (n) {
-        memcpy(s->x, x, n * sizeof *x);
-        memcpy(s->y, y, n * sizeof *y);
-        count_values(p->owner, s->label, n, x);
-        count_values(p->owner, s->label, n, y);
-    }
+    fill(p, add_series(p, label, style, n), x, y, NULL, NULL);
 }
 
 void sf_plot_band(sf_plot *p, const char *label, size_t n, const double *x,
                   const double *lo, const double *hi)
 {
-    series *s = add_series(p, label, -1, n);
-    if (n) {
-        s->y2 = xrealloc(NULL, n * sizeof *s->y2);
-        memcpy(s->x, x, n * sizeof *x);
-        memcpy(s->y, lo, n * sizeof *lo);
-        memcpy(s->y2, hi, n * sizeof *hi);
-        count_values(p->owner, s->label, n, x);
-        count_values(p->owner, s->label, n, lo);
-        count_values(p->owner, s->label, n, hi);
-    }
+    fill(p, add_series(p, label, -1, n), x, lo, hi, NULL);
+}
+
+void sf_plot_errorbars(sf_plot *p, const char *label, size_t n, const double *x, const double *y,
+                       const double *lo, const double *hi)
+{
+    fill(p, add_series(p, label, -3, n), x, y, lo, hi);
 }
 
 void sf_plot_hline(sf_plot *p, const char *label, double y)
@@ -451,9 +471,13 @@ static void write_plot(FILE *g, const sf_plot *p, const char *path, char *why, s
                     xlo = fmin(xlo, s->x[i]);
                     xhi = fmax(xhi, s->x[i]);
                 }
-                if (s->style == -1 && finite_for(p, s->x[i], s->y2[i])) {
+                if ((s->style == -1 || s->style == -3) && finite_for(p, s->x[i], s->y2[i])) {
                     ylo = fmin(ylo, s->y2[i]);
                     yhi = fmax(yhi, s->y2[i]);
+                }
+                if (s->style == -3 && finite_for(p, s->x[i], s->y3[i])) {
+                    ylo = fmin(ylo, s->y3[i]);
+                    yhi = fmax(yhi, s->y3[i]);
                 }
             }
     }
@@ -483,6 +507,9 @@ static void write_plot(FILE *g, const sf_plot *p, const char *path, char *why, s
             if (s->style == -1) {
                 if (!finite_for(p, s->x[i], s->y2[i])) continue;
                 fprintf(g, "%.10g %.10g %.10g\n", s->x[i], s->y[i], s->y2[i]);
+            } else if (s->style == -3) {
+                if (!finite_for(p, s->x[i], s->y2[i]) || !finite_for(p, s->x[i], s->y3[i])) continue;
+                fprintf(g, "%.10g %.10g %.10g %.10g\n", s->x[i], s->y[i], s->y2[i], s->y3[i]);
             } else {
                 fprintf(g, "%.10g %.10g\n", s->x[i], s->y[i]);
             }
@@ -527,6 +554,9 @@ static void write_plot(FILE *g, const sf_plot *p, const char *path, char *why, s
                 break;
             case -2:
                 fprintf(g, "%.10g with lines dt 2 lw 1.5 lc rgb '#555555' title \"%s\"", s->y[0], s->label);
+                break;
+            case -3:
+                fprintf(g, "$d%zu using 1:2:3:4 with yerrorbars title \"%s\"", j, s->label);
                 break;
             case SF_STYLE_POINTS:
                 fprintf(g, "$d%zu using 1:2 with points title \"%s\"", j, s->label);

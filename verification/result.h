@@ -105,6 +105,23 @@ void sf_result_sample(sf_result *r, const char *what, size_t n_used, size_t n_ex
 size_t sf_result_nsamples(const sf_result *r);
 const sf_sample_row *sf_result_sample_at(const sf_result *r, size_t i);
 
+/* One QoI of one sweep point, as `slipfield sweep --summary` states it:
+ * the values used and excluded, mean, std, Monte Carlo standard error,
+ * the Student interval at `level`, and u_num, the numerical error of the
+ * mean (NAN: not estimated), estimated on realisations 0 .. u_num_subset
+ * - 1 (0: not estimated), u_num_used of them finite.  results.json lists
+ * them per case ("sweep") and the report tabulates them. */
+typedef struct {
+    char param[48], qoi[32], unit[8];
+    double value;
+    size_t n_used, n_excluded;
+    double mean, std, se, ci_lo, ci_hi, level, u_num;
+    size_t u_num_subset, u_num_used;
+} sf_sweep_row;
+void sf_result_sweep(sf_result *r, const sf_sweep_row *row);
+size_t sf_result_nsweep(const sf_result *r);
+const sf_sweep_row *sf_result_sweep_at(const sf_result *r, size_t i);
+
 /* Findings: Markdown appended to the report (printf-style). */
 void sf_note(sf_result *r, const char *fmt, ...)
     __attribute__((format(printf, 2, 3)));
@@ -128,6 +145,9 @@ void sf_plot_series(sf_plot *p, const char *label, int style, size_t n,
 void sf_plot_band(sf_plot *p, const char *label, size_t n, const double *x,
                   const double *lo, const double *hi);
 void sf_plot_hline(sf_plot *p, const char *label, double y);
+/* Points y with error bars from lo to hi (a confidence interval). */
+void sf_plot_errorbars(sf_plot *p, const char *label, size_t n, const double *x, const double *y,
+                       const double *lo, const double *hi);
 
 size_t sf_result_nplots(const sf_result *r);
 sf_plot *sf_result_get_plot(const sf_result *r, size_t i);

@@ -162,6 +162,32 @@ static json_t *row_json(const sf_row *row)
     return j;
 }
 
+/* One QoI of one sweep point (result.h: sf_sweep_row). */
+static json_t *sweep_json(const sf_sweep_row *x)
+{
+    json_t *o = json_object(), *nf = json_object();
+    json_object_set_new(o, "param", jstr(x->param));
+    set_num(o, "value", x->value, nf);
+    json_object_set_new(o, "qoi", jstr(x->qoi));
+    json_object_set_new(o, "unit", jstr(x->unit));
+    json_object_set_new(o, "n_used", json_integer((json_int_t)x->n_used));
+    json_object_set_new(o, "n_excluded", json_integer((json_int_t)x->n_excluded));
+    set_num(o, "mean", x->mean, nf);
+    set_num(o, "std", x->std, nf);
+    set_num(o, "se", x->se, nf);
+    set_num(o, "ci_lo", x->ci_lo, nf);
+    set_num(o, "ci_hi", x->ci_hi, nf);
+    set_num(o, "level", x->level, nf);
+    set_num(o, "u_num", x->u_num, nf);
+    json_object_set_new(o, "u_num_realisations", json_integer((json_int_t)x->u_num_subset));
+    json_object_set_new(o, "u_num_used", json_integer((json_int_t)x->u_num_used));
+    if (json_object_size(nf))
+        json_object_set_new(o, "nonfinite", nf);
+    else
+        json_decref(nf);
+    return o;
+}
+
 static const char *vv_key(int vv)
 {
     return vv == 0 ? "code" : vv == 1 ? "solution" : "validation";
@@ -225,6 +251,12 @@ static json_t *case_json(const sf_outcome *o, const sf_result *r)
             json_array_append_new(sm, o);
         }
         json_object_set_new(j, "samples", sm);
+    }
+    if (r && sf_result_nsweep(r)) {
+        json_t *sw = json_array();
+        for (size_t i = 0; i < sf_result_nsweep(r); i++)
+            json_array_append_new(sw, sweep_json(sf_result_sweep_at(r, i)));
+        json_object_set_new(j, "sweep", sw);
     }
     return j;
 }

@@ -3,6 +3,7 @@
 #include "lnfield.h"
 #include "montecarlo.h"
 #include "sf_error.h"
+#include "sweep.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -459,4 +460,52 @@ int check_draw(sf_cof_plan *p, unsigned long seed, size_t i, sf_cof **out)
     int rc = sf_cof_plan_draw(p, g, out);
     gsl_rng_free(g);
     return rc;
+}
+
+void check_sweep_record(sf_result *r, const char *param, double value, const sf_sweep_point *p)
+{
+    static const char *const nm[SF_SWEEP_NQ] = { "pv_x", "pv_F", "stick_fraction" }, *const un[SF_SWEEP_NQ] = { "m", "N", "-" };
+    for (int q = 0; q < SF_SWEEP_NQ; q++) {
+        const sf_sweep_stat *a = &p->stat[q];
+        const sf_sweep_num *e = &p->num[q];
+        sf_sweep_row row = { .value = value, .n_used = a->n_used, .n_excluded = a->n_excluded, .mean = a->mean,
+                             .std = a->std, .se = a->se, .ci_lo = a->ci_lo, .ci_hi = a->ci_hi,
+                             .level = SF_SWEEP_CI_LEVEL, .u_num = e->n_sub ? e->u_mean : NAN,
+                             .u_num_subset = e->n_sub, .u_num_used = e->n_used };
+        snprintf(row.param, sizeof row.param, "%s", *param ? param : "point");
+        snprintf(row.qoi, sizeof row.qoi, "%s", nm[q]);
+        snprintf(row.unit, sizeof row.unit, "%s", un[q]);
+        sf_result_sweep(r, &row);
+    }
+}
+
+void check_plot_sweep_bands(sf_plot *p, size_t K, const double *x, const sf_sweep_point *pt)
+{
+    static const char *const nm[SF_SWEEP_NQ] = { "PV_x ratio", "PV_F ratio", "stick-fraction ratio" };
+    double *m = check_alloc((K ? K : 1) * sizeof *m), *lo = check_alloc((K ? K : 1) * sizeof *lo),
+           *hi = check_alloc((K ? K : 1) * sizeof *hi), *bx = check_alloc((K ? K : 1) * sizeof *bx);
+    for (int q = 0; q < SF_SWEEP_NQ; q++) {
+        size_t nb = 0;
+        for (size_t k = 0; k < K; k++) {   /* the band: where u_num was estimated */
+            double u = pt[k].num[q].u_mean / pt[k].det[q];
+            if (pt[k].num[q].n_sub && isfinite(u) && isfinite(pt[k].mean[q])) {
+                bx[nb] = x[k];
+                lo[nb] = pt[k].mean[q] - u;
+                hi[nb++] = pt[k].mean[q] + u;
+            }
+        }
+        char lb[96];
+        if (nb) {
+            snprintf(lb, sizeof lb, "%s: mean -+ u_num (numerical error of the mean)", nm[q]);
+            sf_plot_band(p, lb, nb, bx, lo, hi);
+        }
+        for (size_t k = 0; k < K; k++) {
+            m[k] = pt[k].mean[q];
+            lo[k] = pt[k].rstat[q].ci_lo;
+            hi[k] = pt[k].rstat[q].ci_hi;
+        }
+        snprintf(lb, sizeof lb, "%s: mean, %g%% Monte Carlo interval", nm[q], 100 * SF_SWEEP_CI_LEVEL);
+        sf_plot_errorbars(p, lb, K, x, m, lo, hi);
+    }
+    free(m); free(lo); free(hi); free(bx);
 }

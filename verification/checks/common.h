@@ -6,6 +6,7 @@
 #include "../case.h"
 #include "../result.h"
 #include "field.h"
+#include "sweep.h"
 #include <gsl/gsl_rng.h>
 
 /* The oracle's own Eq. 2, written independently of the solver. */
@@ -152,5 +153,16 @@ int check_qoi_gap(const sf_scene *s, const sf_cof *cof, const sf_scene *sref, co
  * (q, ncycles) against a reference triple. */
 int check_qoi_run(const sf_scene *s, const sf_cof *cof, double q[3], size_t *ncycles, sf_result *r);
 double check_qoi_gap_of(const double q[3], size_t ncycles, const double qref[3]);
+
+/* A sweep point's statistics of each QoI (its values, in their units:
+ * sf_sweep_point.stat, num) recorded for results.json and the report's
+ * sweep table (result.h: sf_sweep_row). */
+void check_sweep_record(sf_result *r, const char *param, double value, const sf_sweep_point *p);
+
+/* The ratio means of a sweep's K points (param values x) with their
+ * Student intervals as error bars and, where estimated, mean -+ u_num / det
+ * as a band (points without an estimate are left out of the band), all
+ * three QoIs, on plot p. */
+void check_plot_sweep_bands(sf_plot *p, size_t K, const double *x, const sf_sweep_point *pt);
 
 #endif

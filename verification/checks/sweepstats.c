@@ -6,10 +6,12 @@
  * per-realisation rows alone with GSL (gsl_stats_mean, gsl_stats_sd,
  * gsl_cdf_tdist_Pinv), not with the solver's aggregation.  The validation
  * cases gate on the same statistics through sf_sweep_point: those are
- * compared too. */
+ * compared too.  So is the numerical error of each mean (unum.h): from
+ * the companions' QoIs and rho the per-realisation table carries. */
 #include "checks.h"
 #include "common.h"
 #include "sweep.h"
+#include "unum.h"
 #include "sf_error.h"
 
 #include <float.h>
@@ -22,6 +24,7 @@
 
 #define NQ SF_SWEEP_NQ
 #define MAXCOL 128   /* the summary has 71 columns (3 QoIs x 15, the design's and the control variate's) */
+#define FS 3.0       /* u_num_mean's safety factor, as documented: 3 (|num_bias| + t se) */
 static const char *const qn[NQ] = { "pv_x", "pv_F", "stick_fraction" };
 
 /* A TSV table read back: the header's names and the cells as numbers
@@ -124,6 +127,12 @@ typedef struct {
     int missing;       /* a column the summary should have is not there */
     double mean, sd, se, ci, rmean, rsd, rse;   /* |diff| / allowance */
     size_t ratio_bits; /* ratio cells that are not value / det to the bit */
+    /* the numerical error of the means: the companion rows against the
+     * documented subset (realisations), sf_sweep_point's bias, its se and
+     * u_num_mean (|diff| / allowance), the printed ones (|diff| / half a
+     * unit of the third digit) */
+    double num_rows, num_bias, num_se, num_u, num_printed;
+    size_t num_compared, num_excluded;
 } worst;
 
 /* |a - b| / (8 n eps scale): a sum of n terms taken in another order
@@ -138,41 +147,106 @@ static double off(double a, double b, size_t n, double scale)
     return a == b ? 0 : tol > 0 ? fabs(a - b) / tol : INFINITY;
 }
 
+/* The summary prints the numerical error with %.3g: 0 when the printed
+ * cell is x printed the same way; else (x and the solver's value apart by
+ * round-off on either side of a rounding edge) |printed - x| over half a
+ * unit in the third significant digit of x plus x's round-off allowance.
+ * Equal non-finite values agree. */
+static double off3(double printed, double x, size_t n, double scale)
+{
+    if (!isfinite(printed) || !isfinite(x))
+        return (isnan(printed) && isnan(x)) || printed == x ? 0 : INFINITY;
+    char text[32];
+    snprintf(text, sizeof text, "%.3g", x);
+    if (strtod(text, NULL) == printed)
+        return 0;
+    double half = x != 0 ? 0.5 * pow(10, floor(log10(fabs(x))) - 2) : 0;
+    double tol = half + 8 * (double)(n ? n : 1) * DBL_EPSILON * scale;
+    return printed == x ? 0 : tol > 0 ? fabs(printed - x) / tol : INFINITY;
+}
+
 static void upd(double *w, double x)
 {
     if (!(x <= *w))
         *w = x;
 }
 
-/* The recomputation of one (point, QoI) from the finite values of column
- * cx of the rows rows[0..n); printed values in the summary row srow. */
+/* The statistics of the finite values buf[0..used) (GSL): mean, sd, se,
+ * the Student interval [lo, hi] = mean -+ t se at level; scale max|x|,
+ * dscale max|x - mean| for the round-off allowances. */
 typedef struct {
-    double mean, sd, se, lo, hi;
+    double mean, sd, se, lo, hi, t;
     size_t used;
     double scale, dscale;   /* max |x|, max |x - mean| */
 } recomp;
 
-static recomp recompute(const table *tv, const size_t *rows, size_t n, int cx, double level, double *buf)
+static recomp stats_of(const double *buf, size_t used, double level)
 {
-    recomp o = { NAN, NAN, NAN, NAN, NAN, 0, 0, 0 };
-    for (size_t i = 0; i < n; i++) {
-        double x = tv->cell[rows[i] * MAXCOL + (size_t)cx];
-        if (isfinite(x))
-            buf[o.used++] = x;
-    }
-    if (!o.used)
+    recomp o = { NAN, NAN, NAN, NAN, NAN, NAN, used, 0, 0 };
+    if (!used)
         return o;
-    o.mean = gsl_stats_mean(buf, 1, o.used);
-    for (size_t i = 0; i < o.used; i++) {
+    o.mean = gsl_stats_mean(buf, 1, used);
+    for (size_t i = 0; i < used; i++) {
         o.scale = fmax(o.scale, fabs(buf[i]));
         o.dscale = fmax(o.dscale, fabs(buf[i] - o.mean));
     }
-    if (o.used > 1) {
-        o.sd = gsl_stats_sd(buf, 1, o.used);
-        o.se = o.sd / sqrt((double)o.used);
-        double t = gsl_cdf_tdist_Pinv(0.5 * (1 + level), (double)(o.used - 1));
-        o.lo = o.mean - t * o.se;
-        o.hi = o.mean + t * o.se;
+    if (used > 1) {
+        o.sd = gsl_stats_sd(buf, 1, used);
+        o.se = o.sd / sqrt((double)used);
+        o.t = gsl_cdf_tdist_Pinv(0.5 * (1 + level), (double)(used - 1));
+        o.lo = o.mean - o.t * o.se;
+        o.hi = o.mean + o.t * o.se;
+    }
+    return o;
+}
+
+/* The recomputation of one (point, QoI) from the finite values of column
+ * cx of the rows rows[0..n). */
+static recomp recompute(const table *tv, const size_t *rows, size_t n, int cx, double level, double *buf)
+{
+    size_t used = 0;
+    for (size_t i = 0; i < n; i++) {
+        double x = tv->cell[rows[i] * MAXCOL + (size_t)cx];
+        if (isfinite(x))
+            buf[used++] = x;
+    }
+    return stats_of(buf, used, level);
+}
+
+/* The numerical error of QoI column cx's mean over rows[0..n), from the
+ * companion columns (ccx its QoI's, crho, capr): the realisations that
+ * have a companion must be 0 .. m - 1, m = ceil(n / 4) but at least 2
+ * (all of n < 2) as documented; e_i = (Q_c,i - Q_i) / (rho_i - 1), the
+ * finite ones' statistics (e: bias = e.mean, its se), u_num_mean = 3
+ * (|bias| + t se) + a-priori(row 0) |mean|. */
+typedef struct {
+    recomp e;
+    double u, scale_u;
+    size_t sub, off_subset;
+} renum;
+
+static renum recompute_num(const table *tv, const size_t *rows, size_t n, int cx, int ccx, int crho, int capr,
+                           double mean, double mean_scale, double level, double *buf)
+{
+    renum o = { .u = NAN };
+    size_t want = n < 2 ? n : (n + 3) / 4 < 2 ? 2 : (n + 3) / 4, used = 0;
+    double apr = NAN;
+    for (size_t i = 0; i < n; i++) {
+        const double *row = tv->cell + rows[i] * MAXCOL;
+        int has = isfinite(row[crho]);
+        o.off_subset += has != (i < want);
+        if (!has)
+            continue;
+        if (!o.sub++)
+            apr = row[capr];
+        double e = (row[ccx] - row[cx]) / (row[crho] - 1);
+        if (isfinite(e))
+            buf[used++] = e;
+    }
+    o.e = stats_of(buf, used, level);
+    if (used > 1) {
+        o.u = FS * (fabs(o.e.mean) + o.e.t * o.e.se) + apr * fabs(mean);
+        o.scale_u = FS * (o.e.scale + o.e.t * o.e.dscale) + fabs(apr) * mean_scale;
     }
     return o;
 }
@@ -209,6 +283,14 @@ static void compare_point(sf_result *r, const table *tv, const table *ts, size_t
             break;
         }
         recomp a = recompute(tv, rows, n, cx, level, buf), b = recompute(tv, rows, n, crt, level, buf);
+        char cn[96];
+        snprintf(cn, sizeof cn, "%s_coarse[%s]", qn[q], units[q]);
+        int ccx = col(tv, cn), crho = col(tv, "unum_rho[-]"), capr = col(tv, "unum_apriori[-]");
+        if (ccx < 0 || crho < 0 || capr < 0) {
+            w->missing = 1;
+            break;
+        }
+        renum e = recompute_num(tv, rows, n, cx, ccx, crho, capr, a.mean, a.scale, level, buf);
         /* the summary's cells for this QoI: "n_used" -> pv_x_n_used, "mean[%s]" -> pv_x_mean[m] */
 #define S(field) (snprintf(nm, sizeof nm, "%s_" field, qn[q], units[q]), cell(ts, srow, nm, &w->missing))
         double used = S("n_used%.0s"), excl = S("n_excluded%.0s");
@@ -229,6 +311,22 @@ static void compare_point(sf_result *r, const table *tv, const table *ts, size_t
         upd(&w->rmean, off(rmean, b.mean, b.used, b.scale));
         upd(&w->rsd, off(S("ratio_std[-]%.0s"), b.sd, b.used, b.dscale));
         upd(&w->rse, off(rse, b.se, b.used, b.dscale));
+        /* the numerical error of the mean: sf_sweep_point's (results.json
+         * and the reports read it) to round-off, the printed to its digits */
+        const sf_sweep_num *num = &pt->num[q];
+        upd(&w->num_rows, (double)e.off_subset + fabs((double)num->n_sub - (double)e.sub));
+        upd(&w->num_rows, fabs((double)num->n_used - (double)e.e.used));
+        upd(&w->num_rows, fabs(S("num_n%.0s") - (double)e.e.used));
+        int est = num->n_sub > 0;
+        upd(&w->num_bias, off(est ? num->bias : NAN, e.e.mean, e.e.used, e.e.scale));
+        upd(&w->num_se, off(est ? num->bias_se : NAN, e.e.se, e.e.used, e.e.dscale));
+        upd(&w->num_u, off(est ? num->u_mean : NAN, e.u, e.e.used, e.scale_u));
+        upd(&w->num_printed, off3(S("num_bias[%s]"), e.e.mean, e.e.used, e.e.scale));
+        upd(&w->num_printed, off3(S("num_bias_se[%s]"), e.e.se, e.e.used, e.e.dscale));
+        double u_printed = S("u_num_mean[%s]");
+        upd(&w->num_printed, off3(u_printed, e.u, e.e.used, e.scale_u));
+        w->num_compared += e.e.used;
+        w->num_excluded += e.sub - e.e.used;
 #undef S
         /* what the validation cases read: sf_sweep_point's ratio statistics */
         upd(&w->rmean, off(pt->mean[q], b.mean, b.used, b.scale));
@@ -241,8 +339,9 @@ static void compare_point(sf_result *r, const table *tv, const table *ts, size_t
             if (isfinite(y))
                 *maxratio = fmax(*maxratio, y);
         }
-        sf_note(r, "| %s | %s | %.0f / %.0f | %.6g | %.6g | %.4g | %.4g | [%.6g, %.6g] | %.6g +- %.3g |", point, qn[q],
-                used, excl, mean, a.mean, sd, se, a.lo, a.hi, rmean, rse);
+        sf_note(r, "| %s | %s | %.0f / %.0f | %.6g | %.6g | %.4g | %.4g | [%.6g, %.6g] | %.6g +- %.3g | %zu / %zu | %.3g | "
+                   "%.3g |", point, qn[q], used, excl, mean, a.mean, sd, se, a.lo, a.hi, rmean, rse, e.e.used, e.sub,
+                e.e.mean, u_printed);
     }
     free(rows);
     free(buf);
@@ -251,7 +350,8 @@ static void compare_point(sf_result *r, const table *tv, const table *ts, size_t
 /* The point `base` with defects of the data planted: a realisation
  * without PV_x (NaN), one with an infinite stick fraction, one with no
  * QoI at all, and one (the first finite after them) whose PV_F is 100
- * times its value (an extreme ratio). */
+ * times its value (an extreme ratio); its companions with an a-priori
+ * relative error 1e-3 higher (the case's point plan has none). */
 static int plant(const sf_sweep_point *base, sf_sweep_point *p)
 {
     if (base->n < 6)
@@ -270,7 +370,19 @@ static int plant(const sf_sweep_point *base, sf_sweep_point *p)
         i++;
     if (i < base->n)
         p->qoi[i * NQ + SF_SWEEP_PVF] *= 100;
-    return sf_sweep_point_stats(p);
+    p->companion = NULL;
+    p->num_qc = p->num_rho = p->num_apriori = NULL;   /* the same companions, the point's own copy */
+    if (base->num_m) {
+        p->num_qc = check_alloc(base->num_m * NQ * sizeof *p->num_qc);
+        p->num_rho = check_alloc(base->num_m * sizeof *p->num_rho);
+        p->num_apriori = check_alloc(base->num_m * sizeof *p->num_apriori);
+        memcpy(p->num_qc, base->num_qc, base->num_m * NQ * sizeof *p->num_qc);
+        memcpy(p->num_rho, base->num_rho, base->num_m * sizeof *p->num_rho);
+        for (size_t k = 0; k < base->num_m; k++)   /* as a cell-average plan's: the a-priori part counts */
+            p->num_apriori[k] = base->num_apriori[k] + 1e-3;
+    }
+    int rc = sf_sweep_point_stats(p);
+    return rc ? rc : sf_unum_sweep_num(p);
 }
 
 static int chk_sweep_aggregation(const sf_case *c, sf_result *r)
@@ -285,9 +397,12 @@ static int chk_sweep_aggregation(const sf_case *c, sf_result *r)
     size_t made = 0;
     for (; made < K && !rc; made++) {
         sf_scene s = *s0;
+        memset(&pt[made], 0, sizeof pt[made]);
         rc = sf_sweep_set(&s, c->spec.sweep_param, c->spec.sweep.v[made], err, sizeof err);
         if (!rc)
             rc = sf_sweep_run(&s, s0->samples, 0, NULL, 0, NULL, &pt[made], err, sizeof err);
+        if (!rc)   /* the numerical error of the means, as `sweep --summary` makes it */
+            rc = sf_unum_sweep(&s, &pt[made], 0, err, sizeof err);
         if (rc)
             sf_note(r, "**Sweep failed at %s = %g:** %s", c->spec.sweep_param, c->spec.sweep.v[made], err);
     }
@@ -295,6 +410,8 @@ static int chk_sweep_aggregation(const sf_case *c, sf_result *r)
     for (size_t k = 0; k < made && !rc; k++)
         for (int q = 0; q < NQ; q++)
             natural += pt[k].stat[q].n_excluded;
+    for (size_t k = 0; k < made && !rc; k++)   /* results.json and the report's sweep table */
+        check_sweep_record(r, c->spec.sweep_param, c->spec.sweep.v[k], &pt[k]);
     if (!rc && (rc = plant(&pt[K - 1], &pt[K])) == SF_SUCCESS)
         made++;
     /* the two tables, as `slipfield sweep --out --summary` writes them */
@@ -328,7 +445,8 @@ static int chk_sweep_aggregation(const sf_case *c, sf_result *r)
         size_t excluded = 0;
         double maxratio = 0;
         sf_note(r, "| point | QoI | used / excluded | mean printed | mean recomputed | std | se | %s%% interval "
-                   "recomputed | ratio mean +- se |\n|---|---|---|---|---|---|---|---|---|", lv);
+                   "recomputed | ratio mean +- se | num. error: estimates used / companions | bias recomputed | "
+                   "u_num_mean printed |\n|---|---|---|---|---|---|---|---|---|---|---|---|", lv);
         for (size_t k = 0; k <= K; k++)
             compare_point(r, &tv, &ts, k, &pt[k], lv, &w, &excluded, &maxratio);
         double level = atof(lv) / 100;
@@ -346,9 +464,22 @@ static int chk_sweep_aggregation(const sf_case *c, sf_result *r)
         sf_check_le(r, "ratio mean (printed, and sf_sweep_point's): largest |diff| / allowance", w.rmean, 1);
         sf_check_le(r, "ratio std (printed, and sf_sweep_point's): largest |diff| / allowance", w.rsd, 1);
         sf_check_le(r, "ratio standard error (printed, and sf_sweep_point's): largest |diff| / allowance", w.rse, 1);
+        sf_check_le(r, "numerical error: rows with a companion that are not realisations 0 .. max(2, ceil(n/4)) - 1, "
+                       "and |printed or held - recomputed| estimate counts", w.num_rows, 0);
+        sf_check_le(r, "numerical error: bias (mean of (Q_c - Q) / (rho - 1)), sf_sweep_point's: largest |diff| / "
+                       "(8 n eps max|e|)", w.num_bias, 1);
+        sf_check_le(r, "numerical error: the bias's standard error, sf_sweep_point's: largest |diff| / (8 n eps "
+                       "max|e - bias|)", w.num_se, 1);
+        sf_check_le(r, "numerical error: u_num_mean = 3 (|bias| + t se) + a-priori |mean|, sf_sweep_point's: "
+                       "largest |diff| / allowance", w.num_u, 1);
+        sf_check_le(r, "numerical error: printed bias, se, u_num_mean (%.3g): cells that are not the recomputed value "
+                       "printed so, largest |diff| / half a unit of the third digit", w.num_printed, 1);
         /* what the comparison covered: it must have seen exclusions and an extreme value */
         sf_check_ge(r, "excluded (non-finite) values among the rows compared", (double)excluded, 5);
         sf_check_ge(r, "largest ratio among the rows compared (an extreme realisation is included)", maxratio, 20);
+        sf_check_ge(r, "numerical error: companion estimates compared", (double)w.num_compared, 20);
+        sf_check_ge(r, "numerical error: non-finite estimates excluded among them (the planted point's)",
+                    (double)w.num_excluded, 4);
         sf_note(r, "\n%zu points of %zu realisations (%s = the case's sweep) and one planted point (the last "
                    "point's values with a NaN PV_x, an infinite stick fraction, a realisation with no QoI and a PV_F "
                    "100 times its value). The sweep itself excluded %zu values (realisations without a complete "
@@ -376,7 +507,21 @@ static int chk_sweep_aggregation(const sf_case *c, sf_result *r)
         sf_plot_band(pl, "printed interval", K + 1, x, lo, hi);
         sf_plot_series(pl, "printed mean", SF_STYLE_POINTS, K + 1, x, mr);
         sf_plot_series(pl, "sf_sweep_point mean", SF_STYLE_LINES, K + 1, x, mp);
+        for (size_t k = 0; k <= K; k++) {   /* the mean -+ its printed numerical error u_num_mean */
+            double u = cell(&ts, k, "pv_F_u_num_mean[N]", &miss);
+            lo[k] = mr[k] - u;
+            hi[k] = mr[k] + u;
+        }
+        sf_plot_errorbars(pl, "printed mean -+ u_num_mean (numerical error)", K + 1, x, mr, lo, hi);
         free(x); free(mp); free(mr); free(lo); free(hi);
+        /* the sweep's ratios as the validation cases plot them (the planted point aside) */
+        char xl[96];
+        snprintf(xl, sizeof xl, "%s [-]", c->spec.sweep_param);
+        sf_plot *pr = sf_result_plot(r, "ratios", "Ratio means: 95% Monte Carlo intervals and numerical errors", xl,
+                                     "ratio to the deterministic model [-]");
+        sf_plot_log(pr, 1, 0);
+        check_plot_sweep_bands(pr, K, c->spec.sweep.v, pt);
+        sf_plot_hline(pr, "1 (deterministic)", 1);
     }
     table_free(&tv);
     table_free(&ts);

@@ -6,6 +6,7 @@
 #include "common.h"
 #include "../stats.h"
 #include "sweep.h"
+#include "unum.h"
 #include "oscillator.h"
 #include "qoi.h"
 #include "sf_error.h"
@@ -57,6 +58,10 @@ static int run_sweep(const sf_case *c, sf_result *r, sweep_run *sw)
             sf_note(r, "**Sweep failed at %s = %g:** %s", c->spec.sweep_param, sw->v[k], err);
             return SF_EFAIL;
         }
+        /* the numerical error of the means, as `sweep --summary` makes it
+         * (a companion that fails leaves it unestimated, as there) */
+        if (sf_unum_sweep(&s, &sw->pt[k], 0, err, sizeof err))
+            sf_note(r, "(%s = %g: no numerical error of the means: %s)", c->spec.sweep_param, sw->v[k], err);
     }
     sf_note(r, "| %s | det PV_x [m] | det PV_F [N] | det stick fr. | PV_x ratio | PV_F ratio | stick-fr. ratio | "
                "used / excluded |\n|---|---|---|---|---|---|---|---|", c->spec.sweep_param);
@@ -68,6 +73,7 @@ static int run_sweep(const sf_case *c, sf_result *r, sweep_run *sw)
                 p->rstat[0].n_used, p->rstat[0].n_excluded, p->rstat[1].n_used, p->rstat[1].n_excluded,
                 p->rstat[2].n_used, p->rstat[2].n_excluded);
         sweep_samples(r, c->spec.sweep_param, sw->v[k], p);
+        check_sweep_record(r, c->spec.sweep_param, sw->v[k], p);
     }
     sf_note(r, "\n(mean +- std and the standard error of the mean, each over the finite values of its QoI: used / "
                "excluded of %zu realisations, for PV_x, PV_F and the stick fraction in turn; T = %g s, t_skip = %g "
@@ -86,12 +92,14 @@ static void sweep_free(sweep_run *sw)
     free(sw->v);
 }
 
-/* mean and mean +- std bands of the three ratios vs the parameter */
+/* The three ratios vs the parameter: the means with their Monte Carlo
+ * intervals (error bars) and numerical errors (bands), the PV_F spread */
 static void plot_ratios(sf_result *r, const sweep_run *sw, const char *stem, const char *title, const char *xl, int logx)
 {
     const char *nm[3] = { "PV_x ratio", "PV_F ratio", "stick-fraction ratio" };
     sf_plot *p = sf_result_plot(r, stem, title, xl, "ratio to the deterministic model [-]");
     sf_plot_log(p, logx, 0);
+    check_plot_sweep_bands(p, sw->K, sw->v, sw->pt);
     double *m = check_alloc(sw->K * sizeof *m), *lo = check_alloc(sw->K * sizeof *lo), *hi = check_alloc(sw->K * sizeof *hi);
     for (int q = 0; q < 3; q++) {
         for (size_t k = 0; k < sw->K; k++) {
@@ -104,7 +112,7 @@ static void plot_ratios(sf_result *r, const sweep_run *sw, const char *stem, con
         if (q == 1)
             sf_plot_band(p, lb, sw->K, sw->v, lo, hi);
         snprintf(lb, sizeof lb, "%s, mean", nm[q]);
-        sf_plot_series(p, lb, SF_STYLE_LINESPOINTS, sw->K, sw->v, m);
+        sf_plot_series(p, lb, SF_STYLE_LINES, sw->K, sw->v, m);
     }
     sf_plot_hline(p, "1 (deterministic)", 1);
     free(m); free(lo); free(hi);
@@ -124,6 +132,7 @@ static int chk_fig10(const sf_case *c, sf_result *r)
         return SF_EFAIL;
     }
     sweep_samples(r, "l_over_R", s->l / s->R, &pt);
+    check_sweep_record(r, "l_over_R", s->l / s->R, &pt);   /* (no u_num: its running mean is the point) */
     size_t n = 0;
     for (size_t i = 0; i < pt.n; i++)   /* keep the realisations with a cycle, in order */
         if (isfinite(pt.ratio[3 * i]))
