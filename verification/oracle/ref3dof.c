@@ -34,6 +34,8 @@ struct ref3dof {
     size_t nm;
     double *mx, *my, *mw;
     double dt;
+    double tol, hnext;   /* > 0: step doubling at this tolerance (ref3dof_alloc_nodes); the next trial step */
+    double sc[REF_N];    /* the state's scales for it */
 };
 
 /* Own bilinear interpolation of the nodal values (clamped at the edges). */
@@ -85,10 +87,11 @@ static int disc_rule(double R, size_t nr, size_t na, double scale, size_t *n, do
     return SF_SUCCESS;
 }
 
-int ref3dof_alloc(const sf_scene *s, const sf_cof *cof, double dt, size_t nr, size_t na, ref3dof **out)
+/* The physics and the COF of scene s, no quadrature yet. */
+static int oracle_new(const sf_scene *s, const sf_cof *cof, double dt, ref3dof **out)
 {
     *out = NULL;
-    if (s->dof != SF_DOF_3 || !s->velocity_jump || !(dt > 0) || nr < 1 || na < 3)
+    if (s->dof != SF_DOF_3 || !s->velocity_jump || !(dt > 0))
         return SF_EINVAL;
     ref3dof *o = calloc(1, sizeof *o);
     if (!o)
@@ -114,11 +117,62 @@ int ref3dof_alloc(const sf_scene *s, const sf_cof *cof, double dt, size_t nr, si
             o->mu_max = fmax(o->mu_max, o->g[i]);
     } else
         o->mu = o->mu_max = sf_cof_eval(cof, 0, 0);
+    *out = o;
+    return SF_SUCCESS;
+}
+
+int ref3dof_alloc(const sf_scene *s, const sf_cof *cof, double dt, size_t nr, size_t na, ref3dof **out)
+{
+    *out = NULL;
+    if (nr < 1 || na < 3)
+        return SF_EINVAL;
+    ref3dof *o;
+    int rc = oracle_new(s, cof, dt, &o);
+    if (rc)
+        return rc;
     /* wrench: weights P dS [N]; disc average: dS / (pi R^2) */
     if (disc_rule(s->R, nr, na, o->N / (M_PI * s->R * s->R), &o->nq, &o->qx, &o->qy, &o->qw) ||
         disc_rule(s->R, 4 * nr, 4 * na, 1 / (M_PI * s->R * s->R), &o->nm, &o->mx, &o->my, &o->mw)) {
         ref3dof_free(o);
         return SF_ENOMEM;
+    }
+    *out = o;
+    return SF_SUCCESS;
+}
+
+int ref3dof_alloc_nodes(const sf_scene *s, const sf_cof *cof, double dt, double tol, size_t n, const double *rx,
+                        const double *ry, const double *w, ref3dof **out)
+{
+    *out = NULL;
+    double sum = 0;
+    for (size_t i = 0; i < n; i++)
+        sum += w[i];
+    if (n < 1 || !(sum > 0) || !isfinite(sum) || !(tol >= 0))
+        return SF_EINVAL;
+    ref3dof *o;
+    int rc = oracle_new(s, cof, dt, &o);
+    if (rc)
+        return rc;
+    o->tol = tol;
+    double xs = o->mu_max * o->N / o->k;   /* the stick distance, and its speed, angle and spin */
+    double sc[REF_N] = { xs, xs, xs / o->R, xs * o->wn, xs * o->wn, xs * o->wn / o->R };
+    memcpy(o->sc, sc, sizeof sc);
+    o->nq = o->nm = n;
+    o->qx = malloc(n * sizeof *o->qx);
+    o->qy = malloc(n * sizeof *o->qy);
+    o->qw = malloc(n * sizeof *o->qw);
+    o->mx = malloc(n * sizeof *o->mx);
+    o->my = malloc(n * sizeof *o->my);
+    o->mw = malloc(n * sizeof *o->mw);
+    if (!o->qx || !o->qy || !o->qw || !o->mx || !o->my || !o->mw) {
+        ref3dof_free(o);
+        return SF_ENOMEM;
+    }
+    for (size_t i = 0; i < n; i++) {   /* the same rule for both: weights P dS [N] and dS / (pi R^2) */
+        o->qx[i] = o->mx[i] = rx[i];
+        o->qy[i] = o->my[i] = ry[i];
+        o->qw[i] = o->N * w[i] / sum;
+        o->mw[i] = w[i] / sum;
     }
     *out = o;
     return SF_SUCCESS;
@@ -161,7 +215,7 @@ void ref3dof_wrench(const ref3dof *o, double t, const double s[REF_N], double ou
 /* Disc-averaged static COF at belt point (xb, yb): the equatorial radius
  * of the limit surface (Eq. 11 at theta = 0 for a uniform field; the
  * paper's stick criterion). */
-static double mean_cof(const ref3dof *o, double xb, double yb)
+double ref3dof_mean_cof(const ref3dof *o, double xb, double yb)
 {
     if (!o->grid)
         return o->mu;
@@ -182,7 +236,7 @@ static double lambda(const ref3dof *o, const double s[REF_N])
  * inside the equatorial circle of radius mu_bar m g. */
 static int admissible(const ref3dof *o, double t, const double s[REF_N])
 {
-    double mb = mean_cof(o, s[REF_X] - o->vb * t, s[REF_Y]);
+    double mb = ref3dof_mean_cof(o, s[REF_X] - o->vb * t, s[REF_Y]);
     return o->k * sqrt(s[REF_X] * s[REF_X] + s[REF_Y] * s[REF_Y]) < mb * o->N;
 }
 
@@ -221,6 +275,36 @@ static void rk4(const ref3dof *o, double t, const double s[REF_N], double h, dou
     deriv(o, t + h, tmp, k4);
     for (int i = 0; i < REF_N; i++)
         out[i] = s[i] + h / 6 * (k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]);
+}
+
+/* One step of at most hmax from (t, s) into out by step doubling: a step
+ * h against two of h/2, their difference / 15 (RK4's local error of the
+ * pair, Richardson) in the scales sc at most tol, else h shrinks; the two
+ * half steps are kept.  A kink or a jump of the wrench (a cell's point
+ * crossing a grid line of the COF, the pole of the slip field crossing a
+ * point) inside a step is met by shorter steps there, so the error keeps
+ * falling with tol where fixed steps lose their order.  Returns the step
+ * taken. */
+static double rk4_doubling(ref3dof *o, double t, const double s[REF_N], double hmax, double out[REF_N],
+                           unsigned long *count)
+{
+    double h = fmin(o->hnext, hmax), a[REF_N], m[REF_N], b[REF_N];
+    for (;;) {
+        rk4(o, t, s, h, a);
+        rk4(o, t, s, 0.5 * h, m);
+        rk4(o, t + 0.5 * h, m, 0.5 * h, b);
+        *count += 3;
+        double err = 0;
+        for (int i = 0; i < REF_N; i++)
+            err = fmax(err, fabs(b[i] - a[i]) / (15 * o->sc[i]));
+        double f = err > 0 ? 0.9 * pow(o->tol / err, 0.2) : 4;
+        if (err <= o->tol || isnan(err) || h < 1e-13) {   /* NaN: the run's finiteness test stops it */
+            memcpy(out, b, sizeof b);
+            o->hnext = h * fmin(f, 4);
+            return h;
+        }
+        h *= fmax(f, 0.2);
+    }
 }
 
 /* ---- QoI accumulation (definitions of oscillator.h, own code) */
@@ -349,6 +433,7 @@ int ref3dof_run(ref3dof *o, double sample_dt, ref3dof_result *res)
     }
     double t = 0, s[REF_N], pre[REF_N];
     memcpy(s, o->init, sizeof s);
+    o->hnext = o->dt;   /* a run does not depend on the one before */
     int stick = to_stick(o, 0, s), armed = lambda(o, s) > o->eps, rc = SF_SUCCESS;
     if (stick) {   /* Eq. 12 at t = 0 */
         memcpy(pre, s, sizeof pre);
@@ -363,7 +448,7 @@ int ref3dof_run(ref3dof *o, double sample_dt, ref3dof_result *res)
             /* exact belt motion: the belt point under the disc is fixed,
              * so is mu_bar; break when k |(x + v_b tau, y)| reaches
              * mu_bar m g (bisection, bracket by doubling) */
-            double mb = mean_cof(o, s[REF_X] - o->vb * t, s[REF_Y]), lim = mb * o->N;
+            double mb = ref3dof_mean_cof(o, s[REF_X] - o->vb * t, s[REF_Y]), lim = mb * o->N;
             double x0 = s[REF_X], y0 = s[REF_Y], span = o->T - t, tau;
 #define BREAKS(tt) (o->k * sqrt((x0 + o->vb * (tt)) * (x0 + o->vb * (tt)) + y0 * y0) >= lim)
             if (BREAKS(0.0))
@@ -425,7 +510,10 @@ int ref3dof_run(ref3dof *o, double sample_dt, ref3dof_result *res)
          * down to its value at V = eps_lambda omega_n R */
         double V = fmax(lambda(o, s), o->eps) * o->wn * o->R;
         double h = fmin(fmin(o->dt, o->m * V / (o->ratio * o->mu_max * o->N)), o->T - t), s1[REF_N];
-        rk4(o, t, s, h, s1);
+        if (o->tol > 0)
+            h = rk4_doubling(o, t, s, h, s1, &res->bisections);
+        else
+            rk4(o, t, s, h, s1);
         res->steps++;
         for (int i = 0; i < REF_N; i++)
             if (!isfinite(s1[i]))

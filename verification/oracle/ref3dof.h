@@ -15,8 +15,10 @@
  *    (the same Gauss-Legendre x trapezoid rule);
  *  - the jumps of Eq. 12 (velocities (v_b, 0, 0)) and Eq. 14 (relative
  *    velocity eps_lambda omega_n R opposite the stick force (k x, k y));
- *  - classical RK4 written out at a fixed step dt, shortened only near
- *    the stick threshold to m V / (mu_k,max m g) (V the relative speed:
+ *  - classical RK4 written out at a fixed step dt (or, on given nodes,
+ *    with its own step-doubling error control: ref3dof_alloc_nodes),
+ *    shortened near the stick threshold to m V / (mu_k,max m g) (V the
+ *    relative speed:
  *    the damping time of friction on the slip direction, which makes the
  *    slip equations stiff as V -> 0) (the solver: GSL's adaptive
  *    rkck/rk8pd with Brent event search); events by bisection on
@@ -66,6 +68,23 @@ typedef struct {
  * dof = 1 and velocity_jump = false (this oracle models Eq. 5 with both
  * jumps only). */
 int ref3dof_alloc(const sf_scene *s, const sf_cof *cof, double dt, size_t nr, size_t na, ref3dof **out);
+/* The same oracle on a given rule: n nodes at offsets (rx, ry) [m] from
+ * the disc's centre with weights w (any scale: normalised here), used for
+ * both the wrench and the disc average.  Given the solver's own cells
+ * (sf_contact_cells), both codes integrate the same discrete wrench: the
+ * COF at the same points, summed with the same weights, each by its own
+ * code; what remains different is the time integration, the events, the
+ * jumps and the rest of Eqs. 5-14 as each writes them.  tol > 0: RK4
+ * with step doubling (its own error control, Richardson on a step against
+ * two half steps) at tolerance tol in the scales of the stick distance
+ * mu_max m g / k, dt the largest step; 0: fixed steps dt as
+ * ref3dof_alloc.  The wrench on points is only piecewise smooth in the
+ * state (kinks where a point crosses a grid line of the COF, a jump where
+ * the slip field's pole crosses a point): fixed steps converge there at
+ * order 1-2 with an error whose sign changes from one dt to the next, the
+ * controlled step keeps the error about proportional to tol. */
+int ref3dof_alloc_nodes(const sf_scene *s, const sf_cof *cof, double dt, double tol, size_t n, const double *rx,
+                        const double *ry, const double *w, ref3dof **out);
 void ref3dof_free(ref3dof *o);
 
 /* Integrate [0, T]; sample_dt > 0 also fills x_samples.  SF_EFAIL on a
@@ -76,6 +95,10 @@ void ref3dof_result_free(ref3dof_result *r);
 /* The kinetic friction wrench {Fx [N], Fy [N], T [N m]} on the disc at
  * time t in state s (ground frame): Eqs. 7-8 by this oracle's quadrature. */
 void ref3dof_wrench(const ref3dof *o, double t, const double s[REF_N], double out[3]);
+
+/* The disc-averaged static COF at belt point (xb, yb) by this oracle's
+ * rule: the radius of its stick test's circle over m g (Eqs. 10-11). */
+double ref3dof_mean_cof(const ref3dof *o, double xb, double yb);
 
 /* Eq. 15 written out: sum_i (a_i - b_i)^2 dt over the first n samples
  * (i >= 1: the common start x(0) carries no error) [m^2 s]. */
