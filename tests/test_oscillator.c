@@ -33,6 +33,15 @@ static void closed_form_table1(void **state)
     assert_int_equal(sf_cycle1d_init(&c, &s, 0), SF_EINVAL);
 }
 
+/* Table 1 as the 1-D model with a uniform COF at this rtol. */
+static void scene_1d(sf_scene *s, double rtol)
+{
+    sf_scene_default(s);
+    s->cof = SF_COF_UNIFORM;
+    s->dof = SF_DOF_1;
+    s->rtol = rtol;
+}
+
 static int run(sf_scene *s, sf_osc_result *r, char *err)
 {
     sf_cof *cof;
@@ -55,10 +64,7 @@ static void qoi_definitions(void **state)
 {
     (void)state;
     sf_scene s;
-    sf_scene_default(&s);
-    s.cof = SF_COF_UNIFORM;
-    s.dof = SF_DOF_1;
-    s.rtol = 1e-10;
+    scene_1d(&s, 1e-10);
     s.T = 40;
     s.v_b = 3;
     sf_osc_result r;
@@ -75,10 +81,7 @@ static void qoi_definitions(void **state)
     assert_true(isnan(r.pv_x) && isnan(r.stick_fraction));
     assert_true(isfinite(r.osc_pv_x_mean));
     sf_osc_result_free(&r);
-    sf_scene_default(&s);
-    s.cof = SF_COF_UNIFORM;
-    s.dof = SF_DOF_1;
-    s.rtol = 1e-11;
+    scene_1d(&s, 1e-11);
     sf_cycle1d c;
     assert_int_equal(sf_cycle1d_init(&c, &s, s.eps_lambda), SF_SUCCESS);
     assert_int_equal(run(&s, &r, err), SF_SUCCESS);
@@ -105,10 +108,7 @@ static void extrema_on_closed_form(void **state)
 {
     (void)state;
     sf_scene s;
-    sf_scene_default(&s);
-    s.cof = SF_COF_UNIFORM;
-    s.dof = SF_DOF_1;
-    s.rtol = 1e-11;
+    scene_1d(&s, 1e-11);
     sf_cycle1d c;
     assert_int_equal(sf_cycle1d_init(&c, &s, s.eps_lambda), SF_SUCCESS);
     sf_osc_result r;
