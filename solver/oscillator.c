@@ -288,7 +288,8 @@ void sf_osc_describe(const sf_osc *o, FILE *f)
                 s->integrator == SF_INTEG_ADAPTIVE ? (o->ct ? " (adaptive: the wrench is a quadrature, fewer stages pay)"
                                                             : " (adaptive: the wrench is a closed form, high order pays)")
                                                    : "");
-    fprintf(f, "events: Brent (GSL) on single trial steps, to max(%g s, 8 ulp(t)); velocity jump of Eq. 14 %s\n", SF_OSC_TIME_TOL,
+    fprintf(f, "events: stick onsets by Brent (GSL) on single trial steps, to max(%g s, 8 ulp(t)); x extrema on the "
+               "step's quintic interpolant, one trial step; velocity jump of Eq. 14 %s\n", SF_OSC_TIME_TOL,
             s->velocity_jump ? "on" : "off");
 }
 
