@@ -404,8 +404,8 @@ static void cvode_why_eq15(FILE *f, point q[2][3])
     static const char *at[2] = { "At 1e-6", "At RK4's error" };
     fprintf(f, " Why: the 3-DOF slip wrench is a quadrature over the disc, so the cost follows the f evaluations, "
                "not the per-step machinery that decides the 1-D case. rkck makes 7 per accepted step (6 stages "
-               "and the wrench at the step's end; rk8pd 14), plus rejected steps and the single trial steps of the Brent search that "
-               "locates the transitions and x extrema to 1e-12 s; CVODE about one per step plus its Newton or "
+               "and the wrench at the step's end; rk8pd 14), plus rejected steps, the single trial steps of the Brent search that "
+               "locates the transitions to 1e-12 s and one trial step per x extremum (on the step's interpolant); CVODE about one per step plus its Newton or "
                "fixed-point iterations, and locates events on its interpolant.");
     for (int j = 0; j < 2; j++) {
         const point *a = &q[j][0], *b = &q[j][1];

@@ -29,9 +29,12 @@ struct sf_field {
     double *lam;            /* raw 2-D eigenvalues, before clamping, of a general kernel
                                (the separable paths rebuild them by rows: eig_row) */
     double *amp;            /* sqrt(max(lambda, 0)/M): M of them, or the stored half
-                               (px/2 + 1) py of a real sampler */
+                               (px/2 + 1) py of a real sampler; NULL for a separable
+                               kernel (its draw makes them from lx, ly: amp_of) */
+    double *arow;           /* a separable kernel's amplitudes of one row (px), made per draw */
     double *cov;            /* produced covariance at grid lags, m*n (NULL until measured) */
     fftw_complex *work;
+    size_t nwork;           /* complex values work holds */
     fftw_plan plan;
     double *kept;           /* second field of the last FFT */
     int have_kept;
@@ -293,18 +296,35 @@ static double first_row_at(const sf_field *f, size_t px, size_t py, size_t i, si
     return kernel_at(s, (double)ii * s->dx, (double)jj * s->dy);
 }
 
-/* General (non-separable) kernel: 2-D first row, 2-D FFT. */
+/* The work array with room for n complex values (kept when it has them:
+ * the eigenvalues' FFT and the sampler share it, so a plan touches one
+ * M-sized complex array, not two). */
+static int work_for(sf_field *f, size_t n)
+{
+    if (f->work && f->nwork == n)
+        return SF_SUCCESS;
+    fftw_free(f->work);
+    f->nwork = 0;
+    f->work = SF_FALLIBLE(fftw_alloc_complex(n));
+    if (!f->work)
+        return SF_ENOMEM;
+    f->nwork = n;
+    return SF_SUCCESS;
+}
+
+/* General (non-separable) kernel: 2-D first row, 2-D FFT, in the work
+ * array of a complex sampler of these periods (a general kernel's sampler
+ * is complex: spec_valid). */
 static int eig_2d(sf_field *f, size_t px, size_t py, double *lam)
 {
     size_t M = px * py;
-    fftw_complex *buf = SF_FALLIBLE(fftw_alloc_complex(M));
-    if (!buf)
-        return SF_ENOMEM;
+    int rc = work_for(f, M);
+    if (rc)
+        return rc;
+    fftw_complex *buf = f->work;
     fftw_plan p = SF_FALLIBLE(fftw_plan_dft_2d((int)py, (int)px, buf, buf, FFTW_FORWARD, FFTW_ESTIMATE));
-    if (!p) {
-        fftw_free(buf);
+    if (!p)
         return SF_ENOMEM;
-    }
     for (size_t j = 0; j < py; j++)
         for (size_t i = 0; i < px; i++)
             buf[i + px * j] = first_row_at(f, px, py, i, j);
@@ -312,7 +332,6 @@ static int eig_2d(sf_field *f, size_t px, size_t py, double *lam)
     for (size_t k = 0; k < M; k++)
         lam[k] = creal(buf[k]);
     fftw_destroy_plan(p);
-    fftw_free(buf);
     return SF_SUCCESS;
 }
 
@@ -332,18 +351,29 @@ static void eig_row(const sf_field *f, size_t ky, double *row)
         sep_eig_row(f, ky, row);
 }
 
-/* The sampling amplitudes sqrt(lambda+/M) for the periods in f->info
- * (the stored half, kx <= px/2, for a real sampler), with the
- * eigenvalues' extremes and the count clamped at zero (the nearest PSD
- * circulant in the Frobenius norm), row by row: no M-sized eigenvalue
- * array on the separable paths. */
+/* A sampling amplitude sqrt(lambda+/M) (invM = 1/M), lambda clamped at
+ * zero (the nearest PSD circulant in the Frobenius norm). */
+static inline double amp_of(double lambda, double invM)
+{
+    return sqrt((lambda < 0.0 ? 0.0 : lambda) * invM);
+}
+
+/* The sampling amplitudes for the periods in f->info (the stored half,
+ * kx <= px/2, for a real sampler; none for a separable kernel: its draw
+ * makes them from the 1-D eigenvalues, so a plan stores and first-touches
+ * no M-sized array but the FFT's), with the eigenvalues' extremes and the
+ * count clamped at zero, row by row: no M-sized eigenvalue array on the
+ * separable paths. */
 static int amp_fill(sf_field *f)
 {
     size_t px = f->info.px, py = f->info.py, hx = f->spec.sample_real ? px / 2 + 1 : px;
+    int keep = !f->info.separable;
     free(f->amp);
-    f->amp = sf_malloc(hx * py * sizeof *f->amp);
+    free(f->arow);
+    f->amp = keep ? sf_malloc(hx * py * sizeof *f->amp) : NULL;
+    f->arow = keep ? NULL : sf_malloc(px * sizeof *f->arow);
     double *row = sf_malloc(px * sizeof *row);
-    if (!f->amp || !row) {
+    if (!(keep ? f->amp : f->arow) || !row) {
         free(row);
         return SF_ENOMEM;
     }
@@ -356,10 +386,9 @@ static int amp_fill(sf_field *f)
         f->info.lambda_min = ky ? nan_min(f->info.lambda_min, mn) : mn;
         f->info.lambda_max = ky ? nan_max(f->info.lambda_max, mx) : mx;
         for (size_t kx = 0; kx < px; kx++) {
-            double l = row[kx];
-            if (l < 0.0) { l = 0.0; nc++; }
-            if (kx < hx)
-                f->amp[kx + hx * ky] = sqrt(l * invM);
+            nc += row[kx] < 0.0;
+            if (keep && kx < hx)
+                f->amp[kx + hx * ky] = amp_of(row[kx], invM);
         }
     }
     free(row);
@@ -456,14 +485,11 @@ static int build_general(sf_field *f)
 static int finish_plan(sf_field *f)
 {
     size_t px = f->info.px, py = f->info.py;
-    if (f->spec.sep_terms == 0) {   /* the separable-sum path has them from eig_bounds */
-        int rc = amp_fill(f);
-        if (rc)
-            return rc;
-    }
-    f->work = SF_FALLIBLE(fftw_alloc_complex(f->spec.sample_real ? (px / 2 + 1) * py : px * py));
-    if (!f->work)
-        return SF_ENOMEM;
+    int rc = f->spec.sep_terms == 0 ? amp_fill(f) : SF_SUCCESS;   /* the separable-sum path has them from eig_bounds */
+    if (!rc)
+        rc = work_for(f, f->spec.sample_real ? (px / 2 + 1) * py : px * py);
+    if (rc)
+        return rc;
     f->info.cov_error = NAN;   /* until measure_cov */
     return SF_SUCCESS;
 }
@@ -618,6 +644,7 @@ void sf_field_free(sf_field *f)
     free(f->ly);
     free(f->lam);
     free(f->amp);
+    free(f->arow);
     free(f->cov);
     free(f->kept);
     free(f->tx);
@@ -666,14 +693,28 @@ static void draw_real(sf_field *f, gsl_rng *rng)
     fftw_execute(f->plan);
 }
 
+/* Complex noise times the amplitudes, then the FFT: Re and Im are two
+ * fields.  A separable kernel's amplitudes are made here a row at a time
+ * from its 1-D eigenvalues (eig_row's product, amp_of: amp_fill's bits;
+ * a loop the compiler vectorises, so about as fast as reading them). */
 static void draw_and_transform(sf_field *f, gsl_rng *rng)
 {
-    const double *amp = f->amp;
+    size_t px = f->info.px, py = f->info.py;
+    double invM = 1.0 / ((double)px * (double)py);
     fftw_complex *w = f->work;
-    for (size_t k = 0; k < f->M; k++) {
-        double a = gsl_ran_gaussian_ziggurat(rng, 1.0);
-        double b = gsl_ran_gaussian_ziggurat(rng, 1.0);
-        w[k] = amp[k] * a + I * (amp[k] * b);
+    for (size_t ky = 0; ky < py; ky++) {
+        const double *amp = f->amp ? f->amp + px * ky : f->arow;
+        if (!f->amp) {
+            const double *restrict lx = f->lx;
+            double *restrict ar = f->arow, ly = f->ly[ky];
+            for (size_t kx = 0; kx < px; kx++)
+                ar[kx] = amp_of(lx[kx] * ly, invM);
+        }
+        for (size_t kx = 0; kx < px; kx++) {
+            double a = gsl_ran_gaussian_ziggurat(rng, 1.0);
+            double b = gsl_ran_gaussian_ziggurat(rng, 1.0);
+            w[kx + px * ky] = amp[kx] * a + I * (amp[kx] * b);
+        }
     }
     fftw_execute(f->plan);
 }

@@ -40,7 +40,7 @@ struct sf_osc {
                                 re-centred per test (made by sf_osc_alloc) */
     unsigned long wrench_evals;
     /* the last wrench evaluated and its arguments' bits (wrench()) */
-    struct {
+    struct wrench_memo {
         int valid;
         unsigned long slides;
         double key[6], q[3];
@@ -288,7 +288,8 @@ void sf_osc_describe(const sf_osc *o, FILE *f)
                 s->integrator == SF_INTEG_ADAPTIVE ? (o->ct ? " (adaptive: the wrench is a quadrature, fewer stages pay)"
                                                             : " (adaptive: the wrench is a closed form, high order pays)")
                                                    : "");
-    fprintf(f, "events: Brent (GSL) on single trial steps, to max(%g s, 8 ulp(t)); velocity jump of Eq. 14 %s\n", SF_OSC_TIME_TOL,
+    fprintf(f, "events: stick onsets by Brent (GSL) on single trial steps, to max(%g s, 8 ulp(t)); x extrema on the "
+               "step's quintic interpolant, one trial step; velocity jump of Eq. 14 %s\n", SF_OSC_TIME_TOL,
             s->velocity_jump ? "on" : "off");
 }
 
@@ -352,19 +353,16 @@ static void advance(sf_osc *o, double t0, const double *y0, const double *f0, do
     gsl_odeiv2_step_apply(o->bstep, t0, h, yo, yerr, f0, NULL, &o->sys);
 }
 
-enum { EV_STICK, EV_VX0 };
-
 /* An event search keeps its last EV_KEEP trial steps (it takes about 8):
  * the ends of its final bracket are points it has tried, so looking at
  * them again needs no new trial step (one kept no longer is made again,
  * with the same bits). */
 enum { EV_KEEP = 16 };
 
-/* The event function along a trial step of length h from (t0, y0): < 0
- * (stick) or <= 0 (vx = 0) where the event holds, > 0 before it. */
+/* The stick event along a trial step of length h from (t0, y0): < 0 where
+ * it holds, > 0 before it (sf_osc_g_stick). */
 typedef struct {
     sf_osc *o;
-    int kind;
     double t0;
     const double *y0;
     double f0[NSTATE];   /* f(t0, y0) */
@@ -375,7 +373,7 @@ typedef struct {
 
 static double ev_fn(const ev_par *e, double h, const double *ym)
 {
-    return e->kind == EV_STICK ? sf_osc_g_stick(e->o, e->t0 + h, ym) : ym[VX] * (e->y0[VX] > 0 ? 1 : -1);
+    return sf_osc_g_stick(e->o, e->t0 + h, ym);
 }
 
 static double ev_state(ev_par *e, double h, double *ym)
@@ -405,17 +403,18 @@ static double ev_value(double h, void *p)
     return ev_state(p, h, ym);
 }
 
-static int ev_holds(int kind, double v) { return kind == EV_STICK ? v < 0 : v <= 0; }
+/* The event time tolerance at t1: max(1e-12 s, 8 ulp(t1)). */
+static double ev_tol(double t1) { return fmax(SF_OSC_TIME_TOL, 8 * DBL_EPSILON * fabs(t1)); }
 
-/* The first event time in (t0, t1] to max(1e-12 s, 8 ulp(t)), given that
- * it does not hold at t0 and holds at t1: GSL's Brent solver on the event
- * function of single steps of the same stepper from the step's start
- * (superlinear where bisection gains one bit per trial step), returning the
- * bracket end where the event holds, and its state in ye. */
-static double locate_event(sf_osc *o, int kind, double t0, const double *y0, double t1, double *ye, unsigned long *count)
+/* The first stick time in (t0, t1] to ev_tol, given that stick does not
+ * hold at t0 and holds at t1: GSL's Brent solver on the event function of
+ * single steps of the same stepper from the step's start (superlinear where
+ * bisection gains one bit per trial step), returning the bracket end where
+ * it holds, and its state in ye. */
+static double locate_stick(sf_osc *o, double t0, const double *y0, double t1, double *ye, unsigned long *count)
 {
-    double lo = 0, hi = t1 - t0, tol = fmax(SF_OSC_TIME_TOL, 8 * DBL_EPSILON * fabs(t1));
-    ev_par par = { .o = o, .kind = kind, .t0 = t0, .y0 = y0, .count = count, .n = 0 };   /* slots empty */
+    double lo = 0, hi = t1 - t0, tol = ev_tol(t1);
+    ev_par par = { .o = o, .t0 = t0, .y0 = y0, .count = count, .n = 0 };   /* slots empty */
     sf_osc_slip_rhs(o, t0, y0, par.f0, NULL);
     gsl_function F = { ev_value, &par };
     if (hi - lo > tol && gsl_root_fsolver_set(o->root, &F, lo, hi) == GSL_SUCCESS) {
@@ -427,7 +426,7 @@ static double locate_event(sf_osc *o, int kind, double t0, const double *y0, dou
                 break;
         }
         double yl[NSTATE];
-        if (!ev_holds(kind, ev_state(&par, hi, ye)) && ev_holds(kind, ev_state(&par, lo, yl))) {
+        if (!(ev_state(&par, hi, ye) < 0) && ev_state(&par, lo, yl) < 0) {
             hi = lo;   /* the bracket is oriented the other way */
             memcpy(ye, yl, sizeof yl);
         }
@@ -435,6 +434,51 @@ static double locate_event(sf_osc *o, int kind, double t0, const double *y0, dou
     }
     advance(o, t0, y0, par.f0, hi, ye);
     return t0 + hi;
+}
+
+/* The velocity of the step's quintic Hermite interpolant of x (sample()'s,
+ * differentiated) at s in [0, 1]: v0 at 0 and v1 at 1 exactly. */
+typedef struct {
+    double dx, h, v0, a0, a1, v1;   /* dx = (x1 - x0) / h */
+} hermite_v;
+
+static double hermite_vel(double s, void *p)
+{
+    const hermite_v *c = p;
+    double s2 = s * s, s3 = s2 * s, s4 = s3 * s;
+    return (30 * s2 - 60 * s3 + 30 * s4) * c->dx + (1 - 18 * s2 + 32 * s3 - 15 * s4) * c->v0 +
+           (s - 4.5 * s2 + 6 * s3 - 2.5 * s4) * c->h * c->a0 + (1.5 * s2 - 4 * s3 + 2.5 * s4) * c->h * c->a1 +
+           (-12 * s2 + 28 * s3 - 15 * s4) * c->v1;
+}
+
+/* An extremum of x inside the slip step (t0, t1] (vx changes sign; p0, p1:
+ * x, vx, ax at its ends): the root of the interpolant's velocity (GSL's
+ * Brent, to ev_tol), then one trial step of the stepper from (t0, y0) to
+ * it for the state ye.  Slip is smooth there (the relative speed is about
+ * v_b), so the interpolant's velocity errs by O(h^5) and the root by that
+ * over |ax|; x, flat at its extremum, errs by its square, the friction
+ * force by its rate times it: far below the stepper's own error, at one
+ * trial step where a search on trial steps takes about seven. */
+static double locate_extremum(sf_osc *o, double t0, const double *y0, const double p0[3], double t1,
+                              const double p1[3], double *ye, unsigned long *count)
+{
+    double h = t1 - t0, lo = 0, hi = 1, f0[NSTATE];
+    hermite_v c = { (p1[0] - p0[0]) / h, h, p0[1], p0[2], p1[2], p1[1] };
+    gsl_function F = { hermite_vel, &c };
+    double s = 0.5, tol = ev_tol(t1) / h;
+    (void)gsl_root_fsolver_set(o->root, &F, lo, hi);   /* a valid bracket: v0 v1 < 0, exactly the ends' values */
+    for (int it = 0; it < 200; it++) {
+        gsl_root_fsolver_iterate(o->root);
+        s = gsl_root_fsolver_root(o->root);
+        lo = gsl_root_fsolver_x_lower(o->root);
+        hi = gsl_root_fsolver_x_upper(o->root);
+        if (gsl_root_test_interval(lo, hi, tol, 0) == GSL_SUCCESS)
+            break;
+    }
+    sf_osc_slip_rhs(o, t0, y0, f0, NULL);
+    advance(o, t0, y0, f0, s * h, ye);
+    (*count)++;
+    return t0 + s * h;
 }
 
 /* Time to the stick break from (t0, y) with the belt patch fixed. */
@@ -896,22 +940,24 @@ static int run_slip(run_state *r)
     int to_stick = r->armed && g1 < 0;
     double ye[NSTATE], te = r->t;
     if (to_stick) {
-        te = locate_event(o, EV_STICK, t0, y0, r->t, ye, &res->event_trials);
+        te = locate_stick(o, t0, y0, r->t, ye, &res->event_trials);
         r->t = te;
         memcpy(y, ye, sizeof ye);
     }
     double t = r->t;
+    wrench(o, t, y, q);   /* the step's end (GSL's last evaluation unless the step was cut at stick) */
+    double p1[3] = { y[X], y[VX], (-s->k * y[X] + q[0]) / s->m };
     if (y0[VX] * y[VX] < 0) {   /* an extremum of x inside the step */
-        double yx[NSTATE];
-        double tx = locate_event(o, EV_VX0, t0, y0, t, yx, &res->event_trials), qx[3];
+        double yx[NSTATE], qx[3];
+        struct wrench_memo end = o->memo;   /* the end's wrench, asked for again by the next step */
+        double tx = locate_extremum(o, t0, y0, r->pa, t, p1, yx, &res->event_trials);
         wrench(o, tx, yx, qx);   /* at the extremum's own time: the belt has moved on by t */
+        o->memo = end;
         note(&r->a, yx[X], qx[0]);
         track(o, tx, res, yx);
         if (y0[VX] > 0 && (rc = x_maximum(&r->a, tx, yx[X], qx[0])))
             return rc;
     }
-    wrench(o, t, y, q);
-    double p1[3] = { y[X], y[VX], (-s->k * y[X] + q[0]) / s->m };
     sample(res, &r->next, t0, r->pa, t, p1);
     memcpy(r->pa, p1, sizeof r->pa);
     note(&r->a, y[X], q[0]);

@@ -163,17 +163,24 @@ static double gauss_kernel(double r, void *p)
     return exp(-r * r / (l * l));
 }
 
+/* The squared-exponential kernel of length *l on an m x n grid, by the
+ * separable path (*a, SF_SUCCESS) and as a general kernel (*b, rc_b). */
+static void both_paths(size_t m, size_t n, double dx, double dy, double *l, int rc_b, sf_field **a, sf_field **b)
+{
+    sf_field_spec s;
+    sf_field_spec_default(&s, m, n, dx, dy, *l);
+    assert_int_equal(sf_field_alloc(&s, a), SF_SUCCESS);
+    s.kernel = gauss_kernel;
+    s.kernel_params = l;
+    assert_int_equal(sf_field_alloc(&s, b), rc_b);
+}
+
 static void general_path_matches_separable(void **state)
 {
     (void)state;
     double l = 0.12;
-    sf_field_spec s;
-    sf_field_spec_default(&s, 10, 7, 0.03, 0.04, l);
     sf_field *a, *b;
-    assert_int_equal(sf_field_alloc(&s, &a), SF_SUCCESS);
-    s.kernel = gauss_kernel;
-    s.kernel_params = &l;
-    assert_int_equal(sf_field_alloc(&s, &b), SF_SUCCESS);
+    both_paths(10, 7, 0.03, 0.04, &l, SF_SUCCESS, &a, &b);
     assert_int_equal(sf_field_get_info(a)->separable, 1);
     assert_int_equal(sf_field_get_info(b)->separable, 0);
     double ca[70], cb[70];
@@ -181,6 +188,32 @@ static void general_path_matches_separable(void **state)
     sf_field_covariance(b, cb);
     for (int i = 0; i < 70; i++)
         assert_close(ca[i], cb[i], 1e-12);
+    sf_field_free(a);
+    sf_field_free(b);
+}
+
+/* A general kernel whose embedding must grow (l long against the grid):
+ * the eigenvalue FFT runs in the sampler's work array, which each larger
+ * period replaces; the covariance and the periods are the separable
+ * path's, and a draw is finite. */
+static void general_path_pads_like_separable(void **state)
+{
+    (void)state;
+    double l = 0.6;
+    sf_field *a, *b;
+    both_paths(12, 6, 0.05, 0.05, &l, SF_ETRUNC, &a, &b);   /* usable: its eigenvalues' floor not quite reached */
+    const sf_field_info *ia = sf_field_get_info(a), *ib = sf_field_get_info(b);
+    assert_true(ib->px > 24 || ib->py > 10);   /* the padding loop ran: past the first periods (22, 10 made nice) */
+    double ca[72], cb[72], g[72];
+    sf_field_covariance(a, ca);
+    sf_field_covariance(b, cb);
+    for (int i = 0; i < 72; i++)
+        assert_close(ca[i], cb[i], 1e-9 + 2 * fmax(ib->cov_error, ia->cov_error));
+    gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
+    assert_int_equal(sf_field_sample_fresh(b, r, g), SF_SUCCESS);
+    for (int i = 0; i < 72; i++)
+        assert_true(isfinite(g[i]));
+    gsl_rng_free(r);
     sf_field_free(a);
     sf_field_free(b);
 }
@@ -223,6 +256,7 @@ int main(void)
         cmocka_unit_test(sampling_is_deterministic_and_pairs_match),
         cmocka_unit_test(single_point),
         cmocka_unit_test(general_path_matches_separable),
+        cmocka_unit_test(general_path_pads_like_separable),
         cmocka_unit_test(wisdom_round_trip),
     };
     return cmocka_run_group_tests_name("field", tests, NULL, NULL);

@@ -33,6 +33,15 @@ static void closed_form_table1(void **state)
     assert_int_equal(sf_cycle1d_init(&c, &s, 0), SF_EINVAL);
 }
 
+/* Table 1 as the 1-D model with a uniform COF at this rtol. */
+static void scene_1d(sf_scene *s, double rtol)
+{
+    sf_scene_default(s);
+    s->cof = SF_COF_UNIFORM;
+    s->dof = SF_DOF_1;
+    s->rtol = rtol;
+}
+
 static int run(sf_scene *s, sf_osc_result *r, char *err)
 {
     sf_cof *cof;
@@ -55,10 +64,7 @@ static void qoi_definitions(void **state)
 {
     (void)state;
     sf_scene s;
-    sf_scene_default(&s);
-    s.cof = SF_COF_UNIFORM;
-    s.dof = SF_DOF_1;
-    s.rtol = 1e-10;
+    scene_1d(&s, 1e-10);
     s.T = 40;
     s.v_b = 3;
     sf_osc_result r;
@@ -75,10 +81,7 @@ static void qoi_definitions(void **state)
     assert_true(isnan(r.pv_x) && isnan(r.stick_fraction));
     assert_true(isfinite(r.osc_pv_x_mean));
     sf_osc_result_free(&r);
-    sf_scene_default(&s);
-    s.cof = SF_COF_UNIFORM;
-    s.dof = SF_DOF_1;
-    s.rtol = 1e-11;
+    scene_1d(&s, 1e-11);
     sf_cycle1d c;
     assert_int_equal(sf_cycle1d_init(&c, &s, s.eps_lambda), SF_SUCCESS);
     assert_int_equal(run(&s, &r, err), SF_SUCCESS);
@@ -91,6 +94,35 @@ static void qoi_definitions(void **state)
     s.t_skip = s.T;   /* an empty window: T_sk cannot be formed */
     assert_int_equal(run(&s, &r, err), SF_SUCCESS);
     assert_true(isnan(r.stick_fraction) && r.nosc == 0 && isnan(r.pv_x));
+    sf_osc_result_free(&r);
+}
+
+/* The x extrema located on the step's interpolant (one trial step each),
+ * on the 1-D Table 1 cycle with the threshold (eps-corrected closed form):
+ * each oscillation's PV_x is 2 A, and the maxima are one period apart.
+ * Tolerances: measured 2e-12 m and 6e-8 s (rk8pd's steps of ~0.3 s: the
+ * interpolant's velocity errs by O(h^5), the root by that over |ax|); a
+ * root off by dt moves x by ~omega^2 A dt^2 / 2 and the spacing by dt, so
+ * 1e-9 m and 1e-6 s catch dt above ~5e-5 s and 1e-6 s. */
+static void extrema_on_closed_form(void **state)
+{
+    (void)state;
+    sf_scene s;
+    scene_1d(&s, 1e-11);
+    sf_cycle1d c;
+    assert_int_equal(sf_cycle1d_init(&c, &s, s.eps_lambda), SF_SUCCESS);
+    sf_osc_result r;
+    char err[200];
+    assert_int_equal(run(&s, &r, err), SF_SUCCESS);
+    assert_true(r.nosc >= 10);
+    double ex = 0, et = 0;
+    for (size_t i = 0; i < r.nosc; i++) {
+        ex = fmax(ex, fabs(r.osc_pv_x[i] - c.pv_x));
+        if (i)
+            et = fmax(et, fabs(r.osc_t[i] - r.osc_t[i - 1] - c.period));
+    }
+    assert_true(ex <= 1e-9);
+    assert_true(et <= 1e-6);
     sf_osc_result_free(&r);
 }
 
@@ -388,6 +420,7 @@ int main(void)
         cmocka_unit_test(closed_form_table1),
         cmocka_unit_test(edges),
         cmocka_unit_test(qoi_definitions),
+        cmocka_unit_test(extrema_on_closed_form),
         cmocka_unit_test(eq15),
         cmocka_unit_test(periodogram),
         cmocka_unit_test(leaves_strip),
