@@ -152,8 +152,9 @@ static double mean_work(const double *v, size_t n, int fine, int coarse)
     return w / (double)n;
 }
 
-static int ml_stats(sf_sweep_point *p, const double *pairs, const double *lev0)
+static int ml_stats(sf_sweep_point *p, const double *pairs)
 {
+    const double *lev0 = p->ml.coarse0;
     for (int q = 0; q < NQ; q++) {
         double vc, vd, vf, sum[2] = { 0, 0 };
         size_t m1, m0 = 0;
@@ -235,12 +236,17 @@ int sf_sweep_run_mlmc(const sf_scene *s, size_t n_plain, size_t n_pilot, int thr
     if (!rc)
         rc = sf_mc_run(&spec0, &ops0, &ctx, lev0, NULL, err, errlen);
     if (!rc && (!(out->qoi = sf_calloc(n1 * NQ, sizeof *out->qoi)) ||
-                !(out->ratio = sf_calloc(n1 * NQ, sizeof *out->ratio))))
+                !(out->ratio = sf_calloc(n1 * NQ, sizeof *out->ratio)) ||
+                !(out->ml.coarse1 = sf_calloc(n1 * NQ, sizeof *out->ml.coarse1))))
         rc = SF_ENOMEM;
     if (!rc) {   /* the rows: level 1's fine values, plain Monte Carlo's first n1 */
         out->n = n1;
-        for (size_t i = 0; i < n1; i++)
+        out->ml.coarse0 = lev0;
+        lev0 = NULL;
+        for (size_t i = 0; i < n1; i++) {
             memcpy(out->qoi + i * NQ, pairs + i * P_OUT, NQ * sizeof *pairs);
+            memcpy(out->ml.coarse1 + i * NQ, pairs + i * P_OUT + P_C, NQ * sizeof *pairs);
+        }
         out->ml.n[0] = n0;
         out->ml.n[1] = n1;
         out->ml.cost[0] = mean_work(pairs, n1, 0, 1);
@@ -250,7 +256,7 @@ int sf_sweep_run_mlmc(const sf_scene *s, size_t n_plain, size_t n_pilot, int thr
         rc = sf_sweep_point_stats(out);
     }
     if (!rc)
-        rc = ml_stats(out, pairs, lev0);
+        rc = ml_stats(out, pairs);
     free(pairs);
     free(lev0);
     return rc;

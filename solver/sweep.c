@@ -436,5 +436,7 @@ void sf_sweep_point_free(sf_sweep_point *p)
     free(p->qoi);
     free(p->ratio);
     free(p->companion);
-    p->qoi = p->ratio = p->companion = NULL;
+    free(p->ml.coarse0);
+    free(p->ml.coarse1);
+    p->qoi = p->ratio = p->companion = p->ml.coarse0 = p->ml.coarse1 = NULL;
 }

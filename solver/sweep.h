@@ -113,6 +113,8 @@ typedef struct {
      * (var_fine cost_fine / (se^2 work)). */
     struct {
         size_t n[2];
+        double *coarse0;        /* n[0] x SF_SWEEP_NQ: level 0's coarse QoIs, in their units */
+        double *coarse1;        /* n[1] x SF_SWEEP_NQ: the pairs' coarse QoIs (their fine ones: qoi) */
         double cost[2], cost_fine, work;
         sf_sweep_ml q[SF_SWEEP_NQ];
     } ml;
