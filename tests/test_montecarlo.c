@@ -429,6 +429,10 @@ static void mlmc_estimator(void **state)
     assert_int_equal(c.num.cells, 59);
     sf_cof_plan_info in = { .kind = SF_COF_VARIABLE };
     assert_true(sf_mlmc_draw_work(&in) == 0);
+    in = (sf_cof_plan_info){ .kind = SF_COF_FIELD, .nx = 10, .ny = 10, .box = 0.01 };
+    assert_true(sf_mlmc_draw_work(&in) == 100 * SF_MLMC_DRAW_WORK_CELL);
+    in.box = 0;
+    assert_true(sf_mlmc_draw_work(&in) == 100 * SF_MLMC_DRAW_WORK_POINT);
     /* a point */
     sf_scene s;
     sf_scene_default(&s);
@@ -465,6 +469,15 @@ static void mlmc_estimator(void **state)
     sf_sweep_point_free(&a);
     sf_sweep_point_free(&b);
     sf_sweep_point_free(&p);
+    /* a uniform COF: every realisation the same, no variance at either
+       level: the estimate stands, its interval has no degrees of freedom */
+    s.cof = SF_COF_UNIFORM;
+    assert_int_equal(sf_sweep_run_mlmc(&s, 4, 2, 1, NULL, &a, err, sizeof err), SF_SUCCESS);
+    assert_true(a.ml.n[0] == 2 && a.ml.n[1] == 2 && isfinite(a.ml.q[0].mean) && isnan(a.ml.q[0].df));
+    sf_sweep_point_free(&a);
+    s.T = 10.5;   /* no deterministic reference: refused before any realisation */
+    assert_int_not_equal(sf_sweep_run_mlmc(&s, 4, 2, 1, NULL, &a, err, sizeof err), SF_SUCCESS);
+    sf_sweep_point_free(&a);
 }
 
 static void shortest_text(void **state)

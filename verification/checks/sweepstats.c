@@ -21,7 +21,7 @@
 #include <gsl/gsl_statistics_double.h>
 
 #define NQ SF_SWEEP_NQ
-#define MAXCOL 128   /* the summary has 71 columns (3 QoIs x 15, the design's and the control variate's) */
+#define MAXCOL 128   /* the summary has 97 columns (3 QoIs x 15, the design's, the control variate's and the two-level estimator's) */
 static const char *const qn[NQ] = { "pv_x", "pv_F", "stick_fraction" };
 
 /* A TSV table read back: the header's names and the cells as numbers
