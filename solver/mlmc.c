@@ -183,7 +183,7 @@ static int ml_stats(sf_sweep_point *p, const double *pairs)
         e->m[1] = m1;
         e->var[0] = v0;
         e->var[1] = vd;
-        e->var_fine = vf;
+        e->var_fine = v0 + (vf - vc);   /* Var Q_c from level 0's many values, plus the pairs' Var Q_f - Var Q_c */
         e->mean = sum[0] / (double)m0 + sum[1] / (double)m1;
         double a = v0 / (double)m0, b = vd / (double)m1;
         e->se = sqrt(a + b);
@@ -193,7 +193,7 @@ static int ml_stats(sf_sweep_point *p, const double *pairs)
         double t = e->df > 0 ? gsl_cdf_tdist_Pinv(0.5 * (1 + SF_SWEEP_CI_LEVEL), e->df) : NAN;
         e->ci_lo = e->mean - t * e->se;
         e->ci_hi = e->mean + t * e->se;
-        e->vrf = vf * p->ml.cost_fine / (e->se * e->se * p->ml.work);
+        e->vrf = e->var_fine * p->ml.cost_fine / (e->se * e->se * p->ml.work);
     }
     return SF_SUCCESS;
 }

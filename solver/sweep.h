@@ -110,7 +110,9 @@ typedef struct {
      * over the m_l finite values, the Student interval at the
      * Welch-Satterthwaite degrees of freedom df, and vrf = the variance
      * plain Monte Carlo reaches at the same work over the estimator's
-     * (var_fine cost_fine / (se^2 work)). */
+     * (var_fine cost_fine / (se^2 work)), var_fine = Var Q_f estimated
+     * as var[0] + the pairs' (Var Q_f - Var Q_c): level 0's many values
+     * carry the bulk, the few pairs only the small difference. */
     struct {
         size_t n[2];
         double *coarse0;        /* n[0] x SF_SWEEP_NQ: level 0's coarse QoIs, in their units */

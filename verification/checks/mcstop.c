@@ -205,6 +205,24 @@ static int chk_stein_coverage(const sf_case *c, sf_result *r)
     return SF_SUCCESS;
 }
 
+static const char *const ratio_name[3] = { "PV_x", "PV_F", "stick fraction" };
+
+/* the variance reduction factors vrf[k * 3 + q] of the three ratios over
+ * the K sweep points at l/R = lr[k] */
+static void plot_vrf(sf_result *r, const char *title, size_t K, const double *lr, const double *vrf)
+{
+    sf_plot *pl = sf_result_plot(r, "vrf", title, "l/R [-]", "variance reduction factor [-]");
+    sf_plot_log(pl, 1, 1);
+    for (int q = 0; q < 3; q++) {
+        double *y = check_alloc(K * sizeof *y);
+        for (size_t k = 0; k < K; k++)
+            y[k] = vrf[k * 3 + q];
+        sf_plot_series(pl, ratio_name[q], SF_STYLE_LINESPOINTS, K, lr, y);
+        free(y);
+    }
+    sf_plot_hline(pl, "no reduction", 1);
+}
+
 /* ---- the control variate (sweep.h: sf_sweep_run_cv) ----
  *
  * Per sweep point: (1) the companion's sample mean against the field's
@@ -220,7 +238,6 @@ static int chk_cv_unbiased(const sf_case *c, sf_result *r)
     size_t K = c->spec.sweep.n;
     if (!K || !*c->spec.sweep_param)
         return SF_EINVAL;
-    static const char *const rq[3] = { "PV_x", "PV_F", "stick fraction" };
     size_t nrow = 3 + 1;
     double *lr = check_alloc(K * sizeof *lr), *vrf = check_alloc(K * 3 * sizeof *vrf);
     char tab[4096];
@@ -263,7 +280,7 @@ static int chk_cv_unbiased(const sf_case *c, sf_result *r)
             gap = sf_max(gap, fabs((p.cv[q].mean - ym) + p.cv[q].beta * (cmq - s0->mu_mean)));
             vrf[k * 3 + q] = p.cv[q].vrf;
             used += (size_t)snprintf(tab + used, sizeof tab - used,
-                                     "| %g | %s | %.5f +- %.5f | %.5f +- %.5f | %.3g | %.3g |\n", lr[k], rq[q],
+                                     "| %g | %s | %.5f +- %.5f | %.5f +- %.5f | %.3g | %.3g |\n", lr[k], ratio_name[q],
                                      p.rstat[q].mean, p.rstat[q].se, p.cv[q].mean, p.cv[q].se, p.cv[q].beta,
                                      p.cv[q].vrf);
         }
@@ -271,7 +288,7 @@ static int chk_cv_unbiased(const sf_case *c, sf_result *r)
         sf_check_le(r, what, gap, 1e-12);
         if (lr[k] >= 100)
             for (int q = 0; q < 3; q++) {
-                snprintf(what, sizeof what, "l/R = %g: %s variance reduction factor", lr[k], rq[q]);
+                snprintf(what, sizeof what, "l/R = %g: %s variance reduction factor", lr[k], ratio_name[q]);
                 sf_check_ge(r, what, vrf[k * 3 + q], 2);
             }
         sf_sweep_point_free(&p);
@@ -282,17 +299,7 @@ static int chk_cv_unbiased(const sf_case *c, sf_result *r)
                    "(+- standard error), the slope beta and the variance reduction factor:\n\n"
                    "| l/R | QoI | plain | control variate | beta | reduction |\n|---|---|---|---|---|---|\n%s\n",
                 s0->samples, s0->seed, tab);
-        sf_plot *pl = sf_result_plot(r, "vrf", "Variance reduction of the control variate", "l/R [-]",
-                                     "variance reduction factor [-]");
-        sf_plot_log(pl, 1, 1);
-        for (int q = 0; q < 3; q++) {
-            double *y = check_alloc(K * sizeof *y);
-            for (size_t k = 0; k < K; k++)
-                y[k] = vrf[k * 3 + q];
-            sf_plot_series(pl, rq[q], SF_STYLE_LINESPOINTS, K, lr, y);
-            free(y);
-        }
-        sf_plot_hline(pl, "no reduction", 1);
+        plot_vrf(r, "Variance reduction of the control variate", K, lr, vrf);
     }
     free(lr);
     free(vrf);
@@ -302,7 +309,6 @@ static int chk_cv_unbiased(const sf_case *c, sf_result *r)
 /* ---- the two-level estimator (sweep.h: sf_sweep_run_mlmc, mlmc.h) ---- */
 
 #define ML_PILOT 10   /* the CLI's default pilot */
-static const char *const mlq[3] = { "PV_x", "PV_F", "stick fraction" };
 
 /* the mean of the finite x[i] (i < n), their count and (var) variance */
 static double finite_mean(const double *x, size_t n, size_t *m, double *var)
@@ -353,7 +359,7 @@ static int chk_mlmc_levels(const sf_case *c, sf_result *r)
             x[i] = (double)i;
             d[i] = (p.qoi[i * SF_SWEEP_NQ + q] - p.ml.coarse1[i * SF_SWEEP_NQ + q]) / p.det[q];
         }
-        sf_plot_series(plt, mlq[q], SF_STYLE_POINTS, n1, x, d);
+        sf_plot_series(plt, ratio_name[q], SF_STYLE_POINTS, n1, x, d);
         for (size_t i = 0; i < n0; i++)
             b[i] = p.ml.coarse0[i * SF_SWEEP_NQ + q] / p.det[q];
         size_t m0, m1;   /* the finite values (a realisation may form no QoI: excluded) */
@@ -458,12 +464,12 @@ static int chk_mlmc_unbiased(const sf_case *c, sf_result *r)
             double z = (e->mean - p.rstat[q].mean) / hypot(e->se, p.rstat[q].se);
             char what[200];
             snprintf(what, sizeof what, "l/R = %g: %s ratio mean, two levels %.5f = plain %.5f (z test)", lr[k],
-                     mlq[q], e->mean, p.rstat[q].mean);
+                     ratio_name[q], e->mean, p.rstat[q].mean);
             sf_check_pvalue(r, what, 2 * gsl_cdf_ugaussian_Q(fabs(z)), alpha, p.rstat[q].n_used);
             vrf[k * 3 + q] = e->vrf;
             used += (size_t)snprintf(tab + used, sizeof tab - used,
                                      "| %g | %s | %.5f +- %.5f | %.5f +- %.5f | %zu / %zu | %.3g / %.3g | %.3g / %.3g "
-                                     "| %.3g |\n", lr[k], mlq[q], p.rstat[q].mean, p.rstat[q].se, e->mean, e->se,
+                                     "| %.3g |\n", lr[k], ratio_name[q], p.rstat[q].mean, p.rstat[q].se, e->mean, e->se,
                                      ml.ml.n[0], ml.ml.n[1], e->var[0], e->var[1], ml.ml.cost[0], ml.ml.cost[1], e->vrf);
         }
         sf_sweep_point_free(&ml);
@@ -477,17 +483,7 @@ static int chk_mlmc_unbiased(const sf_case *c, sf_result *r)
                    "| l/R | QoI | plain | two levels | n0 / n1 | V0 / V1 | C0 / C1 | reduction |\n"
                    "|---|---|---|---|---|---|---|---|\n%s\n",
                 s0->samples, s0->samples, ML_PILOT, s0->seed, tab);
-        sf_plot *pl = sf_result_plot(r, "vrf", "Variance reduction of the two-level estimator at equal work",
-                                     "l/R [-]", "variance reduction factor [-]");
-        sf_plot_log(pl, 1, 1);
-        for (int q = 0; q < 3; q++) {
-            double *y = check_alloc(K * sizeof *y);
-            for (size_t k = 0; k < K; k++)
-                y[k] = vrf[k * 3 + q];
-            sf_plot_series(pl, mlq[q], SF_STYLE_LINESPOINTS, K, lr, y);
-            free(y);
-        }
-        sf_plot_hline(pl, "no reduction", 1);
+        plot_vrf(r, "Variance reduction of the two-level estimator at equal work", K, lr, vrf);
     }
     free(lr);
     free(vrf);
