@@ -29,7 +29,7 @@
  * Measured at Table 1, T = 100 s: 1.5-2.6 ns per cell evaluation (0.1 to
  * 1000 l/R), a circulant lognormal draw 2.2-2.7e-7 s a strip point, a
  * cell-average draw (one real FFT) 4.0-4.2e-8 s, ~1 ms of fixed cost a
- * run (the bench section `estimators` prints them). */
+ * run (the bench section `estimators` prints the draw's share it gives). */
 #ifndef SF_MLMC_H
 #define SF_MLMC_H
 #ifdef __cplusplus
