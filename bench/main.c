@@ -63,7 +63,7 @@ int main(int argc, char **argv)
         { "unum", bench_unum, 0, NULL, 0, 0 },
         { "plan", bench_plan, 0, NULL, 0, 1 },   /* the plan's calibration (minutes): only when named */
         { "fig11", bench_fig11, 0, NULL, 0, 1 },   /* issue 14: Fig. 11 time estimate (minutes): only when named */
-        { "estimators", bench_estimators, 0, NULL, 0, 1 },   /* plain MC vs control variate, Fig. 11 grid (minutes) */
+        { "estimators", bench_estimators, 0, NULL, 0, 1 },   /* plain MC vs control variate and two levels, Fig. 11 grid (minutes) */
     };
     enum { NSEC = sizeof sec / sizeof sec[0] };
     int rc = 0;

@@ -22,7 +22,8 @@ static void usage(FILE *f)
 {
     fputs("usage: slipfield sweep SCENE --param NAME --values A,B,C --realisations N --out FILE\n"
           "                       [--summary FILE] [--threads T] [--resume]\n"
-          "                       [--target-se X [--pilot N0] | --control-variate]\n"
+          "                       [--target-se X [--pilot N0] | --control-variate |\n"
+          "                        --estimator mlmc [--pilot N0]]\n"
           "Monte Carlo sweep: at each value of NAME, N realisations of the scene.\n"
           "  --param NAME      a numeric scene key, or l_over_R (l = value x R), or\n"
           "                    mu_mean (at the scene's CV: mu_std scales with it)\n"
@@ -63,6 +64,14 @@ static void usage(FILE *f)
           "                    ratio mean (cv_ratio_mean, se, 95% interval at n - 2\n"
           "                    degrees of freedom) and its variance reduction factor\n"
           "                    (cv_vrf); nan for a tiled field (no companion)\n"
+          "  --estimator mlmc  two levels on one field: a coarse plan (half the rings,\n"
+          "                    rtol 1e-5) and the scene's; N (--realisations) sets the\n"
+          "                    target, the variance of plain Monte Carlo with N; a pilot\n"
+          "                    of N0 pairs (--pilot, default min(10, N)) sets each\n"
+          "                    level's size; the summary adds ml_n0, ml_n1, each\n"
+          "                    level's work, and per ratio the estimate, its interval,\n"
+          "                    each level's variance and the variance reduction factor;\n"
+          "                    the rows are level 1's fine realisations\n"
           "  --threads T       OpenMP threads (default: all); results do not depend on it\n"
           "  --resume          continue from FILE.ckpt<k> checkpoints of an interrupted run\n"
           "                    (and remove the temporary files a killed run left)\n"
@@ -121,7 +130,7 @@ static void remove_stale_tmp(const char *out)
 
 int sf_cmd_sweep(int argc, char **argv)
 {
-    const char *path, *param = NULL, *values = NULL, *out_path = NULL, *sum_path = NULL;
+    const char *path, *param = NULL, *values = NULL, *out_path = NULL, *sum_path = NULL, *estimator = NULL;
     size_t n = 0, threads = 0, pilot = 0;
     double target_se = NAN;
     int resume = 0, cv = 0;
@@ -136,6 +145,7 @@ int sf_cmd_sweep(int argc, char **argv)
         { "--resume", SF_OPT_FLAG, &resume, 0, 0, NULL },
         { "--target-se", SF_OPT_DOUBLE, &target_se, 0, 0, NULL },
         { "--pilot", SF_OPT_SIZE, &pilot, 2, 10000000, NULL },
+        { "--estimator", SF_OPT_STRING, &estimator, 0, 0, NULL },
     };
     int rc = sf_cli_parse("sweep", argc, argv, opts, sizeof opts / sizeof opts[0], &path, usage);
     if (rc)
@@ -167,17 +177,27 @@ int sf_cmd_sweep(int argc, char **argv)
         fprintf(stderr, "slipfield sweep: --target-se takes a standard error > 0 (got %g)\n", target_se);
         return SF_EXIT_USAGE;
     }
-    if (pilot && !staged) {
-        fprintf(stderr, "slipfield sweep: --pilot needs --target-se\n");
+    int ml = 0;
+    if (estimator && !(ml = !strcmp(estimator, "mlmc")) && strcmp(estimator, "plain")) {
+        fprintf(stderr, "slipfield sweep: --estimator takes plain or mlmc (got '%s')\n", estimator);
+        return SF_EXIT_USAGE;
+    }
+    if (ml && (staged || cv || resume)) {
+        fprintf(stderr, "slipfield sweep: --estimator mlmc does not combine with --target-se, --control-variate "
+                        "or --resume\n");
+        return SF_EXIT_USAGE;
+    }
+    if (pilot && !staged && !ml) {
+        fprintf(stderr, "slipfield sweep: --pilot needs --target-se or --estimator mlmc\n");
         return SF_EXIT_USAGE;
     }
     if (staged && cv) {
         fprintf(stderr, "slipfield sweep: --control-variate and --target-se do not combine\n");
         return SF_EXIT_USAGE;
     }
-    if (staged && !pilot)
-        pilot = n < 20 ? n : 20;
-    if (staged && (pilot < 2 || pilot > n)) {
+    if ((staged || ml) && !pilot)
+        pilot = n < (ml ? 10 : 20) ? n : ml ? 10 : 20;
+    if ((staged || ml) && (pilot < 2 || pilot > n)) {
         fprintf(stderr, "slipfield sweep: --pilot %zu: the pilot needs 2 to %zu (the cap, --realisations) realisations\n",
                 pilot, n);
         return SF_EXIT_USAGE;
@@ -228,7 +248,8 @@ int sf_cmd_sweep(int argc, char **argv)
         snprintf(label, sizeof label, "%s = %g", param, v[k]);
         sf_sweep_point p;
         const char *ckp = strcmp(out_path, "-") ? ck : NULL;
-        rc = staged ? sf_sweep_run_target(&s, target_se, pilot, n, (int)threads, ckp, resume, label, &p, err, sizeof err)
+        rc = ml       ? sf_sweep_run_mlmc(&s, n, pilot, (int)threads, label, &p, err, sizeof err)
+             : staged ? sf_sweep_run_target(&s, target_se, pilot, n, (int)threads, ckp, resume, label, &p, err, sizeof err)
              : cv   ? sf_sweep_run_cv(&s, n, (int)threads, ckp, resume, label, &p, err, sizeof err)
                     : sf_sweep_run(&s, n, (int)threads, ckp, resume, label, &p, err, sizeof err);
         if (rc) {

@@ -115,11 +115,14 @@ expect 2 "in [t_skip, T] (pv_x = nan): raise T" "$bin" sweep sw.scene --param T 
 for a in "--target-se 0" "--target-se -0.1" "--target-se nan" "--target-se x"; do
     expect 2 "--target-se" "$bin" sweep sw.scene --param T --values 20 --realisations 5 $a --out sw.tsv
 done
-expect 2 "--pilot needs --target-se" "$bin" sweep sw.scene --param T --values 20 --realisations 5 --pilot 3 --out sw.tsv
+expect 2 "--pilot needs --target-se or --estimator mlmc" "$bin" sweep sw.scene --param T --values 20 --realisations 5 --pilot 3 --out sw.tsv
 expect 2 "--pilot takes a whole number from 2" "$bin" sweep sw.scene --param T --values 20 --realisations 5 --target-se 0.1 --pilot 1 --out sw.tsv
 expect 2 "the pilot needs 2 to 5" "$bin" sweep sw.scene --param T --values 20 --realisations 5 --target-se 0.1 --pilot 6 --out sw.tsv
 expect 2 "do not combine" "$bin" sweep sw.scene --param T --values 20 --realisations 5 --target-se 0.1 --control-variate --out sw.tsv
 expect 2 "--control-variate takes no value" "$bin" sweep sw.scene --param T --values 20 --realisations 5 --control-variate=1 --out sw.tsv
+expect 2 "--estimator takes plain or mlmc" "$bin" sweep sw.scene --param T --values 20 --realisations 5 --estimator mc --out sw.tsv
+expect 2 "does not combine" "$bin" sweep sw.scene --param T --values 20 --realisations 5 --estimator mlmc --control-variate --out sw.tsv
+expect 2 "the pilot needs 2 to 5" "$bin" sweep sw.scene --param T --values 20 --realisations 5 --estimator mlmc --pilot 6 --out sw.tsv
 [ ! -e sw.tsv ] && ok || bad "a refused two-stage sweep left sw.tsv"
 printf 'cof = variable\nT = 14\nt_skip = 4\n' > var.scene
 expect 0 "" "$bin" sweep var.scene --param T --values 14 --realisations 6 --target-se 1e-9 --pilot 3 --out st.tsv --summary st.sum

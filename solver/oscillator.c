@@ -301,6 +301,8 @@ void sf_osc_explain(const sf_osc *o, FILE *f)
 
 const sf_numplan *sf_osc_get_plan(const sf_osc *o) { return &o->plan; }
 
+size_t sf_osc_ncells(const sf_osc *o) { return o->ct ? sf_contact_ncells(o->ct) : 0; }
+
 void sf_osc_scales(const sf_osc *o, double sc[SF_OSC_NSTATE])
 {
     memcpy(sc, o->sc, sizeof o->sc);

@@ -144,6 +144,9 @@ void sf_osc_explain(const sf_osc *o, FILE *f);
  * errors, warnings (numplan.h; decided in sf_osc_alloc from qoi_tol and
  * the explicit keys). */
 const sf_numplan *sf_osc_get_plan(const sf_osc *o);
+/* The cells of its slip-wrench quadrature (0 without one): with
+ * sf_osc_result.wrench_evals, the work of a run in cell evaluations. */
+size_t sf_osc_ncells(const sf_osc *o);
 
 /* Run [0, T].  row (may be NULL) receives the history; sample_dt > 0
  * also fills res->x_samples.  Returns SF_SUCCESS, SF_EFAIL (non-finite

@@ -84,20 +84,28 @@ static int realise_on(const sf_scene *s, const sf_plan *pl, sf_cof_plan *plan, i
     int rc = sf_cof_plan_draw(plan, rng, &cof);
     if (rc)
         return rc;
+    rc = sf_sweep_solve(s, pl, cof, out, NULL);
+    if (!rc && companion)   /* after the run: its window stays where the run left it */
+        out[SF_SWEEP_NQ] = sf_sweep_companion(cof, s);
+    sf_cof_free(cof);
+    return rc;
+}
+
+int sf_sweep_solve(const sf_scene *s, const sf_plan *pl, const sf_cof *cof, double out[SF_SWEEP_NQ], double *work)
+{
     sf_osc *o;
     sf_osc_result r;
-    rc = pl ? sf_osc_alloc_plan(s, pl, cof, &o, NULL, 0) : sf_osc_alloc(s, cof, &o, NULL, 0);
-    if (!rc) {
-        rc = sf_osc_run(o, NULL, NULL, 0, &r, NULL, 0);
-        out[SF_SWEEP_PVX] = r.pv_x;
-        out[SF_SWEEP_PVF] = r.pv_F;
-        out[SF_SWEEP_SF] = r.stick_fraction;
-        sf_osc_result_free(&r);
-        sf_osc_free(o);
-        if (companion)   /* after the run: its window stays where the run left it */
-            out[SF_SWEEP_NQ] = sf_sweep_companion(cof, s);
-    }
-    sf_cof_free(cof);
+    int rc = pl ? sf_osc_alloc_plan(s, pl, cof, &o, NULL, 0) : sf_osc_alloc(s, cof, &o, NULL, 0);
+    if (rc)
+        return rc;
+    rc = sf_osc_run(o, NULL, NULL, 0, &r, NULL, 0);
+    out[SF_SWEEP_PVX] = r.pv_x;
+    out[SF_SWEEP_PVF] = r.pv_F;
+    out[SF_SWEEP_SF] = r.stick_fraction;
+    if (work)
+        *work = (double)r.wrench_evals * (double)sf_osc_ncells(o);
+    sf_osc_result_free(&r);
+    sf_osc_free(o);
     return rc;
 }
 
@@ -380,6 +388,14 @@ void sf_sweep_summary_header(FILE *f)
     for (int q = 0; q < SF_SWEEP_NQ; q++)   /* the control variate (nan without it) */
         fprintf(f, "\t%s_cv_ratio_mean[-]\t%s_cv_ratio_se[-]\t%s_cv_ratio_ci%d_lo[-]\t%s_cv_ratio_ci%d_hi[-]\t%s_cv_vrf[-]",
                 qname[q], qname[q], qname[q], lv, qname[q], lv, qname[q]);
+    /* the two-level estimator (nan without it): each level's N and work
+       per sample [cell evaluations], per ratio the estimate, its interval,
+       each level's variance and the variance reduction factor */
+    fputs("\tml_n0\tml_n1\tml_cost0\tml_cost1\tml_cost_plain", f);
+    for (int q = 0; q < SF_SWEEP_NQ; q++)
+        fprintf(f, "\t%s_ml_ratio_mean[-]\t%s_ml_ratio_se[-]\t%s_ml_ratio_ci%d_lo[-]\t%s_ml_ratio_ci%d_hi[-]"
+                   "\t%s_ml_var0[-]\t%s_ml_var1[-]\t%s_ml_vrf[-]",
+                qname[q], qname[q], qname[q], lv, qname[q], lv, qname[q], qname[q], qname[q]);
     fputc('\n', f);
 }
 
@@ -406,6 +422,17 @@ void sf_sweep_summary_row(FILE *f, const char *param, double value, const sf_swe
                 p->companion ? p->cv[q].ci_lo : nan, p->companion ? p->cv[q].ci_hi : nan,
                 p->companion ? p->cv[q].vrf : nan);
     }
+    int ml = p->ml.n[1] > 0;
+    fprintf(f, "\t%zu\t%zu\t%.6g\t%.6g\t%.6g", p->ml.n[0], p->ml.n[1], ml ? p->ml.cost[0] : NAN,
+            ml ? p->ml.cost[1] : NAN, ml ? p->ml.cost_fine : NAN);
+    for (int q = 0; q < SF_SWEEP_NQ; q++) {
+        const sf_sweep_ml *e = &p->ml.q[q];
+        if (ml)
+            fprintf(f, "\t%.17g\t%.17g\t%.17g\t%.17g\t%.6g\t%.6g\t%.6g", e->mean, e->se, e->ci_lo, e->ci_hi,
+                    e->var[0], e->var[1], e->vrf);
+        else
+            fputs("\tnan\tnan\tnan\tnan\tnan\tnan\tnan", f);
+    }
     fputc('\n', f);
 }
 
@@ -417,6 +444,9 @@ void sf_sweep_point_free(sf_sweep_point *p)
     free(p->num_qc);
     free(p->num_rho);
     free(p->num_apriori);
+    free(p->ml.coarse0);
+    free(p->ml.coarse1);
     p->qoi = p->ratio = p->companion = p->num_qc = p->num_rho = p->num_apriori = NULL;
+    p->ml.coarse0 = p->ml.coarse1 = NULL;
     p->num_m = 0;
 }

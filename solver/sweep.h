@@ -56,6 +56,12 @@ typedef struct {
     double bias, bias_se, u_mean;
 } sf_sweep_num;
 
+/* One ratio's two-level estimate (sf_sweep_point.ml, below). */
+typedef struct {
+    size_t m[2];
+    double var[2], var_fine, mean, se, df, ci_lo, ci_hi, vrf;
+} sf_sweep_ml;
+
 typedef struct {
     double det[SF_SWEEP_NQ];    /* deterministic pv_x [m], pv_F [N], stick fraction [-] */
     double *qoi;                /* n x SF_SWEEP_NQ, realisation-major: the values, in their units */
@@ -104,6 +110,26 @@ typedef struct {
         size_t m;
         double mean, se, ci_lo, ci_hi, beta, vrf;
     } cv[SF_SWEEP_NQ];
+    /* The two-level estimator (sf_sweep_run_mlmc; n[1] = 0 otherwise):
+     * level 0, n[0] coarse realisations on fields of their own; level 1,
+     * n[1] pairs (fine and coarse run on one field: the rows above are
+     * their fine values).  cost[l]: a level's mean work per sample [cell
+     * evaluations] (mlmc.h), cost_fine a plain realisation's; per ratio
+     * var[l] the level's sample variance (coarse ratios; fine - coarse),
+     * mean = level 0's mean + level 1's, se^2 = var[0]/m0 + var[1]/m1
+     * over the m_l finite values, the Student interval at the
+     * Welch-Satterthwaite degrees of freedom df, and vrf = the variance
+     * plain Monte Carlo reaches at the same work over the estimator's
+     * (var_fine cost_fine / (se^2 work)), var_fine = Var Q_f estimated
+     * as var[0] + the pairs' (Var Q_f - Var Q_c): level 0's many values
+     * carry the bulk, the few pairs only the small difference. */
+    struct {
+        size_t n[2];
+        double *coarse0;        /* n[0] x SF_SWEEP_NQ: level 0's coarse QoIs, in their units */
+        double *coarse1;        /* n[1] x SF_SWEEP_NQ: the pairs' coarse QoIs (their fine ones: qoi) */
+        double cost[2], cost_fine, work;
+        sf_sweep_ml q[SF_SWEEP_NQ];
+    } ml;
 } sf_sweep_point;
 
 /* A Monte Carlo workspace over a scene's COF draws (montecarlo.h's
@@ -150,6 +176,17 @@ int sf_sweep_run_cv(const sf_scene *s, size_t n, int threads, const char *checkp
  * spread over [t_skip, T]; NaN for a window (sf_cof_window_margin > 0). */
 #define SF_SWEEP_CV_POINTS 600
 double sf_sweep_companion(const sf_cof *cof, const sf_scene *s);
+
+/* A two-level sweep point (mlmc.h): the ratio means at the variance
+ * plain Monte Carlo reaches with n_plain realisations, from n_pilot pairs
+ * (reused as level 1's first) that set each level's sample size. */
+int sf_sweep_run_mlmc(const sf_scene *s, size_t n_plain, size_t n_pilot, int threads, const char *label,
+                      sf_sweep_point *out, char *err, size_t errlen);
+
+/* One run of scene s on plan pl and a drawn cof: its QoIs into out and,
+ * when work is not NULL, its work [cell evaluations] (wrench evaluations
+ * x quadrature cells). */
+int sf_sweep_solve(const sf_scene *s, const sf_plan *pl, const sf_cof *cof, double out[SF_SWEEP_NQ], double *work);
 
 /* A two-stage sweep point (mcstop.h): n_pilot realisations (the floor),
  * then as many more as the pilot says every ratio mean needs for a

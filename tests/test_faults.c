@@ -645,6 +645,17 @@ static int sweep_cv(void *ctx)
     return rc;
 }
 
+static int sweep_mlmc(void *ctx)
+{
+    sf_sweep_point pt;
+    char err[256] = "";
+    int rc = sf_sweep_run_mlmc(ctx, 4, 2, 1, NULL, &pt, err, sizeof err);
+    if (!rc)
+        assert_true(pt.ml.n[1] >= 2 && isfinite(pt.ml.q[0].mean));
+    sf_sweep_point_free(&pt);
+    return rc;
+}
+
 /* a small field scene for the sweep's walks */
 static void scene_sweep(sf_scene *s)
 {
@@ -662,6 +673,7 @@ static void sweeps(void **state)
     assert_true(walk("sf_sweep_run", sweep, &s, SF_SUCCESS, 0) > 20);
     assert_true(walk("sf_sweep_run_target", sweep2, &s, SF_SUCCESS, 0) > 20);
     assert_true(walk("sf_sweep_run_cv", sweep_cv, &s, SF_SUCCESS, 0) > 20);
+    assert_true(walk("sf_sweep_run_mlmc", sweep_mlmc, &s, SF_SUCCESS, 0) > 20);
 }
 
 /* the numerical error of a sweep point's means: a point computed once,

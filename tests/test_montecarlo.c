@@ -5,6 +5,7 @@
 #include "montecarlo.h"
 #include "sweep.h"
 #include "mcstop.h"
+#include "mlmc.h"
 #include "scene.h"
 #include "cof.h"
 #include <stdint.h>
@@ -390,6 +391,95 @@ static void cv_estimator(void **state)
     sf_sweep_point_free(&b);
 }
 
+/* The two-level estimator: Giles' sizes, the coarse plan, and a point
+ * (the same bits on two threads; level 1's fine values are plain Monte
+ * Carlo's; its summary columns). */
+static void mlmc_estimator(void **state)
+{
+    (void)state;
+    /* sizes: V1 = 0 leaves level 1 at the pilot and level 0 at
+       n_plain V0 / Vf; no usable ratio: the floors; caps hold */
+    double v0[3] = { 1, 1, NAN }, v1[3] = { 0, 0, 1 }, vf[3] = { 1, 0, 1 };
+    size_t n0, n1;
+    sf_mlmc_sizes(v0, v1, vf, 3, 1, 4, 100, 10, &n0, &n1);
+    assert_true(n0 == 100 && n1 == 10);
+    double w0[1] = { 1 }, w1[1] = { 1 }, wf[1] = { 1 };
+    sf_mlmc_sizes(w0, w1, wf, 1, 1, 1, 100, 10, &n0, &n1);   /* 2 x 100 each, capped */
+    assert_true(n0 == 200 && n1 == 100);
+    sf_mlmc_sizes(w0, w1, wf, 0, 1, 1, 100, 10, &n0, &n1);
+    assert_true(n0 == 10 && n1 == 10);
+    w1[0] = 100;
+    sf_mlmc_sizes(w0, w1, wf, 1, 1, 1, 100, 10, &n0, &n1);   /* level 0 over its cap */
+    assert_true(n0 == 400 && n1 == 100);
+    /* the coarse plan: half the rings (at least 2), rtol raised; cell
+       averages keep their cells (the field's boxes) */
+    sf_plan f = { 0 }, c;
+    f.num.quadrature = 1;
+    f.num.cells = 25;
+    f.num.rtol = 1e-8;
+    sf_mlmc_coarse_plan(&f, &c);
+    assert_true(c.num.cells == 13 && c.num.rtol == SF_MLMC_RTOL);
+    f.num.cells = 3;
+    f.num.rtol = 1e-3;
+    sf_mlmc_coarse_plan(&f, &c);
+    assert_true(c.num.cells == 2 && c.num.rtol == 1e-3);
+    f.num.cell_average = 1;
+    f.num.cells = 59;
+    sf_mlmc_coarse_plan(&f, &c);
+    assert_int_equal(c.num.cells, 59);
+    sf_cof_plan_info in = { .kind = SF_COF_VARIABLE };
+    assert_true(sf_mlmc_draw_work(&in) == 0);
+    in = (sf_cof_plan_info){ .kind = SF_COF_FIELD, .nx = 10, .ny = 10, .box = 0.01 };
+    assert_true(sf_mlmc_draw_work(&in) == 100 * SF_MLMC_DRAW_WORK_CELL);
+    in.box = 0;
+    assert_true(sf_mlmc_draw_work(&in) == 100 * SF_MLMC_DRAW_WORK_POINT);
+    /* a point */
+    sf_scene s;
+    sf_scene_default(&s);
+    s.T = 14;
+    s.t_skip = 4;
+    s.l = 0.5;
+    char err[200];
+    sf_sweep_point a, b, p;
+    assert_int_equal(sf_sweep_run_mlmc(&s, 8, 1, 1, NULL, &a, err, sizeof err), SF_EINVAL);
+    assert_int_equal(sf_sweep_run_mlmc(&s, 3, 4, 1, NULL, &a, err, sizeof err), SF_EINVAL);
+    assert_int_equal(sf_sweep_run_mlmc(&s, 8, 3, 1, NULL, &a, err, sizeof err), SF_SUCCESS);
+    assert_int_equal(sf_sweep_run_mlmc(&s, 8, 3, 2, NULL, &b, err, sizeof err), SF_SUCCESS);
+    assert_int_equal(sf_sweep_run(&s, a.n, 1, NULL, 0, NULL, &p, err, sizeof err), SF_SUCCESS);
+    assert_true(a.ml.n[1] == a.n && a.n >= 3 && a.ml.n[0] >= 3);
+    assert_memory_equal(a.qoi, b.qoi, a.n * SF_SWEEP_NQ * sizeof *a.qoi);
+    assert_memory_equal(a.qoi, p.qoi, a.n * SF_SWEEP_NQ * sizeof *a.qoi);
+    assert_memory_equal(a.ml.q, b.ml.q, sizeof a.ml.q);
+    assert_true(a.ml.n[0] == b.ml.n[0] && a.ml.work == b.ml.work);
+    assert_memory_equal(a.ml.coarse0, b.ml.coarse0, a.ml.n[0] * SF_SWEEP_NQ * sizeof *a.ml.coarse0);
+    assert_memory_equal(a.ml.coarse1, b.ml.coarse1, a.n * SF_SWEEP_NQ * sizeof *a.ml.coarse1);
+    for (int q = 0; q < SF_SWEEP_NQ; q++) {
+        const sf_sweep_ml *e = &a.ml.q[q];
+        assert_true(isfinite(e->mean) && e->se > 0 && e->ci_lo < e->mean && e->mean < e->ci_hi && e->vrf > 0);
+        assert_true(e->var[1] < e->var_fine);   /* one field: the difference varies less than the fine value */
+    }
+    assert_true(a.ml.cost[0] < a.ml.cost_fine && a.ml.cost_fine < a.ml.cost[1]);
+    char *text = summary_text("l_over_R", 1, &a);
+    assert_true(summary_field(text, "pv_F_ml_ratio_mean[-]") == a.ml.q[SF_SWEEP_PVF].mean);
+    assert_true(summary_field(text, "ml_n0") == (double)a.ml.n[0]);
+    free(text);
+    text = summary_text("l_over_R", 1, &p);   /* without it: nan */
+    assert_true(isnan(summary_field(text, "stick_fraction_ml_vrf[-]")) && isnan(summary_field(text, "ml_cost0")));
+    free(text);
+    sf_sweep_point_free(&a);
+    sf_sweep_point_free(&b);
+    sf_sweep_point_free(&p);
+    /* a uniform COF: every realisation the same, no variance at either
+       level: the estimate stands, its interval has no degrees of freedom */
+    s.cof = SF_COF_UNIFORM;
+    assert_int_equal(sf_sweep_run_mlmc(&s, 4, 2, 1, NULL, &a, err, sizeof err), SF_SUCCESS);
+    assert_true(a.ml.n[0] == 2 && a.ml.n[1] == 2 && isfinite(a.ml.q[0].mean) && isnan(a.ml.q[0].df));
+    sf_sweep_point_free(&a);
+    s.T = 10.5;   /* no deterministic reference: refused before any realisation */
+    assert_int_not_equal(sf_sweep_run_mlmc(&s, 4, 2, 1, NULL, &a, err, sizeof err), SF_SUCCESS);
+    sf_sweep_point_free(&a);
+}
+
 static void shortest_text(void **state)
 {
     (void)state;
@@ -417,6 +507,7 @@ int main(void)
         cmocka_unit_test(stein_runs),
         cmocka_unit_test(stein_sweep),
         cmocka_unit_test(cv_estimator),
+        cmocka_unit_test(mlmc_estimator),
     };
     return cmocka_run_group_tests_name("montecarlo", tests, NULL, NULL);
 }

@@ -13,6 +13,7 @@
 #include "checks.h"
 #include "common.h"
 #include "mcstop.h"
+#include "mlmc.h"
 #include "montecarlo.h"
 #include "sweep.h"
 #include "sf_error.h"
@@ -204,6 +205,24 @@ static int chk_stein_coverage(const sf_case *c, sf_result *r)
     return SF_SUCCESS;
 }
 
+static const char *const ratio_name[3] = { "PV_x", "PV_F", "stick fraction" };
+
+/* the variance reduction factors vrf[k * 3 + q] of the three ratios over
+ * the K sweep points at l/R = lr[k] */
+static void plot_vrf(sf_result *r, const char *title, size_t K, const double *lr, const double *vrf)
+{
+    sf_plot *pl = sf_result_plot(r, "vrf", title, "l/R [-]", "variance reduction factor [-]");
+    sf_plot_log(pl, 1, 1);
+    for (int q = 0; q < 3; q++) {
+        double *y = check_alloc(K * sizeof *y);
+        for (size_t k = 0; k < K; k++)
+            y[k] = vrf[k * 3 + q];
+        sf_plot_series(pl, ratio_name[q], SF_STYLE_LINESPOINTS, K, lr, y);
+        free(y);
+    }
+    sf_plot_hline(pl, "no reduction", 1);
+}
+
 /* ---- the control variate (sweep.h: sf_sweep_run_cv) ----
  *
  * Per sweep point: (1) the companion's sample mean against the field's
@@ -219,7 +238,6 @@ static int chk_cv_unbiased(const sf_case *c, sf_result *r)
     size_t K = c->spec.sweep.n;
     if (!K || !*c->spec.sweep_param)
         return SF_EINVAL;
-    static const char *const rq[3] = { "PV_x", "PV_F", "stick fraction" };
     size_t nrow = 3 + 1;
     double *lr = check_alloc(K * sizeof *lr), *vrf = check_alloc(K * 3 * sizeof *vrf);
     char tab[4096];
@@ -262,7 +280,7 @@ static int chk_cv_unbiased(const sf_case *c, sf_result *r)
             gap = sf_max(gap, fabs((p.cv[q].mean - ym) + p.cv[q].beta * (cmq - s0->mu_mean)));
             vrf[k * 3 + q] = p.cv[q].vrf;
             used += (size_t)snprintf(tab + used, sizeof tab - used,
-                                     "| %g | %s | %.5f +- %.5f | %.5f +- %.5f | %.3g | %.3g |\n", lr[k], rq[q],
+                                     "| %g | %s | %.5f +- %.5f | %.5f +- %.5f | %.3g | %.3g |\n", lr[k], ratio_name[q],
                                      p.rstat[q].mean, p.rstat[q].se, p.cv[q].mean, p.cv[q].se, p.cv[q].beta,
                                      p.cv[q].vrf);
         }
@@ -270,7 +288,7 @@ static int chk_cv_unbiased(const sf_case *c, sf_result *r)
         sf_check_le(r, what, gap, 1e-12);
         if (lr[k] >= 100)
             for (int q = 0; q < 3; q++) {
-                snprintf(what, sizeof what, "l/R = %g: %s variance reduction factor", lr[k], rq[q]);
+                snprintf(what, sizeof what, "l/R = %g: %s variance reduction factor", lr[k], ratio_name[q]);
                 sf_check_ge(r, what, vrf[k * 3 + q], 2);
             }
         sf_sweep_point_free(&p);
@@ -281,17 +299,191 @@ static int chk_cv_unbiased(const sf_case *c, sf_result *r)
                    "(+- standard error), the slope beta and the variance reduction factor:\n\n"
                    "| l/R | QoI | plain | control variate | beta | reduction |\n|---|---|---|---|---|---|\n%s\n",
                 s0->samples, s0->seed, tab);
-        sf_plot *pl = sf_result_plot(r, "vrf", "Variance reduction of the control variate", "l/R [-]",
-                                     "variance reduction factor [-]");
-        sf_plot_log(pl, 1, 1);
-        for (int q = 0; q < 3; q++) {
-            double *y = check_alloc(K * sizeof *y);
-            for (size_t k = 0; k < K; k++)
-                y[k] = vrf[k * 3 + q];
-            sf_plot_series(pl, rq[q], SF_STYLE_LINESPOINTS, K, lr, y);
-            free(y);
+        plot_vrf(r, "Variance reduction of the control variate", K, lr, vrf);
+    }
+    free(lr);
+    free(vrf);
+    return rc;
+}
+
+/* ---- the two-level estimator (sweep.h: sf_sweep_run_mlmc, mlmc.h) ---- */
+
+#define ML_PILOT 10   /* the CLI's default pilot */
+
+/* the mean of the finite x[i] (i < n), their count and (var) variance */
+static double finite_mean(const double *x, size_t n, size_t *m, double *var)
+{
+    double *v = check_alloc((n ? n : 1) * sizeof *v);
+    size_t k = 0;
+    for (size_t i = 0; i < n; i++)
+        if (isfinite(x[i]))
+            v[k++] = x[i];
+    double mean = k ? gsl_stats_mean(v, 1, k) : NAN;
+    *var = k > 1 ? gsl_stats_variance_m(v, 1, k, mean) : NAN;
+    free(v);
+    *m = k;
+    return mean;
+}
+
+/* Exact, at one point: (1) each ratio's estimate is level 0's mean of
+ * coarse ratios plus level 1's mean of fine - coarse, recomputed here
+ * from the values the point keeps; (2) level 1's fine values are plain
+ * Monte Carlo's first n1, bit for bit; (3) the first coarse value of each
+ * level is what this check's own coarse run gives: a plan made from the
+ * scene with the coarse settings as keys (half the rings, rtol 1e-5) on
+ * the field of the level's stream (level 1: the plain stream 0; level 0:
+ * the stream sf_mc_seed(seed, SF_MLMC_LEVEL0_STREAM)). */
+static int chk_mlmc_levels(const sf_case *c, sf_result *r)
+{
+    const sf_scene *s = &c->scene;
+    char err[256] = "";
+    sf_sweep_point p, pl;
+    int rc = sf_sweep_run_mlmc(s, s->samples, ML_PILOT, 0, NULL, &p, err, sizeof err);
+    if (!rc)
+        rc = sf_sweep_run(s, p.n, 0, NULL, 0, NULL, &pl, err, sizeof err);
+    else
+        memset(&pl, 0, sizeof pl);
+    if (rc) {
+        sf_note(r, "The sweep failed: %s\n", *err ? err : sf_strerror(rc));
+        sf_sweep_point_free(&p);
+        sf_sweep_point_free(&pl);
+        return rc;
+    }
+    size_t n1 = p.ml.n[1], n0 = p.ml.n[0];
+    double gap = 0, segap = 0;
+    double *d = check_alloc(n1 * sizeof *d), *b = check_alloc((n0 ? n0 : 1) * sizeof *b), *x = check_alloc(n1 * sizeof *x);
+    sf_plot *plt = sf_result_plot(r, "levels", "Level 1: fine - coarse ratio per pair (one field each)", "pair [-]",
+                                  "fine - coarse ratio [-]");
+    for (int q = 0; q < 3; q++) {
+        for (size_t i = 0; i < n1; i++) {
+            x[i] = (double)i;
+            d[i] = (p.qoi[i * SF_SWEEP_NQ + q] - p.ml.coarse1[i * SF_SWEEP_NQ + q]) / p.det[q];
         }
-        sf_plot_hline(pl, "no reduction", 1);
+        sf_plot_series(plt, ratio_name[q], SF_STYLE_POINTS, n1, x, d);
+        for (size_t i = 0; i < n0; i++)
+            b[i] = p.ml.coarse0[i * SF_SWEEP_NQ + q] / p.det[q];
+        size_t m0, m1;   /* the finite values (a realisation may form no QoI: excluded) */
+        double v0, v1, mean = finite_mean(b, n0, &m0, &v0) + finite_mean(d, n1, &m1, &v1);
+        gap = sf_max(gap, fabs(p.ml.q[q].mean - mean));
+        double se = sqrt(v0 / (double)m0 + v1 / (double)m1);
+        segap = sf_max(segap, fabs(p.ml.q[q].se - se) / se);
+    }
+    free(d);
+    free(b);
+    free(x);
+    sf_check_le(r, "|estimate - (level 0's mean coarse ratio + level 1's mean fine - coarse)|, max over the ratios "
+                   "(sums of <= 4 N terms of order 1: round-off ~1e-14)", gap, 1e-12);
+    sf_check_le(r, "relative |se - sqrt(var0 / m0 + var1 / m1)| over the m_l finite values, max over the ratios", segap,
+                1e-10);
+    size_t diff = 0;
+    for (size_t i = 0; i < n1 * SF_SWEEP_NQ; i++)
+        diff += memcmp(&p.qoi[i], &pl.qoi[i], sizeof *p.qoi) != 0;
+    sf_check_le(r, "level 1's fine values that differ from plain Monte Carlo's first n1 (bits)", (double)diff, 0);
+    /* the coarse runs, made here from the scene */
+    sf_plan fp, cp;
+    sf_scene sc = *s;
+    rc = sf_plan_make(s, &fp, err, sizeof err);
+    if (!rc) {
+        if (!fp.num.cell_average)
+            sc.cells = fp.num.cells / 2 + fp.num.cells % 2 < 2 ? 2 : fp.num.cells / 2 + fp.num.cells % 2;
+        sc.rtol = 1e-5;
+        rc = sf_plan_make(&sc, &cp, err, sizeof err);
+    }
+    double worst = 0;
+    for (int lev = 0; lev < 2 && !rc; lev++) {
+        sf_cof_plan *plan;
+        sf_cof *cof;
+        gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+        gsl_rng_set(rng, lev ? sf_mc_seed(s->seed, 0) : sf_mc_seed(sf_mc_seed(s->seed, SF_MLMC_LEVEL0_STREAM), 0));
+        double out[SF_SWEEP_NQ];
+        rc = sf_cof_plan_alloc(s, &plan, err, sizeof err);
+        if (!rc && !(rc = sf_cof_plan_draw(plan, rng, &cof))) {
+            rc = sf_sweep_solve(&sc, &cp, cof, out, NULL);
+            sf_cof_free(cof);
+        }
+        if (!rc)
+            sf_cof_plan_free(plan);
+        gsl_rng_free(rng);
+        const double *got = lev ? p.ml.coarse1 : p.ml.coarse0;
+        for (int q = 0; q < 3 && !rc; q++)
+            worst = sf_max(worst, fabs(got[q] - out[q]) / fabs(out[q]));
+    }
+    if (rc) {
+        sf_note(r, "The coarse run failed: %s\n", *err ? err : sf_strerror(rc));
+    } else {
+        sf_check_le(r, "relative |first coarse value - this check's coarse run on its field|, both levels, max "
+                       "over the QoIs (the same operations: 0)", worst, 0);
+        sf_note(r, "l/R = %g, %zu realisations' variance as the target (seed %lu): level 0 %zu coarse "
+                   "realisations, level 1 %zu pairs (coarse plan: %zu -> %zu %s, rtol %g -> %g).\n",
+                s->l / s->R, s->samples, s->seed, n0, n1, fp.num.cells, sc.cells ? sc.cells : fp.num.cells,
+                fp.num.layout ? "cells per diameter" : "rings", fp.num.rtol, sc.rtol);
+    }
+    sf_sweep_point_free(&p);
+    sf_sweep_point_free(&pl);
+    return rc;
+}
+
+/* Statistical, per sweep point: the two-level estimate of each ratio mean
+ * against plain Monte Carlo's on independent streams (seed' =
+ * sf_mc_seed(seed, 1) ^ 1, N = samples), z = difference / sqrt(se_ml^2 +
+ * se_plain^2), two-sided normal p-value at alpha / (3 K); each level's
+ * N, variance and work, and the variance reduction factor, reported. */
+static int chk_mlmc_unbiased(const sf_case *c, sf_result *r)
+{
+    const sf_scene *s0 = &c->scene;
+    size_t K = c->spec.sweep.n;
+    if (!K || !*c->spec.sweep_param)
+        return SF_EINVAL;
+    double *lr = check_alloc(K * sizeof *lr), *vrf = check_alloc(K * 3 * sizeof *vrf);
+    char tab[6000];
+    size_t used = 0;
+    int rc = SF_SUCCESS;
+    double alpha = c->spec.alpha / (double)(3 * K);
+    for (size_t k = 0; k < K && !rc; k++) {
+        sf_scene s = *s0, sp;
+        sf_sweep_point ml, p;
+        char err[256] = "";
+        memset(&p, 0, sizeof p);
+        memset(&ml, 0, sizeof ml);
+        rc = sf_sweep_set(&s, c->spec.sweep_param, c->spec.sweep.v[k], err, sizeof err);
+        sp = s;
+        sp.seed = sf_mc_seed(s.seed, 1) ^ 1;
+        if (!rc)
+            rc = sf_sweep_run_mlmc(&s, s0->samples, ML_PILOT, 0, NULL, &ml, err, sizeof err);
+        if (!rc)
+            rc = sf_sweep_run(&sp, s0->samples, 0, NULL, 0, NULL, &p, err, sizeof err);
+        if (rc) {
+            sf_note(r, "**Sweep failed at %s = %g:** %s\n", c->spec.sweep_param, c->spec.sweep.v[k], err);
+            sf_sweep_point_free(&ml);
+            sf_sweep_point_free(&p);
+            break;
+        }
+        lr[k] = s.l / s.R;
+        for (int q = 0; q < 3; q++) {
+            const sf_sweep_ml *e = &ml.ml.q[q];
+            double z = (e->mean - p.rstat[q].mean) / hypot(e->se, p.rstat[q].se);
+            char what[200];
+            snprintf(what, sizeof what, "l/R = %g: %s ratio mean, two levels %.5f = plain %.5f (z test)", lr[k],
+                     ratio_name[q], e->mean, p.rstat[q].mean);
+            sf_check_pvalue(r, what, 2 * gsl_cdf_ugaussian_Q(fabs(z)), alpha, p.rstat[q].n_used);
+            vrf[k * 3 + q] = e->vrf;
+            used += (size_t)snprintf(tab + used, sizeof tab - used,
+                                     "| %g | %s | %.5f +- %.5f | %.5f +- %.5f | %zu / %zu | %.3g / %.3g | %.3g / %.3g "
+                                     "| %.3g |\n", lr[k], ratio_name[q], p.rstat[q].mean, p.rstat[q].se, e->mean, e->se,
+                                     ml.ml.n[0], ml.ml.n[1], e->var[0], e->var[1], ml.ml.cost[0], ml.ml.cost[1], e->vrf);
+        }
+        sf_sweep_point_free(&ml);
+        sf_sweep_point_free(&p);
+    }
+    if (!rc) {
+        sf_note(r, "Plain Monte Carlo: %zu realisations per point on independent streams; two levels: plain's "
+                   "variance at %zu as the target, a pilot of %d pairs (seed %lu). Ratio means (+- standard error), "
+                   "each level's N (n0 coarse / n1 pairs), variance (V0 of the coarse ratio, V1 of fine - coarse), "
+                   "work per sample [cell evaluations] and the variance reduction factor at equal work:\n\n"
+                   "| l/R | QoI | plain | two levels | n0 / n1 | V0 / V1 | C0 / C1 | reduction |\n"
+                   "|---|---|---|---|---|---|---|---|\n%s\n",
+                s0->samples, s0->samples, ML_PILOT, s0->seed, tab);
+        plot_vrf(r, "Variance reduction of the two-level estimator at equal work", K, lr, vrf);
     }
     free(lr);
     free(vrf);
@@ -299,6 +491,11 @@ static int chk_cv_unbiased(const sf_case *c, sf_result *r)
 }
 
 const sf_check_def sf_checks_mcstop[] = {
+    { "mc_mlmc_levels", chk_mlmc_levels,
+      "two-level estimator: the estimate is its levels' means, level 1 is plain MC's streams, the coarse runs "
+      "are the coarse plan's on the level's field" },
+    { "mc_mlmc_unbiased", chk_mlmc_unbiased,
+      "two-level estimator: its ratio means equal plain Monte Carlo's on independent streams; per-level N, V, C" },
     { "mc_cv_unbiased", chk_cv_unbiased,
       "control variate: the companion's mean is mu_mean, the estimator is the regression one, its reduction" },
     { "mc_stein_coverage", chk_stein_coverage,

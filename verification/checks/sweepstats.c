@@ -23,7 +23,7 @@
 #include <gsl/gsl_statistics_double.h>
 
 #define NQ SF_SWEEP_NQ
-#define MAXCOL 128   /* the summary has 71 columns (3 QoIs x 15, the design's and the control variate's) */
+#define MAXCOL 128   /* the summary has 97 columns (3 QoIs x 15, the design's, the control variate's and the two-level estimator's) */
 #define FS 3.0       /* u_num_mean's safety factor, as documented: 3 (|num_bias| + t se) */
 static const char *const qn[NQ] = { "pv_x", "pv_F", "stick_fraction" };
 

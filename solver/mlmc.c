@@ -1,0 +1,263 @@
+#include "mlmc.h"
+#include "cof.h"
+#include "montecarlo.h"
+#include "sf_alloc.h"
+#include "sf_error.h"
+#include "sweep.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <gsl/gsl_cdf.h>
+#include <gsl/gsl_statistics_double.h>
+
+enum { NQ = SF_SWEEP_NQ };
+/* a pair's values: fine QoIs, coarse QoIs, draw, fine and coarse work */
+enum { P_C = NQ, P_DRAW = 2 * NQ, P_WF, P_WC, P_OUT };
+
+void sf_mlmc_coarse_plan(const sf_plan *fine, sf_plan *coarse)
+{
+    *coarse = *fine;
+    if (fine->num.quadrature && !fine->num.cell_average) {
+        size_t c = (fine->num.cells + 1) / 2;
+        coarse->num.cells = c < 2 ? 2 : c;
+    }
+    coarse->num.rtol = fmax(fine->num.rtol, SF_MLMC_RTOL);
+}
+
+double sf_mlmc_draw_work(const sf_cof_plan_info *info)
+{
+    if (info->kind != SF_COF_FIELD)
+        return 0;
+    return (double)info->nx * (double)info->ny * (info->box > 0 ? SF_MLMC_DRAW_WORK_CELL : SF_MLMC_DRAW_WORK_POINT);
+}
+
+static size_t clampz(double x, size_t lo, size_t hi)
+{
+    return !(x > (double)lo) ? lo : x >= (double)hi ? hi : (size_t)x;
+}
+
+void sf_mlmc_sizes(const double *v0, const double *v1, const double *vf, int nq, double c0, double c1,
+                   size_t n_plain, size_t n_pilot, size_t *n0, size_t *n1)
+{
+    double m0 = 0, m1 = 0;
+    for (int q = 0; q < nq; q++) {
+        double target = vf[q] / (double)n_plain;
+        if (!(target > 0) || !isfinite(target) || !(v0[q] >= 0) || !(v1[q] >= 0) || !isfinite(v0[q] + v1[q]))
+            continue;
+        double sum = sqrt(v0[q] * c0) + sqrt(v1[q] * c1);
+        m0 = fmax(m0, ceil(sqrt(v0[q] / c0) * sum / target));
+        m1 = fmax(m1, ceil(sqrt(v1[q] / c1) * sum / target));
+    }
+    *n0 = clampz(m0, n_pilot, SF_MLMC_N0_CAP * n_plain);
+    *n1 = clampz(m1, n_pilot, n_plain);
+}
+
+typedef struct {
+    sf_sweep_ws w;            /* the sweep's: scene, fine plan, COF plan */
+    const sf_plan *coarse;
+    double draw;              /* a draw's work */
+} ml_ws;
+
+static void *ml_ws_alloc(void *ctx)
+{
+    const ml_ws *c = ctx;
+    ml_ws *m = sf_malloc(sizeof *m);
+    if (!m)
+        return NULL;
+    *m = *c;
+    sf_sweep_ws *w = sf_sweep_ws_alloc(&m->w);
+    if (!w) {
+        free(m);
+        return NULL;
+    }
+    m->w = *w;   /* the copy owns w's COF plan */
+    free(w);
+    m->draw = sf_mlmc_draw_work(sf_cof_plan_get_info(m->w.plan));
+    return m;
+}
+
+static void ml_ws_free(void *p)
+{
+    ml_ws *m = p;
+    sf_cof_plan_free_mt(m->w.plan);
+    free(m);
+}
+
+/* a pair on one field (level 1), or the coarse run alone (level 0) */
+static int realise(ml_ws *m, gsl_rng *rng, int pair, double *out)
+{
+    sf_cof *cof;
+    int rc = sf_cof_plan_draw(m->w.plan, rng, &cof);
+    if (rc)
+        return rc;
+    if (pair) {
+        rc = sf_sweep_solve(m->w.s, m->w.pl, cof, out, &out[P_WF]);
+        if (!rc)
+            rc = sf_sweep_solve(m->w.s, m->coarse, cof, out + P_C, &out[P_WC]);
+        out[P_DRAW] = m->draw;
+    } else {
+        rc = sf_sweep_solve(m->w.s, m->coarse, cof, out, NULL);
+    }
+    sf_cof_free(cof);
+    return rc;
+}
+
+static int realise_pair(void *p, size_t i, gsl_rng *rng, double *out)
+{
+    (void)i;
+    return realise(p, rng, 1, out);
+}
+
+static int realise_coarse(void *p, size_t i, gsl_rng *rng, double *out)
+{
+    (void)i;
+    return realise(p, rng, 0, out);
+}
+
+/* per ratio q over the first n pairs: the variances of the coarse ratio,
+ * of fine - coarse and of the fine ratio (pairs with both finite) */
+static int pair_vars(const double *v, size_t n, const double *det, int q, double *vc, double *vd, double *vf,
+                     size_t *m)
+{
+    double *x = sf_malloc(3 * (n ? n : 1) * sizeof *x);
+    if (!x)
+        return SF_ENOMEM;
+    double *d = x + n, *f = d + n;
+    size_t k = 0;
+    for (size_t i = 0; i < n; i++) {
+        double a = v[i * P_OUT + q] / det[q], b = v[i * P_OUT + P_C + q] / det[q];
+        if (isfinite(a) && isfinite(b)) {
+            x[k] = b;
+            d[k] = a - b;
+            f[k++] = a;
+        }
+    }
+    *m = k;
+    *vc = k > 1 ? gsl_stats_variance(x, 1, k) : NAN;
+    *vd = k > 1 ? gsl_stats_variance(d, 1, k) : NAN;
+    *vf = k > 1 ? gsl_stats_variance(f, 1, k) : NAN;
+    free(x);
+    return SF_SUCCESS;
+}
+
+/* the mean work of a level over n samples: pairs (fine + coarse) or the
+ * coarse run of a pair alone */
+static double mean_work(const double *v, size_t n, int fine, int coarse)
+{
+    double w = 0;
+    for (size_t i = 0; i < n; i++)
+        w += v[i * P_OUT + P_DRAW] + (fine ? v[i * P_OUT + P_WF] + SF_MLMC_RUN_WORK : 0) +
+             (coarse ? v[i * P_OUT + P_WC] + SF_MLMC_RUN_WORK : 0);
+    return w / (double)n;
+}
+
+static int ml_stats(sf_sweep_point *p, const double *pairs)
+{
+    const double *lev0 = p->ml.coarse0;
+    for (int q = 0; q < NQ; q++) {
+        double vc, vd, vf, sum[2] = { 0, 0 };
+        size_t m1, m0 = 0;
+        int rc = pair_vars(pairs, p->ml.n[1], p->det, q, &vc, &vd, &vf, &m1);
+        if (rc)
+            return rc;
+        for (size_t i = 0; i < p->ml.n[1]; i++) {
+            double a = pairs[i * P_OUT + q] / p->det[q], b = pairs[i * P_OUT + P_C + q] / p->det[q];
+            if (isfinite(a) && isfinite(b))
+                sum[1] += a - b;
+        }
+        double *x = sf_malloc((p->ml.n[0] ? p->ml.n[0] : 1) * sizeof *x);
+        if (!x)
+            return SF_ENOMEM;
+        for (size_t i = 0; i < p->ml.n[0]; i++) {
+            double b = lev0[i * NQ + q] / p->det[q];
+            if (isfinite(b)) {
+                x[m0++] = b;
+                sum[0] += b;
+            }
+        }
+        double v0 = m0 > 1 ? gsl_stats_variance(x, 1, m0) : NAN;
+        free(x);
+        sf_sweep_ml *e = &p->ml.q[q];
+        e->m[0] = m0;
+        e->m[1] = m1;
+        e->var[0] = v0;
+        e->var[1] = vd;
+        e->var_fine = v0 + (vf - vc);   /* Var Q_c from level 0's many values, plus the pairs' Var Q_f - Var Q_c */
+        e->mean = sum[0] / (double)m0 + sum[1] / (double)m1;
+        double a = v0 / (double)m0, b = vd / (double)m1;
+        e->se = sqrt(a + b);
+        /* Welch-Satterthwaite; a level of zero variance adds no term */
+        double den = (a > 0 ? a * a / (double)(m0 - 1) : 0) + (b > 0 ? b * b / (double)(m1 - 1) : 0);
+        e->df = den > 0 ? (a + b) * (a + b) / den : NAN;
+        double t = e->df > 0 ? gsl_cdf_tdist_Pinv(0.5 * (1 + SF_SWEEP_CI_LEVEL), e->df) : NAN;
+        e->ci_lo = e->mean - t * e->se;
+        e->ci_hi = e->mean + t * e->se;
+        e->vrf = e->var_fine * p->ml.cost_fine / (e->se * e->se * p->ml.work);
+    }
+    return SF_SUCCESS;
+}
+
+int sf_sweep_run_mlmc(const sf_scene *s, size_t n_plain, size_t n_pilot, int threads, const char *label,
+                      sf_sweep_point *out, char *err, size_t errlen)
+{
+    memset(out, 0, sizeof *out);
+    if (n_pilot < 2 || n_plain < n_pilot)
+        return sf_seterr(err, errlen, SF_EINVAL, "two-level sweep: 2 <= pilot (%zu) <= realisations (%zu)", n_pilot,
+                         n_plain);
+    int rc = sf_sweep_det(s, out->det, err, errlen);
+    if (rc)
+        return rc;
+    sf_plan fine, coarse;
+    if ((rc = sf_plan_make(s, &fine, err, errlen)))
+        return rc;
+    fine.history = 0;
+    sf_mlmc_coarse_plan(&fine, &coarse);
+    double *pairs = sf_calloc(n_plain * P_OUT, sizeof *pairs), *lev0 = NULL;
+    if (!pairs)
+        return SF_ENOMEM;
+    ml_ws ctx = { { s, &fine, NULL, NULL, 0 }, &coarse, 0 };
+    sf_mc_ops ops1 = { ml_ws_alloc, ml_ws_free, realise_pair }, ops0 = { ml_ws_alloc, ml_ws_free, realise_coarse };
+    sf_mc_spec spec1 = { n_plain, P_OUT, s->seed, threads, NULL, 0, 0, label };
+    rc = sf_mc_run_range(&spec1, 0, n_pilot, &ops1, &ctx, pairs, NULL, err, errlen);
+    double v0[NQ], v1[NQ], vf[NQ];
+    size_t m;
+    for (int q = 0; q < NQ && !rc; q++)
+        rc = pair_vars(pairs, n_pilot, out->det, q, &v0[q], &v1[q], &vf[q], &m);
+    size_t n0 = 0, n1 = 0;
+    if (!rc) {
+        sf_mlmc_sizes(v0, v1, vf, NQ, mean_work(pairs, n_pilot, 0, 1), mean_work(pairs, n_pilot, 1, 1), n_plain,
+                      n_pilot, &n0, &n1);
+        rc = sf_mc_run_range(&spec1, n_pilot, n1, &ops1, &ctx, pairs, NULL, err, errlen);
+    }
+    if (!rc && !(lev0 = sf_calloc(n0 * NQ, sizeof *lev0)))
+        rc = SF_ENOMEM;
+    sf_mc_spec spec0 = { n0, NQ, sf_mc_seed(s->seed, SF_MLMC_LEVEL0_STREAM), threads, NULL, 0, 0, label };
+    if (!rc)
+        rc = sf_mc_run(&spec0, &ops0, &ctx, lev0, NULL, err, errlen);
+    if (!rc && (!(out->qoi = sf_calloc(n1 * NQ, sizeof *out->qoi)) ||
+                !(out->ratio = sf_calloc(n1 * NQ, sizeof *out->ratio)) ||
+                !(out->ml.coarse1 = sf_calloc(n1 * NQ, sizeof *out->ml.coarse1))))
+        rc = SF_ENOMEM;
+    if (!rc) {   /* the rows: level 1's fine values, plain Monte Carlo's first n1 */
+        out->n = n1;
+        out->ml.coarse0 = lev0;
+        lev0 = NULL;
+        for (size_t i = 0; i < n1; i++) {
+            memcpy(out->qoi + i * NQ, pairs + i * P_OUT, NQ * sizeof *pairs);
+            memcpy(out->ml.coarse1 + i * NQ, pairs + i * P_OUT + P_C, NQ * sizeof *pairs);
+        }
+        out->ml.n[0] = n0;
+        out->ml.n[1] = n1;
+        out->ml.cost[0] = mean_work(pairs, n1, 0, 1);
+        out->ml.cost[1] = mean_work(pairs, n1, 1, 1);
+        out->ml.cost_fine = mean_work(pairs, n1, 1, 0);
+        out->ml.work = (double)n0 * out->ml.cost[0] + (double)n1 * out->ml.cost[1];
+        rc = sf_sweep_point_stats(out);
+    }
+    if (!rc)
+        rc = ml_stats(out, pairs);
+    free(pairs);
+    free(lev0);
+    return rc;
+}

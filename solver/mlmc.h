@@ -1,0 +1,69 @@
+/* slipfield: a two-level Monte Carlo estimator of a sweep point's ratio
+ * means (sweep.h: sf_sweep_run_mlmc).
+ *
+ *   E[Q_f] = E[Q_c] + E[Q_f - Q_c]
+ *
+ * Q_f: a realisation on the scene's plan (numplan.h); Q_c: the same
+ * scene on a coarse plan (sf_mlmc_coarse_plan) whose COF draw is the
+ * fine plan's, so a pair (fine, coarse) runs on ONE field.  Level 0: n0
+ * coarse realisations on fields of their own (stream seed0 =
+ * sf_mc_seed(seed, SF_MLMC_LEVEL0_STREAM)); level 1: n1 pairs on the
+ * streams plain Monte Carlo uses (realisation i: sf_mc_seed(seed, i)), so
+ * level 1's fine values are plain Monte Carlo's first n1.  Both terms are
+ * unbiased whatever the coupling; the coupling only makes Var(Q_f - Q_c)
+ * small.
+ *
+ * Sample sizes (Giles' allocation, N_l ~ sqrt(V_l / C_l)): the first
+ * n_pilot pairs give, per ratio, V_0 = Var Q_c, V_1 = Var(Q_f - Q_c) and
+ * Var Q_f, and the costs C_0, C_1; the target variance of each ratio
+ * mean is Var Q_f / n_plain (plain Monte Carlo's at n_plain), and
+ *   N_l = ceil( sqrt(V_l / C_l) (sqrt(V_0 C_0) + sqrt(V_1 C_1)) / target ),
+ * the largest over the ratios, n_pilot <= n1 <= n_plain and
+ * n_pilot <= n0 <= SF_MLMC_N0_CAP n_plain.  The pilot pairs are level 1's
+ * first (as in Giles' algorithm).
+ *
+ * Costs are a work model, not a clock, so that the sizes (and every byte)
+ * do not depend on the machine or the thread count: a run's wrench
+ * evaluations x quadrature cells, plus a draw's strip points x
+ * SF_MLMC_DRAW_WORK (per the generator), plus SF_MLMC_RUN_WORK per run.
+ * Measured at Table 1, T = 100 s: 1.5-2.6 ns per cell evaluation (0.1 to
+ * 1000 l/R), a circulant lognormal draw 2.2-2.7e-7 s a strip point, a
+ * cell-average draw (one real FFT) 4.0-4.2e-8 s, ~1 ms of fixed cost a
+ * run (the bench section `estimators` prints the draw's share it gives). */
+#ifndef SF_MLMC_H
+#define SF_MLMC_H
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#include "numplan.h"
+
+/* The coarse plan: half the fine plan's rings or cells per diameter (at
+ * least 2) for the point model, the same cells for cell averages (their
+ * cells are the field's boxes: the draw is tied to them), and the
+ * stepper's rtol raised to SF_MLMC_RTOL.  Measured (Table 1, T = 100 s,
+ * 12 fields per l/R): Var(Q_f - Q_c) / Var Q_f <= 0.05 for every ratio at
+ * l/R = 0.01 to 1000, while rtol = 1e-4 already decouples the pair (a
+ * stick phase found in one run and missed in the other: ratio > 1). */
+#define SF_MLMC_RTOL 1e-5
+void sf_mlmc_coarse_plan(const sf_plan *fine, sf_plan *coarse);
+
+/* The work model (above), in cell evaluations. */
+#define SF_MLMC_DRAW_WORK_POINT 140.0   /* a circulant or tiled lognormal strip point */
+#define SF_MLMC_DRAW_WORK_CELL 25.0     /* a cell-average strip point (one real FFT) */
+#define SF_MLMC_RUN_WORK 6e5            /* a run's fixed cost */
+double sf_mlmc_draw_work(const sf_cof_plan_info *info);
+
+#define SF_MLMC_N0_CAP 4                /* n0 <= 4 n_plain */
+#define SF_MLMC_LEVEL0_STREAM ((size_t)-1)
+
+/* The sample sizes from the pilot's per-ratio variances v0[q], v1[q],
+ * vf[q] and the costs c0, c1 (the rule above); a ratio whose variance is
+ * not finite and positive sets no size. */
+void sf_mlmc_sizes(const double *v0, const double *v1, const double *vf, int nq, double c0, double c1,
+                   size_t n_plain, size_t n_pilot, size_t *n0, size_t *n1);
+
+#ifdef __cplusplus
+}
+#endif
+#endif
