@@ -48,8 +48,9 @@ static void usage(FILE *f)
           "                    then why the point stopped (stop: fixed, target or cap),\n"
           "                    the pilot's size (n_pilot, 0 for a fixed N) and per QoI\n"
           "                    the ratio mean's 95% interval the design guarantees\n"
-          "                    (Student t for a fixed N, Stein's for two stages)\n"
-          "  --realisations N  realisations per value (default: the scene's samples, if\n"
+          "                    (Student t for a fixed N, Stein's for two stages)\n",
+          f);
+    fputs("  --realisations N  realisations per value (default: the scene's samples, if\n"
           "                    it sets the key)\n"
           "  --target-se X     two stages (Stein): N0 realisations, then as many more as\n"
           "                    the pilot's spread says every ratio mean needs for a\n"
