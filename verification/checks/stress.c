@@ -305,7 +305,7 @@ static int chk_run(const sf_case *c, sf_result *r)
     size_t K = *c->spec.sweep_param ? c->spec.sweep.n : 1;
     size_t bad = 0, held = 0;
     double worst_e = 0;
-    int budget = sf_scene_was_set(s0, "max_steps");
+    int budget = sf_scene_was_set(s0, "max_steps"), drawn = 0;   /* drawn: the one run's transitions plot */
     /* for the plot: the stressed value, the energy residual and the
        excursion over its bound */
     double *pv = check_alloc(3 * K * sizeof *pv), *pe = pv + K, *px = pv + 2 * K;
@@ -338,7 +338,8 @@ static int chk_run(const sf_case *c, sf_result *r)
         pv[k] = *c->spec.sweep_param ? c->spec.sweep.v[k] : 1.0;
         pe[k] = done ? fmax(e, 1e-17) : NAN;
         px[k] = done ? fmax(fmax(fabs(res.x_min), fabs(res.x_max)), res.y_absmax) / bound : NAN;
-        if (K == 1 && done) {
+        if (K == 1 && done && res.ntrans) {   /* a run stopped early may have none to draw */
+            drawn = 1;
             /* one run: its stick-slip transitions against the bound */
             sf_plot *pt = sf_result_plot(r, "transitions", "Stick-slip transitions of the run, within the bound",
                                          "time t [s]", "x at a transition [m]");
@@ -369,10 +370,13 @@ static int chk_run(const sf_case *c, sf_result *r)
         sf_note(r, "%zu of %zu runs stopped by max_steps = %zu at a cell holding the centre of rotation.", held, K,
                 s0->max_steps);
     char xl[64];
-    sweep_label(c->spec.sweep_param, xl, sizeof xl);
-    sf_plot *pl = K == 1 ? NULL
-                         : sf_result_plot(r, "stress_run", "Energy balance and excursion at the stressed parameter",
-                                          xl, "ratio [dimensionless]");
+    if (*c->spec.sweep_param)
+        sweep_label(c->spec.sweep_param, xl, sizeof xl);
+    else
+        snprintf(xl, sizeof xl, "run [index]");
+    sf_plot *pl = drawn ? NULL
+                        : sf_result_plot(r, "stress_run", "Energy balance and excursion at the stressed parameter",
+                                         xl, "ratio [dimensionless]");
     if (pl) {
         sf_plot_log(pl, spans_decades(K, pv), 1);
         sf_plot_series(pl, "relative energy residual (floored at 1e-17)", SF_STYLE_LINESPOINTS, K, pv, pe);
