@@ -824,6 +824,8 @@ static int run_start(run_state *r, double sample_dt)
     sf_osc_result *res = r->res;
     const sf_scene *s = &o->s;
     memset(res, 0, sizeof *res);
+    res->held_cell = -1;
+    res->held_slip = NAN;
     res->x_min = INFINITY;
     res->x_max = -INFINITY;
     r->a = (acc){ .r = res, .t_skip = s->t_skip };
@@ -912,6 +914,49 @@ static int run_stick(run_state *r)
     return SF_SUCCESS;
 }
 
+/* The quadrature cell that slips slowest at y: its index (-1 without a
+ * quadrature) and its slip speed over the disc's, |v_p| / (|U| + |w| R),
+ * in *ratio (NaN without slip). */
+static long slowest_cell(const sf_osc *o, const double *y, double *ratio)
+{
+    double u = y[VX] - o->s.v_b, v = y[VY], w = y[W], scale = hypot(u, v) + fabs(w) * o->s.R;
+    *ratio = NAN;
+    if (!o->ct)
+        return -1;
+    const double *rx, *ry, *wt;
+    sf_contact_cells(o->ct, &rx, &ry, &wt);
+    long best = -1;
+    double vmin = INFINITY;
+    for (size_t i = 0; i < sf_contact_ncells(o->ct); i++) {
+        double vp = hypot(u - w * ry[i], v + w * rx[i]);
+        if (vp < vmin) {
+            vmin = vp;
+            best = (long)i;
+        }
+    }
+    *ratio = vmin / scale;
+    return best;
+}
+
+/* The step budget (max_steps) is spent at t: record the slowest cell and
+ * say why the steps were short when a cell holds the centre of rotation. */
+static int budget_spent(const sf_osc *o, double t, double h, const double *y, sf_osc_result *res, char *err,
+                        size_t errlen)
+{
+    res->held_cell = slowest_cell(o, y, &res->held_slip);
+    char why[200] = "";
+    if (res->held_cell >= 0) {
+        const double *rx, *ry, *wt;
+        sf_contact_cells(o->ct, &rx, &ry, &wt);
+        size_t i = (size_t)res->held_cell;
+        snprintf(why, sizeof why, "; cell %ld at (%.4g, %.4g) m, COF %.3g, slips at %.2g of the disc's speed%s",
+                 res->held_cell, rx[i], ry[i], sf_cof_eval(o->cof, y[X] - o->s.v_b * t + rx[i], y[Y] + ry[i]), res->held_slip,
+                 res->held_slip < SF_OSC_HELD_SLIP ? ": it holds the centre of rotation (a sliding mode)" : "");
+    }
+    return sf_seterr(err, errlen, SF_EMAXITER, "step budget (max_steps = %zu) spent at t = %.9g s, last step %.3g s%s",
+                     o->s.max_steps, t, h, why);
+}
+
 /* One slip step: the stepper, the stick event inside it (Eq. 12) and an
  * x extremum inside it. */
 static int run_slip(run_state *r)
@@ -920,7 +965,6 @@ static int run_slip(run_state *r)
     sf_osc_result *res = r->res;
     const sf_scene *s = &o->s;
     double *y = r->y, *q = r->q;
-    const unsigned long budget = 200000000UL;
     double t0 = r->t, y0[NSTATE];
     memcpy(y0, y, sizeof y0);
     int rc = slip_step(o, &r->t, y, r->hcap, &r->h, r->err, r->errlen);
@@ -933,8 +977,8 @@ static int run_slip(run_state *r)
         }
     if (rc)
         return rc;
-    if (res->steps > budget)
-        return sf_seterr(r->err, r->errlen, SF_EMAXITER, "step budget (2e8 steps) exhausted");
+    if (res->steps > s->max_steps)
+        return budget_spent(o, r->t, r->t - t0, y, res, r->err, r->errlen);
     double g1 = sf_osc_g_stick(o, r->t, y);
     if (isnan(g1))
         return sf_seterr(r->err, r->errlen, SF_EFAIL, "the exact T = 0 section of the limit surface was not found "

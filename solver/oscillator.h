@@ -71,6 +71,9 @@ extern "C" {
 
 /* Event times are located to max(1e-12 s, 8 ulp(t)). */
 #define SF_OSC_TIME_TOL 1e-12
+/* A cell whose slip speed is below this share of the disc's holds the
+ * centre of rotation (sf_osc_run: SF_EMAXITER). */
+#define SF_OSC_HELD_SLIP 1e-6
 
 typedef struct sf_osc sf_osc;
 
@@ -118,6 +121,12 @@ typedef struct {
      * reused, not made again) */
     unsigned long steps, rejected, event_trials, wrench_evals;
     unsigned long off_strip;     /* accepted states whose contact patch left the COF strip */
+    /* on SF_EMAXITER (the scene's max_steps spent): the quadrature cell
+     * that slips slowest at the stop and its slip speed over the disc's,
+     * |v_p| / (|U| + |w| R) (about 0: the cell holds the centre of
+     * rotation); -1 and NaN otherwise, and without a quadrature */
+    long held_cell;
+    double held_slip;
     double x_min, x_max, y_absmax;
 } sf_osc_result;
 
@@ -150,7 +159,14 @@ size_t sf_osc_ncells(const sf_osc *o);
 
 /* Run [0, T].  row (may be NULL) receives the history; sample_dt > 0
  * also fills res->x_samples.  Returns SF_SUCCESS, SF_EFAIL (non-finite
- * state; reason in err) or SF_EMAXITER (step budget exhausted). */
+ * state; reason in err) or SF_EMAXITER (more than the scene's max_steps
+ * slip steps: res then holds the run up to its stop, energy balance
+ * included, and res->held_cell says whether a quadrature cell held the
+ * centre of rotation.  Such a cell, of a COF many times the mean, makes
+ * a sliding mode of the point quadrature: its kinetic force flips with
+ * its slip direction, and the error-controlled stepper crosses the flip
+ * in steps of about rtol x_s omega_n m / (2 |its force|), ~1e-8 s at
+ * rtol = 1e-10). */
 int sf_osc_run(sf_osc *o, sf_osc_row_fn row, void *ctx, double sample_dt, sf_osc_result *res,
                char *err, size_t errlen);
 void sf_osc_result_free(sf_osc_result *r);

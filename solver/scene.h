@@ -57,6 +57,7 @@ typedef struct {
     int integrator;
     int dof;                 /* SF_DOF_1: the 1-D model of Eqs. 3-4; SF_DOF_3: x, y, phi (Eq. 5) */
     double rtol, t_skip;     /* rtol 0: chosen by the plan (numplan.h) */
+    size_t max_steps;        /* slip steps a run may take (oscillator.h: SF_EMAXITER past it) */
     double qoi_tol;          /* relative QoI error the plan aims at */
     int qoi_def;             /* SF_QOI_PAPER (window stick fraction, PV per oscillation) or SF_QOI_CYCLES */
     double x0, y0, phi0, vx0, vy0, w0;   /* initial state (ground frame, SI): default rest at the origin */

@@ -55,6 +55,80 @@ static int run(sf_scene *s, sf_osc_result *r, char *err)
     return rc;
 }
 
+/* The step budget (max_steps): a cell of COF 30 on a field of 0.3 under
+ * the disc's centre of rotation holds it (a sliding mode of the point
+ * quadrature: steps of ~3e-9 s), and the budget stops the run there and
+ * names the cell; a stop where no cell holds it says so; a closed-form
+ * wrench has no cell. */
+static int budget_run(double mu_spike, size_t max_steps, int shortcut, sf_osc_result *r, char *err, size_t errlen)
+{
+    sf_scene s;
+    sf_scene_default(&s);
+    s.cells = 8;
+    s.rtol = 1e-10;
+    s.T = 1;
+    s.t_skip = 0;
+    s.cof_model = SF_COFMODEL_POINT;
+    s.max_steps = max_steps;
+    /* polar cell 152 of 8 rings is at (rx, ry) from the centre: start with
+     * the centre of rotation on it, (u, v) = w (ry, -rx) */
+    const double rx = -0.03065, ry = -0.44812, w = 1;
+    s.w0 = w;
+    s.vx0 = s.v_b + w * ry;
+    s.vy0 = -w * rx;
+    enum { M = 321, N = 81 };
+    double *g = malloc(M * N * sizeof *g);
+    assert_non_null(g);
+    for (size_t j = 0; j < N; j++)
+        for (size_t i = 0; i < M; i++) {
+            double x = -4 + 0.025 * (double)i, y = -1 + 0.025 * (double)j;
+            g[i + M * j] = fabs(x - rx) < 0.06 && fabs(y - ry) < 0.03 ? mu_spike : 0.3;
+        }
+    sf_cof *cof;
+    if (shortcut) {
+        s.cof = SF_COF_UNIFORM;
+        assert_int_equal(sf_cof_alloc_uniform(0.3, &cof), SF_SUCCESS);
+    } else
+        assert_int_equal(sf_cof_alloc_grid(M, N, -4, -1, 0.025, 0.025, g, &cof), SF_SUCCESS);
+    free(g);
+    sf_osc *o;
+    assert_int_equal(sf_osc_alloc(&s, cof, &o, err, errlen), SF_SUCCESS);
+    int rc = sf_osc_run(o, NULL, NULL, 0, r, err, errlen);
+    sf_osc_free(o);
+    sf_cof_free(cof);
+    return rc;
+}
+
+static void step_budget(void **state)
+{
+    (void)state;
+    char err[300];
+    sf_osc_result r;
+    assert_int_equal(budget_run(30, 2000, 0, &r, err, sizeof err), SF_EMAXITER);
+    assert_int_equal(r.held_cell, 152);
+    assert_true(r.held_slip < SF_OSC_HELD_SLIP);
+    assert_int_equal(r.steps, 2001);
+    assert_non_null(strstr(err, "max_steps = 2000"));
+    assert_non_null(strstr(err, "holds the centre of rotation"));
+    assert_true(fabs(r.energy_residual) < 1e-9);   /* the run up to its stop is kept, balanced */
+    sf_osc_result_free(&r);
+    /* no spike: the disc slides on to stick (54 steps); a budget of 10 stops it
+     * where no cell holds the centre of rotation */
+    assert_int_equal(budget_run(0.3, 2000, 0, &r, err, sizeof err), SF_SUCCESS);
+    assert_int_equal(r.held_cell, -1);
+    sf_osc_result_free(&r);
+    assert_int_equal(budget_run(0.3, 10, 0, &r, err, sizeof err), SF_EMAXITER);
+    assert_true(r.held_cell >= 0 && r.held_slip > 1e-3);
+    assert_null(strstr(err, "holds"));
+    sf_osc_result_free(&r);
+    /* a closed-form wrench: no cell to name */
+    assert_int_equal(budget_run(0.3, 3, 1, &r, err, sizeof err), SF_EMAXITER);
+    assert_int_equal(r.held_cell, -1);
+    assert_true(isnan(r.held_slip));
+    assert_null(strstr(err, "cell"));
+    sf_osc_result_free(&r);
+}
+
 /* Both QoI definitions: a disc sliding on (v_b above x_e omega) has no
  * stick cycle, so the per-cycle values are NaN, but the paper's are
  * finite (PV per oscillation, T_sk = 0), and qoi_def picks which the
@@ -427,6 +501,7 @@ int main(void)
         cmocka_unit_test(stepper_choices),
         cmocka_unit_test(source_hook),
         cmocka_unit_test(initial_state),
+        cmocka_unit_test(step_budget),
     };
     return cmocka_run_group_tests_name("oscillator", tests, NULL, NULL);
 }

@@ -38,6 +38,9 @@ typedef struct {
     char seed_proof[200];
     sf_list sweep, sweep2;
     char sweep_param[32];    /* the scene key (or l_over_R) a sweep varies */
+    /* stress_run: runs its step budget (max_steps) must stop at a cell that
+     * holds the centre of rotation (a regression case's expectation) */
+    size_t held_stops;
     /* which keys the block set (index into the table) */
     unsigned char set[SF_CASE_SPEC_MAX_KEYS];
 } sf_case_spec;

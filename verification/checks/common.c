@@ -321,7 +321,7 @@ int check_osc_run(const sf_scene *s, gsl_rng *rng, const sf_cof *cof, double sam
     if (!rc)
         rc = sf_osc_run(o, row, ctx, sample_dt, res, err, sizeof err);
     if (rc)
-        sf_note(r, "**The run failed:** %s (%s).", *err ? err : "", sf_strerror(rc));
+        sf_note(r, "**The run %s:** %s (%s).", rc == SF_EMAXITER ? "stopped" : "failed", *err ? err : "", sf_strerror(rc));
     sf_osc_free(o);
     sf_cof_free(own);
     return rc;

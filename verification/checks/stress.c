@@ -294,23 +294,31 @@ static int chk_wrench_extremes(const sf_case *c, sf_result *r)
 /* A run at extreme parameters (optionally over a sweep of one): it must
  * finish (SF_SUCCESS) with finite states, |x| and |y| within the
  * spring-excursion bound 2 mu_hi m g / k, and the energy balance to the
- * tolerance (relative to the energy turned over). */
+ * tolerance (relative to the energy turned over).  A scene that sets
+ * max_steps may instead be stopped by it (SF_EMAXITER) where a quadrature
+ * cell holds the centre of rotation (the solver names the cell): the run
+ * up to its stop must then be finite, bounded and balanced the same way;
+ * a stop that no held cell explains fails. */
 static int chk_run(const sf_case *c, sf_result *r)
 {
     const sf_scene *s0 = &c->scene;
     size_t K = *c->spec.sweep_param ? c->spec.sweep.n : 1;
-    size_t bad = 0;
+    size_t bad = 0, held = 0;
     double worst_e = 0;
+    int budget = sf_scene_was_set(s0, "max_steps"), drawn = 0;   /* drawn: the one run's transitions plot */
     /* for the plot: the stressed value, the energy residual and the
        excursion over its bound */
     double *pv = check_alloc(3 * K * sizeof *pv), *pe = pv + K, *px = pv + 2 * K;
-    sf_note(r, "| %s | result | transitions | cycles | stick fraction | x range [m] | max abs y [m] | energy residual (rel.) | steps |\n"
-               "|---|---|---|---|---|---|---|---|---|", *c->spec.sweep_param ? c->spec.sweep_param : "run");
+    /* the table's rows, noted after the runs (a run's own note, e.g. why it
+       stopped, would split the table) */
+    enum { ROW = 320 };
+    char *rows = check_alloc(K * ROW);
     for (size_t k = 0; k < K; k++) {
         sf_scene s = *s0;
         char err[256] = "";
         if (*c->spec.sweep_param && sf_sweep_set(&s, c->spec.sweep_param, c->spec.sweep.v[k], err, sizeof err)) {
             free(pv);
+            free(rows);
             return SF_EINVAL;
         }
         gsl_rng *rng = sf_case_rng(c);
@@ -319,14 +327,19 @@ static int chk_run(const sf_case *c, sf_result *r)
         gsl_rng_free(rng);
         double bound = 2 * (s.mu_mean + 4 * s.mu_std) * s.m * s.g / s.k;
         double e = fabs(res.energy_residual) / sf_max(fabs(res.friction_work) + fabs(res.energy_change), 1e-300);
-        int ok = rc == SF_SUCCESS && isfinite(res.x_min) && isfinite(res.x_max) &&
+        /* stopped by the scene's budget where a cell holds the centre of rotation */
+        int stop = budget && rc == SF_EMAXITER && res.held_cell >= 0 && res.held_slip < SF_OSC_HELD_SLIP;
+        int done = rc == SF_SUCCESS || stop;
+        held += stop;
+        int ok = done && isfinite(res.x_min) && isfinite(res.x_max) &&
                  sf_max(fabs(res.x_min), fabs(res.x_max)) <= bound && res.y_absmax <= bound && e <= c->spec.tolerance;
         bad += !ok;
-        worst_e = sf_max(worst_e, rc ? INFINITY : e);
+        worst_e = sf_max(worst_e, done ? e : INFINITY);
         pv[k] = *c->spec.sweep_param ? c->spec.sweep.v[k] : 1.0;
-        pe[k] = rc ? NAN : fmax(e, 1e-17);
-        px[k] = rc ? NAN : fmax(fmax(fabs(res.x_min), fabs(res.x_max)), res.y_absmax) / bound;
-        if (K == 1 && rc == SF_SUCCESS) {
+        pe[k] = done ? fmax(e, 1e-17) : NAN;
+        px[k] = done ? fmax(fmax(fabs(res.x_min), fabs(res.x_max)), res.y_absmax) / bound : NAN;
+        if (K == 1 && done && res.ntrans) {   /* a run stopped early may have none to draw */
+            drawn = 1;
             /* one run: its stick-slip transitions against the bound */
             sf_plot *pt = sf_result_plot(r, "transitions", "Stick-slip transitions of the run, within the bound",
                                          "time t [s]", "x at a transition [m]");
@@ -334,19 +347,36 @@ static int chk_run(const sf_case *c, sf_result *r)
             sf_plot_hline(pt, "+2 mu_hi m g / k", bound);
             sf_plot_hline(pt, "-2 mu_hi m g / k", -bound);
         }
-        sf_note(r, "| %g | %s | %zu | %zu | %.4g | [%.4g, %.4g] | %.3g | %.2e | %lu |",
-                *c->spec.sweep_param ? c->spec.sweep.v[k] : 0.0, rc ? sf_strerror(rc) : (ok ? "ok" : "**out of bounds**"),
+        snprintf(rows + k * ROW, ROW, "| %g | %s | %zu | %zu | %.4g | [%.4g, %.4g] | %.3g | %.2e | %lu |",
+                *c->spec.sweep_param ? c->spec.sweep.v[k] : 0.0,
+                stop ? (ok ? "ok, stopped by max_steps at a held cell" : "**out of bounds** (stopped at a held cell)")
+                     : rc ? sf_strerror(rc) : (ok ? "ok" : "**out of bounds**"),
                 res.ntrans, res.ncycles, res.stick_fraction, res.x_min, res.x_max, res.y_absmax, e, res.steps);
         sf_osc_result_free(&res);
     }
+    sf_note(r, "| %s | result | transitions | cycles | stick fraction | x range [m] | max abs y [m] | energy residual (rel.) | steps |\n"
+               "|---|---|---|---|---|---|---|---|---|", *c->spec.sweep_param ? c->spec.sweep_param : "run");
+    for (size_t k = 0; k < K; k++)
+        sf_note(r, "%s", rows + k * ROW);
+    free(rows);
     sf_check_le(r, "runs that failed, went non-finite, left the bound 2 mu_hi m g / k, or broke the energy balance",
                 (double)bad, 0);
     sf_check_le(r, "worst relative energy residual", worst_e, c->spec.tolerance);
+    sf_keytab kt = sf_case_spec_keytab(&c->spec);
+    if (sf_keys_was_set(&kt, "held_stops"))
+        sf_check_abs(r, "runs the step budget stopped at a cell holding the centre of rotation", (double)held,
+                     (double)c->spec.held_stops, 0);
+    else if (budget)
+        sf_note(r, "%zu of %zu runs stopped by max_steps = %zu at a cell holding the centre of rotation.", held, K,
+                s0->max_steps);
     char xl[64];
-    sweep_label(c->spec.sweep_param, xl, sizeof xl);
-    sf_plot *pl = K == 1 ? NULL
-                         : sf_result_plot(r, "stress_run", "Energy balance and excursion at the stressed parameter",
-                                          xl, "ratio [dimensionless]");
+    if (*c->spec.sweep_param)
+        sweep_label(c->spec.sweep_param, xl, sizeof xl);
+    else
+        snprintf(xl, sizeof xl, "run [index]");
+    sf_plot *pl = drawn ? NULL
+                        : sf_result_plot(r, "stress_run", "Energy balance and excursion at the stressed parameter",
+                                         xl, "ratio [dimensionless]");
     if (pl) {
         sf_plot_log(pl, spans_decades(K, pv), 1);
         sf_plot_series(pl, "relative energy residual (floored at 1e-17)", SF_STYLE_LINESPOINTS, K, pv, pe);
