@@ -144,7 +144,10 @@ typedef struct {
     int integrator;          /* SF_INTEG_RK8PD, _RKCK or _RK4: the stepper that runs */
     int integrator_from;
     double err_time;         /* predicted relative QoI error of the time integration [-] */
-    double err_total;        /* err_quad + err_time */
+    double err_total;        /* err_quad + err_time: the budget the settings are chosen on (an envelope) */
+    double err_pred;         /* the predicted QoI error: below it for 95% of realisations (fitted on a design,
+                                numplan.c); err_total outside the fit's box; NaN for rk4 */
+    int pred_fitted;         /* 1: err_pred is the fit's (inside its box) */
     char warning[240];       /* empty, or why a setting cannot meet qoi_tol or resolve l */
 } sf_numplan;
 

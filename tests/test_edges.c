@@ -166,6 +166,76 @@ static void plan_edges(void **state)
     assert_non_null(strstr(p.warning, "capped"));
 }
 
+/* The predicted error (err_pred): the design-fitted bound inside its box
+ * (point model, the plan's own polar rings, rkck and rtol, l/R 0.1-1,
+ * qoi_tol 1e-3-1e-2), the budget err_total everywhere else; NaN for rk4;
+ * what --explain says in each case. */
+static char *numplan_text(const sf_numplan *p)
+{
+    char *text = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&text, &len);
+    sf_numplan_explain(p, f);
+    fclose(f);
+    return text;
+}
+
+static void plan_prediction_edges(void **state)
+{
+    (void)state;
+    sf_scene s;
+    sf_numplan p;
+    char err[256] = "", *text;
+    sf_scene_default(&s);
+    s.cof_model = SF_COFMODEL_POINT;
+    s.l = 0.3 * s.R;
+    s.qoi_tol = 3e-3;
+    assert_int_equal(sf_numplan_make(&s, 1, &p, err, sizeof err), SF_SUCCESS);
+    assert_int_equal(p.pred_fitted, 1);
+    double cv = s.mu_std / s.mu_mean;
+    assert_close(p.err_pred, p.err_total * 0.158 * pow(0.3, -0.586) * exp(0.538 * cv + 0.584 * s.mu_mean), 1e-12);
+    assert_true(p.err_pred < p.err_total);
+    text = numplan_text(&p);
+    assert_non_null(strstr(text, "95% of realisations below it"));
+    free(text);
+    /* outside the box, one departure at a time: the budget */
+    for (int k = 0; k < 11; k++) {
+        sf_scene t = s;
+        int quadrature = k != 0;
+        if (k == 1)
+            t.cof_model = SF_COFMODEL_CELL;
+        if (k == 2)
+            t.layout = 1;   /* Cartesian (contact.h) */
+        if (k == 3)
+            t.cells = 40;
+        if (k == 4)
+            t.rtol = 1e-9;
+        if (k == 5)
+            t.integrator = SF_INTEG_RK8PD;
+        if (k == 6)
+            t.l = 0.05 * t.R;
+        if (k == 7)
+            t.l = 2 * t.R;
+        if (k == 8)
+            t.qoi_tol = 1e-4;
+        if (k == 9)
+            t.qoi_tol = 2e-2;
+        if (k == 10)
+            t.integrator = SF_INTEG_RK4;
+        assert_int_equal(sf_numplan_make(&t, quadrature, &p, err, sizeof err), SF_SUCCESS);
+        assert_int_equal(p.pred_fitted, 0);
+        if (k == 10) {
+            assert_true(isnan(p.err_pred));
+            continue;
+        }
+        assert_true(p.err_pred == p.err_total);
+        text = numplan_text(&p);
+        assert_non_null(strstr(text, "predicted QoI error"));
+        assert_non_null(strstr(text, "the budget: outside the design"));
+        free(text);
+    }
+}
+
 /* ---- The plan made first (numplan.h: sf_plan) */
 
 typedef struct {
@@ -479,6 +549,7 @@ int main(void)
         cmocka_unit_test(key_table),
         cmocka_unit_test(explain_variants),
         cmocka_unit_test(plan_edges),
+        cmocka_unit_test(plan_prediction_edges),
         cmocka_unit_test(plan_records),
         cmocka_unit_test(plan_builders),
         cmocka_unit_test(sweep_set_edges),
