@@ -354,16 +354,27 @@ static int chk_mlmc_levels(const sf_case *c, sf_result *r)
     double *d = check_alloc(n1 * sizeof *d), *b = check_alloc((n0 ? n0 : 1) * sizeof *b), *x = check_alloc(n1 * sizeof *x);
     sf_plot *plt = sf_result_plot(r, "levels", "Level 1: fine - coarse ratio per pair (one field each)", "pair [-]",
                                   "fine - coarse ratio [-]");
+    double *xf = check_alloc(n1 * sizeof *xf), *df = check_alloc(n1 * sizeof *df);
     for (int q = 0; q < 3; q++) {
+        size_t nf = 0;   /* the plot shows the pairs whose difference is finite */
         for (size_t i = 0; i < n1; i++) {
             x[i] = (double)i;
             d[i] = (p.qoi[i * SF_SWEEP_NQ + q] - p.ml.coarse1[i * SF_SWEEP_NQ + q]) / p.det[q];
+            if (isfinite(d[i])) {
+                xf[nf] = x[i];
+                df[nf++] = d[i];
+            }
         }
-        sf_plot_series(plt, ratio_name[q], SF_STYLE_POINTS, n1, x, d);
+        sf_plot_series(plt, ratio_name[q], SF_STYLE_POINTS, nf, xf, df);
         for (size_t i = 0; i < n0; i++)
             b[i] = p.ml.coarse0[i * SF_SWEEP_NQ + q] / p.det[q];
         size_t m0, m1;   /* the finite values (a realisation may form no QoI: excluded) */
         double v0, v1, mean = finite_mean(b, n0, &m0, &v0) + finite_mean(d, n1, &m1, &v1);
+        char what[160];
+        snprintf(what, sizeof what, "%s: level 0's coarse ratios", ratio_name[q]);
+        sf_result_sample(r, what, m0, n0 - m0);
+        snprintf(what, sizeof what, "%s: level 1's fine - coarse ratios", ratio_name[q]);
+        sf_result_sample(r, what, m1, n1 - m1);
         gap = sf_max(gap, fabs(p.ml.q[q].mean - mean));
         double se = sqrt(v0 / (double)m0 + v1 / (double)m1);
         segap = sf_max(segap, fabs(p.ml.q[q].se - se) / se);
@@ -371,6 +382,8 @@ static int chk_mlmc_levels(const sf_case *c, sf_result *r)
     free(d);
     free(b);
     free(x);
+    free(xf);
+    free(df);
     sf_check_le(r, "|estimate - (level 0's mean coarse ratio + level 1's mean fine - coarse)|, max over the ratios "
                    "(sums of <= 4 N terms of order 1: round-off ~1e-14)", gap, 1e-12);
     sf_check_le(r, "relative |se - sqrt(var0 / m0 + var1 / m1)| over the m_l finite values, max over the ratios", segap,
