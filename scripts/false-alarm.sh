@@ -41,6 +41,7 @@ SEED0=${SEED0:-$(( $(date +%s) % 1000000 * 1000 ))}
 sf_name=fa; . "$(dirname "$0")/common.sh"
 out=reports/false-alarm
 mkdir -p "$out"
+rm -rf "$out/runs"
 cand=""
 for f in ${CASES:-cases/*/*.md}; do
     in_tier "$f" "$TIER" || continue
@@ -112,6 +113,10 @@ while [ $i -lt "$N" ]; do
     nrep=$(grep -c '| \*\*yes\*\* |$' "$tmp/r/index.md" 2>/dev/null || true)
     printf '%s\t%s\t%s\t%s\t%s\n' "$seed" "$rc" "$nf" "${nrep:-0}" "$(( $(date +%s) - t0 ))" >> "$tmp/runs.tsv"
     echo "$seed" > "$tmp/seed$i"
+    # each run's results.json (every case's margin: how close each passing
+    # case came to its tolerance), for a margin study across seeds
+    mkdir -p "$out/runs"
+    [ ! -f "$tmp/r/results.json" ] || gzip -c "$tmp/r/results.json" > "$out/runs/$seed.json.gz"
     # every failing row (gate) of every case in this run, for the per-gate table
     for f in $cases; do
         id=$(echo "$f" | sed 's|^cases/||; s|\.md$||')
