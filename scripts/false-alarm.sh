@@ -256,4 +256,8 @@ GP
     echo "![false-alarm rates](false_alarm.png)"
 } > "$out/report.md.tmp"
 mv "$out/report.md.tmp" "$out/report.md"
+# how close the passing cases came: margins.md (each seed_proof case's tail)
+if sh "$(dirname "$0")/margins.sh" "$out/runs" > "$tmp/margins.out" 2>&1; then
+    { echo; echo "## Margins"; echo; sed 's/^/- /' "$tmp/margins.out"; echo "- Per case: [margins.md](margins.md)."; } >> "$out/report.md"
+fi
 cat "$out/summary.txt"
