@@ -51,7 +51,15 @@ done
 t_detect=$(date +%s)
 "$BIN" verify --seed 1 --jobs "$JOBS" --reports "$tmp/s1" $cand > /dev/null 2>&1 || true
 "$BIN" verify --seed 2 --jobs "$JOBS" --reports "$tmp/s2" $cand > /dev/null 2>&1 || true
-body() { sed -n '/^## Results/,/^## Plots/p' "$1" 2>/dev/null || true; }
+# a report's results, less its timings (a table column whose header, or a
+# line that, names CPU or wall time): they differ from run to run and say
+# nothing of the seed
+body() {
+    sed -n '/^## Results/,/^## Plots/p' "$1" 2>/dev/null | awk -F'|' -v OFS='|' '
+        !/^\|/ { hdr = ""; if (!/CPU|wall time/) print; next }
+        hdr == "" { hdr = $0; delete t; for (i = 1; i <= NF; i++) if ($i ~ /CPU|wall time/) t[i] = 1 }
+        { for (i in t) $i = " "; print }' || true
+}
 differ=""
 for f in $cand; do
     id=$(echo "$f" | sed 's|^cases/||; s|\.md$||')
