@@ -22,7 +22,8 @@
 # exactly when run i of the random cases fails or run 1's other cases
 # did; their verdicts are carried over from run 1.  A long study then
 # costs the random cases' time a run, not the tier's.
-# CASES='...' limits the candidates.  Run i uses --seed SEED0 + i
+# CASES='...' limits the candidates; `touch reports/false-alarm/stop`
+# ends a long study after the current run, with the report of the runs done.  Run i uses --seed SEED0 + i
 # (SEED0=N in the environment; default: from the clock, so each study
 # draws fresh seeds) and the report lists, per case, the seeds that failed
 # (a failure is reproducible with `slipfield verify --seed S CASE`), a
@@ -41,7 +42,7 @@ SEED0=${SEED0:-$(( $(date +%s) % 1000000 * 1000 ))}
 sf_name=fa; . "$(dirname "$0")/common.sh"
 out=reports/false-alarm
 mkdir -p "$out"
-rm -rf "$out/runs"
+rm -rf "$out/runs" "$out/stop"
 cand=""
 for f in ${CASES:-cases/*/*.md}; do
     in_tier "$f" "$TIER" || continue
@@ -133,6 +134,9 @@ while [ $i -lt "$N" ]; do
     done
     i=$((i + 1))
     [ -t 2 ] && printf '\rfalse-alarm: %d/%d runs' "$i" "$N" >&2
+    # `touch reports/false-alarm/stop` ends a long study after this run,
+    # with the report of the runs done
+    if [ -e "$out/stop" ]; then rm -f "$out/stop"; N=$i; fi
 done
 [ -t 2 ] && echo >&2
 # per case: failures over N, nominal alpha from the scene
