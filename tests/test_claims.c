@@ -1,12 +1,16 @@
 /* Unit tests: the paper's claims as data (result.h sf_claim), their
- * trip through claims.tsv into the index (paper.h), and the escaping of
- * generated text in the Markdown they are written into (html.h). */
+ * trip through claims.tsv into the index (paper.h), the escaping of
+ * generated text in the Markdown they are written into (html.h), and the
+ * sweep rows the claims cases report with the exact recomputation that
+ * gates them (checks/common.h). */
 #include "test_util.h"
 #include "result.h"
 #include "report.h"
 #include "paper.h"
 #include "html.h"
 #include "scene.h"
+#include "sweep.h"
+#include "checks/common.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -180,6 +184,42 @@ static void verdicts_are_coloured(void **state)
     assert_non_null(strstr(buf, "<strong>Error:</strong>"));
 }
 
+/* A sweep row as the claims cases record it (sf_sweep_stat_of, no u_num)
+ * agrees with its recomputation from the values to round-off; an se or an
+ * interval end 6% off, or a count off by one, does not. */
+static void sweep_rows_recomputed_exactly(void **state)
+{
+    (void)state;
+    const double x[6] = { 1.1, 0.9, NAN, 1.3, 1.05, 0.97 };
+    double buf[6];
+    sf_sweep_stat st;
+    assert_int_equal(sf_sweep_stat_of(x, 1, 6, &st), SF_SUCCESS);
+    sf_result *r = sf_result_alloc();
+    check_sweep_stat_record(r, "l_over_R", 1, "pv_x_ratio", "-", &st, NULL);
+    assert_int_equal(sf_result_nsweep(r), 1);
+    sf_sweep_row row = *sf_result_sweep_at(r, 0);
+    assert_string_equal(row.qoi, "pv_x_ratio");
+    assert_int_equal(row.n_used, 5);
+    assert_int_equal(row.n_excluded, 1);
+    assert_close(row.level, SF_SWEEP_CI_LEVEL, 0);
+    assert_true(isnan(row.u_num));
+    assert_int_equal(row.u_num_subset, 0);
+    assert_true(check_sweep_row_off(&row, x, 1, 6, buf) <= 1);
+    sf_sweep_row bad = row;
+    bad.se *= 1.06;
+    assert_true(check_sweep_row_off(&bad, x, 1, 6, buf) > 1);
+    bad = row;
+    bad.ci_hi = row.mean + 1.06 * (row.ci_hi - row.mean);
+    assert_true(check_sweep_row_off(&bad, x, 1, 6, buf) > 1);
+    bad = row;
+    bad.n_used--;
+    assert_true(isinf(check_sweep_row_off(&bad, x, 1, 6, buf)));
+    /* a value the row left out: the mean moves */
+    const double y[6] = { 1.1, 0.9, 1.2, 1.3, 1.05, 0.97 };
+    assert_true(check_sweep_row_off(&row, y, 1, 6, buf) > 1);
+    sf_result_free(r);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -188,6 +228,7 @@ int main(void)
         cmocka_unit_test(contradicted_claims_say_why),
         cmocka_unit_test(generated_text_stays_literal),
         cmocka_unit_test(verdicts_are_coloured),
+        cmocka_unit_test(sweep_rows_recomputed_exactly),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

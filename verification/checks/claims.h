@@ -7,6 +7,7 @@
 
 #include <stddef.h>
 #include "scene.h"
+#include "sweep.h"
 
 /* The QoI definitions each claim is judged under.  D_OURS is the paper's
  * (Sec. 3.1; the solver's qoi_def = paper, oscillator.h): T_sk = stick
@@ -54,6 +55,11 @@ typedef struct cpoint_s {
     double mean[ND][NQ], sd[ND][NQ];
     double ku[ND][NQ];          /* excess kurtosis of the per-realisation values (NAN below 4 values) */
     size_t nv[ND][NQ];          /* finite values */
+    /* the paper's definitions' statistics (D_OURS) as `sweep --summary`
+     * states them (sf_sweep_stat_of: mean[D_OURS], sd[D_OURS], nv[D_OURS]
+     * are its mean, std, n_used); the claims cases report them per point
+     * and QoI */
+    sf_sweep_stat stat[NQ];
     double *bif0, *bifdet;      /* slip-to-stick x of realisation 0 and of the deterministic run */
     size_t nbif0, nbifdet;
 } cpoint;

@@ -68,6 +68,12 @@ static const char *const qname[NQ] = { "PV_x ratio", "PV_F ratio", "stick-fracti
                                        "slip-to-stick count", "spread of x at slip-to-stick / det. PV_x",
                                        "share of oscillations without stick" };
 
+/* results.json's names and units of the QoIs (qname's order) */
+static const char *const qkey[NQ] = { "pv_x_ratio", "pv_F_ratio", "stick_fraction_ratio", "stick_fraction",
+                                      "stick_per_cycle", "t_sk", "slip_to_stick_x_sd", "slip_to_stick_x_mean",
+                                      "slip_to_stick_count", "slip_to_stick_x_sd_rel", "share_without_stick" };
+static const char *const qunit[NQ] = { "-", "-", "-", "-", "s", "s", "m", "m", "-", "-", "-" };
+
 /* The extremum of x between two history rows where vx changes sign: the
  * cubic Hermite interpolant of (x, vx) at both ends, its stationary point
  * (the rows are step ends; the solver's own extrema are events that are
@@ -418,7 +424,7 @@ static int claims_point(const sf_scene *s0, const char *param, double val, cpoin
             pt->raw[i * NOUT + ND_RAW * NQ + j] /= d * d;
         }
     }
-    double *v = check_alloc(pt->n * sizeof *v);
+    double *v = check_alloc(pt->n * sizeof *v), *xv = check_alloc(pt->n * sizeof *xv);
     for (int dd = 0; dd < ND; dd++)
         for (int q = 0; q < NQ; q++) {
             size_t m = 0;
@@ -435,12 +441,22 @@ static int claims_point(const sf_scene *s0, const char *param, double val, cpoin
                          : q == Q_SF ? o[Q_TSTK] / pt->det[D_OURS * NQ + Q_TSTK] : o[Q_TSTK];
                 if (!isfinite(x) && (dd == D_EXCL_LO || dd == D_EXCL_HI))
                     x = dd == D_EXCL_LO ? lo : hi;   /* NaN while ours has no finite value */
+                xv[i] = x;
                 if (isfinite(x))
                     v[m++] = x;
             }
-            pt->nv[dd][q] = m;
-            pt->mean[dd][q] = m ? gsl_stats_mean(v, 1, m) : NAN;
-            pt->sd[dd][q] = m > 1 ? gsl_stats_sd(v, 1, m) : NAN;
+            /* mean, std and the counts as every sweep computes them */
+            sf_sweep_stat st;
+            if (sf_sweep_stat_of(xv, 1, pt->n, &st)) {
+                free(v);
+                free(xv);
+                return SF_ENOMEM;
+            }
+            if (dd == D_OURS)
+                pt->stat[q] = st;
+            pt->nv[dd][q] = st.n_used;
+            pt->mean[dd][q] = st.mean;
+            pt->sd[dd][q] = st.std;
             pt->ku[dd][q] = m > 3 ? gsl_stats_kurtosis(v, 1, m) : NAN;
         }
     for (int j = 0; j < NW; j++) {   /* pooled spread: between + mean within */
@@ -454,6 +470,7 @@ static int claims_point(const sf_scene *s0, const char *param, double val, cpoin
         pt->sd[D_POOLED][j] = sqrt(pt->sd[D_OURS][j] * pt->sd[D_OURS][j] + W);
     }
     free(v);
+    free(xv);
     return SF_SUCCESS;
 }
 
@@ -465,15 +482,29 @@ static void cpoint_free(cpoint *p)
 }
 
 /* The counts behind each point's statistics (our definitions), for
- * results.json: the claims' tests use nv values, not n. */
-static void cpoint_samples(sf_result *r, const char *param, const cpoint *pt, size_t K)
+ * results.json: the claims' tests use nv values, not n.  And each point's
+ * statistics per QoI (the paper's definitions) as `sweep --summary`
+ * states them (results.json's `sweep`, the report's sweep table), each
+ * recomputed from the per-realisation values (check_sweep_row_off, the
+ * recomputation sweep-aggregation gates on): the largest gap over its
+ * round-off allowance into *worst.  u_num is not estimated (no companion
+ * solves: sf_unum_sweep's would cost up to ~0.36 of the sweep). */
+static void cpoint_samples(sf_result *r, const char *param, const cpoint *pt, size_t K, double *worst)
 {
-    for (size_t k = 0; k < K; k++)
+    *worst = 0;
+    for (size_t k = 0; k < K; k++) {
+        double *buf = check_alloc((pt[k].n ? pt[k].n : 1) * sizeof *buf);
         for (int q = 0; q < NQ; q++) {
             char what[160];
             snprintf(what, sizeof what, "%s = %g: %s", *param ? param : "point", pt[k].val, qname[q]);
             sf_result_sample(r, what, pt[k].nv[D_OURS][q], pt[k].n - pt[k].nv[D_OURS][q]);
+            check_sweep_stat_record(r, param, pt[k].val, qkey[q], qunit[q], &pt[k].stat[q], NULL);
+            double w = check_sweep_row_off(sf_result_sweep_at(r, sf_result_nsweep(r) - 1),
+                                           pt[k].raw + D_OURS * NQ + q, NOUT, pt[k].n, buf);
+            *worst = w > *worst || isnan(w) ? w : *worst;
         }
+        free(buf);
+    }
 }
 
 int claims_pick(const cpoint *pt, size_t K, const char *sel)
@@ -772,7 +803,24 @@ static size_t claims_judge(const sf_case *c, sf_result *r, const claim_spec *spe
     return gated;
 }
 
-/* Paper-style plots: mean line, +-1 std band, deterministic reference
+/* The mean of QoI q at each point with its Monte Carlo interval (the
+ * reported one: stat[q]) as error bars; u_num is not estimated (no band). */
+static void claims_errorbars(sf_plot *p, const cpoint *pt, size_t K, int q, double *x, double *m, double *lo,
+                             double *hi)
+{
+    for (size_t k = 0; k < K; k++) {
+        x[k] = pt[k].val;
+        m[k] = pt[k].stat[q].mean;
+        lo[k] = pt[k].stat[q].ci_lo;
+        hi[k] = pt[k].stat[q].ci_hi;
+    }
+    char lb[96];
+    snprintf(lb, sizeof lb, "mean, %g%% Monte Carlo interval (u_num not estimated)", 100 * SF_SWEEP_CI_LEVEL);
+    sf_plot_errorbars(p, lb, K, x, m, lo, hi);
+}
+
+/* Paper-style plots: mean line, +-1 std band (the realisations' spread),
+ * the mean's Monte Carlo interval as error bars, deterministic reference
  * dashed; one per QoI ratio. */
 static void claims_plots(sf_result *r, const cpoint *pt, size_t K, const char *fig, const char *xl, int logx)
 {
@@ -795,6 +843,7 @@ static void claims_plots(sf_result *r, const cpoint *pt, size_t K, const char *f
         sf_plot_band(p, "mean +- 1 std", K, x, lo, hi);
         sf_plot_series(p, "mean (stochastic)", SF_STYLE_LINES, K, x, m);
         sf_plot_series(p, "deterministic", SF_STYLE_DASHED, K, x, one);
+        claims_errorbars(p, pt, K, q, x, m, lo, hi);
     }
     /* the dimensional stick time t_sk in the window (Fig. 13(c), embedded) */
     for (size_t k = 0; k < K; k++) {
@@ -811,6 +860,7 @@ static void claims_plots(sf_result *r, const cpoint *pt, size_t K, const char *f
     sf_plot_band(p, "mean +- 1 std", K, x, lo, hi);
     sf_plot_series(p, "mean (stochastic)", SF_STYLE_LINES, K, x, m);
     sf_plot_series(p, "deterministic", SF_STYLE_DASHED, K, x, one);
+    claims_errorbars(p, pt, K, Q_TSK, x, m, lo, hi);
     /* Fig. 16: realisation 0's slip-to-stick positions (dots), the
      * deterministic ones (squares) */
     size_t nb = 0, nd = 0;
@@ -904,7 +954,8 @@ int claims_sweep(const sf_case *c, sf_result *r, const claim_spec *spec, const c
                 p->n - p->nv[0][Q_SF], secs[k], cpu[k]);
         fewest = u < fewest ? u : fewest;
     }
-    cpoint_samples(r, c->spec.sweep_param, pt, K);
+    double worst;
+    cpoint_samples(r, c->spec.sweep_param, pt, K, &worst);
     double cpu_tot = 0;
     for (size_t k = 0; k < K; k++)
         cpu_tot += cpu[k];
@@ -926,6 +977,16 @@ int claims_sweep(const sf_case *c, sf_result *r, const claim_spec *spec, const c
      * NaN everywhere: a broken run) fails the case */
     sf_check_ge(r, "fewest realisations with PV_x, PV_F and T_sk all formed (paper's definitions), as a share of N",
                 (double)fewest / (double)s0->samples, 0.5);
+    sf_note(r, "\n(Sweep statistics: every point and QoI under the paper's definitions with its mean, std, "
+               "Monte Carlo standard error and %g%% Student interval, as `slipfield sweep --summary` states them "
+               "(sf_sweep_stat_of; the claims' tests use the same mean, std and n), each recomputed from the "
+               "per-realisation values with GSL and gated to 8 n eps (a count used / excluded that differs fails "
+               "it). u_num, the numerical error of the means, is "
+               "not estimated here: these sweeps run no coarser companion solves (at ceil(N/4) realisations they "
+               "would add up to ~0.36 of the sweep's cost); the claims are Monte Carlo tests of ratios to the "
+               "deterministic model solved with the same numerics.)\n", 100 * SF_SWEEP_CI_LEVEL);
+    sf_check_le(r, "sweep statistics per point and QoI: largest |reported - recomputed from the per-realisation "
+                   "values| / (8 n eps scale)", worst, 1);
     claims_judge(c, r, spec, pt, K);
     claims_plots(r, pt, K, fig, xl, logx);
     *out = pt;

@@ -5,16 +5,19 @@
 #include "sf_error.h"
 #include "sweep.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
 #include <gsl/gsl_blas.h>
+#include <gsl/gsl_cdf.h>
 #include <gsl/gsl_fit.h>
 #include <gsl/gsl_linalg.h>
 #include <gsl/gsl_math.h>
 #include <gsl/gsl_sf_ellint.h>
+#include <gsl/gsl_statistics_double.h>
 
 double ref_sq_exp(double hx, double hy, double l)
 {
@@ -462,21 +465,69 @@ int check_draw(sf_cof_plan *p, unsigned long seed, size_t i, sf_cof **out)
     return rc;
 }
 
+void check_sweep_stat_record(sf_result *r, const char *param, double value, const char *qoi, const char *unit,
+                             const sf_sweep_stat *a, const sf_sweep_num *e)
+{
+    int est = e && e->n_sub;
+    sf_sweep_row row = { .value = value, .n_used = a->n_used, .n_excluded = a->n_excluded, .mean = a->mean,
+                         .std = a->std, .se = a->se, .ci_lo = a->ci_lo, .ci_hi = a->ci_hi,
+                         .level = SF_SWEEP_CI_LEVEL, .u_num = est ? e->u_mean : NAN,
+                         .u_num_subset = est ? e->n_sub : 0, .u_num_used = est ? e->n_used : 0 };
+    snprintf(row.param, sizeof row.param, "%s", *param ? param : "point");
+    snprintf(row.qoi, sizeof row.qoi, "%s", qoi);
+    snprintf(row.unit, sizeof row.unit, "%s", unit);
+    sf_result_sweep(r, &row);
+}
+
 void check_sweep_record(sf_result *r, const char *param, double value, const sf_sweep_point *p)
 {
     static const char *const nm[SF_SWEEP_NQ] = { "pv_x", "pv_F", "stick_fraction" }, *const un[SF_SWEEP_NQ] = { "m", "N", "-" };
-    for (int q = 0; q < SF_SWEEP_NQ; q++) {
-        const sf_sweep_stat *a = &p->stat[q];
-        const sf_sweep_num *e = &p->num[q];
-        sf_sweep_row row = { .value = value, .n_used = a->n_used, .n_excluded = a->n_excluded, .mean = a->mean,
-                             .std = a->std, .se = a->se, .ci_lo = a->ci_lo, .ci_hi = a->ci_hi,
-                             .level = SF_SWEEP_CI_LEVEL, .u_num = e->n_sub ? e->u_mean : NAN,
-                             .u_num_subset = e->n_sub, .u_num_used = e->n_used };
-        snprintf(row.param, sizeof row.param, "%s", *param ? param : "point");
-        snprintf(row.qoi, sizeof row.qoi, "%s", nm[q]);
-        snprintf(row.unit, sizeof row.unit, "%s", un[q]);
-        sf_result_sweep(r, &row);
+    for (int q = 0; q < SF_SWEEP_NQ; q++)
+        check_sweep_stat_record(r, param, value, nm[q], un[q], &p->stat[q], &p->num[q]);
+}
+
+check_recomp check_recomp_of(const double *buf, size_t used, double level)
+{
+    check_recomp o = { NAN, NAN, NAN, NAN, NAN, NAN, used, 0, 0 };
+    if (!used)
+        return o;
+    o.mean = gsl_stats_mean(buf, 1, used);
+    for (size_t i = 0; i < used; i++) {
+        o.scale = fmax(o.scale, fabs(buf[i]));
+        o.dscale = fmax(o.dscale, fabs(buf[i] - o.mean));
     }
+    if (used > 1) {
+        o.sd = gsl_stats_sd(buf, 1, used);
+        o.se = o.sd / sqrt((double)used);
+        o.t = gsl_cdf_tdist_Pinv(0.5 * (1 + level), (double)(used - 1));
+        o.lo = o.mean - o.t * o.se;
+        o.hi = o.mean + o.t * o.se;
+    }
+    return o;
+}
+
+double check_roundoff(double a, double b, size_t n, double scale)
+{
+    if (!isfinite(a) || !isfinite(b))
+        return (isnan(a) && isnan(b)) || a == b ? 0 : INFINITY;
+    double tol = 8 * (double)(n ? n : 1) * DBL_EPSILON * scale;
+    return a == b ? 0 : tol > 0 ? fabs(a - b) / tol : INFINITY;
+}
+
+double check_sweep_row_off(const sf_sweep_row *row, const double *x, size_t stride, size_t n, double *buf)
+{
+    size_t used = 0;
+    for (size_t i = 0; i < n; i++)
+        if (isfinite(x[i * stride]))
+            buf[used++] = x[i * stride];
+    if (row->n_used != used || row->n_excluded != n - used)
+        return INFINITY;
+    check_recomp a = check_recomp_of(buf, used, row->level);
+    double w = check_roundoff(row->mean, a.mean, used, a.scale);
+    w = fmax(w, check_roundoff(row->std, a.sd, used, a.dscale));
+    w = fmax(w, check_roundoff(row->se, a.se, used, a.dscale));
+    w = fmax(w, check_roundoff(row->ci_lo, a.lo, used, a.scale));
+    return fmax(w, check_roundoff(row->ci_hi, a.hi, used, a.scale));
 }
 
 void check_plot_sweep_bands(sf_plot *p, size_t K, const double *x, const sf_sweep_point *pt)

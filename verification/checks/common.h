@@ -158,6 +158,34 @@ double check_qoi_gap_of(const double q[3], size_t ncycles, const double qref[3])
  * sf_sweep_point.stat, num) recorded for results.json and the report's
  * sweep table (result.h: sf_sweep_row). */
 void check_sweep_record(sf_result *r, const char *param, double value, const sf_sweep_point *p);
+/* One QoI's row of such a table: its statistics a (sf_sweep_stat_of) and
+ * the numerical error of its mean e (NULL or e->n_sub = 0: not estimated),
+ * qoi and unit as results.json names them. */
+void check_sweep_stat_record(sf_result *r, const char *param, double value, const char *qoi, const char *unit,
+                             const sf_sweep_stat *a, const sf_sweep_num *e);
+
+/* The statistics of the finite values buf[0..used) recomputed with GSL
+ * (gsl_stats_mean, gsl_stats_sd, gsl_cdf_tdist_Pinv), apart from the
+ * solver's aggregation: mean, sd, se, the Student interval [lo, hi] =
+ * mean -+ t se at level; scale = max|x|, dscale = max|x - mean| for the
+ * round-off allowances of check_roundoff. */
+typedef struct {
+    double mean, sd, se, lo, hi, t;
+    size_t used;
+    double scale, dscale;
+} check_recomp;
+check_recomp check_recomp_of(const double *buf, size_t used, double level);
+/* |a - b| / (8 n eps scale): a sum of n terms taken in another order
+ * moves by at most n eps times the sum of their magnitudes; the factor 8
+ * covers the square root, the division and the t quantile's product.
+ * Equal non-finite values (no statistic formed) agree (0); one non-finite,
+ * the other not: INFINITY. */
+double check_roundoff(double a, double b, size_t n, double scale);
+/* A recorded sweep row against its recomputation from the values x[0],
+ * x[stride], ... x[(n - 1) stride] (the non-finite ones excluded): the
+ * largest check_roundoff over mean, std, se and the interval's ends, and
+ * INFINITY when the counts used / excluded differ.  buf holds n values. */
+double check_sweep_row_off(const sf_sweep_row *row, const double *x, size_t stride, size_t n, double *buf);
 
 /* The ratio means of a sweep's K points (param values x) with their
  * Student intervals as error bars and, where estimated, mean -+ u_num / det

@@ -19,8 +19,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <gsl/gsl_cdf.h>
-#include <gsl/gsl_statistics_double.h>
 
 #define NQ SF_SWEEP_NQ
 #define MAXCOL 128   /* the summary has 97 columns (3 QoIs x 15, the design's, the control variate's and the two-level estimator's) */
@@ -135,18 +133,6 @@ typedef struct {
     size_t num_compared, num_excluded;
 } worst;
 
-/* |a - b| / (8 n eps scale): a sum of n terms taken in another order
- * moves by at most n eps times the sum of their magnitudes; the factor 8
- * covers the square root, the division and the t quantile's product.
- * Equal non-finite values (no statistic formed) agree. */
-static double off(double a, double b, size_t n, double scale)
-{
-    if (!isfinite(a) || !isfinite(b))
-        return (isnan(a) && isnan(b)) || a == b ? 0 : INFINITY;
-    double tol = 8 * (double)(n ? n : 1) * DBL_EPSILON * scale;
-    return a == b ? 0 : tol > 0 ? fabs(a - b) / tol : INFINITY;
-}
-
 /* The summary prints the numerical error with %.3g: 0 when the printed
  * cell is x printed the same way; else (x and the solver's value apart by
  * round-off on either side of a rounding edge) |printed - x| over half a
@@ -171,38 +157,9 @@ static void upd(double *w, double x)
         *w = x;
 }
 
-/* The statistics of the finite values buf[0..used) (GSL): mean, sd, se,
- * the Student interval [lo, hi] = mean -+ t se at level; scale max|x|,
- * dscale max|x - mean| for the round-off allowances. */
-typedef struct {
-    double mean, sd, se, lo, hi, t;
-    size_t used;
-    double scale, dscale;   /* max |x|, max |x - mean| */
-} recomp;
-
-static recomp stats_of(const double *buf, size_t used, double level)
-{
-    recomp o = { NAN, NAN, NAN, NAN, NAN, NAN, used, 0, 0 };
-    if (!used)
-        return o;
-    o.mean = gsl_stats_mean(buf, 1, used);
-    for (size_t i = 0; i < used; i++) {
-        o.scale = fmax(o.scale, fabs(buf[i]));
-        o.dscale = fmax(o.dscale, fabs(buf[i] - o.mean));
-    }
-    if (used > 1) {
-        o.sd = gsl_stats_sd(buf, 1, used);
-        o.se = o.sd / sqrt((double)used);
-        o.t = gsl_cdf_tdist_Pinv(0.5 * (1 + level), (double)(used - 1));
-        o.lo = o.mean - o.t * o.se;
-        o.hi = o.mean + o.t * o.se;
-    }
-    return o;
-}
-
 /* The recomputation of one (point, QoI) from the finite values of column
  * cx of the rows rows[0..n). */
-static recomp recompute(const table *tv, const size_t *rows, size_t n, int cx, double level, double *buf)
+static check_recomp recompute(const table *tv, const size_t *rows, size_t n, int cx, double level, double *buf)
 {
     size_t used = 0;
     for (size_t i = 0; i < n; i++) {
@@ -210,7 +167,7 @@ static recomp recompute(const table *tv, const size_t *rows, size_t n, int cx, d
         if (isfinite(x))
             buf[used++] = x;
     }
-    return stats_of(buf, used, level);
+    return check_recomp_of(buf, used, level);
 }
 
 /* The numerical error of QoI column cx's mean over rows[0..n), from the
@@ -220,7 +177,7 @@ static recomp recompute(const table *tv, const size_t *rows, size_t n, int cx, d
  * finite ones' statistics (e: bias = e.mean, its se), u_num_mean = 3
  * (|bias| + t se) + a-priori(row 0) |mean|. */
 typedef struct {
-    recomp e;
+    check_recomp e;
     double u, scale_u;
     size_t sub, off_subset;
 } renum;
@@ -243,7 +200,7 @@ static renum recompute_num(const table *tv, const size_t *rows, size_t n, int cx
         if (isfinite(e))
             buf[used++] = e;
     }
-    o.e = stats_of(buf, used, level);
+    o.e = check_recomp_of(buf, used, level);
     if (used > 1) {
         o.u = FS * (fabs(o.e.mean) + o.e.t * o.e.se) + apr * fabs(mean);
         o.scale_u = FS * (o.e.scale + o.e.t * o.e.dscale) + fabs(apr) * mean_scale;
@@ -282,7 +239,7 @@ static void compare_point(sf_result *r, const table *tv, const table *ts, size_t
             w->missing = 1;
             break;
         }
-        recomp a = recompute(tv, rows, n, cx, level, buf), b = recompute(tv, rows, n, crt, level, buf);
+        check_recomp a = recompute(tv, rows, n, cx, level, buf), b = recompute(tv, rows, n, crt, level, buf);
         char cn[96];
         snprintf(cn, sizeof cn, "%s_coarse[%s]", qn[q], units[q]);
         int ccx = col(tv, cn), crho = col(tv, "unum_rho[-]"), capr = col(tv, "unum_apriori[-]");
@@ -299,18 +256,18 @@ static void compare_point(sf_result *r, const table *tv, const table *ts, size_t
         upd(&w->count, fabs((double)pt->stat[q].n_used - (double)a.used));
         *excluded += n - a.used;
         double mean = S("mean[%s]"), sd = S("std[%s]"), se = S("se[%s]"), det = S("det[%s]");
-        upd(&w->mean, off(mean, a.mean, a.used, a.scale));
-        upd(&w->sd, off(sd, a.sd, a.used, a.dscale));
-        upd(&w->se, off(se, a.se, a.used, a.dscale));
+        upd(&w->mean, check_roundoff(mean, a.mean, a.used, a.scale));
+        upd(&w->sd, check_roundoff(sd, a.sd, a.used, a.dscale));
+        upd(&w->se, check_roundoff(se, a.se, a.used, a.dscale));
         char ci[96];
         snprintf(ci, sizeof ci, "%s_ci%s_lo[%s]", qn[q], lv, units[q]);
-        upd(&w->ci, off(cell(ts, srow, ci, &w->missing), a.lo, a.used, a.scale));
+        upd(&w->ci, check_roundoff(cell(ts, srow, ci, &w->missing), a.lo, a.used, a.scale));
         snprintf(ci, sizeof ci, "%s_ci%s_hi[%s]", qn[q], lv, units[q]);
-        upd(&w->ci, off(cell(ts, srow, ci, &w->missing), a.hi, a.used, a.scale));
+        upd(&w->ci, check_roundoff(cell(ts, srow, ci, &w->missing), a.hi, a.used, a.scale));
         double rmean = S("ratio_mean[-]%.0s"), rse = S("ratio_se[-]%.0s");
-        upd(&w->rmean, off(rmean, b.mean, b.used, b.scale));
-        upd(&w->rsd, off(S("ratio_std[-]%.0s"), b.sd, b.used, b.dscale));
-        upd(&w->rse, off(rse, b.se, b.used, b.dscale));
+        upd(&w->rmean, check_roundoff(rmean, b.mean, b.used, b.scale));
+        upd(&w->rsd, check_roundoff(S("ratio_std[-]%.0s"), b.sd, b.used, b.dscale));
+        upd(&w->rse, check_roundoff(rse, b.se, b.used, b.dscale));
         /* the numerical error of the mean: sf_sweep_point's (results.json
          * and the reports read it) to round-off, the printed to its digits */
         const sf_sweep_num *num = &pt->num[q];
@@ -318,9 +275,9 @@ static void compare_point(sf_result *r, const table *tv, const table *ts, size_t
         upd(&w->num_rows, fabs((double)num->n_used - (double)e.e.used));
         upd(&w->num_rows, fabs(S("num_n%.0s") - (double)e.e.used));
         int est = num->n_sub > 0;
-        upd(&w->num_bias, off(est ? num->bias : NAN, e.e.mean, e.e.used, e.e.scale));
-        upd(&w->num_se, off(est ? num->bias_se : NAN, e.e.se, e.e.used, e.e.dscale));
-        upd(&w->num_u, off(est ? num->u_mean : NAN, e.u, e.e.used, e.scale_u));
+        upd(&w->num_bias, check_roundoff(est ? num->bias : NAN, e.e.mean, e.e.used, e.e.scale));
+        upd(&w->num_se, check_roundoff(est ? num->bias_se : NAN, e.e.se, e.e.used, e.e.dscale));
+        upd(&w->num_u, check_roundoff(est ? num->u_mean : NAN, e.u, e.e.used, e.scale_u));
         upd(&w->num_printed, off3(S("num_bias[%s]"), e.e.mean, e.e.used, e.e.scale));
         upd(&w->num_printed, off3(S("num_bias_se[%s]"), e.e.se, e.e.used, e.e.dscale));
         double u_printed = S("u_num_mean[%s]");
@@ -329,9 +286,9 @@ static void compare_point(sf_result *r, const table *tv, const table *ts, size_t
         w->num_excluded += e.sub - e.e.used;
 #undef S
         /* what the validation cases read: sf_sweep_point's ratio statistics */
-        upd(&w->rmean, off(pt->mean[q], b.mean, b.used, b.scale));
-        upd(&w->rsd, off(pt->std[q], b.sd, b.used, b.dscale));
-        upd(&w->rse, off(pt->rstat[q].se, b.se, b.used, b.dscale));
+        upd(&w->rmean, check_roundoff(pt->mean[q], b.mean, b.used, b.scale));
+        upd(&w->rsd, check_roundoff(pt->std[q], b.sd, b.used, b.dscale));
+        upd(&w->rse, check_roundoff(pt->rstat[q].se, b.se, b.used, b.dscale));
         for (size_t i = 0; i < n; i++) {
             double x = tv->cell[rows[i] * MAXCOL + (size_t)cx], y = tv->cell[rows[i] * MAXCOL + (size_t)crt];
             double want = x / det;
