@@ -482,6 +482,7 @@ static int chk_errmodel(const sf_case *c, sf_result *r)
     rewind(f);
     double *pred = check_alloc(ncap * sizeof *pred), *ach = check_alloc(ncap * sizeof *ach);
     double *ratio = check_alloc(ncap * sizeof *ratio), *ratio_hi = check_alloc(ncap * sizeof *ratio_hi), *u = NULL;
+    double *rings_st = check_alloc(ncap * sizeof *rings_st), *rings_now = check_alloc(ncap * sizeof *rings_now);
     unsigned long dseed = 0;
     int rc = SF_SUCCESS;
     while (getline(&line, &cap, f) > 0) {
@@ -530,6 +531,8 @@ static int chk_errmodel(const sf_case *c, sf_result *r)
             sf_note(r, "**%s:%zu: cannot plan the point:** %s", path, lineno, err);
             break;
         }
+        rings_st[rows] = strtod(fld[EC_PT + 6], NULL);
+        rings_now[rows] = pl.num.quadrature ? (double)pl.num.cells : 0;
         rows++;
         char want[200], got[200];
         point_text(want, sizeof want, "\t", lr, &s, &pl.num);
@@ -585,13 +588,23 @@ static int chk_errmodel(const sf_case *c, sf_result *r)
         sf_note(r, "Stored data: %s, %zu design points (its header:)\n\n%s", path, rows, hdr);
         char t[700];
         if (stale)
-            snprintf(t, sizeof t, "%zu of %zu stored points differ, first %s: stored data stale: regenerate with `sh "
-                     "scripts/design-data.sh` (its header names the seeds)", stale, rows, found);
+            snprintf(t, sizeof t, "stored data stale: %zu of %zu points differ; regenerate with scripts/design-data.sh",
+                     stale, rows);
         else
             snprintf(t, sizeof t, "all %zu stored points: the same design point and the same rings and rtol", rows);
         sf_check_true(r, "stored points describe the plan under test (each point's scene from its design seed, "
                          "the planner's rings and rtol as the measuring run printed them)", rows > 0 && !stale, t);
         sf_check_le(r, "decidable stored points with a non-finite error", (double)nonfinite, 0);
+    }
+    if (!rc && stale) {   /* the evidence: the settings planned now against the stored ones */
+        sf_note(r, "\n**Stored data stale:** the plan under test does not make the settings the stored errors were "
+                   "measured at (%zu of %zu points; the first, %s); regenerate them with `sh scripts/design-data.sh` "
+                   "(the seeds in the header above).", stale, rows, found);
+        sf_plot *pp = sf_result_plot(r, "errmodel_stale", "Stale stored data: the rings planned now against the stored",
+                                     "rings the measuring run planned (stored) [-]", "rings the code under test plans [-]");
+        sf_plot_series(pp, "stored design points", SF_STYLE_POINTS, rows, rings_st, rings_now);
+        double dx[2] = { 0, SF_PLAN_MAX_RINGS };
+        sf_plot_series(pp, "the same rings", SF_STYLE_LINES, 2, dx, dx);
     }
     if (!rc && !stale && pts) {
         sf_note(r, "\n**The prediction against the stored errors** (%zu decidable points of %zu: %zu undecidable as "
@@ -629,6 +642,8 @@ static int chk_errmodel(const sf_case *c, sf_result *r)
     free(ach);
     free(ratio);
     free(ratio_hi);
+    free(rings_st);
+    free(rings_now);
     return rc ? SF_EFAIL : SF_SUCCESS;
 }
 
