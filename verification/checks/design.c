@@ -26,7 +26,10 @@
  * a cycle but no peak-to-valley: NaN); such a point is reported and kept
  * out of the per-realisation gate as undecidable (its promise is on the
  * statistic over realisations: the jump's probability, not its size,
- * shrinks with the error). */
+ * shrinks with the error).
+ *
+ * plan_errmodel (below): the plan's predicted error against the stored
+ * tables of this design at held-out seeds, without a solve. */
 #include "checks.h"
 #include "common.h"
 #include "../stats.h"
@@ -495,22 +498,21 @@ static int chk_errmodel(const sf_case *c, sf_result *r)
         }
         if (!line[0] || !strncmp(line, "seed\t", 5))
             continue;
-        size_t nf = 0;
-        for (char *t = line; nf < ECOLS; nf++) {
-            fld[nf] = t;
-            char *tab = strchr(t, '\t');
-            if (!tab) {
-                nf++;
-                break;
-            }
-            *tab = 0;
-            t = tab + 1;
+        size_t nf = 1;
+        for (const char *t = line; (t = strchr(t, '\t')); t++)
+            nf++;
+        int ok = nf == ECOLS;
+        for (size_t k = 0; ok && k < ECOLS; k++) {
+            fld[k] = k ? strchr(fld[k - 1], 0) + 1 : line;
+            char *tab = strchr(fld[k], '\t');
+            if (tab)
+                *tab = 0;
         }
         double a[NQ], e[NQ], lr, x;
-        char *end;
-        unsigned long ds = strtoul(fld[EC_DSEED], &end, 10);
-        size_t i = (size_t)strtoul(fld[EC_I], &end, 10);
-        int ok = nf == ECOLS && !*end && i < n;
+        char *end1 = NULL, *end2 = NULL;
+        unsigned long ds = ok ? strtoul(fld[EC_DSEED], &end1, 10) : 0;
+        size_t i = ok ? (size_t)strtoul(fld[EC_I], &end2, 10) : 0;
+        ok = ok && !*end1 && !*end2 && i < n;
         for (int k = 0; k < NQ && ok; k++)
             ok = parse_num(fld[EC_A + k], &a[k]) && parse_num(fld[EC_E + k], &e[k]);
         if (!ok) {
@@ -644,7 +646,7 @@ static int chk_errmodel(const sf_case *c, sf_result *r)
     free(ratio_hi);
     free(rings_st);
     free(rings_now);
-    return rc ? SF_EFAIL : SF_SUCCESS;
+    return rc;   /* SF_EPARSE, SF_EIO or the planner's refusal */
 }
 
 const sf_check_def sf_checks_design[] = {
