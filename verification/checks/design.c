@@ -597,6 +597,7 @@ static int chk_errmodel(const sf_case *c, sf_result *r)
         sf_check_true(r, "stored points describe the plan under test (each point's scene from its design seed, "
                          "the planner's rings and rtol as the measuring run printed them)", rows > 0 && !stale, t);
         sf_check_le(r, "decidable stored points with a non-finite error", (double)nonfinite, 0);
+        sf_check_ge(r, "decided stored points (the calibration test's n)", (double)pts, 1);
     }
     if (!rc && stale) {   /* the evidence: the settings planned now against the stored ones */
         sf_note(r, "\n**Stored data stale:** the plan under test does not make the settings the stored errors were "
