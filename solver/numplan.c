@@ -152,7 +152,8 @@ double sf_numplan_err_time(double rtol) { return fmax(TA * sqrt(rtol), TB * rtol
  * it err_pred = err_total).  On the fitting points: 5.0% above it, median
  * achieved / err_pred 0.16; fitted on random halves of the seeds, 5.9% of
  * the other half above (5-95%: 1.3-10.6%).  Verified on fresh seeds by
- * cases/plan/design-quick.md (its gate: at most 5% of points above). */
+ * cases/plan/design-quick.md (its gate: at most 5% of points above) and,
+ * on those seeds' stored tables, cases/plan/errmodel-calibration.md. */
 #define PF 0.158
 #define PL 0.586
 #define PC 0.538

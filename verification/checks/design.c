@@ -26,7 +26,10 @@
  * a cycle but no peak-to-valley: NaN); such a point is reported and kept
  * out of the per-realisation gate as undecidable (its promise is on the
  * statistic over realisations: the jump's probability, not its size,
- * shrinks with the error). */
+ * shrinks with the error).
+ *
+ * plan_errmodel (below): the plan's predicted error against the stored
+ * tables of this design at held-out seeds, without a solve. */
 #include "checks.h"
 #include "common.h"
 #include "../stats.h"
@@ -217,11 +220,13 @@ static int run_point(const sf_scene *s, const sf_cof *cof, point_run *pr, sf_res
     return rc;
 }
 
-static int chk_design(const sf_case *c, sf_result *r)
+/* The design's box from the case's scene (lo, hi per dimension) and its
+ * Latin hypercube (n points, design seed; the caller frees *u);
+ * SF_EINVAL with the scene's requirements noted. */
+static int design_box(const sf_case *c, sf_result *r, double *lo, double *hi)
 {
     const sf_scene *s0 = &c->scene;
-    size_t n = s0->samples;
-    if (n < 2 || c->spec.sweep.n != 2 || c->spec.sweep2.n != 2 || strcmp(c->spec.sweep_param, "l_over_R") ||
+    if (s0->samples < 2 || c->spec.sweep.n != 2 || c->spec.sweep2.n != 2 || strcmp(c->spec.sweep_param, "l_over_R") ||
         s0->cells || s0->rtol > 0 || s0->cof != SF_COF_FIELD || !(c->spec.tolerance >= 1) || !(s0->T >= 20)) {
         sf_note(r, "The scene must set cof = field, samples (design points, >= 2), sweep_param = l_over_R, sweep = "
                    "the l/R range (lo, hi), sweep2 = the qoi_tol range (lo, hi), tolerance = the worst achieved / "
@@ -229,13 +234,55 @@ static int chk_design(const sf_case *c, sf_result *r)
                    "leave cells and rtol to the plan.");
         return SF_EINVAL;
     }
-    double lo[ND] = { c->spec.sweep.v[0], 0.05, 0.1, 0.2, 20, c->spec.sweep2.v[0] };
-    double hi[ND] = { c->spec.sweep.v[1], 1, 0.8, 1, s0->T, c->spec.sweep2.v[1] };
+    const double l[ND] = { c->spec.sweep.v[0], 0.05, 0.1, 0.2, 20, c->spec.sweep2.v[0] };
+    const double h[ND] = { c->spec.sweep.v[1], 1, 0.8, 1, s0->T, c->spec.sweep2.v[1] };
+    memcpy(lo, l, sizeof l);
+    memcpy(hi, h, sizeof h);
+    return SF_SUCCESS;
+}
+
+static double *design_points(unsigned long seed, size_t n)
+{
     double *u = check_alloc(n * ND * sizeof *u);
     gsl_rng *g = gsl_rng_alloc(gsl_rng_mt19937);
-    gsl_rng_set(g, sf_mc_seed(s0->seed, (size_t)-1));   /* the design's own stream */
+    gsl_rng_set(g, sf_mc_seed(seed, (size_t)-1));   /* the design's own stream */
     lhs(g, n, u);
     gsl_rng_free(g);
+    return u;
+}
+
+/* Point ui's scene: s0 at the point's l/R (*lr), CV, v_b, mean COF, T, qoi_tol */
+static int design_scene(const sf_scene *s0, const double *lo, const double *hi, const double *ui, sf_scene *s,
+                        double *lr, char *err, size_t errlen)
+{
+    double cv = lin(ui[1], lo[1], hi[1]), mu = lin(ui[3], lo[3], hi[3]);
+    *s = *s0;
+    s->mu_mean = mu;
+    s->mu_std = cv * mu;
+    s->v_b = lin(ui[2], lo[2], hi[2]);
+    s->T = lin(ui[4], lo[4], hi[4]);
+    s->qoi_tol = logmap(ui[5], lo[5], hi[5]);
+    *lr = logmap(ui[0], lo[0], hi[0]);
+    return sf_sweep_set(s, "l_over_R", *lr, err, errlen);
+}
+
+/* A point's scene and settings as the design's table prints them (the
+ * stored measurements are matched against this text): l/R, CV, v_b, mu,
+ * T, qoi_tol, rings, rtol, separated by sep */
+static void point_text(char *buf, size_t len, const char *sep, double lr, const sf_scene *s, const sf_numplan *np)
+{
+    snprintf(buf, len, "%.3g%s%.2f%s%.2f%s%.2f%s%.0f%s%.2g%s%zu%s%.2g", lr, sep, s->mu_std / s->mu_mean, sep, s->v_b,
+             sep, s->mu_mean, sep, s->T, sep, s->qoi_tol, sep, np->quadrature ? np->cells : 0, sep, np->rtol);
+}
+
+static int chk_design(const sf_case *c, sf_result *r)
+{
+    const sf_scene *s0 = &c->scene;
+    size_t n = s0->samples;
+    double lo[ND], hi[ND];
+    if (design_box(c, r, lo, hi))
+        return SF_EINVAL;
+    double *u = design_points(s0->seed, n);
     size_t np_ = n * NQ;
     double *ratio = check_alloc(n * sizeof *ratio), *pred = check_alloc(np_ * sizeof *pred), *ach = check_alloc(np_ * sizeof *ach), *un = check_alloc(np_ * sizeof *un);
     size_t npairs = 0, within = 0, cont_points = 0, disc_points = 0, covered = 0, undecided = 0, bounded = 0;
@@ -253,19 +300,14 @@ static int chk_design(const sf_case *c, sf_result *r)
     int rc = SF_SUCCESS;
     for (size_t i = 0; i < n && !rc; i++) {
         const double *ui = u + ND * i;
-        double lr = logmap(ui[0], lo[0], hi[0]), cv = lin(ui[1], lo[1], hi[1]), vb = lin(ui[2], lo[2], hi[2]);
-        double mu = lin(ui[3], lo[3], hi[3]), T = lin(ui[4], lo[4], hi[4]), tol = logmap(ui[5], lo[5], hi[5]);
-        sf_scene s = *s0;
+        double lr;
+        sf_scene s;
         char err[256] = "";
-        if ((rc = sf_sweep_set(&s, "l_over_R", lr, err, sizeof err))) {
+        if ((rc = design_scene(s0, lo, hi, ui, &s, &lr, err, sizeof err))) {
             sf_note(r, "**Bad design point:** %s", err);
             break;
         }
-        s.mu_mean = mu;
-        s.mu_std = cv * mu;
-        s.v_b = vb;
-        s.T = T;
-        s.qoi_tol = tol;
+        double tol = s.qoi_tol;
         sf_cof_plan *cp;
         if ((rc = sf_cof_plan_alloc(&s, &cp, err, sizeof err))) {
             sf_note(r, "**Cannot plan the COF at point %zu:** %s", i, err);
@@ -297,9 +339,11 @@ static int chk_design(const sf_case *c, sf_result *r)
             a[k] = fabs(pr.q[0][k] - pr.q[2][k]) / fabs(pr.q[2][k]);
             e1[k] = fabs(pr.q[1][k] - pr.q[2][k]) / fabs(pr.q[2][k]);
         }
-        sf_note(r, "| %zu | %.3g | %.2f | %.2f | %.2f | %.0f | %.2g | %zu | %.2g | %zu/%zu/%zu%s | %.2g | %.2g, %.2g, "
+        char pt[160];
+        point_text(pt, sizeof pt, " | ", lr, &s, &pr.np);
+        sf_note(r, "| %zu | %s | %zu/%zu/%zu%s | %.2g | %.2g, %.2g, "
                    "%.2g | %.2g, %.2g, %.2g | %.2g, %.2g, %.2g | %.2f; %.2f, %.2f, %.2f |",
-                i, lr, cv, vb, mu, T, tol, pr.np.quadrature ? pr.np.cells : 0, pr.np.rtol, pr.cycles[0], pr.cycles[1],
+                i, pt, pr.cycles[0], pr.cycles[1],
                 pr.cycles[2], disc ? (!pr.cycles[2] ? " (no cycle)" : nan_q ? " (no peak-to-valley)" : " (edge)") : "", pr.np.err_pred, a[0], a[1], a[2], e1[0], e1[1], e1[2], pr.u[0],
                 pr.u[1], pr.u[2], t_draw, pr.cpu[0], pr.cpu[1], pr.cpu[2]);
         if (disc) {
@@ -381,7 +425,233 @@ static int chk_design(const sf_case *c, sf_result *r)
     return rc ? SF_EFAIL : SF_SUCCESS;
 }
 
+/* ---- plan_errmodel: the predicted error err_pred (numplan.c) against
+ * stored, held-out measurements: the design's tables at seeds never used
+ * to fit it (scripts/design-data.sh writes them beside the case, as
+ * NAME.tsv for NAME.md).  No solve: every stored point's scene is rebuilt
+ * from its design seed and index (the Latin hypercube above) and planned
+ * by the code under test.  Its settings must be the stored ones (the
+ * stored errors describe those settings and no others: a changed plan
+ * makes the data stale, and the case fails), then the points whose stored
+ * error exceeds the recomputed err_pred are counted: an exact one-sided
+ * binomial test of H0 'rate <= 5%' at the case's alpha.  The stored
+ * errors carry two significant digits; one within its print's rounding of
+ * the prediction counts as above (against the model). */
+enum { ECOLS = 22, EC_SEED = 0, EC_DSEED = 1, EC_I = 2, EC_PT = 3, EC_UND = 12, EC_A = 13, EC_E = 16 };
+#define ERR_LR_BINS 3
+
+static int parse_num(const char *t, double *x)
+{
+    char *end;
+    *x = strtod(t, &end);
+    return end != t && !*end;
+}
+
+/* the largest value a 2-significant-digit print of x >= 0 may stand for */
+static double print_hi(double x)
+{
+    return x > 0 ? x + 0.5 * pow(10, floor(log10(x)) - 1) : 0;
+}
+
+/* the data file beside the case: NAME.tsv for NAME.md */
+static int data_path(const sf_case *c, char *buf, size_t len)
+{
+    size_t n = strlen(c->path);
+    if (n < 3 || strcmp(c->path + n - 3, ".md"))
+        return SF_EINVAL;
+    snprintf(buf, len, "%.*s.tsv", (int)(n - 3), c->path);
+    return SF_SUCCESS;
+}
+
+static int chk_errmodel(const sf_case *c, sf_result *r)
+{
+    const sf_scene *s0 = &c->scene;
+    size_t n = s0->samples;
+    double lo[ND], hi[ND];
+    char path[600];
+    if (design_box(c, r, lo, hi) || data_path(c, path, sizeof path))
+        return SF_EINVAL;
+    FILE *f = fopen(path, "r");
+    if (!f) {
+        sf_note(r, "**Stored data missing:** cannot read %s: regenerate it with `sh scripts/design-data.sh FIRST LAST "
+                   "> %s`.", path, path);
+        return SF_EIO;
+    }
+    char *line = NULL, *fld[ECOLS], found[400] = "", hdr[1200] = "";
+    size_t cap = 0, lineno = 0, rows = 0, stale = 0, undecided = 0, nonfinite = 0, pts = 0, over = 0, over_hi = 0;
+    size_t fitted = 0, ncap = 0, bin_n[ERR_LR_BINS] = { 0 }, bin_over[ERR_LR_BINS] = { 0 };
+    while (getline(&line, &cap, f) > 0)
+        ncap++;   /* at most this many points */
+    rewind(f);
+    double *pred = check_alloc(ncap * sizeof *pred), *ach = check_alloc(ncap * sizeof *ach);
+    double *ratio = check_alloc(ncap * sizeof *ratio), *ratio_hi = check_alloc(ncap * sizeof *ratio_hi), *u = NULL;
+    double *rings_st = check_alloc(ncap * sizeof *rings_st), *rings_now = check_alloc(ncap * sizeof *rings_now);
+    unsigned long dseed = 0;
+    int rc = SF_SUCCESS;
+    while (getline(&line, &cap, f) > 0) {
+        lineno++;
+        line[strcspn(line, "\r\n")] = 0;
+        if (line[0] == '#') {
+            size_t k = strlen(hdr);
+            snprintf(hdr + k, sizeof hdr - k, "> %s\n", line + 1 + (line[1] == ' '));
+            continue;
+        }
+        if (!line[0] || !strncmp(line, "seed\t", 5))
+            continue;
+        size_t nf = 1;
+        for (const char *t = line; (t = strchr(t, '\t')); t++)
+            nf++;
+        int ok = nf == ECOLS;
+        for (size_t k = 0; ok && k < ECOLS; k++) {
+            fld[k] = k ? strchr(fld[k - 1], 0) + 1 : line;
+            char *tab = strchr(fld[k], '\t');
+            if (tab)
+                *tab = 0;
+        }
+        double a[NQ], e[NQ], lr, x;
+        char *end1 = NULL, *end2 = NULL;
+        unsigned long ds = ok ? strtoul(fld[EC_DSEED], &end1, 10) : 0;
+        size_t i = ok ? (size_t)strtoul(fld[EC_I], &end2, 10) : 0;
+        ok = ok && !*end1 && !*end2 && i < n;
+        for (int k = 0; k < NQ && ok; k++)
+            ok = parse_num(fld[EC_A + k], &a[k]) && parse_num(fld[EC_E + k], &e[k]);
+        if (!ok) {
+            sf_note(r, "**%s:%zu: not a stored design point** (%d tab-separated columns wanted, a point index "
+                       "below the design's %zu samples, numbers in the error columns).", path, lineno, ECOLS, n);
+            rc = SF_EPARSE;
+            break;
+        }
+        if (!u || ds != dseed) {
+            free(u);
+            u = design_points(dseed = ds, n);
+        }
+        sf_scene s;
+        sf_plan pl;
+        char err[256] = "";
+        if ((rc = design_scene(s0, lo, hi, u + ND * i, &s, &lr, err, sizeof err)) ||
+            (rc = sf_plan_make(&s, &pl, err, sizeof err))) {
+            sf_note(r, "**%s:%zu: cannot plan the point:** %s", path, lineno, err);
+            break;
+        }
+        rings_st[rows] = strtod(fld[EC_PT + 6], NULL);
+        rings_now[rows] = pl.num.quadrature ? (double)pl.num.cells : 0;
+        rows++;
+        char want[200], got[200];
+        point_text(want, sizeof want, "\t", lr, &s, &pl.num);
+        snprintf(got, sizeof got, "%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s", fld[EC_PT], fld[EC_PT + 1], fld[EC_PT + 2],
+                 fld[EC_PT + 3], fld[EC_PT + 4], fld[EC_PT + 5], fld[EC_PT + 6], fld[EC_PT + 7]);
+        if (strcmp(want, got)) {
+            if (!stale++) {
+                for (char *t = want; (t = strchr(t, '\t'));)
+                    *t = ' ';
+                for (char *t = got; (t = strchr(t, '\t'));)
+                    *t = ' ';
+                snprintf(found, sizeof found, "line %zu (seed %.12s, point %zu): stored l/R, CV, v_b, mu, T, "
+                         "qoi_tol, rings, rtol '%.120s', planned now '%.120s'", lineno, fld[EC_SEED], i, got, want);
+            }
+            continue;
+        }
+        if (!strcmp(fld[EC_UND], "1")) {   /* undecidable as measured (a cycle at the edge, none, no PV_x) */
+            undecided++;
+            continue;
+        }
+        double pa = -1;
+        for (int k = 0; k < NQ; k++) {
+            if (!isfinite(a[k]) || !isfinite(e[k])) {
+                nonfinite++;
+                pa = NAN;
+                break;
+            }
+            if (e[k] <= s.qoi_tol)   /* the reference converged to the tolerance under test */
+                pa = sf_max(pa, a[k]);
+        }
+        if (!(pa >= 0)) {
+            undecided += !isnan(pa);
+            continue;
+        }
+        double p = pl.num.err_pred;
+        fitted += pl.num.pred_fitted;
+        pred[pts] = p;
+        ach[pts] = fmax(pa, 1e-17);
+        ratio[pts] = pa / p;
+        ratio_hi[pts] = print_hi(pa) / p;
+        over += pa > p;
+        over_hi += print_hi(pa) > p;
+        x = log(lr / lo[0]) / log(hi[0] / lo[0]) * ERR_LR_BINS;
+        size_t b = x < 0 ? 0 : x >= ERR_LR_BINS ? ERR_LR_BINS - 1 : (size_t)x;
+        bin_n[b]++;
+        bin_over[b] += print_hi(pa) > p;
+        pts++;
+    }
+    free(line);
+    free(u);
+    fclose(f);
+    if (!rc) {
+        sf_note(r, "Stored data: %s, %zu design points (its header:)\n\n%s", path, rows, hdr);
+        char t[700];
+        if (stale)
+            snprintf(t, sizeof t, "stored data stale: %zu of %zu points differ; regenerate with scripts/design-data.sh",
+                     stale, rows);
+        else
+            snprintf(t, sizeof t, "all %zu stored points: the same design point and the same rings and rtol", rows);
+        sf_check_true(r, "stored points describe the plan under test (each point's scene from its design seed, "
+                         "the planner's rings and rtol as the measuring run printed them)", rows > 0 && !stale, t);
+        sf_check_le(r, "decidable stored points with a non-finite error", (double)nonfinite, 0);
+        sf_check_ge(r, "decided stored points (the calibration test's n)", (double)pts, 1);
+    }
+    if (!rc && stale) {   /* the evidence: the settings planned now against the stored ones */
+        sf_note(r, "\n**Stored data stale:** the plan under test does not make the settings the stored errors were "
+                   "measured at (%zu of %zu points; the first, %s); regenerate them with `sh scripts/design-data.sh` "
+                   "(the seeds in the header above).", stale, rows, found);
+        sf_plot *pp = sf_result_plot(r, "errmodel_stale", "Stale stored data: the rings planned now against the stored",
+                                     "rings the measuring run planned (stored) [-]", "rings the code under test plans [-]");
+        sf_plot_series(pp, "stored design points", SF_STYLE_POINTS, rows, rings_st, rings_now);
+        double dx[2] = { 0, SF_PLAN_MAX_RINGS };
+        sf_plot_series(pp, "the same rings", SF_STYLE_LINES, 2, dx, dx);
+    }
+    if (!rc && !stale && pts) {
+        sf_note(r, "\n**The prediction against the stored errors** (%zu decidable points of %zu: %zu undecidable as "
+                   "measured; err_pred from the fit at %zu of them, the budget at the rest). A point's error is the "
+                   "largest stored error of its QoIs whose reference is converged to qoi_tol; %zu exceed the "
+                   "recomputed err_pred as printed, %zu when a print within its rounding counts as above (the "
+                   "gated count):\n", pts, rows, undecided, fitted, over, over_hi);
+        rate_test(r, "decided points whose stored error exceeds the recomputed err_pred", over_hi, pts, UNDER_RATE,
+                  c->spec.alpha);
+        size_t kc = binom_critical(pts, UNDER_RATE, c->spec.alpha);
+        if (kc <= pts) {
+            gsl_sort(ratio_hi, 1, pts);   /* the gate fails when kc points exceed: below the kc-th largest ratio */
+            sf_note(r, "- Power on these data (deterministic): err_pred scaled by any factor below %.3g puts %zu or "
+                       "more points above it, and the gate fails (a factor above it passes).",
+                    ratio_hi[pts - kc], kc);
+        }
+        sf_note(r, "\n| l/R (log thirds of %g-%g) | decided points | above err_pred | fraction |\n|---|---|---|---|",
+                lo[0], hi[0]);
+        for (int b = 0; b < ERR_LR_BINS; b++) {
+            double e0 = lo[0] * pow(hi[0] / lo[0], (double)b / ERR_LR_BINS);
+            double e1 = lo[0] * pow(hi[0] / lo[0], (double)(b + 1) / ERR_LR_BINS);
+            sf_note(r, "| %.3g-%.3g | %zu | %zu | %.3f |%s", e0, e1, bin_n[b], bin_over[b],
+                    bin_n[b] ? (double)bin_over[b] / (double)bin_n[b] : 0, b + 1 == ERR_LR_BINS ? "\n" : "");
+        }
+        report_sharpness(r, ratio, pts);
+        sf_plot *pp = sf_result_plot(r, "errmodel_scatter", "Predicted vs stored achieved error (held-out seeds)",
+                                     "predicted relative QoI error err_pred (the plan's 95% bound) [-]",
+                                     "achieved relative QoI error of the point (stored) [-]");
+        sf_plot_log(pp, 1, 1);
+        sf_plot_series(pp, "decided design points", SF_STYLE_POINTS, pts, pred, ach);
+        double dx[2] = { 1e-5, 2e-2 };
+        sf_plot_series(pp, "achieved = predicted", SF_STYLE_LINES, 2, dx, dx);
+    }
+    free(pred);
+    free(ach);
+    free(ratio);
+    free(ratio_hi);
+    free(rings_st);
+    free(rings_now);
+    return rc;   /* SF_EPARSE, SF_EIO or the planner's refusal */
+}
+
 const sf_check_def sf_checks_design[] = {
     { "plan_design", chk_design, "the accuracy plan's qoi_tol on a Latin hypercube over l/R, CV, v_b, mu, T, qoi_tol" },
+    { "plan_errmodel", chk_errmodel, "the plan's predicted error against stored held-out measurements of the design (no solve)" },
     { NULL, NULL, NULL }
 };
