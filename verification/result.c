@@ -495,6 +495,13 @@ static void write_plot(FILE *g, const sf_plot *p, const char *path, char *why, s
         else
             fprintf(g, "set xrange [%.10g:%.10g]\n", mid - h, mid + h);
     }
+    /* error bars at the first and last x, or at the top, would sit on the
+     * frame, half drawn: a margin of 3% of the axes around the data */
+    int has_bars = 0;
+    for (size_t j = 0; j < p->ns; j++)
+        has_bars |= p->s[j].style == -3;
+    if (has_bars && !one_x)
+        fprintf(g, "set offsets graph 0.03, graph 0.03, graph 0.03, graph 0.03\n");
     size_t *written = xrealloc(NULL, (p->ns + 1) * sizeof *written);
     int any = 0;
     for (size_t j = 0; j < p->ns; j++) {
