@@ -22,7 +22,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-enum { NPTS = 11, NPLAIN = 100, NPILOT = 20, NPILOT_ML = 10 };
+enum { NPTS = BENCH_FIG11_NPTS, NPLAIN = 100, NPILOT = 20, NPILOT_ML = 10 };
 
 static double cpu_now(void)
 {
@@ -33,15 +33,22 @@ static double cpu_now(void)
 
 static const char *const qn[SF_SWEEP_NQ] = { "PV_x", "PV_F", "T_sk" };
 
+const double bench_fig11_lr[BENCH_FIG11_NPTS] = { 0.01, 0.03, 0.1, 0.2, 0.5, 1, 2, 5, 10, 100, 1000 };
+
+void bench_fig11_scene(sf_scene *s)
+{
+    sf_scene_default(s);   /* Table 1, the paper's T = 100 s */
+    s->cof = SF_COF_FIELD;
+    s->T = 100;
+    s->t_skip = 10;
+}
+
 int bench_estimators(FILE *f, const char *dir)
 {
     (void)dir;
-    const double lr[NPTS] = { 0.01, 0.03, 0.1, 0.2, 0.5, 1, 2, 5, 10, 100, 1000 };
+    const double *lr = bench_fig11_lr;
     sf_scene s0;
-    sf_scene_default(&s0);   /* Table 1, the paper's T = 100 s */
-    s0.cof = SF_COF_FIELD;
-    s0.T = 100;
-    s0.t_skip = 10;
+    bench_fig11_scene(&s0);
     fprintf(f, "## Estimators against plain Monte Carlo (Fig. 11 grid)\n\n"
                "Table 1, T = 100 s, 11 l/R points; CPU time of one thread, both estimators in this run. Plain: "
                "N = %d, its 95%% half-widths of the PV_x, PV_F and T_sk ratio means are the targets. Control "

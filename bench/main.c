@@ -1,7 +1,7 @@
 /* slipfield-bench DIR [SECTION...]: run the benchmark sections (all by
  * default: field, contact, dynamics, fftw, sweep,
  * memory, realisation; `plan`, the accuracy plan's calibration,
- * `fig11` and `estimators` (minutes each) only when named) and write DIR/report.md (temporary
+ * `fig11`, `estimators` and `coupling` (minutes each) only when named) and write DIR/report.md (temporary
  * name, renamed when complete) with the plots beside it. */
 #include "bench.h"
 #include "version.h"
@@ -64,6 +64,7 @@ int main(int argc, char **argv)
         { "plan", bench_plan, 0, NULL, 0, 1 },   /* the plan's calibration (minutes): only when named */
         { "fig11", bench_fig11, 0, NULL, 0, 1 },   /* issue 14: Fig. 11 time estimate (minutes): only when named */
         { "estimators", bench_estimators, 0, NULL, 0, 1 },   /* plain MC vs control variate and two levels, Fig. 11 grid (minutes) */
+        { "coupling", bench_coupling, 0, NULL, 0, 1 },   /* antithetic and coarser fields, Fig. 11 grid (minutes) */
     };
     enum { NSEC = sizeof sec / sizeof sec[0] };
     int rc = 0;
