@@ -8,9 +8,10 @@
 #
 # A count of failures bounds a rate only to about 3 / runs.  A case whose
 # tolerance is meant to hold at every seed (`seed_proof`) says more through
-# its margins: how far below 1 their upper tail ends.  Per such case this
-# extrapolates P(margin > 1) two ways, both models stated, and keeps the
-# larger:
+# its margins: how far below 1 their upper tail ends.  Per row of such a
+# case whose margin moves with the seed (a row at the same margin in every
+# run does not depend on it) this extrapolates P(margin > 1) two ways, both
+# models stated, and keeps the larger; the case's is the sum over its rows:
 #   lognormal   ln m ~ Normal(mean, sd) over the runs with m > 0 (times
 #               their share), P = Q(-mean / sd);
 #   Pareto tail the top k = max(5, n / 5) values of ln m above the next one
@@ -27,19 +28,22 @@ runs=${1:-reports/false-alarm/runs}
 out=$(dirname "$runs")
 set -- "$runs"/*.json.gz
 [ -f "$1" ] || { echo "margins.sh: no runs (*.json.gz) in $runs" >&2; exit 2; }
-# one line per (seed, case): seed id verdict margin (the case level of
-# results.json: its keys are indented three spaces, a row's five)
+# per run: the case level (C seed id verdict margin) and every row
+# (R seed id row margin) of results.json: a case's keys are indented
+# three spaces, a row's five
 for f in "$@"; do
     s=$(basename "$f" .json.gz)
-    gzip -dc "$f" | awk -v s="$s" '
-        /^   "id": /      { id = $2; gsub(/[",]/, "", id) }
-        /^   "verdict": / { v = $2; gsub(/[",]/, "", v) }
-        /^   "margin": /  { m = $2; gsub(/,/, "", m); print s "\t" id "\t" v "\t" m }'
+    gzip -dc "$f" | awk -v s="$s" -v OFS='\t' '
+        /^   "id": /         { id = $2; gsub(/[",]/, "", id); row = 0 }
+        /^   "verdict": /    { v = $2; gsub(/[",]/, "", v) }
+        /^   "margin": /     { m = $2; gsub(/,/, "", m); print "C", s, id, v, m }
+        /^     "quantity": / { row++ }
+        /^     "margin": /   { m = $2; gsub(/,/, "", m); print "R", s, id, row, m }'
 done > "$tmp/m.tsv"
 nruns=$#
 # the cases in every run (run 1 holds the whole tier, the others the
 # random cases only)
-cut -f2 "$tmp/m.tsv" | sort | uniq -c | awk -v n="$nruns" '$1 == n { print $2 }' > "$tmp/ids"
+awk -F'\t' '$1 == "C" { print $3 }' "$tmp/m.tsv" | sort | uniq -c | awk -v n="$nruns" '$1 == n { print $2 }' > "$tmp/ids"
 : > "$tmp/kind"
 while read -r id; do
     f=cases/$id.md
@@ -51,7 +55,10 @@ while read -r id; do
     fi
     printf '%s\t%s\n' "$id" "$k" >> "$tmp/kind"
 done < "$tmp/ids"
-sort "$tmp/m.tsv" -k2,2 > "$tmp/ms.tsv"
+# per seed_proof case, per row whose margin moves with the seed (a row at
+# the same margin in every run does not depend on it: a count against its
+# own bound, a planted value), the two tail fits; the case's chance is the
+# sum over its rows (Bonferroni)
 awk -F'\t' -v OFS='\t' '
     function qnorm(z) { return 0.5 * erfc(z / sqrt(2)) }
     function erfc(x,   t, z, p, y) { # Numerical Recipes erfcc: relative error < 1.2e-7
@@ -62,39 +69,49 @@ awk -F'\t' -v OFS='\t' '
         y = t * exp(-z * z + p)
         return x >= 0 ? y : 2 - y }
     NR == FNR { kind[$1] = $2; next }
-    !($2 in kind) { next }
-    { id = $2; n[id]++; if ($3 != "pass") fail[id]++
-      if ($4 != "null" && $4 + 0 > 0) { np[id]++; L[id, np[id]] = log($4 + 0) }
-      if ($4 != "null" && $4 + 0 > mx[id]) mx[id] = $4 + 0 }
+    !($3 in kind) { next }
+    $1 == "C" { id = $3; n[id]++; if ($4 != "pass") fail[id]++; if ($5 != "null" && $5 + 0 > mx[id]) mx[id] = $5 + 0; next }
+    $1 == "R" && $5 != "null" { k = $3 SUBSEP $4; rn[k]++; rv[k, rn[k]] = $5 + 0; rows[$3] = rows[$3] " " $4 }
     END {
-      print "case", "kind", "runs", "failures", "max_margin", "runs_margin_gt0", "p_lognormal", "p_pareto", "p_tail"
+      print "case", "kind", "runs", "failures", "max_margin", "seed_rows", "max_seed_margin", "p_lognormal", "p_pareto", "p_tail"
       for (id in n) {
-        pl = "-"; pp = "-"; pt = "-"
-        m = np[id] + 0
-        if (kind[id] == "seed_proof" && m >= 10) {
-            s = 0; ss = 0
-            for (i = 1; i <= m; i++) { s += L[id, i]; ss += L[id, i] ^ 2 }
-            mu = s / m; sd = sqrt((ss - m * mu * mu) / (m - 1))
-            pl = sd > 0 ? (m / n[id]) * qnorm(-mu / sd) : (mu > 0)
-            # sort the log margins (insertion: a few hundred at most)
-            for (i = 1; i <= m; i++) a[i] = L[id, i]
-            for (i = 2; i <= m; i++) { x = a[i]; j = i - 1; while (j >= 1 && a[j] > x) { a[j + 1] = a[j]; j-- } a[j + 1] = x }
-            k = int(n[id] / 5); if (k < 5) k = 5; if (k > m - 1) k = m - 1
-            u = a[m - k]; b = 0
-            for (i = m - k + 1; i <= m; i++) b += a[i] - u
-            b /= k
-            pp = (b > 0) ? (k / n[id]) * exp(u / b) : 0
-            if (pp > k / n[id]) pp = k / n[id]
-            pt = pl > pp ? pl : pp
-            pl = sprintf("%.2g", pl); pp = sprintf("%.2g", pp); pt = sprintf("%.2g", pt)
+        pl = "-"; pp = "-"; pt = "-"; nsr = "-"; msm = "-"
+        if (kind[id] == "seed_proof") {
+            split(rows[id], rl, " "); delete seen; nsr = 0; msm = 0; sl = 0; sp = 0; fitted = 0
+            for (q in rl) {
+                r = rl[q]; if (r in seen) continue; seen[r] = 1
+                k = id SUBSEP r; m = rn[k]
+                if (m < 10) continue
+                lo = hi = rv[k, 1]
+                for (i = 2; i <= m; i++) { if (rv[k, i] < lo) lo = rv[k, i]; if (rv[k, i] > hi) hi = rv[k, i] }
+                if (hi - lo <= 1e-12 * hi) continue   # the same in every run
+                nsr++; if (hi > msm) msm = hi
+                c = 0; s1 = 0; s2 = 0
+                for (i = 1; i <= m; i++) if (rv[k, i] > 0) { c++; a[c] = log(rv[k, i]); s1 += a[c]; s2 += a[c] ^ 2 }
+                if (c < 10) continue
+                fitted = 1
+                mu = s1 / c; sd = sqrt((s2 - c * mu * mu) / (c - 1))
+                rl_p = sd > 0 ? (c / m) * qnorm(-mu / sd) : (mu > 0)
+                for (i = 2; i <= c; i++) { x = a[i]; j = i - 1; while (j >= 1 && a[j] > x) { a[j + 1] = a[j]; j-- } a[j + 1] = x }
+                kk = int(m / 5); if (kk < 5) kk = 5; if (kk > c - 1) kk = c - 1
+                u = a[c - kk]; b = 0
+                for (i = c - kk + 1; i <= c; i++) b += a[i] - u
+                b /= kk
+                rp_p = (b > 0) ? (kk / m) * exp(u / b) : 0
+                if (rp_p > kk / m) rp_p = kk / m
+                sl += rl_p; sp += rp_p; st += 0
+                pt_r[id] += (rl_p > rp_p ? rl_p : rp_p)
+            }
+            if (fitted) { pl = sprintf("%.2g", sl); pp = sprintf("%.2g", sp); pt = sprintf("%.2g", pt_r[id] + 0) }
+            msm = sprintf("%.3g", msm)
         }
-        print id, kind[id], n[id], fail[id] + 0, sprintf("%.3g", mx[id]), m, pl, pp, pt
+        print id, kind[id], n[id], fail[id] + 0, sprintf("%.3g", mx[id]), nsr, msm, pl, pp, pt
       }
-    }' "$tmp/kind" "$tmp/ms.tsv" | { read -r h; echo "$h"; sort; } > "$out/margins.tsv"
-awk -F'\t' 'NR > 1 && $9 != "-" { s += $9; n++; if ($9 > w) { w = $9; wc = $1 } }
+    }' "$tmp/kind" "$tmp/m.tsv" | { read -r h; echo "$h"; sort; } > "$out/margins.tsv"
+awk -F'\t' 'NR > 1 && $10 != "-" { s += $10; n++; if ($10 > w) { w = $10; wc = $1 } }
      NR > 1 && $2 ~ /^alpha=/ { na++ }
      NR > 1 && $4 > 0 { f += $4 }
-     END { printf "%d runs; %d seed_proof cases: extrapolated false-alarm probability %.2g in all (largest %.2g, %s); %d statistical cases (their share of the budget: the index ledger); %d case failures\n",
+     END { printf "%d runs; %d seed_proof cases with rows that move with the seed: extrapolated false-alarm probability %.2g in all (largest %.2g, %s); %d statistical cases (their share of the budget: the index ledger); %d case failures\n",
            '"$nruns"', n, s, w, (wc == "" ? "-" : wc), na, f }' "$out/margins.tsv" > "$out/margins-summary.txt"
 {
     echo "# Margins of the random cases across fresh seeds"
@@ -102,14 +119,16 @@ awk -F'\t' 'NR > 1 && $9 != "-" { s += $9; n++; if ($9 > w) { w = $9; wc = $1 } 
     echo "$(cat "$out/margins-summary.txt")"
     echo
     echo "A case's margin is its tightest row's share of its allowance (above 1: it fails). For a case whose"
-    echo "tolerance is meant to hold at every seed (seed_proof), the upper tail of its margins over the runs is"
-    echo "extrapolated to P(margin > 1): a lognormal fit of ln m, and a Pareto tail (the Hill estimator on the"
-    echo "top fifth, at least 5 values), the larger kept (p_tail). Both are models of the tail beyond the"
-    echo "runs, not counts: they say which seed_proof claims are comfortable and which sit near their edge."
+    echo "tolerance is meant to hold at every seed (seed_proof), each row whose margin moves with the seed has"
+    echo "the upper tail of its margins over the runs extrapolated to P(margin > 1): a lognormal fit of ln m,"
+    echo "and a Pareto tail (the Hill estimator on the top fifth, at least 5 values), the larger kept; the"
+    echo "case's P is the sum over those rows. Both are models of the tail beyond the runs, not counts, and"
+    echo "at a few tens of runs they are rough: they say which seed_proof claims are comfortable and which"
+    echo "sit near their edge."
     echo "A statistical case spends its declared alpha."
     echo
-    echo "| case | kind | runs | failures | max margin | runs with margin > 0 | P lognormal | P Pareto tail | P(margin > 1) |"
-    echo "|---|---|---|---|---|---|---|---|---|"
-    awk -F'\t' 'NR > 1 { printf "| %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", $1, $2, $3, $4, $5, $6, $7, $8, $9 }' "$out/margins.tsv"
+    echo "| case | kind | runs | failures | max margin | rows that move with the seed | their max margin | P lognormal | P Pareto tail | P(margin > 1) |"
+    echo "|---|---|---|---|---|---|---|---|---|---|"
+    awk -F'\t' 'NR > 1 { printf "| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", $1, $2, $3, $4, $5, $6, $7, $8, $9, $10 }' "$out/margins.tsv"
 } > "$out/margins.md"
 cat "$out/margins-summary.txt"
