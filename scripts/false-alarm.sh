@@ -23,9 +23,9 @@
 # did; their verdicts are carried over from run 1.  A long study then
 # costs the random cases' time a run, not the tier's.
 # CASES='...' limits the candidates; `touch reports/false-alarm/stop`
-# ends a long study after the current run, with the report of the runs done.  Run i uses --seed SEED0 + i
-# (SEED0=N in the environment; default: from the clock, so each study
-# draws fresh seeds) and the report lists, per case, the seeds that failed
+# ends a long study after the current run, with the report of the runs
+# done.  Run i uses --seed SEED0 + i (SEED0=N in the environment;
+# default: from the clock, so each study draws fresh seeds) and the report lists, per case, the seeds that failed
 # (a failure is reproducible with `slipfield verify --seed S CASE`), a
 # one-sided 95% Clopper-Pearson upper bound on the failure rate, and
 # P(X >= failures) for X ~ Binomial(runs, alpha): below 0.05 the case fails
@@ -43,6 +43,7 @@ sf_name=fa; . "$(dirname "$0")/common.sh"
 out=reports/false-alarm
 mkdir -p "$out"
 rm -rf "$out/runs" "$out/stop"
+mkdir -p "$out/runs"
 cand=""
 for f in ${CASES:-cases/*/*.md}; do
     in_tier "$f" "$TIER" || continue
@@ -124,7 +125,6 @@ while [ $i -lt "$N" ]; do
     echo "$seed" > "$tmp/seed$i"
     # each run's results.json (every case's margin: how close each passing
     # case came to its tolerance), for a margin study across seeds
-    mkdir -p "$out/runs"
     [ ! -f "$tmp/r/results.json" ] || gzip -c "$tmp/r/results.json" > "$out/runs/$seed.json.gz"
     # every failing row (gate) of every case in this run, for the per-gate table
     for f in $cases; do

@@ -77,7 +77,7 @@ awk -F'\t' -v OFS='\t' '
       for (id in n) {
         pl = "-"; pp = "-"; pt = "-"; nsr = "-"; msm = "-"
         if (kind[id] == "seed_proof") {
-            split(rows[id], rl, " "); delete seen; nsr = 0; msm = 0; sl = 0; sp = 0; fitted = 0
+            split(rows[id], rl, " "); delete seen; nsr = 0; msm = 0; sl = 0; sp = 0; st = 0; fitted = 0
             for (q in rl) {
                 r = rl[q]; if (r in seen) continue; seen[r] = 1
                 k = id SUBSEP r; m = rn[k]
@@ -99,10 +99,9 @@ awk -F'\t' -v OFS='\t' '
                 b /= kk
                 rp_p = (b > 0) ? (kk / m) * exp(u / b) : 0
                 if (rp_p > kk / m) rp_p = kk / m
-                sl += rl_p; sp += rp_p; st += 0
-                pt_r[id] += (rl_p > rp_p ? rl_p : rp_p)
+                sl += rl_p; sp += rp_p; st += (rl_p > rp_p ? rl_p : rp_p)
             }
-            if (fitted) { pl = sprintf("%.2g", sl); pp = sprintf("%.2g", sp); pt = sprintf("%.2g", pt_r[id] + 0) }
+            if (fitted) { pl = sprintf("%.2g", sl); pp = sprintf("%.2g", sp); pt = sprintf("%.2g", st) }
             msm = sprintf("%.3g", msm)
         }
         print id, kind[id], n[id], fail[id] + 0, sprintf("%.3g", mx[id]), nsr, msm, pl, pp, pt
