@@ -69,10 +69,11 @@ enum { K_MEAN, K_MEAN_EQ, K_DROP_EQ, K_SD, K_SD_EQ, K_HW100, K_CLUSTER, K_GAP };
 /* A measured cause of a contradiction: computes, from this run, the
  * quantity the explanation names, writes it into buf (a sentence with the
  * measured numbers) and returns 1 when it holds (0: the explanation does
- * not apply to this run, and the claim's gate fails). */
+ * not apply to this run, and the claim's gate fails).  alpha is the
+ * claim's own test level, for a cause that bounds a statistic. */
 struct claim_spec_s;
 typedef int (*claim_cause_fn)(const struct claim_spec_s *cs, const struct cpoint_s *pt, size_t K, const sf_scene *s,
-                              char *buf, size_t n);
+                              double alpha, char *buf, size_t n);
 typedef struct claim_spec_s {
     const char *id, *text;
     int kind, q;

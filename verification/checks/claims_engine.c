@@ -786,7 +786,7 @@ static size_t claims_judge(const sf_case *c, sf_result *r, const claim_spec *spe
                      qname[cs->q], *c->spec.sweep_param ? c->spec.sweep_param : "value", pt[a].val, pt[b].val, nmin,
                      nall - (size_t)nmin);
         char cause[400] = "", note[800];
-        int cause_ok = cs->cause && cs->cause(cs, pt, K, &c->scene, cause, sizeof cause);
+        int cause_ok = cs->cause && cs->cause(cs, pt, K, &c->scene, alpha, cause, sizeof cause);
         snprintf(note, sizeof note, "%s%s%s%s", !*cause ? "" : e.status == SF_CLAIM_CONTRADICTED ? "Measured cause: "
                                                                                                   : "Measured: ",
                  cause, *cause ? " " : "", cs->note ? cs->note : "");
