@@ -49,6 +49,14 @@ void sf_cli_key_overridden(const char *cmd, const char *path, const sf_scene *s,
         fprintf(stderr, "slipfield %s: %s: warning: key '%s' is ignored: %s given\n", cmd, path, key, opt);
 }
 
+void sf_cli_warn_truncated(const char *cmd, const char *path, const sf_scene *s, const sf_cof_plan *p)
+{
+    if (p && sf_cof_plan_truncated(p))
+        fprintf(stderr, "slipfield %s: %s: warning: the COF field's circulant embedding reached its padding cap "
+                        "(pad_cap = %g): negative eigenvalues clamped, its covariance is not Eq. 2's; raise pad_cap "
+                        "(`slipfield field` measures the covariance error)\n", cmd, path, s->pad_cap);
+}
+
 int sf_cli_status(int rc)
 {
     return rc == SF_SUCCESS ? SF_EXIT_OK : rc == SF_ENOMEM ? SF_EXIT_INTERNAL : SF_EXIT_USAGE;

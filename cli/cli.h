@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include "options.h"
 #include "scene.h"
+#include "cof.h"
 #include "sf_error.h"   /* SF_EXIT_* */
 
 /* Read a scene file with Table 1 defaults; on error print it and return
@@ -20,6 +21,10 @@ void sf_cli_key_overridden(const char *cmd, const char *path, const sf_scene *s,
  * its size, a run that left its strip or did not converge: 2), except an
  * allocation that failed (3). */
 int sf_cli_status(int rc);
+
+/* A COF plan whose circulant embedding reached its padding cap: say so on
+ * stderr (the plan is usable, but its covariance is not Eq. 2's). */
+void sf_cli_warn_truncated(const char *cmd, const char *path, const sf_scene *s, const sf_cof_plan *p);
 
 /* An output file.  A new path or a regular file is written under a
  * temporary name in its folder and renamed over it on success (removed on

@@ -91,6 +91,7 @@ int sf_cmd_run(int argc, char **argv)
         fprintf(stderr, "slipfield run: %s: %s\n", path, *err ? err : sf_strerror(rc));
         return sf_cli_status(rc);
     }
+    sf_cli_warn_truncated("run", path, &s, plan);
     pl.history = out_path != NULL;   /* without --out, only the QoIs */
     if (explain) {
         printf("plan for %s (shortcuts %s)\n", path, s.shortcuts ? "on" : "off: everything computed in full");

@@ -244,6 +244,13 @@ int sf_cmd_sweep(int argc, char **argv)
     for (size_t k = 0; k < nv && ok; k++) {
         sf_scene s = s0;
         sf_sweep_set(&s, param, v[k], err, sizeof err);
+        sf_cof_plan *cp = NULL;   /* the point's COF plan, only to warn of a truncated embedding */
+        if (sf_cof_plan_alloc(&s, &cp, NULL, 0) == SF_SUCCESS) {
+            char where[1100];
+            snprintf(where, sizeof where, "%s, %s = %g", path, param, v[k]);
+            sf_cli_warn_truncated("sweep", where, &s, cp);
+        }
+        sf_cof_plan_free(cp);
         char ck[1100], label[128];
         snprintf(ck, sizeof ck, "%s.ckpt%zu", out_path, k);
         snprintf(label, sizeof label, "%s = %g", param, v[k]);

@@ -132,6 +132,11 @@ expect 0 "" "$bin" sweep var.scene --param T --values 14 --realisations 6 --targ
 printf 'cof = uniform\nT = 5\n' > t5.scene
 expect 0 "warning: no quantity of interest" "$bin" run t5.scene
 grep -q '^pv_x = nan' "$tmp/out" && ok || bad "run without --out/--summary: no summary on stdout"
+# run and sweep: an embedding at its padding cap is said (usable: exit 0)
+printf 'l = 50\npad_cap = 1\nT = 20\n' > trunc.scene
+expect 0 "warning: the COF field's circulant embedding reached its padding cap" "$bin" run trunc.scene --summary tr.sum
+expect 0 "l = 50: warning: the COF field's circulant embedding reached its padding cap" "$bin" sweep trunc.scene \
+    --param l --values 50 --realisations 2 --out tr.tsv
 
 # ---- sweeps: the swept value overrides the scene's; interruption -------------
 expect 0 "" "$bin" sweep sw.scene --param T --values 20 --realisations 2 --out T.tsv

@@ -262,6 +262,7 @@ struct sf_cof_plan {
     double l, R;               /* tiles: correlation length, disc radius [m] */
     sf_cellavg ca;             /* cell averages: the box-averaged covariance */
     sf_field *cfield;          /* cell averages: its Gaussian field (circulant embedding) */
+    int truncated;             /* the embedding reached pad_cap (SF_ETRUNC): sf_cof_plan_truncated */
 };
 
 void sf_cof_strip_bounds(const sf_scene *s, double *B0, double *W0) { sf_plan_strip_bounds(s, B0, W0); }
@@ -292,6 +293,7 @@ static int build_cell_average(sf_cof_plan *p, const sf_scene *s, char *err, size
     if (!sf_usable(rc))
         return sf_seterr(err, errlen, rc, "cannot plan the %zu x %zu cell-averaged strip field", p->info.nx,
                          p->info.ny);
+    p->truncated = rc == SF_ETRUNC;
     return SF_SUCCESS;
 }
 
@@ -309,6 +311,7 @@ static int build_strip(sf_cof_plan *p, const sf_scene *s, char *err, size_t errl
                          "of 2^25 points; raise l, lower v_b T or set strip_halfwidth", p->info.nx, p->info.ny);
     if (!sf_usable(rc))
         return sf_seterr(err, errlen, rc, "cannot plan the %zu x %zu strip field", p->info.nx, p->info.ny);
+    p->truncated = rc == SF_ETRUNC;
     return SF_SUCCESS;
 }
 
@@ -358,6 +361,7 @@ void sf_cof_plan_free(sf_cof_plan *p)
 }
 
 const sf_cof_plan_info *sf_cof_plan_get_info(const sf_cof_plan *p) { return &p->info; }
+int sf_cof_plan_truncated(const sf_cof_plan *p) { return p->truncated; }
 double sf_cof_plan_cell_std(const sf_cof_plan *p) { return p->cfield ? sqrt(sf_cellavg_var(&p->ca)) : 0; }
 struct sf_field *sf_cof_plan_cell_field(const sf_cof_plan *p) { return p->cfield; }
 

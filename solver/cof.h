@@ -194,6 +194,11 @@ int sf_cof_plan_alloc_mt(const sf_scene *s, sf_cof_plan **out, char *err, size_t
 void sf_cof_plan_free_mt(sf_cof_plan *p);
 int sf_cof_plan_build_mt(const sf_scene *s, const sf_plan *pl, sf_cof_plan **out, char *err, size_t errlen);
 const sf_cof_plan_info *sf_cof_plan_get_info(const sf_cof_plan *p);
+/* 1 when the field's circulant embedding reached its padding cap (the
+ * scene's pad_cap) and its negative eigenvalues were clamped: a usable
+ * plan whose covariance departs from Eq. 2's (`slipfield field` measures
+ * by how much); 0 otherwise, and for COFs drawn without an embedding. */
+int sf_cof_plan_truncated(const sf_cof_plan *p);
 /* cof_model = cell_average (info.box > 0): the effective field's std
  * sqrt(Var mu_h) and its Gaussian plan (field.h: covariance, target;
  * planned with defer_covariance: sf_field_measure_covariance before

@@ -466,6 +466,38 @@ static void sep_sum_embedding(void **state)
     assert_int_equal(sf_field_alloc(&sp, &f), SF_EINVAL);
 }
 
+/* A plan whose embedding reached its padding cap says so (the run and
+ * sweep commands warn on it); one at the default cap does not. */
+static void plan_truncation(void **state)
+{
+    (void)state;
+    sf_scene s;
+    sf_cof_plan *p;
+    char err[256] = "";
+    sf_scene_default(&s);
+    s.l = 50;   /* l/R = 100: a strip of a few l, an embedding that needs padding */
+    s.T = 12;
+    assert_int_equal(sf_cof_plan_alloc(&s, &p, err, sizeof err), SF_SUCCESS);
+    assert_int_equal(sf_cof_plan_truncated(p), 0);
+    sf_cof_plan_free(p);
+    s.pad_cap = 1;
+    assert_int_equal(sf_cof_plan_alloc(&s, &p, err, sizeof err), SF_SUCCESS);   /* usable */
+    assert_int_equal(sf_cof_plan_truncated(p), 1);
+    sf_cof_plan_free(p);
+    scene_cellavg(&s);   /* the cell-averaged strip's embedding, the same */
+    assert_int_equal(sf_cof_plan_alloc(&s, &p, err, sizeof err), SF_SUCCESS);
+    assert_int_equal(sf_cof_plan_truncated(p), 0);
+    sf_cof_plan_free(p);
+    s.cof_model = SF_COFMODEL_CELL;   /* forced at l = 2 m, over a strip shorter than l */
+    s.cells = 12;
+    s.l = 2;
+    s.pad_cap = 1;
+    assert_int_equal(sf_cof_plan_alloc(&s, &p, err, sizeof err), SF_SUCCESS);
+    assert_non_null(sf_cof_plan_cell_field(p));
+    assert_int_equal(sf_cof_plan_truncated(p), 1);
+    sf_cof_plan_free(p);
+}
+
 int main(void)
 {
     sf_init();
@@ -479,6 +511,7 @@ int main(void)
         cmocka_unit_test(cellavg_plan_edges),
         cmocka_unit_test(osc_point_values_refused),
         cmocka_unit_test(sep_sum_embedding),
+        cmocka_unit_test(plan_truncation),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
