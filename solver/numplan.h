@@ -165,6 +165,14 @@ void sf_numplan_explain(const sf_numplan *p, FILE *f);
 double sf_numplan_err_quad(double l_over_R, double cv, size_t rings);
 double sf_numplan_err_time(double rtol);
 
+/* The constants of the predicted error inside its box (numplan.c):
+ *   err_pred = err_total factor (l/R)^-lr_exp exp(cv_coef CV + mu_coef mu_mean),
+ * for the check that refits them from their stored design data. */
+typedef struct {
+    double factor, lr_exp, cv_coef, mu_coef;
+} sf_numplan_pred_model;
+void sf_numplan_pred_model_get(sf_numplan_pred_model *m);
+
 /* ---- The plan of a run: one value, made from the scene before anything
  * is built.  The builders take it: the COF plan (cof.h:
  * sf_cof_plan_build: the field generator, its grid), the oscillator
