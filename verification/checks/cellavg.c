@@ -427,7 +427,7 @@ static size_t box_weights(double a, double b, double x0, double dx, size_t m, si
  * values are a function of the realisation and the lattice point alone,
  * so the averages are those of the one field the point model sees); the
  * columns are visited towards -x, the way the window's slack points. */
-static sf_cof *box_filter(const sf_cof *fine, const sf_scene *sc, double box, double scale, sf_result *r)
+sf_cof *check_cellavg_filter(const sf_cof *fine, const sf_scene *sc, double box, double scale, sf_result *r)
 {
     size_t m, n, mc, nc;
     double x0, y0, dx, dy;
@@ -488,7 +488,7 @@ static sf_cof *box_filter(const sf_cof *fine, const sf_scene *sc, double box, do
 
 /* One realisation i on the same fine field (plan cp, stream (seed, i)):
  * the cell-average run sc fed with the exact box averages of the fine
- * field (deviations times `scale`, box_filter), and the point runs
+ * field (deviations times `scale`, check_cellavg_filter), and the point runs
  * sp[0..L) on that field.  The field is drawn
  * afresh for each use (the box filter slides a tiled window along the
  * whole strip; a run follows the disc).  QoIs: qc (its complete cycles in
@@ -498,7 +498,7 @@ static int pair_runs(sf_cof_plan *cp, unsigned long seed, size_t i, const sf_sce
 {
     sf_cof *fine = NULL, *coarse = NULL;
     int rc = check_draw(cp, seed, i, &fine);
-    if (!rc && !(coarse = box_filter(fine, sc, box, scale, r)))
+    if (!rc && !(coarse = check_cellavg_filter(fine, sc, box, scale, r)))
         rc = SF_EFAIL;
     sf_cof_free(fine);
     if (!rc)

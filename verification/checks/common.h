@@ -141,6 +141,15 @@ int check_osc_run(const sf_scene *s, gsl_rng *rng, const sf_cof *cof, double sam
  * a Monte Carlo sweep draws it: the same field whoever asks and when. */
 int check_draw(sf_cof_plan *p, unsigned long seed, size_t i, sf_cof **out);
 
+/* The cell-average COF (cof_model = cell_average) of scene sc, boxes of
+ * side box [m] on the plan's effective grid (spacing box/3), computed as
+ * the exact box averages of the fine point field `fine` (a tiled window
+ * is slid along the strip for each column); deviations from the mean
+ * times `scale` (1: exact).  NULL with the reason noted.  One realisation
+ * at two models: a point reference and the cell averages the plan would
+ * run, on the same field (cellavg.c). */
+sf_cof *check_cellavg_filter(const sf_cof *fine, const sf_scene *sc, double box, double scale, sf_result *r);
+
 /* The largest relative QoI gap over PV_x, PV_F and the stick fraction of
  * run (s, cof) against the reference run (sref, cref): max_q |q - q_ref| /
  * |q_ref|; +inf when one run has a complete cycle and the other none, so

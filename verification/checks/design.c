@@ -166,6 +166,7 @@ typedef struct {
     double u[NQ];          /* u_num / |Q0| */
     sf_numplan np;
     double cpu[NLEV], cpu_u;
+    size_t ref_cells[2];   /* cell averages: the point references' rings (levels 1, 2); 0 otherwise */
 } point_run;
 
 static void qois(const sf_osc_result *res, double *q)
@@ -218,6 +219,91 @@ static int run_point(const sf_scene *s, const sf_cof *cof, point_run *pr, sf_res
         }
         pr->cpu[l] = check_cpu_seconds() - t0;
     }
+    return rc;
+}
+
+/* A point where the plan takes the cell averages (l/R below about
+ * 0.05): refining its cells would average the field over smaller boxes, a
+ * different COF, so the levels are not the same run refined.  Level 0 is
+ * the plan's run fed with the exact box averages of a fine point field
+ * (check_cellavg_filter; its spacing l/8, the tiles); levels 1 and 2 are
+ * the point model on that same field at REF_RINGS_C / (l/R) x 2/3 and
+ * REF_RINGS_C / (l/R) rings (cells of 0.75 l and 0.5 l: cellavg-plan-qoi-
+ * tol-small's references, 0.45-0.56 l, were converged to 2e-4) and
+ * rtol / 10, rtol / 100.  The field is drawn afresh for each run (a tiled
+ * window slides with the disc); the same stream gives the same field. */
+#define REF_RINGS_C 2.0
+static int run_point_cellavg(const sf_scene *s, const sf_numplan *pl, unsigned long seed, size_t i, point_run *pr,
+                             double *t_draw, sf_result *r)
+{
+    char err[256] = "";
+    sf_scene sc = *s, sp[NLEV];
+    sc.cof_model = SF_COFMODEL_CELL;
+    sc.cells = pl->cells;
+    sc.rtol = pl->rtol;
+    size_t n2 = (size_t)ceil(REF_RINGS_C / s->l * s->R);
+    for (int l = 1; l < NLEV; l++) {
+        sp[l] = *s;
+        sp[l].cof_model = SF_COFMODEL_POINT;
+        sp[l].cof_generator = SF_COFGEN_TILES;
+        sp[l].cells = l == 1 ? (2 * n2 + 2) / 3 : n2;
+        sp[l].rtol = pl->rtol / (l == 1 ? 10 : 100);
+    }
+    sf_cof_plan *cp;
+    int rc = sf_cof_plan_alloc(&sp[NLEV - 1], &cp, err, sizeof err);
+    if (rc) {
+        sf_note(r, "**Cannot plan the fine field:** %s", err);
+        return rc;
+    }
+    sf_cof *fine = NULL, *coarse = NULL;
+    double t0 = check_cpu_seconds();
+    rc = check_draw(cp, seed, i, &fine);
+    if (!rc && !(coarse = check_cellavg_filter(fine, &sc, 2 * sc.R / (double)sc.cells, 1, r)))
+        rc = SF_EFAIL;
+    sf_cof_free(fine);
+    *t_draw = check_cpu_seconds() - t0;
+    sf_osc *o = NULL;
+    sf_osc_result res;
+    t0 = check_cpu_seconds();
+    if (!rc && (rc = sf_osc_alloc(&sc, coarse, &o, err, sizeof err)) == SF_SUCCESS)
+        rc = sf_osc_run(o, NULL, NULL, 0, &res, err, sizeof err);
+    if (rc) {
+        if (*err)
+            sf_note(r, "**The plan's run failed:** %s (%s).", err, sf_strerror(rc));
+        sf_osc_free(o);
+        sf_cof_free(coarse);
+        sf_cof_plan_free(cp);
+        return rc;
+    }
+    sf_numplan np = *sf_osc_get_plan(o);
+    sf_osc_free(o);
+    pr->np = *pl;
+    pr->cpu[0] = check_cpu_seconds() - t0;
+    qois(&res, pr->q[0]);
+    pr->cycles[0] = res.ncycles;
+    sf_unum u;
+    t0 = check_cpu_seconds();
+    rc = sf_unum_estimate(&sc, coarse, &np, &res, &u, err, sizeof err);
+    pr->cpu_u = check_cpu_seconds() - t0;
+    sf_osc_result_free(&res);
+    sf_cof_free(coarse);
+    if (rc)
+        sf_note(r, "**The companion solve failed:** %s (%s).", err, sf_strerror(rc));
+    for (int k = 0; k < NQ && !rc; k++)
+        pr->u[k] = u.u[k] / fabs(pr->q[0][k]);
+    for (int l = 1; l < NLEV && !rc; l++) {
+        t0 = check_cpu_seconds();
+        if (!(rc = check_draw(cp, seed, i, &fine)) && !(rc = check_osc_run(&sp[l], NULL, fine, 0, &res, NULL, NULL, r))) {
+            qois(&res, pr->q[l]);
+            pr->cycles[l] = res.ncycles;
+            sf_osc_result_free(&res);
+        }
+        sf_cof_free(fine);
+        pr->cpu[l] = check_cpu_seconds() - t0;
+    }
+    pr->ref_cells[0] = sp[1].cells;
+    pr->ref_cells[1] = sp[2].cells;
+    sf_cof_plan_free(cp);
     return rc;
 }
 
@@ -288,16 +374,21 @@ static int chk_design(const sf_case *c, sf_result *r)
     double *ratio = check_alloc(n * sizeof *ratio), *pred = check_alloc(np_ * sizeof *pred), *ach = check_alloc(np_ * sizeof *ach), *un = check_alloc(np_ * sizeof *un);
     size_t npairs = 0, within = 0, cont_points = 0, disc_points = 0, covered = 0, undecided = 0, bounded = 0;
     size_t pts = 0, pt_miss = 0, pt_wild = 0, pt_under = 0;   /* decided points and their counts */
+    size_t n_cell = 0;   /* points where the plan takes the cell averages */
     double worst = 0, worst_ref = 0, cpu_run = 0, cpu_u = 0;
     sf_note(r, "Latin hypercube of %zu points (seed %lu): l/R %g-%g (log), CV 0.05-1, v_b 0.1-0.8 m/s, mean COF "
                "0.2-1, T 20-%g s, qoi_tol %g-%g (log); one realisation per point. Levels on the same field: the "
                "plan's settings (0), 2x its rings and rtol / 10 (1), 3x its rings and rtol / 100 (2, the "
                "reference). Errors relative to level 2; 'ref' is |Q1 - Q2| / |Q2|, the reference's own error "
-               "estimate; u_num is the run's a-posteriori estimate (companion at half the rings, 16x rtol).\n\n"
+               "estimate; u_num is the run's a-posteriori estimate (companion at half the rings, 16x rtol). Where "
+               "the plan takes the cell averages (its rings column then counts Cartesian cells per diameter), level 0 "
+               "is its run fed with the exact box averages of a fine point field (spacing l/8, tiles) and levels 1 and "
+               "2 are the point model on that field at %g / (l/R) x 2/3 and %g / (l/R) rings, rtol / 10 and / 100; "
+               "its u_num holds the plan's a-priori cell-average error.\n\n"
                "| # | l/R | CV | v_b | mu | T | qoi_tol | rings | rtol | cycles (0/1/2) | predicted | achieved "
                "PV_x, PV_F, SF | ref PV_x, PV_F, SF | u_num PV_x, PV_F, SF | CPU s (draw; levels 0, 1, 2) |\n"
                "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|",
-            n, s0->seed, lo[0], hi[0], hi[4], lo[5], hi[5]);
+            n, s0->seed, lo[0], hi[0], hi[4], lo[5], hi[5], REF_RINGS_C, REF_RINGS_C);
     int rc = SF_SUCCESS;
     for (size_t i = 0; i < n && !rc; i++) {
         const double *ui = u + ND * i;
@@ -308,22 +399,32 @@ static int chk_design(const sf_case *c, sf_result *r)
             sf_note(r, "**Bad design point:** %s", err);
             break;
         }
-        double tol = s.qoi_tol;
-        sf_cof_plan *cp;
-        if ((rc = sf_cof_plan_alloc(&s, &cp, err, sizeof err))) {
-            sf_note(r, "**Cannot plan the COF at point %zu:** %s", i, err);
+        double tol = s.qoi_tol, t_draw = 0;
+        sf_numplan pl;
+        if ((rc = sf_numplan_make(&s, 1, &pl, err, sizeof err))) {
+            sf_note(r, "**No plan at point %zu:** %s", i, err);
             break;
         }
-        sf_cof *cof = NULL;
-        double t_draw = check_cpu_seconds();
-        rc = check_draw(cp, s.seed, i, &cof);
-        t_draw = check_cpu_seconds() - t_draw;
-        sf_cof_plan_free(cp);
         point_run pr;
         memset(&pr, 0, sizeof pr);
-        if (!rc)
-            rc = run_point(&s, cof, &pr, r);
-        sf_cof_free(cof);
+        if (pl.cell_average) {
+            rc = run_point_cellavg(&s, &pl, s.seed, i, &pr, &t_draw, r);
+            n_cell++;
+        } else {
+            sf_cof_plan *cp;
+            if ((rc = sf_cof_plan_alloc(&s, &cp, err, sizeof err))) {
+                sf_note(r, "**Cannot plan the COF at point %zu:** %s", i, err);
+                break;
+            }
+            sf_cof *cof = NULL;
+            t_draw = check_cpu_seconds();
+            rc = check_draw(cp, s.seed, i, &cof);
+            t_draw = check_cpu_seconds() - t_draw;
+            sf_cof_plan_free(cp);
+            if (!rc)
+                rc = run_point(&s, cof, &pr, r);
+            sf_cof_free(cof);
+        }
         if (rc)
             break;
         cpu_run += pr.cpu[0];
@@ -342,10 +443,14 @@ static int chk_design(const sf_case *c, sf_result *r)
         }
         char pt[160];
         point_text(pt, sizeof pt, " | ", lr, &s, &pr.np);
-        sf_note(r, "| %zu | %s | %zu/%zu/%zu%s | %.2g | %.2g, %.2g, "
+        char refs[96] = "";
+        if (pr.ref_cells[0])
+            snprintf(refs, sizeof refs, " (cell averages; point references %zu, %zu rings)", pr.ref_cells[0],
+                     pr.ref_cells[1]);
+        sf_note(r, "| %zu | %s | %zu/%zu/%zu%s%s | %.2g | %.2g, %.2g, "
                    "%.2g | %.2g, %.2g, %.2g | %.2g, %.2g, %.2g | %.2f; %.2f, %.2f, %.2f |",
                 i, pt, pr.cycles[0], pr.cycles[1],
-                pr.cycles[2], disc ? (!pr.cycles[2] ? " (no cycle)" : nan_q ? " (no peak-to-valley)" : " (edge)") : "", pr.np.err_pred, a[0], a[1], a[2], e1[0], e1[1], e1[2], pr.u[0],
+                pr.cycles[2], disc ? (!pr.cycles[2] ? " (no cycle)" : nan_q ? " (no peak-to-valley)" : " (edge)") : "", refs, pr.np.err_pred, a[0], a[1], a[2], e1[0], e1[1], e1[2], pr.u[0],
                 pr.u[1], pr.u[2], t_draw, pr.cpu[0], pr.cpu[1], pr.cpu[2]);
         if (disc) {
             disc_points++;
@@ -407,6 +512,9 @@ static int chk_design(const sf_case *c, sf_result *r)
                    "the plan's runs (CPU %.2f s against %.2f s, field draws excluded).",
                 worst_ref, covered, npairs, npairs ? 100.0 * (double)covered / (double)npairs : 0,
                 cpu_run > 0 ? 100 * cpu_u / cpu_run : 0, cpu_u, cpu_run);
+        if (n_cell)
+            sf_note(r, "The plan took the cell averages at %zu of the %zu points (their references: the point model on "
+                       "the fine field the averages are taken from).", n_cell, n);
         sf_plot *p = sf_result_plot(r, "design_scatter", "Accuracy plan on a space-filling design: predicted vs achieved",
                                     "predicted relative QoI error (the plan's err_pred, a 95% bound) [-]", "achieved relative QoI error [-]");
         sf_plot_log(p, 1, 1);
