@@ -177,7 +177,9 @@ static void qois(const sf_osc_result *res, double *q)
 }
 
 /* the three levels and the companion on one field */
-static int run_point(const sf_scene *s, const sf_cof *cof, point_run *pr, sf_result *r)
+/* level 0: the plan's run of scene s on cof (its plan in pr->np) and its
+ * u_num companion */
+static int run_level0(const sf_scene *s, const sf_cof *cof, point_run *pr, sf_result *r)
 {
     char err[256] = "";
     sf_osc *o = NULL;
@@ -207,6 +209,14 @@ static int run_point(const sf_scene *s, const sf_cof *cof, point_run *pr, sf_res
     }
     for (int k = 0; k < NQ; k++)
         pr->u[k] = u.u[k] / fabs(pr->q[0][k]);
+    return SF_SUCCESS;
+}
+
+static int run_point(const sf_scene *s, const sf_cof *cof, point_run *pr, sf_result *r)
+{
+    int rc = run_level0(s, cof, pr, r);
+    sf_osc_result res;
+    double t0;
     for (int l = 1; l < NLEV && !rc; l++) {
         sf_scene f = *s;
         f.cells = pr->np.quadrature ? (size_t)(l + 1) * pr->np.cells : 0;
@@ -262,35 +272,11 @@ static int run_point_cellavg(const sf_scene *s, const sf_numplan *pl, unsigned l
         rc = SF_EFAIL;
     sf_cof_free(fine);
     *t_draw = check_cpu_seconds() - t0;
-    sf_osc *o = NULL;
-    sf_osc_result res;
-    t0 = check_cpu_seconds();
-    if (!rc && (rc = sf_osc_alloc(&sc, coarse, &o, err, sizeof err)) == SF_SUCCESS)
-        rc = sf_osc_run(o, NULL, NULL, 0, &res, err, sizeof err);
-    if (rc) {
-        if (*err)
-            sf_note(r, "**The plan's run failed:** %s (%s).", err, sf_strerror(rc));
-        sf_osc_free(o);
-        sf_cof_free(coarse);
-        sf_cof_plan_free(cp);
-        return rc;
-    }
-    sf_numplan np = *sf_osc_get_plan(o);
-    sf_osc_free(o);
-    pr->np = *pl;
-    pr->cpu[0] = check_cpu_seconds() - t0;
-    qois(&res, pr->q[0]);
-    pr->cycles[0] = res.ncycles;
-    sf_unum u;
-    t0 = check_cpu_seconds();
-    rc = sf_unum_estimate(&sc, coarse, &np, &res, &u, err, sizeof err);
-    pr->cpu_u = check_cpu_seconds() - t0;
-    sf_osc_result_free(&res);
+    if (!rc)
+        rc = run_level0(&sc, coarse, pr, r);
+    pr->np = *pl;   /* the promise is the auto plan's (the same cells and rtol) */
     sf_cof_free(coarse);
-    if (rc)
-        sf_note(r, "**The companion solve failed:** %s (%s).", err, sf_strerror(rc));
-    for (int k = 0; k < NQ && !rc; k++)
-        pr->u[k] = u.u[k] / fabs(pr->q[0][k]);
+    sf_osc_result res;
     for (int l = 1; l < NLEV && !rc; l++) {
         t0 = check_cpu_seconds();
         if (!(rc = check_draw(cp, seed, i, &fine)) && !(rc = check_osc_run(&sp[l], NULL, fine, 0, &res, NULL, NULL, r))) {

@@ -242,7 +242,7 @@ static void plot_vrf(sf_result *r, const char *title, size_t K, const double *lr
  * all but fixes them.  The stick fraction's is reported, not gated: T_sk
  * in a finite window jumps with the COF (a stick phase cut by the window's
  * end), so its correlation with C has a heavy lower tail at n = 24 (300
-  * fresh seeds: 1.80 at the least, 2.4-3.1 at five more, median 8.0;
+ * fresh seeds: 1.80 at the least, 2.4-3.1 at five more, median 8.0;
  * PV_x and PV_F at least 11.4 and 61.8). */
 static int chk_cv_unbiased(const sf_case *c, sf_result *r)
 {
