@@ -41,6 +41,10 @@ typedef struct {
     /* stress_run: runs its step budget (max_steps) must stop at a cell that
      * holds the centre of rotation (a regression case's expectation) */
     size_t held_stops;
+    /* claims: the group-sequential design's looks (1: one fixed N); look k
+     * runs k x samples realisations per point and the last is taken when
+     * every claim the tier demands a verdict on is decided */
+    size_t looks;
     /* which keys the block set (index into the table) */
     unsigned char set[SF_CASE_SPEC_MAX_KEYS];
 } sf_case_spec;
