@@ -724,6 +724,12 @@ static const char *status_short(int s)
     return s == SF_CLAIM_CONFIRMED ? "confirmed" : s == SF_CLAIM_CONTRADICTED ? "contradicted" : "undecided";
 }
 
+/* Whether the case's tier demands a verdict on claim cs ('D') or not ('-'). */
+static char claim_demand(const sf_case *c, const claim_spec *cs)
+{
+    return c->spec.tier == SF_TIER_PAPER ? cs->decp : cs->decq;
+}
+
 /* Gate one claim: it tests the paper, not our last run.  Confirmed
  * passes.  Contradicted passes only with an explanation whose cause is
  * measured in this run and holds (cause_ok; the claim's note says why it
@@ -755,7 +761,6 @@ static int claim_gate(sf_result *r, const char *id, char dec, int status, int ca
 static size_t claims_judge(const sf_case *c, sf_result *r, const claim_spec *spec, const cpoint *pt, size_t K)
 {
     double alpha = claim_alpha(c, spec, pt, K);
-    int paper = c->spec.tier == SF_TIER_PAPER;
     size_t gated = 0;
     char hdr[300] = "";
     for (int dd = 1, l = 0; dd < ND; dd++)
@@ -802,7 +807,7 @@ static size_t claims_judge(const sf_case *c, sf_result *r, const claim_spec *spe
                  cause, *cause ? " " : "", cs->note ? cs->note : "");
         sf_claim(r, cs->id, cs->text, e.status, e.est, e.lo, e.hi, alpha, how, note);
         sf_claim_defs(r, defs2);
-        char dec = paper ? cs->decp : cs->decq;
+        char dec = claim_demand(c, cs);
         double mde = claim_mde(&e, alpha);
         sf_note(r, "| %s | %s | %.4g [%.4g, %.4g] | %s | %d / %zu | %.3g%s | %s | %s |", cs->id, qname[cs->q], e.est, e.lo,
                 e.hi, status_short(e.status), nmin, nall - (size_t)nmin, mde, e.logscale ? " (factor)" : "",
@@ -821,8 +826,7 @@ static size_t claims_open(const sf_case *c, const claim_spec *spec, const cpoint
     size_t n = 0;
     for (const claim_spec *cs = spec; cs->id; cs++) {
         claim_eval e;
-        char dec = c->spec.tier == SF_TIER_PAPER ? cs->decp : cs->decq;
-        n += dec == 'D' && claim_eval_at(cs, pt, K, D_OURS, alpha, &e) && e.status == SF_CLAIM_UNDECIDED;
+        n += claim_demand(c, cs) == 'D' && claim_eval_at(cs, pt, K, D_OURS, alpha, &e) && e.status == SF_CLAIM_UNDECIDED;
     }
     return n;
 }
@@ -1067,7 +1071,7 @@ void claims_judge_one(const sf_case *c, sf_result *r, const claim_spec *all, con
     decide(&e, cs, est, se, df, alpha, 0);
     sf_claim(r, cs->id, cs->text, e.status, e.est, e.lo, e.hi, alpha, how, cs->note);
     sf_claim_defs(r, defs);
-    char dec = c->spec.tier == SF_TIER_PAPER ? cs->decp : cs->decq;
+    char dec = claim_demand(c, cs);
     double mde = claim_mde(&e, alpha);
     sf_note(r, "| %s | %.4g [%.4g, %.4g] | %s | %.3g |", cs->id, e.est, e.lo, e.hi, status_short(e.status), mde);
     claim_gate(r, cs->id, dec, e.status, 0, mde, alpha, claims_looks(c), 0);
