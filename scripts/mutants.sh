@@ -75,7 +75,12 @@ for m in $list; do
         echo "| $name | $file | $eqs | $moderate | **does not build** | |" >> "$tmp_report"
         row_end broken ""; broken=$((broken + 1)); continue
     fi
-    (cd "$dir" && ./build/slipfield verify --jobs 2 --reports "$dir/reports" $cases) > "$dir/verify.log" 2>&1
+    # a mutant that names only full-tier cases (a pinned regression too
+    # costly for the quick tier) runs them at that tier
+    vtier=quick
+    for cf in $cases; do [ -f "$cf" ] && [ "$(tier_of "$cf")" = full ] && vtier=full; done
+    for cf in $cases; do [ -f "$cf" ] && [ "$(tier_of "$cf")" = quick ] && vtier=quick; done
+    (cd "$dir" && ./build/slipfield verify --tier $vtier --jobs 2 --reports "$dir/reports" $cases) > "$dir/verify.log" 2>&1
     rc=$?
     failed=$(grep -E '^(FAIL|ERROR)' "$dir/verify.log" | awk '{print $2}' | tr '\n' ' ')
     if [ $rc -eq 1 ]; then

@@ -523,7 +523,7 @@ static int pair_scenes(const sf_case *c, size_t k, int plan, size_t rings, doubl
     const sf_scene *s0 = &c->scene;
     char err[256] = "";
     *sp = *s0;
-    if (sf_sweep_set(sp, "l_over_R", c->spec.sweep.v[k], err, sizeof err)) {
+    if (sf_sweep_set(sp, c->spec.sweep_param, c->spec.sweep.v[k], err, sizeof err)) {
         sf_note(r, "**Bad sweep value:** %s", err);
         return SF_EINVAL;
     }
@@ -572,7 +572,9 @@ static double rms_le_p(const double *e, size_t n, double b)
  * cof_generator = tiles):
  *  - pinned (cellavg_vs_point): the cell-average model at the scene's
  *    `cells` against the point model at the rings of sweep2, both at the
- *    scene's rtol; gate: achieved / sf_numplan_err_cell <= tolerance;
+ *    scene's rtol; gate: achieved / sf_numplan_err_cell <= tolerance; the
+ *    sweep is over l_over_R, or over another key at one l/R (mu_std: the
+ *    COF's CV; v_b);
  *  - plan (cellavg_plan_qoi_tol): the tested run is the accuracy plan's
  *    own choice for the scene's qoi_tol (cof_model = auto, cells and rtol
  *    left to the plan: it must choose the cell averages), the reference
@@ -588,13 +590,16 @@ static int vs_point(const sf_case *c, sf_result *r, int plan)
 {
     const sf_scene *s0 = &c->scene;
     size_t K = c->spec.sweep.n, n = s0->samples, L = K ? c->spec.sweep2.n / K : 0;
-    if (!K || strcmp(c->spec.sweep_param, "l_over_R") || !n || !(L == 1 || (plan && L == 3)) ||
+    int by_lr = !strcmp(c->spec.sweep_param, "l_over_R");
+    const char *lab = by_lr ? "l/R" : c->spec.sweep_param;
+    if (!K || !(by_lr || !plan) || !n || !(L == 1 || (plan && L == 3)) ||
         c->spec.sweep2.n != L * K || (!plan && (!s0->cells || !(s0->rtol > 0))) ||
         (plan && (s0->cells || s0->rtol > 0 || s0->cof_model != SF_COFMODEL_AUTO))) {
         sf_note(r, plan ? "The scene must sweep l_over_R, set sweep2 (the reference's rings per l/R: one, or three "
                           "from coarse to fine) and samples, and leave cells, rtol and cof_model to the plan."
-                        : "The scene must sweep l_over_R, set cells (cell-average cells per diameter), sweep2 (the "
-                          "point model's rings per l/R), rtol and samples.");
+                        : "The scene must sweep a key (l_over_R; or mu_std, v_b, ... at one l/R), set cells "
+                          "(cell-average cells per diameter), sweep2 (the point model's rings per sweep value), rtol "
+                          "and samples.");
         return SF_EINVAL;
     }
     sf_keytab kt = sf_case_spec_keytab(&c->spec);
@@ -623,8 +628,8 @@ static int vs_point(const sf_case *c, sf_result *r, int plan)
                    "quadrature (rings pinned per l/R) against the cell-average model (%zu Cartesian cells per diameter) "
                    "fed with the exact box averages of that field's bilinear interpolant on its own grid (spacing "
                    "box/3); rtol %g for both; %zu realisations per l/R (streams sf_mc_seed(seed, i)); error: the largest "
-                   "relative difference of PV_x, PV_F and stick fraction.\n\n| l/R | box/l | point rings | predicted "
-                   "(plan) | achieved (RMS) | worst realisation |\n|---|---|---|---|---|---|",
+                   "relative difference of PV_x, PV_F and stick fraction.\n\n| l/R | CV | box/l | point rings | "
+                   "predicted (plan) | achieved (RMS) | worst realisation |\n|---|---|---|---|---|---|---|",
                 tiles ? "tiles of white noise, generated as the window follows the disc" : "circulant strip", s0->cells,
                 s0->rtol, n);
     int rc = SF_SUCCESS;
@@ -639,7 +644,7 @@ static int vs_point(const sf_case *c, sf_result *r, int plan)
         sf_cof_plan *cp;
         char err[256] = "";
         if ((rc = sf_cof_plan_alloc(&sp[L - 1], &cp, err, sizeof err))) {
-            sf_note(r, "**Cannot plan the fine field at l/R = %g:** %s", c->spec.sweep.v[k], err);
+            sf_note(r, "**Cannot plan the fine field at %s = %g:** %s", lab, c->spec.sweep.v[k], err);
             break;
         }
         double e2 = 0, ew = 0, t0 = check_cpu_seconds();
@@ -663,7 +668,7 @@ static int vs_point(const sf_case *c, sf_result *r, int plan)
         x[k] = c->spec.sweep.v[k];
         ach[k] = fmax(sqrt(e2), 1e-17);
         worst[k] = fmax(ew, 1e-17);
-        char t[160];
+        char t[224];
         const sf_scene *ref = &sp[L - 1];
         if (plan) {
             pred[k] = pl.err_total;
@@ -689,15 +694,18 @@ static int vs_point(const sf_case *c, sf_result *r, int plan)
                 sf_check_le(r, t, ach[k] / pred[k], 1);
             }
         } else {
-            pred[k] = sf_numplan_err_cell(x[k], sc.mu_std / sc.mu_mean, sc.cells);
-            sf_note(r, "| %g | %.3g | %zu | %.2g | %.2g | %.2g |", x[k], box / sc.l, ref->cells, pred[k], ach[k], worst[k]);
+            double lr = by_lr ? x[k] : sc.l / sc.R;
+            pred[k] = sf_numplan_err_cell(lr, sc.mu_std / sc.mu_mean, sc.cells);
+            sf_note(r, "| %g | %.3g | %.3g | %zu | %.2g | %.2g | %.2g |", lr, sc.mu_std / sc.mu_mean,
+                    box / sc.l, ref->cells, pred[k], ach[k], worst[k]);
             if (stat) {   /* the RMS over a few fields is itself random: test it, at alpha */
-                snprintf(t, sizeof t, "l/R = %g: RMS QoI difference (cell averages vs point values, same field) <= "
-                                      "tolerance x predicted (one-sided t test on the squares)", x[k]);
+                snprintf(t, sizeof t, "%s = %g: RMS QoI difference (cell averages vs point values, same field) <= "
+                                      "tolerance x predicted (one-sided t test on the squares)", lab, x[k]);
                 sf_check_pvalue(r, t, rms_le_p(e + (L - 1) * n, n, c->spec.tolerance * pred[k]), arow, n);
             } else {
                 snprintf(t, sizeof t,
-                         "l/R = %g: RMS QoI difference (cell averages vs point values, same field) / predicted", x[k]);
+                         "%s = %g: RMS QoI difference (cell averages vs point values, same field) / predicted", lab,
+                         x[k]);
                 sf_check_le(r, t, ach[k] / pred[k], c->spec.tolerance);
             }
         }
@@ -724,10 +732,13 @@ static int vs_point(const sf_case *c, sf_result *r, int plan)
         }
     }
     if (!rc) {
+        char xl[96];
+        const char *u = sf_scene_key_unit(c->spec.sweep_param);
+        snprintf(xl, sizeof xl, "%s [%s]", lab, by_lr || !u || !strcmp(u, "1") ? "-" : u);
         sf_plot *p = sf_result_plot(r, plan ? "cellavg-plan" : "cellavg-vs-point",
                                     plan ? "The plan's cell averages vs the point reference, same fine field"
                                          : "Cell-average model vs point model, same fine field",
-                                    "l/R [-]", "relative QoI difference [-]");
+                                    xl, "relative QoI difference [-]");
         sf_plot_log(p, 1, 1);
         sf_plot_series(p, "achieved (RMS over realisations)", SF_STYLE_LINESPOINTS, K, x, ach);
         sf_plot_series(p, "worst realisation", SF_STYLE_POINTS, K, x, worst);

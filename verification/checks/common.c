@@ -435,7 +435,9 @@ double check_qoi_gap_of(const double q[3], size_t ncycles, const double qref[3])
         return NAN;
     double e = 0;
     for (int k = 0; k < 3; k++) {
-        double d = fabs(q[k] - qref[k]) / fabs(qref[k]);
+        /* equal values agree even at 0 (a stick fraction of 0 in both:
+         * no stick in the window), where the relative gap is 0 / 0 */
+        double d = q[k] == qref[k] ? 0 : fabs(q[k] - qref[k]) / fabs(qref[k]);
         if (!(d <= e))   /* NaN (a complete cycle in one run only) too: it fails the case */
             e = isnan(d) ? INFINITY : d;
     }

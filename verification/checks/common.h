@@ -152,7 +152,8 @@ sf_cof *check_cellavg_filter(const sf_cof *fine, const sf_scene *sc, double box,
 
 /* The largest relative QoI gap over PV_x, PV_F and the stick fraction of
  * run (s, cof) against the reference run (sref, cref): max_q |q - q_ref| /
- * |q_ref|; +inf when one run has a complete cycle and the other none, so
+ * |q_ref| (0 where they are equal, 0 included); +inf when one run has a
+ * complete cycle and the other none, or q_ref = 0 and q is not, so
  * such a realisation fails a gate instead of passing it; NaN when neither
  * has one (no QoI to compare: a caller may draw another realisation). */
 int check_qoi_gap(const sf_scene *s, const sf_cof *cof, const sf_scene *sref, const sf_cof *cref, double *gap,
