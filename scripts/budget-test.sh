@@ -46,8 +46,15 @@ grep -qE '^PASS +budget/suspect ' "$tmp/out" || bad "a suspect p whose replicati
 grep -q 'Replication.*At seed 7 ' "$tmp/r/budget/suspect/report.md" || bad "the replicated case's report does not say so"
 grep -qE '^FAIL +budget/floor ' "$tmp/out" || bad "a p below the floor did not fail"
 grep -q 'Replication' "$tmp/r/budget/floor/report.md" && bad "a p below the floor was replicated"
+grep -qE '^PASS +budget/replicate ' "$tmp/out" || bad "a replicated deterministic row whose replication passes did not pass"
+grep -q 'Replication.*At seed 7 .*with `replicate`' "$tmp/r/budget/replicate/report.md" ||
+    bad "the replicated deterministic row's report does not say so"
+grep -qE '^FAIL +budget/no-replicate ' "$tmp/out" || bad "a failing deterministic row without replicate did not fail"
+grep -q 'Replication' "$tmp/r/budget/no-replicate/report.md" && bad "a deterministic row without replicate was replicated"
+grep -qF '| [budget/replicate](budget/replicate/report.md) | statistical (replicate) | 0 | 0 | 0.5 | 0.25 | **yes** |' \
+    "$tmp/r/index.md" || bad "the budget table's row for the replicated deterministic case (share alpha^2)"
 grep -q '^## False-alarm budget' "$tmp/r/index.md" || bad "the index states no budget"
 grep -qF '| [budget/suspect](budget/suspect/report.md) | statistical | 1 | 0.5 | 0.5 | 0.255 | **yes** |' "$tmp/r/index.md" ||
     bad "the budget table's row for the replicated case"
-[ $fail -eq 0 ] && echo "budget-test: empty selections exit 2, time limits scaled, suspect p replicated, budget stated"
+[ $fail -eq 0 ] && echo "budget-test: empty selections exit 2, time limits scaled, suspect p and replicate rows replicated, budget stated"
 exit $fail

@@ -16,6 +16,7 @@ void sf_budget_entry_init(sf_budget_entry *e, const sf_case *c)
     e->alpha = sf_keys_was_set(&t, "alpha") ? c->spec.alpha : 0;
     e->kind = c->spec.pin_seed ? SF_BUDGET_PINNED : e->alpha > 0 ? SF_BUDGET_STAT
             : c->spec.seed_proof[0] ? SF_BUDGET_SEED_PROOF : SF_BUDGET_NONE;
+    e->replicate = c->spec.replicate && e->alpha > 0;
 }
 
 void sf_budget_entry_rows(sf_budget_entry *e, const sf_result *r)
@@ -38,7 +39,9 @@ double sf_budget_share(const sf_budget_entry *e)
     if (e->kind == SF_BUDGET_PINNED)
         return 0;
     double A = e->row_alpha, a = fmax(e->alpha, A);
-    return (a - A) + SF_BUDGET_FLOOR * A + A * a;
+    /* `replicate`: the deterministic part too fails only if the
+     * replication, an independent run, fails as well (at most a) */
+    return (a - A) * (e->replicate ? a : 1) + SF_BUDGET_FLOOR * A + A * a;
 }
 
 int sf_budget_suspect(const sf_case *c, const sf_result *r)
@@ -49,8 +52,11 @@ int sf_budget_suspect(const sf_case *c, const sf_result *r)
         const sf_row *row = sf_result_row(r, i);
         if (row->pass)
             continue;
-        if (!(row->alpha > 0))
+        if (!(row->alpha > 0)) {
+            if (c->spec.replicate && c->spec.alpha > 0)
+                continue;   /* a tolerance on seed-dependent data, at the declared rate */
             return 0;   /* a failing row that is not statistical: no second chance */
+        }
         if (row->test == SF_ROW_PVALUE && !(row->measured >= SF_BUDGET_FLOOR * row->alpha))
             return 0;   /* below the floor (or NaN): fails at once */
     }
@@ -69,8 +75,9 @@ unsigned long sf_budget_replica_seed(unsigned long seed)
 void sf_budget_replica_note(const sf_result *first, unsigned long seed, unsigned long seed2, char *buf, size_t len)
 {
     size_t k = (size_t)snprintf(buf, len,
-                                "**Replication.** At seed %lu only statistical rows failed, none below %g x its alpha "
-                                "(the suspect band):", seed, SF_BUDGET_FLOOR);
+                                "**Replication.** At seed %lu only rows a replication may confirm failed (statistical "
+                                "rows none below %g x its alpha, the suspect band; with `replicate`, tolerances on "
+                                "seed-dependent data):", seed, SF_BUDGET_FLOOR);
     for (size_t i = 0; i < sf_result_nrows(first) && k < len; i++) {
         const sf_row *row = sf_result_row(first, i);
         if (!row->pass)
@@ -124,22 +131,23 @@ void sf_budget_index_section(FILE *f, const char *tier_name, const sf_outcome *o
                "(split over its rows); a statistical row whose p-value is below its alpha but not below %g x it is "
                "*suspect* and the case is run once more on a fresh stream, failing only if that fails too; so a "
                "case spends share = (a - A) + %g A + A a, where A is the alpha of its statistical rows and a = "
-               "max(alpha, A); a row that compares a Bonferroni-adjusted p-value with the case's alpha counts that alpha in "
+               "max(alpha, A), or (a - A) a + %g A + A a when it sets `replicate` (a failure of its deterministic "
+               "rows, a tolerance on seed-dependent data at a measured rate, is confirmed on a fresh stream too); a row that compares a Bonferroni-adjusted p-value with the case's alpha counts that alpha in "
                "full (conservative). Without the replication the same cases would spend %.3g. %zu case%s seed-proof "
                "(`seed_proof`: the tolerance holds at every seed), %zu pinned (`pin_seed`), %zu declare no random "
                "data (the false-alarm study, `make verify SEED=random REPEAT=N`, lists any that draw some). "
                "%zu case%s replicated in this run.\n\n",
             tier_name, SF_BUDGET_TIER, sum, nstat, nstat == 1 ? "" : "s",
             sum <= SF_BUDGET_TIER ? "within the budget" : "**over the budget**", SF_BUDGET_FLOOR, SF_BUDGET_FLOOR,
-            sum_alpha, nproof, nproof == 1 ? " is" : "s are", npin, nnone, nrep, nrep == 1 ? " was" : "s were");
+            SF_BUDGET_FLOOR, sum_alpha, nproof, nproof == 1 ? " is" : "s are", npin, nnone, nrep, nrep == 1 ? " was" : "s were");
     fprintf(f, "| case | budget | statistical rows | their alpha (sum) | case alpha | share | replicated |\n"
                "|---|---|---|---|---|---|---|\n");
     for (size_t i = 0; i < n; i++) {
         const sf_budget_entry *e = &o[i].budget;
         if (e->kind != SF_BUDGET_STAT)
             continue;
-        fprintf(f, "| [%s](%s/%s) | %s | %zu | %.3g | %.3g | %.3g | %s |\n", o[i].id, o[i].id, page,
-                kind_text(e->kind), e->nstat, e->row_alpha, e->alpha, sf_budget_share(e),
+        fprintf(f, "| [%s](%s/%s) | %s%s | %zu | %.3g | %.3g | %.3g | %s |\n", o[i].id, o[i].id, page,
+                kind_text(e->kind), e->replicate ? " (replicate)" : "", e->nstat, e->row_alpha, e->alpha, sf_budget_share(e),
                 e->replicated ? "**yes**" : "no");
     }
     fprintf(f, "| **sum** | | | | %.3g | **%.3g** (budget %g) | |\n", sum_alpha, sum, SF_BUDGET_TIER);

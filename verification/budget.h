@@ -19,7 +19,11 @@
  * suspect and then any failure of the independent replication; the rest
  * of its alpha (a - A: a bound from a confidence interval, a deterministic
  * tolerance whose data depend on the seed, counted at a measured rate)
- * fails at once.  A case that draws no random numbers, or whose
+ * fails at once, unless the case sets `replicate`: then a failure of those
+ * rows is confirmed by the replication too, and they spend (a - A) a, not
+ * a - A (a tolerance on an estimate from a few realisations, which a
+ * defect fails at every seed and chance at a measured rate).  A case that
+ * draws no random numbers, or whose
  * tolerance holds at every seed (`seed_proof = REASON`), or that checks
  * one pinned realisation (`pin_seed`), spends nothing.  A defect still
  * fails: a p-value below the floor at once, a moderate one with the
@@ -44,6 +48,7 @@ typedef struct {
     size_t nstat;          /* its statistical rows (p-values and verdicts) */
     double row_alpha;      /* the alpha they spend (sum) */
     int replicated;        /* 1: this run's verdict is the replication's */
+    int replicate;         /* the case's `replicate`: its deterministic rows are confirmed too */
 } sf_budget_entry;
 
 /* The declared part, from the case (the runner fills it for every case). */
@@ -55,7 +60,8 @@ double sf_budget_share(const sf_budget_entry *e);
 
 /* Should the case run once more on a fresh stream?  Yes when it failed
  * only in suspect rows (statistical rows with p >= FLOOR x alpha, claim
- * verdicts), has no non-finite data and is not pinned. */
+ * verdicts; with `replicate`, its deterministic rows too), has no
+ * non-finite data and is not pinned. */
 int sf_budget_suspect(const sf_case *c, const sf_result *r);
 /* The replication's seed: a fresh stream derived from the case's seed. */
 unsigned long sf_budget_replica_seed(unsigned long seed);

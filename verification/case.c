@@ -219,6 +219,7 @@ static const sf_key spec_keys[] = {
     { "tags", SF_KEY_STRING, STR(tags), 0, 0, 0, 0, "", "", NULL, "comma-separated tags" },
     { "pin_seed", SF_KEY_BOOL, OFF(pin_seed), 0, 0, 0, 0, 0, "false", "", NULL, "a deterministic check of one pinned realisation: verify --seed leaves this case's seed alone" },
     { "seed_proof", SF_KEY_STRING, STR(seed_proof), 0, 0, 0, 0, "", "", NULL, "a tolerance on seed-dependent data that holds at every seed: a token for why (exact-property, round-off, same-bits); the prose says it" },
+    { "replicate", SF_KEY_BOOL, OFF(replicate), 0, 0, 0, 0, 0, "false", "", NULL, "with alpha: a failure of the case's deterministic rows (a tolerance on seed-dependent data, met but for a measured rate alpha) is confirmed on a fresh stream before the case fails" },
     { "power_alt", SF_KEY_STRING, STR(power_alt), 0, 0, 0, 0, "", "", NULL, "alternative a statistical case's power is measured against: KEY*FACTOR or KEY+DELTA (generator only)" },
     { "sweep", SF_KEY_LIST, OFF(sweep), 0, -INF, INF, 0, 0, "", "", NULL, "list of values a check sweeps over" },
     { "sweep_param", SF_KEY_STRING, STR(sweep_param), 0, 0, 0, 0, "", "", NULL, "parameter a sweep varies: a numeric key, l_over_R or mu_mean (fixed CV)" },

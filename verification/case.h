@@ -36,6 +36,11 @@ typedef struct {
      * for why (exact-property, round-off, same-bits), the prose says it;
      * the case then spends none of the tier's false-alarm budget (budget.h) */
     char seed_proof[200];
+    /* a case with alpha whose deterministic rows gate seed-dependent data
+     * (an estimate from a few realisations against a fixed tolerance, at a
+     * measured rate alpha): a failure of them is confirmed on a fresh
+     * stream, as a suspect statistical row is (budget.h) */
+    int replicate;
     sf_list sweep, sweep2;
     char sweep_param[32];    /* the scene key (or l_over_R) a sweep varies */
     /* stress_run: runs its step budget (max_steps) must stop at a cell that

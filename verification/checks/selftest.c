@@ -113,6 +113,22 @@ static int chk_uniform_p(const sf_case *c, sf_result *r)
     return SF_SUCCESS;
 }
 
+/* The same draw under a deterministic row, u >= tolerance: a tolerance on
+ * seed-dependent data (the budget's `replicate`). */
+static int chk_uniform_ge(const sf_case *c, sf_result *r)
+{
+    if (!armed(r))
+        return SF_EINVAL;
+    gsl_rng *g = sf_case_rng(c);
+    double u = gsl_rng_uniform_pos(g);
+    gsl_rng_free(g);
+    sf_check_ge(r, "a uniform draw", u, c->spec.tolerance);
+    const double x[2] = { 0, 1 }, y[2] = { u, u };
+    sf_plot *pl = sf_result_plot(r, "u", "the draw", "draw index (dimensionless)", "u (dimensionless)");
+    sf_plot_series(pl, "u", SF_STYLE_LINES, 2, x, y);
+    return SF_SUCCESS;
+}
+
 const sf_check_def sf_checks_selftest[] = {
     { "selftest_abort", chk_abort, "calls abort() (isolation test)" },
     { "selftest_segv", chk_segv, "raises SIGSEGV (isolation test)" },
@@ -120,6 +136,7 @@ const sf_check_def sf_checks_selftest[] = {
     { "selftest_spin", chk_spin, "spins without end (CPU-time limit test)" },
     { "selftest_pass", chk_pass, "passes (isolation test)" },
     { "selftest_uniform_p", chk_uniform_p, "a uniform draw as a p-value (false-alarm budget test)" },
+    { "selftest_uniform_ge", chk_uniform_ge, "a uniform draw under a deterministic row (false-alarm budget test)" },
     { "selftest_noplot", chk_noplot, "a row but no plot: an ERROR (isolation test)" },
     { "selftest_badplot", chk_badplot, "a passing row, two misdrawn plots: a FAIL (isolation test)" },
     { NULL, NULL, NULL }
