@@ -97,37 +97,30 @@ static int chk_badplot(const sf_case *c, sf_result *r)
     return SF_SUCCESS;
 }
 
-/* a uniform draw from the case's seed as a p-value: the false-alarm
- * budget's replication of a suspect p (tests/budget) */
-static int chk_uniform_p(const sf_case *c, sf_result *r)
-{
-    if (!armed(r))
-        return SF_EINVAL;
-    gsl_rng *g = sf_case_rng(c);
-    double p = gsl_rng_uniform_pos(g);
-    gsl_rng_free(g);
-    sf_check_pvalue(r, "a uniform draw as a p-value", p, c->spec.alpha, 1);
-    const double x[2] = { 0, 1 }, y[2] = { p, p };
-    sf_plot *pl = sf_result_plot(r, "p", "the draw", "draw index (dimensionless)", "p (dimensionless)");
-    sf_plot_series(pl, "p", SF_STYLE_LINES, 2, x, y);
-    return SF_SUCCESS;
-}
-
-/* The same draw under a deterministic row, u >= tolerance: a tolerance on
- * seed-dependent data (the budget's `replicate`). */
-static int chk_uniform_ge(const sf_case *c, sf_result *r)
+/* A uniform draw from the case's seed, plotted; the false-alarm budget's
+ * tests (tests/budget) gate it as a p-value (the replication of a suspect
+ * p) or under a deterministic row, u >= tolerance (a tolerance on
+ * seed-dependent data: `replicate`). */
+static int uniform_draw(const sf_case *c, sf_result *r, int as_p)
 {
     if (!armed(r))
         return SF_EINVAL;
     gsl_rng *g = sf_case_rng(c);
     double u = gsl_rng_uniform_pos(g);
     gsl_rng_free(g);
-    sf_check_ge(r, "a uniform draw", u, c->spec.tolerance);
+    if (as_p)
+        sf_check_pvalue(r, "a uniform draw as a p-value", u, c->spec.alpha, 1);
+    else
+        sf_check_ge(r, "a uniform draw", u, c->spec.tolerance);
     const double x[2] = { 0, 1 }, y[2] = { u, u };
-    sf_plot *pl = sf_result_plot(r, "u", "the draw", "draw index (dimensionless)", "u (dimensionless)");
-    sf_plot_series(pl, "u", SF_STYLE_LINES, 2, x, y);
+    sf_plot *pl = sf_result_plot(r, as_p ? "p" : "u", "the draw", "draw index (dimensionless)",
+                                 as_p ? "p (dimensionless)" : "u (dimensionless)");
+    sf_plot_series(pl, as_p ? "p" : "u", SF_STYLE_LINES, 2, x, y);
     return SF_SUCCESS;
 }
+
+static int chk_uniform_p(const sf_case *c, sf_result *r) { return uniform_draw(c, r, 1); }
+static int chk_uniform_ge(const sf_case *c, sf_result *r) { return uniform_draw(c, r, 0); }
 
 const sf_check_def sf_checks_selftest[] = {
     { "selftest_abort", chk_abort, "calls abort() (isolation test)" },
