@@ -9,11 +9,18 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* The alpha the case declares (0 when it sets none: the key's default is
+ * not a declaration). */
+static double declared_alpha(const sf_case *c)
+{
+    sf_keytab t = sf_case_spec_keytab(&c->spec);
+    return sf_keys_was_set(&t, "alpha") ? c->spec.alpha : 0;
+}
+
 void sf_budget_entry_init(sf_budget_entry *e, const sf_case *c)
 {
     memset(e, 0, sizeof *e);
-    sf_keytab t = sf_case_spec_keytab(&c->spec);
-    e->alpha = sf_keys_was_set(&t, "alpha") ? c->spec.alpha : 0;
+    e->alpha = declared_alpha(c);
     e->kind = c->spec.pin_seed ? SF_BUDGET_PINNED : e->alpha > 0 ? SF_BUDGET_STAT
             : c->spec.seed_proof[0] ? SF_BUDGET_SEED_PROOF : SF_BUDGET_NONE;
     e->replicate = c->spec.replicate && e->alpha > 0;
@@ -53,7 +60,7 @@ int sf_budget_suspect(const sf_case *c, const sf_result *r)
         if (row->pass)
             continue;
         if (!(row->alpha > 0)) {
-            if (c->spec.replicate && c->spec.alpha > 0)
+            if (c->spec.replicate && declared_alpha(c) > 0)
                 continue;   /* a tolerance on seed-dependent data, at the declared rate */
             return 0;   /* a failing row that is not statistical: no second chance */
         }
@@ -132,14 +139,16 @@ void sf_budget_index_section(FILE *f, const char *tier_name, const sf_outcome *o
                "*suspect* and the case is run once more on a fresh stream, failing only if that fails too; so a "
                "case spends share = (a - A) + %g A + A a, where A is the alpha of its statistical rows and a = "
                "max(alpha, A), or (a - A) a + %g A + A a when it sets `replicate` (a failure of its deterministic "
-               "rows, a tolerance on seed-dependent data at a measured rate, is confirmed on a fresh stream too); a row that compares a Bonferroni-adjusted p-value with the case's alpha counts that alpha in "
+               "rows, a tolerance on seed-dependent data at a measured rate, is confirmed on a fresh stream too); "
+               "a row that compares a Bonferroni-adjusted p-value with the case's alpha counts that alpha in "
                "full (conservative). Without the replication the same cases would spend %.3g. %zu case%s seed-proof "
                "(`seed_proof`: the tolerance holds at every seed), %zu pinned (`pin_seed`), %zu declare no random "
                "data (the false-alarm study, `make verify SEED=random REPEAT=N`, lists any that draw some). "
                "%zu case%s replicated in this run.\n\n",
             tier_name, SF_BUDGET_TIER, sum, nstat, nstat == 1 ? "" : "s",
             sum <= SF_BUDGET_TIER ? "within the budget" : "**over the budget**", SF_BUDGET_FLOOR, SF_BUDGET_FLOOR,
-            SF_BUDGET_FLOOR, sum_alpha, nproof, nproof == 1 ? " is" : "s are", npin, nnone, nrep, nrep == 1 ? " was" : "s were");
+            SF_BUDGET_FLOOR, sum_alpha, nproof, nproof == 1 ? " is" : "s are", npin, nnone, nrep,
+            nrep == 1 ? " was" : "s were");
     fprintf(f, "| case | budget | statistical rows | their alpha (sum) | case alpha | share | replicated |\n"
                "|---|---|---|---|---|---|---|\n");
     for (size_t i = 0; i < n; i++) {
@@ -147,8 +156,8 @@ void sf_budget_index_section(FILE *f, const char *tier_name, const sf_outcome *o
         if (e->kind != SF_BUDGET_STAT)
             continue;
         fprintf(f, "| [%s](%s/%s) | %s%s | %zu | %.3g | %.3g | %.3g | %s |\n", o[i].id, o[i].id, page,
-                kind_text(e->kind), e->replicate ? " (replicate)" : "", e->nstat, e->row_alpha, e->alpha, sf_budget_share(e),
-                e->replicated ? "**yes**" : "no");
+                kind_text(e->kind), e->replicate ? " (replicate)" : "", e->nstat, e->row_alpha, e->alpha,
+                sf_budget_share(e), e->replicated ? "**yes**" : "no");
     }
     fprintf(f, "| **sum** | | | | %.3g | **%.3g** (budget %g) | |\n", sum_alpha, sum, SF_BUDGET_TIER);
 }
