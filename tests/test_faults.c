@@ -673,6 +673,16 @@ static void sweeps(void **state)
     assert_true(walk("sf_sweep_run", sweep, &s, SF_SUCCESS, 0) > 20);
     assert_true(walk("sf_sweep_run_target", sweep2, &s, SF_SUCCESS, 0) > 20);
     assert_true(walk("sf_sweep_run_cv", sweep_cv, &s, SF_SUCCESS, 0) > 20);
+}
+
+/* the two-level sweep's walk: a test of its own, the longest (about half
+ * of the program's time), so scripts/valgrind.sh can run it beside the
+ * rest (SF_TEST_ONLY / SF_TEST_SKIP, main below) */
+static void sweeps_mlmc(void **state)
+{
+    (void)state;
+    sf_scene s;
+    scene_sweep(&s);
     assert_true(walk("sf_sweep_run_mlmc", sweep_mlmc, &s, SF_SUCCESS, 0) > 20);
 }
 
@@ -815,6 +825,13 @@ static void misc(void **state)
 int main(void)
 {
     sf_init();
+    /* a subset, by CMocka's name patterns: scripts/valgrind.sh splits the
+     * walks over two processes */
+    const char *only = getenv("SF_TEST_ONLY"), *skip = getenv("SF_TEST_SKIP");
+    if (only)
+        cmocka_set_test_filter(only);
+    if (skip)
+        cmocka_set_skip_filter(skip);
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(cof_allocs),
         cmocka_unit_test(cof_plans),
@@ -824,6 +841,7 @@ int main(void)
         cmocka_unit_test(oscillator),
         cmocka_unit_test(montecarlo),
         cmocka_unit_test(sweeps),
+        cmocka_unit_test(sweeps_mlmc),
         cmocka_unit_test(unum_sweeps),
         cmocka_unit_test(sobol),
         cmocka_unit_test(misc),
