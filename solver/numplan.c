@@ -284,7 +284,7 @@ double sf_plan_strip_points(const sf_scene *s, double h)
  * SF_PLAN_CELLAVG_CELLS; 0 when that is above SF_PLAN_CELLAVG_MAX_CELLS. */
 static size_t cell_average_cells(double l_over_R, double cv, double tq)
 {
-    double n = ceil(32 * sqrt(cv * fmax(CA_K * l_over_R, CA_0) / tq));
+    double n = ceil(32 * sqrt(sf_numplan_err_cell(l_over_R, cv, 32) / tq)); /* err_cell ~ 1/n^2 */
     n = fmax(n, SF_PLAN_CELLAVG_CELLS);
     return n <= SF_PLAN_CELLAVG_MAX_CELLS ? (size_t)n : 0;
 }
