@@ -8,7 +8,9 @@
 #     differ: each is on the drift page, and the run still exits 0;
 #  4. a case that now fails against a baseline where it passed: exit 1,
 #     "to FAIL" on the page;
-#  5. a missing or foreign baseline is bad input (exit 2).
+#  5. a missing or foreign baseline is bad input (exit 2);
+#  6. a comparison whose fields form no QoI (tests/checks/no-qoi.md) fails
+#     on its count of fields compared, with all its data finite.
 # A seeded code defect that moves a metric is scripts/drift-test.sh.
 set -u
 bin=${1:-build/slipfield}
@@ -113,5 +115,13 @@ rc=$?; [ $rc -eq 2 ] && ok "a missing baseline: exit 2" || bad "a missing baseli
 echo '{"cases": []}' > "$work/foreign.json"
 "$bin" verify --reports "$work/f" --baseline "$work/foreign.json" $cases > /dev/null 2>&1
 rc=$?; [ $rc -eq 2 ] && ok "a JSON file that is not a results.json: exit 2" || bad "a foreign baseline exits $rc"
+"$bin" verify --reports "$work/nq" tests/checks/no-qoi.md > "$work/nq.out" 2>&1
+rc=$?
+if [ $rc -eq 1 ] && grep -q "FAIL  checks/no-qoi .*0 compared" "$work/nq.out" &&
+   grep -q "| non-finite values .* | 0 | 0 | .* | yes |" "$work/nq/checks/no-qoi/report.md"; then
+    ok "fields with no QoI: the comparison fails on its count, its data finite"
+else
+    bad "fields with no QoI: exit $rc, $(head -c 300 "$work/nq.out")"
+fi
 echo "results: $pass passed, $fail failed"
 [ $fail -eq 0 ]

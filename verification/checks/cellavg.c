@@ -632,7 +632,8 @@ static int vs_point(const sf_case *c, sf_result *r, int plan)
                    "predicted (plan) | achieved (RMS) | worst realisation |\n|---|---|---|---|---|---|---|",
                 tiles ? "tiles of white noise, generated as the window follows the disc" : "circulant strip", s0->cells,
                 s0->rtol, n);
-    int rc = SF_SUCCESS;
+    int rc = SF_SUCCESS, short_k = 0;
+    size_t kd = 0;   /* values of the sweep compared */
     for (size_t k = 0; k < K && !rc; k++) {
         sf_scene sc;
         sf_numplan pl;
@@ -641,37 +642,68 @@ static int vs_point(const sf_case *c, sf_result *r, int plan)
         if (rc)
             break;
         double box = 2 * sc.R / (double)sc.cells;
+        double lr = by_lr ? c->spec.sweep.v[k] : sc.l / sc.R;
+        x[k] = c->spec.sweep.v[k];
+        pred[k] = plan ? pl.err_total : sf_numplan_err_cell(lr, sc.mu_std / sc.mu_mean, sc.cells);
         sf_cof_plan *cp;
         char err[256] = "";
         if ((rc = sf_cof_plan_alloc(&sp[L - 1], &cp, err, sizeof err))) {
             sf_note(r, "**Cannot plan the fine field at %s = %g:** %s", lab, c->spec.sweep.v[k], err);
             break;
         }
+        /* as in plan.c's qoi_tol check: a field on which no run forms a QoI
+         * (no complete cycle in the window: at a slow belt, a long stick)
+         * or on which the runs disagree on forming one (a cycle or a stick
+         * at the window's edge: the per-realisation QoI jumps there, at any
+         * accuracy) is replaced by the next stream, up to 4n draws, and
+         * counted in the findings */
         double e2 = 0, ew = 0, t0 = check_cpu_seconds();
-        for (size_t i = 0; i < n && !rc; i++) {
-            double qc[3];
+        size_t used = 0, none = 0, edge = 0;
+        for (size_t i = 0; used < n && i < 4 * n && !rc; i++) {
+            double qc[3], ef[2 * 3], *ei = ef, *gi = ef + 3;   /* L <= 3 */
             size_t nc;
             if ((rc = pair_runs(cp, s0->seed, i, &sc, box, 1, sp, L, qc, &nc, qr, r)))
                 break;
+            int finite = 1;
             for (size_t l = 0; l < L; l++) {
-                e[l * n + i] = check_qoi_gap_of(qc, nc, qr + 3 * l);
-                g[l * n + i] = check_qoi_gap_of(qr + 3 * l, 1, qr + 3 * (L - 1));
+                ei[l] = check_qoi_gap_of(qc, nc, qr + 3 * l);
+                gi[l] = check_qoi_gap_of(qr + 3 * l, 1, qr + 3 * (L - 1));
+                finite &= isfinite(ei[l]) && isfinite(gi[l]);
             }
-            double ei = e[(L - 1) * n + i];
-            e2 += ei * ei / (double)n;
-            ew = sf_max(ew, ei);
+            if (!finite) {
+                *(isnan(ei[L - 1]) ? &none : &edge) += 1;
+                continue;
+            }
+            for (size_t l = 0; l < L; l++) {
+                e[l * n + used] = ei[l];
+                g[l * n + used] = gi[l];
+            }
+            e2 += ei[L - 1] * ei[L - 1] / (double)n;
+            ew = sf_max(ew, ei[L - 1]);
+            used++;
         }
         sf_cof_plan_free(cp);
         if (rc)
             break;
+        if (none)
+            sf_note(r, "%s = %g: %zu realisation(s) without a complete cycle in either run replaced by the next "
+                       "streams.", lab, c->spec.sweep.v[k], none);
+        if (edge)
+            sf_note(r, "%s = %g: %zu realisation(s) on which the runs disagree on whether a QoI is formed (a cycle or "
+                       "stick at the window's edge: a jump of the per-realisation QoI, not an accuracy error) replaced "
+                       "by the next streams.", lab, c->spec.sweep.v[k], edge);
+        if (used < n) {   /* fails; no row to plot, the later values are not run */
+            check_fields_row(r, lab, c->spec.sweep.v[k], used, n);
+            short_k = 1;
+            break;
+        }
         sf_result_data(r, "QoI errors", n * L, e);
-        x[k] = c->spec.sweep.v[k];
         ach[k] = fmax(sqrt(e2), 1e-17);
         worst[k] = fmax(ew, 1e-17);
+        kd++;
         char t[224];
         const sf_scene *ref = &sp[L - 1];
         if (plan) {
-            pred[k] = pl.err_total;
             sf_note(r, "| %g | %zu | %.3g | %.2g | %zu | %.2g | %.2g | %.2g | %.2g | %.1f |", x[k], sc.cells, box / sc.l,
                     sc.rtol, ref->cells,
                     sf_numplan_err_quad(x[k], ref->mu_std / ref->mu_mean, ref->cells) + sf_numplan_err_time(ref->rtol),
@@ -694,8 +726,6 @@ static int vs_point(const sf_case *c, sf_result *r, int plan)
                 sf_check_le(r, t, ach[k] / pred[k], 1);
             }
         } else {
-            double lr = by_lr ? x[k] : sc.l / sc.R;
-            pred[k] = sf_numplan_err_cell(lr, sc.mu_std / sc.mu_mean, sc.cells);
             sf_note(r, "| %g | %.3g | %.3g | %zu | %.2g | %.2g | %.2g |", lr, sc.mu_std / sc.mu_mean,
                     box / sc.l, ref->cells, pred[k], ach[k], worst[k]);
             if (stat) {   /* the RMS over a few fields is itself random: test it, at alpha */
@@ -709,6 +739,7 @@ static int vs_point(const sf_case *c, sf_result *r, int plan)
                 sf_check_le(r, t, ach[k] / pred[k], c->spec.tolerance);
             }
         }
+        check_fields_row(r, lab, c->spec.sweep.v[k], used, n);
         if (L > 1) {
             sf_note(r, "\nl/R = %g, the reference's convergence on the same fields (rtol %.2g): RMS over the %zu "
                        "realisations.\n\n| rings | cell / l | reference's predicted error | RMS error of the plan's run "
@@ -731,7 +762,7 @@ static int vs_point(const sf_case *c, sf_result *r, int plan)
             }
         }
     }
-    if (!rc) {
+    if (!rc) {   /* short of fields at some value: the values before it, and its prediction */
         char xl[96];
         const char *u = sf_scene_key_unit(c->spec.sweep_param);
         snprintf(xl, sizeof xl, "%s [%s]", lab, by_lr || !u || !strcmp(u, "1") ? "-" : u);
@@ -740,9 +771,11 @@ static int vs_point(const sf_case *c, sf_result *r, int plan)
                                          : "Cell-average model vs point model, same fine field",
                                     xl, "relative QoI difference [-]");
         sf_plot_log(p, 1, 1);
-        sf_plot_series(p, "achieved (RMS over realisations)", SF_STYLE_LINESPOINTS, K, x, ach);
-        sf_plot_series(p, "worst realisation", SF_STYLE_POINTS, K, x, worst);
-        sf_plot_series(p, "predicted by the plan", SF_STYLE_LINESPOINTS, K, x, pred);
+        if (kd) {
+            sf_plot_series(p, "achieved (RMS over realisations)", SF_STYLE_LINESPOINTS, kd, x, ach);
+            sf_plot_series(p, "worst realisation", SF_STYLE_POINTS, kd, x, worst);
+        }
+        sf_plot_series(p, "predicted by the plan", SF_STYLE_LINESPOINTS, kd + (size_t)short_k, x, pred);
         if (plan)
             sf_plot_hline(p, "qoi_tol", s0->qoi_tol);
         else

@@ -444,6 +444,15 @@ double check_qoi_gap_of(const double q[3], size_t ncycles, const double qref[3])
     return e;
 }
 
+void check_fields_row(sf_result *r, const char *lab, double x, size_t used, size_t n)
+{
+    char t[160], found[96];
+    snprintf(t, sizeof t, "%s = %g: realisations with a QoI in every run, at least %zu (of at most %zu drawn)", lab, x,
+             n, 4 * n);
+    snprintf(found, sizeof found, "%zu compared", used);
+    sf_check_true(r, t, used >= n, found);
+}
+
 int check_qoi_gap(const sf_scene *s, const sf_cof *cof, const sf_scene *sref, const sf_cof *cref, double *gap,
                   sf_result *r)
 {

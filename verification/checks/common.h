@@ -164,6 +164,12 @@ int check_qoi_gap(const sf_scene *s, const sf_cof *cof, const sf_scene *sref, co
 int check_qoi_run(const sf_scene *s, const sf_cof *cof, double q[3], size_t *ncycles, sf_result *r);
 double check_qoi_gap_of(const double q[3], size_t ncycles, const double qref[3]);
 
+/* The row of a comparison that replaces fields without a comparable QoI by
+ * the next streams: at least n of the (at most 4n) fields drawn compared.
+ * A requirement met or not (sf_check_true), not a margin: at used = n it is
+ * not "near the edge". */
+void check_fields_row(sf_result *r, const char *lab, double x, size_t used, size_t n);
+
 /* A sweep point's statistics of each QoI (its values, in their units:
  * sf_sweep_point.stat, num) recorded for results.json and the report's
  * sweep table (result.h: sf_sweep_row). */
