@@ -46,7 +46,15 @@ typedef int attempt_fn(void *ctx);
  * the number of allocations the call makes. */
 static long walk(const char *what, attempt_fn *f, void *ctx, int ok, int also)
 {
-    for (long k = 0;; k++) {
+    /* SF_WALK_PART=i/n: fail only the allocations k = i mod n (one of n
+     * processes that share a long walk: scripts/valgrind.sh) */
+    long part = 0, parts = 1, walked = 0;
+    const char *wp = getenv("SF_WALK_PART");
+    if (wp && (sscanf(wp, "%ld/%ld", &part, &parts) != 2 || parts < 1 || part < 0 || part >= parts)) {
+        print_error("SF_WALK_PART=%s: expected i/n with 0 <= i < n\n", wp);
+        fail();
+    }
+    for (long k = part;; k += parts) {
         sf_fault_arm(k);
         int rc = f(ctx);
         int fired = sf_fault_fired();
@@ -57,9 +65,14 @@ static long walk(const char *what, attempt_fn *f, void *ctx, int ok, int also)
                 print_error("%s: %ld allocations, no failure injected, returned %d (expected %d)\n", what, n, rc, ok);
                 fail();
             }
-            print_message("%s: %ld allocation-failure paths walked\n", what, k);
-            return k;
+            if (parts > 1)
+                print_message("%s: %ld of %ld allocation-failure paths walked (part %ld of %ld)\n", what, walked, n,
+                              part, parts);
+            else
+                print_message("%s: %ld allocation-failure paths walked\n", what, n);
+            return n;   /* the allocations of a run without a failure: k, when every k is walked */
         }
+        walked++;
         if (rc != SF_ENOMEM && !(also && rc == also)) {
             print_error("%s: allocation %ld of %ld failed, returned %d (%s), expected SF_ENOMEM\n", what, k, n, rc,
                         sf_strerror(rc));
