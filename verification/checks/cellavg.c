@@ -604,7 +604,9 @@ static int vs_point(const sf_case *c, sf_result *r, int plan)
     }
     sf_keytab kt = sf_case_spec_keytab(&c->spec);
     int stat = n >= 2 && sf_keys_was_set(&kt, "alpha");
-    double arow = c->spec.alpha / (double)(2 * K);   /* Bonferroni over the RMS tests */
+    /* Bonferroni over the RMS tests: two per sweep value (qoi_tol and the
+     * prediction) for the plan, one (the prediction) for the comparison */
+    double arow = c->spec.alpha / (double)((plan ? 2 : 1) * K);
     int tiles = s0->cof_generator == SF_COFGEN_TILES;
     double *x = check_alloc(K * sizeof *x), *ach = check_alloc(K * sizeof *ach);
     double *worst = check_alloc(K * sizeof *worst), *pred = check_alloc(K * sizeof *pred);
