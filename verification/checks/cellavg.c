@@ -666,15 +666,14 @@ static int vs_point(const sf_case *c, sf_result *r, int plan)
             size_t nc;
             if ((rc = pair_runs(cp, s0->seed, i, &sc, box, 1, sp, L, qc, &nc, qr, r)))
                 break;
-            /* by whether each run forms a QoI (PV_x defined: an oscillation
-             * in the window, with or without stick), not by the gaps: an
-             * infinite gap between runs that both form one (q_ref = 0,
-             * q != 0) is a disagreement, and fails the case below */
-            size_t formed = !isnan(qc[0]);
+            /* by the runs' kinds (common.h: no QoI, no stick, a stick), not
+             * by the gaps: an infinite gap between runs of one kind is a
+             * disagreement, and fails the case below */
+            int kind = check_qoi_kind(qc), differ = 0;
             for (size_t l = 0; l < L; l++)
-                formed += !isnan(qr[3 * l]);
-            if (formed < L + 1) {
-                *(formed ? &edge : &none) += 1;
+                differ |= check_qoi_kind(qr + 3 * l) != kind;
+            if (differ || !kind) {
+                *(differ ? &edge : &none) += 1;
                 continue;
             }
             for (size_t l = 0; l < L; l++) {

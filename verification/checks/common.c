@@ -453,14 +453,21 @@ void check_fields_row(sf_result *r, const char *lab, double x, size_t used, size
     sf_check_true(r, t, used >= n, found);
 }
 
+int check_qoi_kind(const double q[3])
+{
+    return isnan(q[0]) ? 0 : q[2] > 0 ? 2 : 1;
+}
+
 int check_qoi_gap(const sf_scene *s, const sf_cof *cof, const sf_scene *sref, const sf_cof *cref, double *gap,
-                  sf_result *r)
+                  int *kinds_differ, sf_result *r)
 {
     double qa[3], qb[3];
     size_t nb;
     int rc = check_qoi_run(sref, cref, qa, NULL, r);
-    if (!rc && !(rc = check_qoi_run(s, cof, qb, &nb, r)))
+    if (!rc && !(rc = check_qoi_run(s, cof, qb, &nb, r))) {
         *gap = check_qoi_gap_of(qb, nb, qa);
+        *kinds_differ = check_qoi_kind(qa) != check_qoi_kind(qb);
+    }
     return rc;
 }
 

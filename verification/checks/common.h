@@ -157,7 +157,14 @@ sf_cof *check_cellavg_filter(const sf_cof *fine, const sf_scene *sc, double box,
  * such a realisation fails a gate instead of passing it; NaN when neither
  * has one (no QoI to compare: a caller may draw another realisation). */
 int check_qoi_gap(const sf_scene *s, const sf_cof *cof, const sf_scene *sref, const sf_cof *cref, double *gap,
-                  sf_result *r);
+                  int *kinds_differ, sf_result *r);
+/* What a run's QoI triple shows, to pair the runs of one field: 0 no QoI
+ * (PV_x undefined: no oscillation in the window), 1 QoIs without a stick
+ * (stick fraction 0), 2 QoIs with one.  Runs of a field whose kinds differ
+ * sit on a jump of the per-realisation QoI (a cycle or a stick that starts
+ * or ends at the window's edge in one run only): their gap measures no
+ * accuracy, and the comparisons replace the field by the next stream. */
+int check_qoi_kind(const double q[3]);
 /* One run's PV_x, PV_F and stick fraction (its complete cycles in
  * *ncycles, when not NULL), and the gap of check_qoi_gap of such a run
  * (q, ncycles) against a reference triple. */
