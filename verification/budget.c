@@ -9,18 +9,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* The alpha the case declares (0 when it sets none: the key's default is
- * not a declaration). */
-static double declared_alpha(const sf_case *c)
-{
-    sf_keytab t = sf_case_spec_keytab(&c->spec);
-    return sf_keys_was_set(&t, "alpha") ? c->spec.alpha : 0;
-}
-
 void sf_budget_entry_init(sf_budget_entry *e, const sf_case *c)
 {
     memset(e, 0, sizeof *e);
-    e->alpha = declared_alpha(c);
+    e->alpha = sf_case_spec_declared_alpha(&c->spec);
     e->kind = c->spec.pin_seed ? SF_BUDGET_PINNED : e->alpha > 0 ? SF_BUDGET_STAT
             : c->spec.seed_proof[0] ? SF_BUDGET_SEED_PROOF : SF_BUDGET_NONE;
     e->replicate = c->spec.replicate && e->alpha > 0;
@@ -60,7 +52,7 @@ int sf_budget_suspect(const sf_case *c, const sf_result *r)
         if (row->pass)
             continue;
         if (!(row->alpha > 0)) {
-            if (c->spec.replicate && declared_alpha(c) > 0)
+            if (c->spec.replicate && sf_case_spec_declared_alpha(&c->spec) > 0)
                 continue;   /* a tolerance on seed-dependent data, at the declared rate */
             return 0;   /* a failing row that is not statistical: no second chance */
         }

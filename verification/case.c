@@ -235,6 +235,12 @@ sf_keytab sf_case_spec_keytab(const sf_case_spec *v)
     return (sf_keytab){ spec_keys, NSPEC, (void *)v, (unsigned char *)v->set };
 }
 
+double sf_case_spec_declared_alpha(const sf_case_spec *v)
+{
+    sf_keytab t = sf_case_spec_keytab(v);
+    return sf_keys_was_set(&t, "alpha") ? v->alpha : 0;
+}
+
 void sf_case_spec_default(sf_case_spec *v)
 {
     memset(v, 0, sizeof *v);

@@ -56,6 +56,9 @@ typedef struct {
 
 /* The case keys' table bound to *v (const cast away as sf_scene_keytab). */
 sf_keytab sf_case_spec_keytab(const sf_case_spec *v);
+/* The alpha the case declares: 0 when it sets none (the key's default is
+ * not a declaration; the false-alarm budget counts declared alphas). */
+double sf_case_spec_declared_alpha(const sf_case_spec *v);
 /* Defaults: no check, tolerance 0, alpha 1e-3, tier quick, vv code. */
 void sf_case_spec_default(sf_case_spec *v);
 /* Parse a case's scene block: the scene's keys into *s, the case's into

@@ -602,8 +602,7 @@ static int vs_point(const sf_case *c, sf_result *r, int plan)
                           "and samples.");
         return SF_EINVAL;
     }
-    sf_keytab kt = sf_case_spec_keytab(&c->spec);
-    int stat = n >= 2 && sf_keys_was_set(&kt, "alpha");
+    int stat = n >= 2 && sf_case_spec_declared_alpha(&c->spec) > 0;
     /* Bonferroni over the RMS tests: two per sweep value (qoi_tol and the
      * prediction) for the plan, one (the prediction) for the comparison */
     double arow = c->spec.alpha / (double)((plan ? 2 : 1) * K);
@@ -662,7 +661,7 @@ static int vs_point(const sf_case *c, sf_result *r, int plan)
         double e2 = 0, ew = 0, t0 = check_cpu_seconds();
         size_t used = 0, none = 0, edge = 0;
         for (size_t i = 0; used < n && i < 4 * n && !rc; i++) {
-            double qc[3], ef[2 * 3], *ei = ef, *gi = ef + 3;   /* L <= 3 */
+            double qc[3];
             size_t nc;
             if ((rc = pair_runs(cp, s0->seed, i, &sc, box, 1, sp, L, qc, &nc, qr, r)))
                 break;
@@ -677,14 +676,12 @@ static int vs_point(const sf_case *c, sf_result *r, int plan)
                 continue;
             }
             for (size_t l = 0; l < L; l++) {
-                ei[l] = check_qoi_gap_of(qc, nc, qr + 3 * l);
-                gi[l] = check_qoi_gap_of(qr + 3 * l, 1, qr + 3 * (L - 1));
-                e[l * n + used] = ei[l];
-                g[l * n + used] = gi[l];
+                e[l * n + used] = check_qoi_gap_of(qc, nc, qr + 3 * l);
+                g[l * n + used] = check_qoi_gap_of(qr + 3 * l, 1, qr + 3 * (L - 1));
             }
-            e2 += ei[L - 1] * ei[L - 1] / (double)n;
-            ew = sf_max(ew, ei[L - 1]);
-            used++;
+            double ei = e[(L - 1) * n + used++];
+            e2 += ei * ei / (double)n;
+            ew = sf_max(ew, ei);
         }
         sf_cof_plan_free(cp);
         if (rc)
