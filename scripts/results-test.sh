@@ -10,7 +10,10 @@
 #     "to FAIL" on the page;
 #  5. a missing or foreign baseline is bad input (exit 2);
 #  6. a comparison whose fields form no QoI (tests/checks/no-qoi.md) fails
-#     on its count of fields compared, with all its data finite.
+#     on its count of fields compared, with all its data finite;
+#  7. a stored-data case (cases/plan/cellavg-calibration.md) without its
+#     data, or with a malformed line, ends in ERROR naming the file (and
+#     line), and its stored data halved fail it.
 # A seeded code defect that moves a metric is scripts/drift-test.sh.
 set -u
 bin=${1:-build/slipfield}
@@ -123,5 +126,25 @@ if [ $rc -eq 1 ] && grep -q "FAIL  checks/no-qoi .*0 compared" "$work/nq.out" &&
 else
     bad "fields with no QoI: exit $rc, $(head -c 300 "$work/nq.out")"
 fi
+# 7. stored data: missing, malformed, and too small an err_cell for them
+mkdir -p "$work/st/plan"
+cp cases/plan/cellavg-calibration.md "$work/st/plan/"
+stored() {  # stored NAME 'grep pattern for its console line' 'and for its report' WHAT
+    "$bin" verify --reports "$work/$1" "$work/st/plan/cellavg-calibration.md" > "$work/$1.out" 2>&1
+    rc=$?
+    if [ $rc -eq 1 ] && grep -q "$2" "$work/$1.out" && grep -q "$3" "$work/$1/plan/cellavg-calibration/report.md"; then
+        ok "$4"
+    else
+        bad "$4: exit $rc, $(head -c 300 "$work/$1.out")"
+    fi
+}
+stored st1 "ERROR plan/cellavg-calibration" "Stored data missing.*cellavg-calibration.tsv" \
+    "stored data missing: ERROR naming the file"
+{ head -6 cases/plan/cellavg-calibration.tsv; printf '1\t1\t0.02\tx\t0.1\t0.5\t40\t110\t20\t1\t0.001\n'; } > "$work/st/plan/cellavg-calibration.tsv"
+stored st2 "ERROR plan/cellavg-calibration" "cellavg-calibration.tsv:7: not a stored field" \
+    "a malformed stored line: ERROR naming file and line"
+awk -F'\t' 'BEGIN { OFS = "\t" } /^[0-9]/ { $11 = 2 * $11 } { print }' cases/plan/cellavg-calibration.tsv > "$work/st/plan/cellavg-calibration.tsv"
+stored st3 "FAIL  plan/cellavg-calibration .*err_cell" "largest RMS over a point's fields / err_cell | 1.50" \
+    "stored errors doubled (err_cell halved, seen from the data): FAIL"
 echo "results: $pass passed, $fail failed"
 [ $fail -eq 0 ]

@@ -123,9 +123,14 @@ enum { SF_PLAN_CHOSEN = 0, SF_PLAN_SCENE = 1 };   /* where a setting came from *
  * and by sf_numplan_make (which sets the quadrature): one rule. */
 int sf_numplan_cell_average(const sf_scene *s, size_t *cells, double *box);
 
-/* The predicted relative QoI error of the cell-average model at l/R with
- * coefficient of variation cv and `cells` per diameter (numplan.c). */
-double sf_numplan_err_cell(double l_over_R, double cv, size_t cells);
+/* The predicted relative QoI error of the cell-average model for scene s
+ * (its l/R, the COF's CV, its belt-speed number) at `cells` per diameter
+ * (numplan.c has the measurements). */
+double sf_numplan_err_cell(const sf_scene *s, size_t cells);
+/* The belt-speed number v_b omega_n / (mu_mean g), omega_n = sqrt(k/m)
+ * (dimensionless): the belt speed against the slip-speed scale of a
+ * stick-slip cycle; 0.071 at Table 1. */
+double sf_numplan_belt_number(const sf_scene *s);
 
 typedef struct {
     double qoi_tol;          /* requested relative QoI error [-] */

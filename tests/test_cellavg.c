@@ -54,14 +54,26 @@ static void plan_choice(void **state)
     s.l = 0.005;   /* l/R = 0.01: cell averages, the fewest cells whose predicted error is within 3/4 qoi_tol */
     assert_int_equal(sf_numplan_cell_average(&s, &n, &box), 1);
     assert_true(n >= SF_PLAN_CELLAVG_CELLS && n <= SF_PLAN_CELLAVG_MAX_CELLS);
-    assert_true(sf_numplan_err_cell(s.l / s.R, s.mu_std / s.mu_mean, n) <= 0.75 * s.qoi_tol);
+    assert_true(sf_numplan_err_cell(&s, n) <= 0.75 * s.qoi_tol);
     assert_true(n == SF_PLAN_CELLAVG_CELLS ||
-                sf_numplan_err_cell(s.l / s.R, s.mu_std / s.mu_mean, n - 1) > 0.75 * s.qoi_tol);
+                sf_numplan_err_cell(&s, n - 1) > 0.75 * s.qoi_tol);
     assert_close(box, 2 * s.R / (double)n, 1e-15);
     s.l = 0.0158;   /* l/R = 0.0316: more cells */
     assert_int_equal(sf_numplan_cell_average(&s, &n, &box), 1);
     assert_true(n > SF_PLAN_CELLAVG_CELLS && n <= SF_PLAN_CELLAVG_MAX_CELLS);
-    assert_true(sf_numplan_err_cell(s.l / s.R, s.mu_std / s.mu_mean, n) <= 0.75 * s.qoi_tol);
+    assert_true(sf_numplan_err_cell(&s, n) <= 0.75 * s.qoi_tol);
+    /* the belt-speed number and the CV scale err_cell from their knees on (numplan.c): Table 1 sits below both */
+    sf_scene t = s;
+    double e1 = sf_numplan_err_cell(&t, 40);
+    assert_true(sf_numplan_belt_number(&t) < 0.08);
+    t.v_b = 0.4 / sqrt(3.0) * 0.5 * 9.81 * 0.4;   /* beta = 0.16: twice the knee */
+    assert_close(sf_numplan_belt_number(&t), 0.16, 1e-12);
+    assert_close(sf_numplan_err_cell(&t, 40), 2 * e1, 1e-12);
+    t = s;
+    t.mu_std = 0.4;   /* CV 0.8: 4x the CV, 4^1.3 the error */
+    assert_close(sf_numplan_err_cell(&t, 40), e1 * pow(4.0, 1.3), 1e-12);
+    t.mu_std = 0.025;   /* CV 0.05: linear below the knee */
+    assert_close(sf_numplan_err_cell(&t, 40), e1 / 4, 1e-12);
     s.T = 2000;   /* the effective strip over [0, T] above 2^22 points: the point model's tiles */
     assert_int_equal(sf_numplan_cell_average(&s, NULL, NULL), 0);
     s.T = 100;
@@ -315,11 +327,10 @@ static void cellavg_plan_edges(void **state)
     assert_int_equal(sf_numplan_make(&s, 1, &pl, err, sizeof err), SF_SUCCESS);
     assert_int_equal(pl.cof_model_from, SF_PLAN_CHOSEN);
     /* the fewest cells whose predicted error is within 3/4 of qoi_tol (59 at Table 1 since the model's floor) */
-    double cv = s.mu_std / s.mu_mean;
     assert_in_range(pl.cells, SF_PLAN_CELLAVG_CELLS, SF_PLAN_CELLAVG_MAX_CELLS);
-    assert_true(sf_numplan_err_cell(0.01, cv, pl.cells) <= 0.75 * s.qoi_tol);
+    assert_true(sf_numplan_err_cell(&s, pl.cells) <= 0.75 * s.qoi_tol);
     if (pl.cells > SF_PLAN_CELLAVG_CELLS)
-        assert_true(sf_numplan_err_cell(0.01, cv, pl.cells - 1) > 0.75 * s.qoi_tol);
+        assert_true(sf_numplan_err_cell(&s, pl.cells - 1) > 0.75 * s.qoi_tol);
     assert_string_equal(pl.warning, "");
     f = tmpfile();
     assert_non_null(f);

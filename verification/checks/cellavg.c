@@ -611,6 +611,7 @@ static int vs_point(const sf_case *c, sf_result *r, int plan)
     double *worst = check_alloc(K * sizeof *worst), *pred = check_alloc(K * sizeof *pred);
     double *e = check_alloc(n * L * sizeof *e), *g = check_alloc(n * L * sizeof *g);
     double *qr = check_alloc(3 * L * sizeof *qr);
+    double *ek = check_alloc(K * n * sizeof *ek);   /* each value's per-realisation errors, listed after the table */
     sf_scene *sp = check_alloc(L * sizeof *sp);
     if (plan)
         sf_note(r, "On the same fine field (point model, spacing l/8, %s): the reference is the point model's polar "
@@ -645,7 +646,7 @@ static int vs_point(const sf_case *c, sf_result *r, int plan)
         double box = 2 * sc.R / (double)sc.cells;
         double lr = by_lr ? c->spec.sweep.v[k] : sc.l / sc.R;
         x[k] = c->spec.sweep.v[k];
-        pred[k] = plan ? pl.err_total : sf_numplan_err_cell(lr, sc.mu_std / sc.mu_mean, sc.cells);
+        pred[k] = plan ? pl.err_total : sf_numplan_err_cell(&sc, sc.cells);
         sf_cof_plan *cp;
         char err[256] = "";
         if ((rc = sf_cof_plan_alloc(&sp[L - 1], &cp, err, sizeof err))) {
@@ -699,6 +700,7 @@ static int vs_point(const sf_case *c, sf_result *r, int plan)
             break;
         }
         sf_result_data(r, "QoI errors", n * L, e);
+        memcpy(ek + k * n, e + (L - 1) * n, n * sizeof *ek);
         ach[k] = fmax(sqrt(e2), 1e-17);
         worst[k] = fmax(ew, 1e-17);
         kd++;
@@ -782,11 +784,22 @@ static int vs_point(const sf_case *c, sf_result *r, int plan)
         else
             sf_plot_hline(p, "qoi_tol = 1e-3 (default)", 1e-3);
     }
+    if (!plan && kd) {   /* the per-field data behind each RMS (scripts/cellavg-data.sh stores them) */
+        sf_note(r, "\nEach realisation's error, in the order of the streams used:\n");
+        for (size_t k = 0; k < kd; k++) {
+            char line[1024];
+            int o = snprintf(line, sizeof line, "- %s = %g:", lab, x[k]);
+            for (size_t i = 0; i < n && o > 0 && (size_t)o < sizeof line; i++)
+                o += snprintf(line + o, sizeof line - (size_t)o, " %.4g", ek[k * n + i]);
+            sf_note(r, "%s", line);
+        }
+    }
     free(x);
     free(ach);
     free(worst);
     free(pred);
     free(e);
+    free(ek);
     free(g);
     free(qr);
     free(sp);
@@ -795,6 +808,148 @@ static int vs_point(const sf_case *c, sf_result *r, int plan)
 
 static int chk_vs_point(const sf_case *c, sf_result *r) { return vs_point(c, r, 0); }
 static int chk_plan_qoi_tol(const sf_case *c, sf_result *r) { return vs_point(c, r, 1); }
+
+/* ---- cellavg_calibration: sf_numplan_err_cell against stored, held-out
+ * measurements (scripts/cellavg-data.sh: cellavg_vs_point's per-field
+ * errors at the points of a fixed design, seeds never used to fit the
+ * model).  No solve: each stored error is divided by err_cell recomputed
+ * for its point's scene.  err_cell is a bound on the RMS over fields at
+ * each point (the plan picks its cells from it), so the gate is the
+ * largest point's RMS / err_cell <= tolerance, exact on the fixed data
+ * (pin_seed); the report adds each point's one-sided t test of H0 'RMS <=
+ * err_cell' (how far a regeneration at other seeds may move it) and the
+ * pooled ratio.  Columns: point, seed, l/R, CV, v_b, mean COF, cells,
+ * rings, T, field, error. */
+enum { CC_COLS = 11, CC_PT = 0, CC_LR = 2, CC_CV = 3, CC_VB = 4, CC_MU = 5, CC_CELLS = 6, CC_RINGS = 7, CC_T = 8,
+       CC_ERR = 10 };
+#define CC_MAX_PTS 64
+
+static int chk_calibration(const sf_case *c, sf_result *r)
+{
+    char path[600], hdr[1200] = "";
+    if (check_data_path(c, path, sizeof path))
+        return SF_EINVAL;
+    FILE *f = fopen(path, "r");
+    if (!f) {
+        sf_note(r, "**Stored data missing:** cannot read %s: regenerate it with `sh scripts/cellavg-data.sh holdout > %s`.",
+                path, path);
+        return SF_EIO;
+    }
+    size_t cap = 0, lineno = 0, rows = 0, npt = 0, nonfinite = 0, undecided = 0;
+    char *line = NULL;
+    while (getline(&line, &cap, f) > 0)
+        rows++;
+    rewind(f);
+    double *z = check_alloc((rows + 1) * sizeof *z);   /* (error / err_cell)^2 per stored field */
+    double *e = check_alloc((rows + 1) * sizeof *e);
+    struct { double v[CC_COLS], pred, ref, beta; size_t first, n; } pt[CC_MAX_PTS];
+    int rc = SF_SUCCESS;
+    rows = 0;
+    while (getline(&line, &cap, f) > 0) {
+        lineno++;
+        line[strcspn(line, "\r\n")] = 0;
+        if (line[0] == '#') {
+            size_t k = strlen(hdr);
+            snprintf(hdr + k, sizeof hdr - k, "> %s\n", line + 1 + (line[1] == ' '));
+            undecided += !strncmp(line, "# point ", 8);   /* no field formed a QoI there (scripts/cellavg-data.sh) */
+            continue;
+        }
+        if (!line[0] || !strncmp(line, "point\t", 6))
+            continue;
+        double v[CC_COLS];
+        size_t nf = 0;
+        int ok = 1;
+        for (char *t = line, *tab; ok && t; t = tab ? tab + 1 : NULL, nf++) {
+            if ((tab = strchr(t, '\t')))
+                *tab = 0;
+            ok = nf < CC_COLS && (check_parse_num(t, &v[nf]) || (nf == CC_ERR && (v[nf] = NAN, 1)));
+        }
+        ok = ok && nf == CC_COLS && v[CC_LR] > 0 && v[CC_CV] > 0 && v[CC_CELLS] >= 1;
+        if (ok && (!npt || v[CC_PT] != pt[npt - 1].v[CC_PT])) {   /* a new point */
+            ok = npt < CC_MAX_PTS;
+            if (ok) {
+                memcpy(pt[npt].v, v, sizeof v);
+                sf_scene sc = c->scene;   /* the point's scene: its l/R, CV, v_b and mean COF on the case's */
+                sc.l = v[CC_LR] * sc.R;
+                sc.mu_mean = v[CC_MU];
+                sc.mu_std = v[CC_CV] * v[CC_MU];
+                sc.v_b = v[CC_VB];
+                pt[npt].pred = sf_numplan_err_cell(&sc, (size_t)v[CC_CELLS]);
+                pt[npt].beta = sf_numplan_belt_number(&sc);
+                pt[npt].ref = sf_numplan_err_quad(v[CC_LR], v[CC_CV], (size_t)v[CC_RINGS]) + sf_numplan_err_time(1e-9);
+                pt[npt].first = rows;
+                pt[npt++].n = 0;
+            }
+        }
+        if (!ok) {
+            sf_note(r, "**%s:%zu: not a stored field** (%d tab-separated numbers, a positive l/R and CV, at most %d "
+                       "points, each point's fields together).", path, lineno, CC_COLS, CC_MAX_PTS);
+            rc = SF_EPARSE;
+            break;
+        }
+        e[rows] = v[CC_ERR];
+        z[rows] = pow(v[CC_ERR] / pt[npt - 1].pred, 2);
+        nonfinite += !isfinite(z[rows]);
+        rows++;
+        pt[npt - 1].n++;
+    }
+    free(line);
+    fclose(f);
+    if (!rc) {
+        sf_note(r, "Stored data: %s, %zu fields at %zu design points; %zu more points without a field that forms a "
+                   "QoI in the window (its header and comments:)\n\n%s", path, rows, npt, undecided, hdr);
+        sf_check_le(r, "stored fields with a non-finite error", (double)nonfinite, 0);
+        sf_check_ge(r, "stored fields", (double)rows, 2);
+    }
+    if (!rc && rows >= 2 && !nonfinite) {
+        double tol = c->spec.tolerance, worst = 0;
+        double *xs = check_alloc(npt * sizeof *xs), *ys = check_alloc(npt * sizeof *ys);
+        size_t kw = 0, few = 0;
+        sf_note(r, "\nPer point: err_cell recomputed by the code under test; the reference's own predicted error "
+                   "(the point model at its rings, rtol 1e-9: sf_numplan_err_quad + err_time) adds to the measured "
+                   "difference; p: the one-sided t test of H0 'RMS <= err_cell' on the squares (not a gate: the "
+                   "chance, were the model exact at the point, of data this far above it).\n\n| point | l/R | CV | "
+                   "v_b [m/s] | mean COF | beta | cells | rings | T [s] | fields | err_cell | reference's predicted "
+                   "error | RMS error | RMS / err_cell | worst field | p |\n"
+                   "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|");
+        for (size_t k = 0; k < npt; k++) {
+            const double *v = pt[k].v, *ek = e + pt[k].first;
+            double m2 = 0, w = 0;
+            for (size_t i = 0; i < pt[k].n; i++) {
+                m2 += ek[i] * ek[i] / (double)pt[k].n;
+                w = fmax(w, ek[i]);
+            }
+            few += pt[k].n < 2;
+            xs[k] = pt[k].pred;
+            ys[k] = fmax(sqrt(m2), 1e-17);
+            if (sqrt(m2) / pt[k].pred > worst) {
+                worst = sqrt(m2) / pt[k].pred;
+                kw = k;
+            }
+            sf_note(r, "| %g | %g | %g | %g | %g | %.3f | %g | %g | %g | %zu | %.3g | %.2g | %.3g | %.3f | %.3g | %.2g |",
+                    v[CC_PT], v[CC_LR], v[CC_CV], v[CC_VB], v[CC_MU], pt[k].beta, v[CC_CELLS], v[CC_RINGS], v[CC_T],
+                    pt[k].n, pt[k].pred, pt[k].ref, sqrt(m2), sqrt(m2) / pt[k].pred, w,
+                    pt[k].n >= 2 ? rms_le_p(ek, pt[k].n, pt[k].pred) : 1.0);
+        }
+        double mz = gsl_stats_mean(z, 1, rows), sez = gsl_stats_sd(z, 1, rows) / sqrt((double)rows);
+        sf_note(r, "\nPooled over the %zu fields (not a gate: err_cell bounds each point, not their average): mean "
+                   "(error / err_cell)^2 = %.3f (standard error %.3f), RMS ratio %.3f. The worst point, %g, sets the "
+                   "verdict: an err_cell scaled by any factor below %.3f fails on these data.", rows, mz, sez,
+                sqrt(mz), pt[kw].v[CC_PT], worst / tol);
+        sf_check_le(r, "design points with fewer than 2 stored fields", (double)few, 0);
+        sf_check_le(r, "largest RMS over a point's fields / err_cell", worst, tol);
+        double lo, hi;
+        gsl_stats_minmax(&lo, &hi, xs, 1, npt);
+        check_plot_vs_predicted(r, "cellavg-calibration", "Cell-average error: predicted against measured (held out)",
+                                "err_cell, predicted [-]", "RMS relative QoI error over a point's fields [-]",
+                                "stored design points", "measured = predicted", npt, xs, ys, lo / 2, hi * 2);
+        free(xs);
+        free(ys);
+    }
+    free(z);
+    free(e);
+    return rc;
+}
 
 /* ---- the cell-average model's effect on the QoI statistics, paired on
  * the same fine fields: per l/R and QoI, the ratio of the means and of the
@@ -1026,6 +1181,8 @@ const sf_check_def sf_checks_cellavg[] = {
     { "cellavg_qoi_stats", chk_qoi_stats,
       "the cell-average model's effect on the QoI means and stds, paired with the point model on the same fine fields" },
     { "cellavg_distribution", chk_distribution, "QoI distributions of the cell-average and point models (KS)" },
+    { "cellavg_calibration", chk_calibration,
+      "the cell-average error model err_cell against stored held-out measurements (no solve)" },
     { "cellavg_sampler_dft", chk_sampler_dft, "the real sampler's draws against the direct sum that defines them" },
     { NULL, NULL, NULL },
 };

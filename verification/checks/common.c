@@ -578,3 +578,30 @@ void check_plot_sweep_bands(sf_plot *p, size_t K, const double *x, const sf_swee
     }
     free(m); free(lo); free(hi); free(bx);
 }
+
+int check_data_path(const sf_case *c, char *buf, size_t len)
+{
+    size_t n = strlen(c->path);
+    if (n < 3 || strcmp(c->path + n - 3, ".md"))
+        return SF_EINVAL;
+    snprintf(buf, len, "%.*s.tsv", (int)(n - 3), c->path);
+    return SF_SUCCESS;
+}
+
+int check_parse_num(const char *t, double *x)
+{
+    char *end;
+    *x = strtod(t, &end);
+    return end != t && !*end;
+}
+
+void check_plot_vs_predicted(sf_result *r, const char *name, const char *title, const char *xlabel,
+                             const char *ylabel, const char *what, const char *line, size_t n, const double *pred,
+                             const double *meas, double lo, double hi)
+{
+    sf_plot *p = sf_result_plot(r, name, title, xlabel, ylabel);
+    sf_plot_log(p, 1, 1);
+    sf_plot_series(p, what, SF_STYLE_POINTS, n, pred, meas);
+    double dx[2] = { lo, hi };
+    sf_plot_series(p, line, SF_STYLE_LINES, 2, dx, dx);
+}

@@ -216,4 +216,18 @@ double check_sweep_row_off(const sf_sweep_row *row, const double *x, size_t stri
  * three QoIs, on plot p. */
 void check_plot_sweep_bands(sf_plot *p, size_t K, const double *x, const sf_sweep_point *pt);
 
+/* A log-log scatter of measured against predicted errors on a new plot
+ * of r (points labelled `what`), with the identity line (labelled `line`)
+ * over [lo, hi]: how a case shows an error model against its
+ * measurements. */
+void check_plot_vs_predicted(sf_result *r, const char *name, const char *title, const char *xlabel,
+                             const char *ylabel, const char *what, const char *line, size_t n, const double *pred,
+                             const double *meas, double lo, double hi);
+
+/* A stored-data case's file beside it: NAME.tsv for NAME.md (SF_EINVAL
+ * when the case's path does not end in .md). */
+int check_data_path(const sf_case *c, char *buf, size_t len);
+/* t is a whole number (strtod's syntax, nothing after it): 1, and *x. */
+int check_parse_num(const char *t, double *x);
+
 #endif

@@ -501,17 +501,13 @@ static int chk_design(const sf_case *c, sf_result *r)
         if (n_cell)
             sf_note(r, "The plan took the cell averages at %zu of the %zu points (their references: the point model on "
                        "the fine field the averages are taken from).", n_cell, n);
-        sf_plot *p = sf_result_plot(r, "design_scatter", "Accuracy plan on a space-filling design: predicted vs achieved",
-                                    "predicted relative QoI error (the plan's err_pred, a 95% bound) [-]", "achieved relative QoI error [-]");
-        sf_plot_log(p, 1, 1);
-        sf_plot_series(p, "(point, QoI) pairs", SF_STYLE_POINTS, npairs, pred, ach);
-        double dx[2] = { 1e-6, 1e-1 };
-        sf_plot_series(p, "achieved = predicted", SF_STYLE_LINES, 2, dx, dx);
-        sf_plot *q = sf_result_plot(r, "design_unum", "A-posteriori u_num (companion solve) vs achieved error",
-                                    "u_num / |Q| (coarser companion, Fs = 3) [-]", "achieved relative QoI error [-]");
-        sf_plot_log(q, 1, 1);
-        sf_plot_series(q, "(point, QoI) pairs", SF_STYLE_POINTS, npairs, un, ach);
-        sf_plot_series(q, "achieved = u_num", SF_STYLE_LINES, 2, dx, dx);
+        check_plot_vs_predicted(r, "design_scatter", "Accuracy plan on a space-filling design: predicted vs achieved",
+                                "predicted relative QoI error (the plan's err_pred, a 95% bound) [-]",
+                                "achieved relative QoI error [-]", "(point, QoI) pairs", "achieved = predicted", npairs,
+                                pred, ach, 1e-6, 1e-1);
+        check_plot_vs_predicted(r, "design_unum", "A-posteriori u_num (companion solve) vs achieved error",
+                                "u_num / |Q| (coarser companion, Fs = 3) [-]", "achieved relative QoI error [-]",
+                                "(point, QoI) pairs", "achieved = u_num", npairs, un, ach, 1e-6, 1e-1);
     }
     free(ratio);
     free(pred);
@@ -546,23 +542,6 @@ typedef struct {
     double *rings_st, *rings_now;    /* per row: the stored and the planned rings */
 } stored_data;
 
-static int parse_num(const char *t, double *x)
-{
-    char *end;
-    *x = strtod(t, &end);
-    return end != t && !*end;
-}
-
-/* the data file beside the case: NAME.tsv for NAME.md */
-static int data_path(const sf_case *c, char *buf, size_t len)
-{
-    size_t n = strlen(c->path);
-    if (n < 3 || strcmp(c->path + n - 3, ".md"))
-        return SF_EINVAL;
-    snprintf(buf, len, "%.*s.tsv", (int)(n - 3), c->path);
-    return SF_SUCCESS;
-}
-
 static void stored_free(stored_data *d)
 {
     free(d->pt);
@@ -578,7 +557,7 @@ static int stored_read(const sf_case *c, sf_result *r, const double *lo, const d
     const sf_scene *s0 = &c->scene;
     size_t n = s0->samples;
     memset(d, 0, sizeof *d);
-    if (data_path(c, d->path, sizeof d->path))
+    if (check_data_path(c, d->path, sizeof d->path))
         return SF_EINVAL;
     FILE *f = fopen(d->path, "r");
     if (!f) {
@@ -623,7 +602,7 @@ static int stored_read(const sf_case *c, sf_result *r, const double *lo, const d
         size_t i = ok ? (size_t)strtoul(fld[EC_I], &end2, 10) : 0;
         ok = ok && !*end1 && !*end2 && i < n;
         for (int k = 0; k < NQ && ok; k++)
-            ok = parse_num(fld[EC_A + k], &a[k]) && parse_num(fld[EC_E + k], &e[k]);
+            ok = check_parse_num(fld[EC_A + k], &a[k]) && check_parse_num(fld[EC_E + k], &e[k]);
         if (!ok) {
             sf_note(r, "**%s:%zu: not a stored design point** (%d tab-separated columns wanted, a point index "
                        "below the design's %zu samples, numbers in the error columns).", d->path, lineno, ECOLS, n);
@@ -803,13 +782,10 @@ static int errmodel_body(const sf_case *c, sf_result *r, const double *lo, const
                 bin_n[b] ? (double)bin_over[b] / (double)bin_n[b] : 0, b + 1 == ERR_LR_BINS ? "\n" : "");
     }
     report_sharpness(r, ratio, pts);
-    sf_plot *pp = sf_result_plot(r, "errmodel_scatter", "Predicted vs stored achieved error (held-out seeds)",
-                                 "predicted relative QoI error err_pred (the plan's 95% bound) [-]",
-                                 "achieved relative QoI error of the point (stored) [-]");
-    sf_plot_log(pp, 1, 1);
-    sf_plot_series(pp, "decided design points", SF_STYLE_POINTS, pts, pred, ach);
-    double dx[2] = { 1e-5, 2e-2 };
-    sf_plot_series(pp, "achieved = predicted", SF_STYLE_LINES, 2, dx, dx);
+    check_plot_vs_predicted(r, "errmodel_scatter", "Predicted vs stored achieved error (held-out seeds)",
+                            "predicted relative QoI error err_pred (the plan's 95% bound) [-]",
+                            "achieved relative QoI error of the point (stored) [-]", "decided design points",
+                            "achieved = predicted", pts, pred, ach, 1e-5, 2e-2);
     free(pred);
     free(ach);
     free(ratio);
