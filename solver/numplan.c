@@ -270,7 +270,7 @@ static double err_pred(sf_numplan *p, const sf_scene *s)
  * same start as the calibration) measured the error growing as CV^1.3,
  * not CV.  Model: the above times max(1, CV / 0.2)^0.3 max(1, beta / 0.08)
  * (both factors 1 at Table 1, whose plans are unchanged); on the fit's
- * data RMS / model 0.40-0.83, pooled 0.52.  cases/plan/cellavg-calibration
+ * data RMS / model 0.21-0.83, pooled 0.51.  cases/plan/cellavg-calibration
  * holds it to 16 held-out points (scripts/cellavg-data.sh 'holdout'). */
 #define CA_CV0 0.2
 #define CA_CVP 0.3
