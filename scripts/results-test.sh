@@ -13,7 +13,7 @@
 #     on its count of fields compared, with all its data finite;
 #  7. a stored-data case (cases/plan/cellavg-calibration.md) without its
 #     data, or with a malformed line, ends in ERROR naming the file (and
-#     line), and its stored data halved fail it.
+#     line); its stored errors doubled, or one of them NaN, fail it.
 # A seeded code defect that moves a metric is scripts/drift-test.sh.
 set -u
 bin=${1:-build/slipfield}
@@ -146,5 +146,8 @@ stored st2 "ERROR plan/cellavg-calibration" "cellavg-calibration.tsv:7: not a st
 awk -F'\t' 'BEGIN { OFS = "\t" } /^[0-9]/ { $11 = 2 * $11 } { print }' cases/plan/cellavg-calibration.tsv > "$work/st/plan/cellavg-calibration.tsv"
 stored st3 "FAIL  plan/cellavg-calibration .*err_cell" "largest RMS over a point's fields / err_cell | 1.50" \
     "stored errors doubled (err_cell halved, seen from the data): FAIL"
+awk -F'\t' 'BEGIN { OFS = "\t" } /^[0-9]/ && !d { $11 = "nan"; d = 1 } { print }' cases/plan/cellavg-calibration.tsv > "$work/st/plan/cellavg-calibration.tsv"
+stored st4 "FAIL  plan/cellavg-calibration" "stored fields with a non-finite error | 1 " \
+    "a non-finite stored error: FAIL on its count"
 echo "results: $pass passed, $fail failed"
 [ $fail -eq 0 ]
