@@ -122,8 +122,9 @@ static inline double sf_cof_view_eval_on(const sf_cof_view *v, double xb, double
     return sf_cof_view_cell(v, (int)sx, (int)sy, sx, sy);
 }
 
-/* The same look-up for 8 points at once (AVX-512): cof_x512.h, a private
- * header of the solver (not installed: no SIMD in the public headers). */
+/* The same look-up for 8 points at once (AVX-512) or 4 (AVX2): cof_x512.h,
+ * a private header of the solver (not installed: no SIMD in the public
+ * headers). */
 
 /* 1 when every point within r (per axis) of (xb, yb) lies on the grid
  * with a grid cell to spare (the spare cell absorbs the rounding of the

@@ -1,5 +1,6 @@
 /* slipfield (private, not installed): the AVX-512 look-up of the COF view
- * at 8 points, for the wrench's on-grid loop (contact.c) and its bench.
+ * at 8 points and the AVX2 one at 4, for the wrench's on-grid loops
+ * (contact.c) and its bench.
  * Kept out of cof.h so that the installed headers need no <immintrin.h>
  * and no target attributes (a C++ or non-x86 consumer includes them). */
 #ifndef SF_COF_X512_H
@@ -46,6 +47,36 @@ __attribute__((target("avx512f"), always_inline)) static inline __m512d sf_cof_v
     __m512d a = _mm512_add_pd(g0, _mm512_mul_pd(tx, _mm512_sub_pd(g1, g0)));
     __m512d b = _mm512_add_pd(g2, _mm512_mul_pd(tx, _mm512_sub_pd(g3, g2)));
     return _mm512_add_pd(a, _mm512_mul_pd(ty, _mm512_sub_pd(b, a)));
+}
+
+/* The same look-up for 4 points, AVX2 (the wrench's on-grid loop on
+ * machines without AVX-512): lane by lane sf_cof_view_eval_on's
+ * operations in its order (the same bits; target avx2 without fma, so no
+ * product is fused into a sum), the nodal values by pairs as above:
+ * (g[k], g[k+1]) and (g[k+m], g[k+m+1]) as two 16-byte loads per point,
+ * sorted into g0..g3 by two unpacks per row. */
+__attribute__((target("avx2"), always_inline)) static inline __m256d sf_cof_pairs2(const double *g, const int *k)
+{
+    return _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(g + k[0])), _mm_loadu_pd(g + k[2]), 1);
+}
+
+__attribute__((target("avx2"), always_inline)) static inline __m256d sf_cof_view_eval_on4(const sf_cof_view *v,
+                                                                                         __m256d xb, __m256d yb)
+{
+    __m256d sx = _mm256_mul_pd(_mm256_sub_pd(xb, _mm256_set1_pd(v->x0)), _mm256_set1_pd(v->idx));
+    __m256d sy = _mm256_mul_pd(_mm256_sub_pd(yb, _mm256_set1_pd(v->y0)), _mm256_set1_pd(v->idy));
+    __m128i i = _mm256_cvttpd_epi32(sx), j = _mm256_cvttpd_epi32(sy);   /* (int): truncation */
+    __m256d tx = _mm256_sub_pd(sx, _mm256_cvtepi32_pd(i)), ty = _mm256_sub_pd(sy, _mm256_cvtepi32_pd(j));
+    int k[4];
+    _mm_storeu_si128((__m128i *)(void *)k, _mm_add_epi32(i, _mm_mullo_epi32(_mm_set1_epi32(v->m), j)));
+    const double *g = v->grid, *h = v->grid + v->m;
+    __m256d e0 = sf_cof_pairs2(g, k), o0 = sf_cof_pairs2(g, k + 1);   /* points 0 2 and 1 3 */
+    __m256d e1 = sf_cof_pairs2(h, k), o1 = sf_cof_pairs2(h, k + 1);
+    __m256d g0 = _mm256_unpacklo_pd(e0, o0), g1 = _mm256_unpackhi_pd(e0, o0);   /* points 0..3 in order */
+    __m256d g2 = _mm256_unpacklo_pd(e1, o1), g3 = _mm256_unpackhi_pd(e1, o1);
+    __m256d a = _mm256_add_pd(g0, _mm256_mul_pd(tx, _mm256_sub_pd(g1, g0)));
+    __m256d b = _mm256_add_pd(g2, _mm256_mul_pd(tx, _mm256_sub_pd(g3, g2)));
+    return _mm256_add_pd(a, _mm256_mul_pd(ty, _mm256_sub_pd(b, a)));
 }
 #endif
 

@@ -354,6 +354,51 @@ __attribute__((target("avx512f"))) static double wrench_on_grid_x512(const sf_co
     _mm512_storeu_pd(ls2, s2m);
     return lanes_finish(c, cell_on_grid, &v, 0, xb, yb, us, vs, ws, b, lfx, lfy, ltq, ls2, out, acc, outside);
 }
+
+/* The on-grid loop in AVX2 registers (machines without AVX-512): a block
+ * of SF_LANES = 8 cells as two halves of 4, lanes 0-3 and 4-7 each in its
+ * own registers, so cell i still goes to lane i mod 8 and the bits are
+ * wrench_lanes' (tests/test_contact.c); the look-up by pairs
+ * (sf_cof_view_eval_on4), the partial sums in registers, the tail and the
+ * sum as in wrench_lanes. */
+__attribute__((target("avx2"))) static double wrench_on_grid_x256(const sf_contact *c, const sf_cof_view *cv,
+                                                                  double xb, double yb, double us, double vs,
+                                                                  double ws, double acc[3], double *outside)
+{
+    const sf_cof_view v = *cv;
+    const double *prx = c->rx, *pry = c->ry, *pwt = c->wt;
+    const __m256d vus = _mm256_set1_pd(us), vvs = _mm256_set1_pd(vs), vws = _mm256_set1_pd(ws);
+    const __m256d vxb = _mm256_set1_pd(xb), vyb = _mm256_set1_pd(yb), one = _mm256_set1_pd(1.0);
+    __m256d fx[2], fy[2], tq[2], s2m[2];
+    for (int h = 0; h < 2; h++) {
+        fx[h] = fy[h] = tq[h] = _mm256_setzero_pd();
+        s2m[h] = _mm256_set1_pd(INFINITY);
+    }
+    size_t b = 0, n = c->n;
+    for (; b + SF_LANES <= n; b += SF_LANES)
+        for (int h = 0; h < 2; h++) {
+            size_t o = b + 4 * (size_t)h;
+            __m256d rx = _mm256_loadu_pd(prx + o), ry = _mm256_loadu_pd(pry + o), wt = _mm256_loadu_pd(pwt + o);
+            __m256d mu = sf_cof_view_eval_on4(&v, _mm256_add_pd(vxb, rx), _mm256_add_pd(vyb, ry));
+            /* cell_sum */
+            __m256d ax = _mm256_sub_pd(vus, _mm256_mul_pd(vws, ry)), ay = _mm256_add_pd(vvs, _mm256_mul_pd(vws, rx));
+            __m256d s2 = _mm256_add_pd(_mm256_mul_pd(ax, ax), _mm256_mul_pd(ay, ay));
+            __m256d r = _mm256_div_pd(one, _mm256_sqrt_pd(s2)), a = _mm256_mul_pd(wt, mu);
+            __m256d dx = _mm256_mul_pd(ax, r), dy = _mm256_mul_pd(ay, r);
+            fx[h] = _mm256_sub_pd(fx[h], _mm256_mul_pd(a, dx));
+            fy[h] = _mm256_sub_pd(fy[h], _mm256_mul_pd(a, dy));
+            tq[h] = _mm256_sub_pd(tq[h], _mm256_mul_pd(a, _mm256_sub_pd(_mm256_mul_pd(rx, dy), _mm256_mul_pd(ry, dx))));
+            s2m[h] = _mm256_min_pd(s2, s2m[h]);   /* s2 < s2m ? s2 : s2m */
+        }
+    double lfx[SF_LANES], lfy[SF_LANES], ltq[SF_LANES], ls2[SF_LANES], out[SF_LANES] = { 0 };
+    for (int h = 0; h < 2; h++) {
+        _mm256_storeu_pd(lfx + 4 * h, fx[h]);
+        _mm256_storeu_pd(lfy + 4 * h, fy[h]);
+        _mm256_storeu_pd(ltq + 4 * h, tq[h]);
+        _mm256_storeu_pd(ls2 + 4 * h, s2m[h]);
+    }
+    return lanes_finish(c, cell_on_grid, &v, 0, xb, yb, us, vs, ws, b, lfx, lfy, ltq, ls2, out, acc, outside);
+}
 #endif
 
 /* Scaled speeds.  A cell at offset (rx, ry), |rx|, |ry| <= R, slips at
@@ -399,6 +444,7 @@ int sf_contact_wrench(const sf_contact *c, double xb, double yb,
         else if (sf_cof_view_holds(&cv, xb, yb, c->spec.R))   /* the common case: no clamp */
 #ifdef SF_COF_VIEW_X512
             s2min = __builtin_cpu_supports("avx512f") ? wrench_on_grid_x512(c, &cv, xb, yb, us, vs, ws, acc, &outside)
+                  : __builtin_cpu_supports("avx2")    ? wrench_on_grid_x256(c, &cv, xb, yb, us, vs, ws, acc, &outside)
                                                       : wrench_lanes(c, cell_on_grid, &cv, mu0, xb, yb, us, vs, ws, acc,
                                                                      &outside);
 #else
