@@ -22,6 +22,24 @@
 #define SF_COF_VIEW_X512 1
 #include <immintrin.h>
 
+/* What the AVX-512 and AVX2 look-ups share, written once for the width
+ * whose intrinsics' prefix is P (_mm512_ or _mm256_) and vector type T:
+ * the grid coordinates (sf_cof_view_gx, _gy) of the points (xb, yb), and
+ * the bilinear tail of sf_cof_view_cell from the row pairs e0, o0 (row j:
+ * (g[k], g[k+1]) of the even and the odd points) and e1, o1 (row j + 1),
+ * which two unpacks per row sort into g0..g3 point by point. */
+#define SF_COF_GRID_XY(P, T, v, xb, yb, sx, sy)                                     \
+    T sx = P##mul_pd(P##sub_pd(xb, P##set1_pd((v)->x0)), P##set1_pd((v)->idx));    \
+    T sy = P##mul_pd(P##sub_pd(yb, P##set1_pd((v)->y0)), P##set1_pd((v)->idy))
+#define SF_COF_BILINEAR(P, T, e0, o0, e1, o1, tx, ty, out)                          \
+    do {                                                                           \
+        T g0_ = P##unpacklo_pd(e0, o0), g1_ = P##unpackhi_pd(e0, o0);              \
+        T g2_ = P##unpacklo_pd(e1, o1), g3_ = P##unpackhi_pd(e1, o1);              \
+        T a_ = P##add_pd(g0_, P##mul_pd(tx, P##sub_pd(g1_, g0_)));                 \
+        T b_ = P##add_pd(g2_, P##mul_pd(tx, P##sub_pd(g3_, g2_)));                 \
+        (out) = P##add_pd(a_, P##mul_pd(ty, P##sub_pd(b_, a_)));                   \
+    } while (0)
+
 /* rows (g[k], g[k+1]) of points p0, p2, p4, p6 in one register */
 __attribute__((target("avx512f"), always_inline)) static inline __m512d sf_cof_pairs4(const double *g, const int *k)
 {
@@ -33,20 +51,16 @@ __attribute__((target("avx512f"), always_inline)) static inline __m512d sf_cof_p
 __attribute__((target("avx512f"), always_inline)) static inline __m512d sf_cof_view_eval_on8(const sf_cof_view *v,
                                                                                             __m512d xb, __m512d yb)
 {
-    __m512d sx = _mm512_mul_pd(_mm512_sub_pd(xb, _mm512_set1_pd(v->x0)), _mm512_set1_pd(v->idx));
-    __m512d sy = _mm512_mul_pd(_mm512_sub_pd(yb, _mm512_set1_pd(v->y0)), _mm512_set1_pd(v->idy));
+    SF_COF_GRID_XY(_mm512_, __m512d, v, xb, yb, sx, sy);
     __m256i i = _mm512_cvttpd_epi32(sx), j = _mm512_cvttpd_epi32(sy);   /* (int): truncation */
     __m512d tx = _mm512_sub_pd(sx, _mm512_cvtepi32_pd(i)), ty = _mm512_sub_pd(sy, _mm512_cvtepi32_pd(j));
     int k[8];
     _mm256_storeu_si256((__m256i *)(void *)k, _mm256_add_epi32(i, _mm256_mullo_epi32(_mm256_set1_epi32(v->m), j)));
     const double *g = v->grid, *h = v->grid + v->m;
     __m512d e0 = sf_cof_pairs4(g, k), o0 = sf_cof_pairs4(g, k + 1);   /* points 0 2 4 6 and 1 3 5 7 */
-    __m512d e1 = sf_cof_pairs4(h, k), o1 = sf_cof_pairs4(h, k + 1);
-    __m512d g0 = _mm512_unpacklo_pd(e0, o0), g1 = _mm512_unpackhi_pd(e0, o0);   /* points 0..7 in order */
-    __m512d g2 = _mm512_unpacklo_pd(e1, o1), g3 = _mm512_unpackhi_pd(e1, o1);
-    __m512d a = _mm512_add_pd(g0, _mm512_mul_pd(tx, _mm512_sub_pd(g1, g0)));
-    __m512d b = _mm512_add_pd(g2, _mm512_mul_pd(tx, _mm512_sub_pd(g3, g2)));
-    return _mm512_add_pd(a, _mm512_mul_pd(ty, _mm512_sub_pd(b, a)));
+    __m512d e1 = sf_cof_pairs4(h, k), o1 = sf_cof_pairs4(h, k + 1), mu;
+    SF_COF_BILINEAR(_mm512_, __m512d, e0, o0, e1, o1, tx, ty, mu);
+    return mu;
 }
 
 /* The same look-up for 4 points, AVX2 (the wrench's on-grid loop on
@@ -63,20 +77,16 @@ __attribute__((target("avx2"), always_inline)) static inline __m256d sf_cof_pair
 __attribute__((target("avx2"), always_inline)) static inline __m256d sf_cof_view_eval_on4(const sf_cof_view *v,
                                                                                          __m256d xb, __m256d yb)
 {
-    __m256d sx = _mm256_mul_pd(_mm256_sub_pd(xb, _mm256_set1_pd(v->x0)), _mm256_set1_pd(v->idx));
-    __m256d sy = _mm256_mul_pd(_mm256_sub_pd(yb, _mm256_set1_pd(v->y0)), _mm256_set1_pd(v->idy));
+    SF_COF_GRID_XY(_mm256_, __m256d, v, xb, yb, sx, sy);
     __m128i i = _mm256_cvttpd_epi32(sx), j = _mm256_cvttpd_epi32(sy);   /* (int): truncation */
     __m256d tx = _mm256_sub_pd(sx, _mm256_cvtepi32_pd(i)), ty = _mm256_sub_pd(sy, _mm256_cvtepi32_pd(j));
     int k[4];
     _mm_storeu_si128((__m128i *)(void *)k, _mm_add_epi32(i, _mm_mullo_epi32(_mm_set1_epi32(v->m), j)));
     const double *g = v->grid, *h = v->grid + v->m;
     __m256d e0 = sf_cof_pairs2(g, k), o0 = sf_cof_pairs2(g, k + 1);   /* points 0 2 and 1 3 */
-    __m256d e1 = sf_cof_pairs2(h, k), o1 = sf_cof_pairs2(h, k + 1);
-    __m256d g0 = _mm256_unpacklo_pd(e0, o0), g1 = _mm256_unpackhi_pd(e0, o0);   /* points 0..3 in order */
-    __m256d g2 = _mm256_unpacklo_pd(e1, o1), g3 = _mm256_unpackhi_pd(e1, o1);
-    __m256d a = _mm256_add_pd(g0, _mm256_mul_pd(tx, _mm256_sub_pd(g1, g0)));
-    __m256d b = _mm256_add_pd(g2, _mm256_mul_pd(tx, _mm256_sub_pd(g3, g2)));
-    return _mm256_add_pd(a, _mm256_mul_pd(ty, _mm256_sub_pd(b, a)));
+    __m256d e1 = sf_cof_pairs2(h, k), o1 = sf_cof_pairs2(h, k + 1), mu;
+    SF_COF_BILINEAR(_mm256_, __m256d, e0, o0, e1, o1, tx, ty, mu);
+    return mu;
 }
 #endif
 

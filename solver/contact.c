@@ -316,6 +316,30 @@ __attribute__((always_inline)) static inline double wrench_lanes(const sf_contac
 }
 
 #ifdef SF_COF_VIEW_X512
+/* cell_sum at the width whose intrinsics' prefix is P (_mm512_ or
+ * _mm256_), vector type T: the cells at offsets (rx, ry), weights wt and
+ * COF mu into the partial sums fx, fy, tq and the smallest s2, s2m, lane
+ * by lane in cell_sum's order (vus, vvs, vws and one in scope). */
+#define SF_CELL_SUM_V(P, T, rx, ry, wt, mu, fx, fy, tq, s2m)                                      \
+    do {                                                                                         \
+        T ax_ = P##sub_pd(vus, P##mul_pd(vws, ry)), ay_ = P##add_pd(vvs, P##mul_pd(vws, rx));    \
+        T s2_ = P##add_pd(P##mul_pd(ax_, ax_), P##mul_pd(ay_, ay_));                             \
+        T r_ = P##div_pd(one, P##sqrt_pd(s2_)), a_ = P##mul_pd(wt, mu);                          \
+        T dx_ = P##mul_pd(ax_, r_), dy_ = P##mul_pd(ay_, r_);                                    \
+        (fx) = P##sub_pd(fx, P##mul_pd(a_, dx_));                                                \
+        (fy) = P##sub_pd(fy, P##mul_pd(a_, dy_));                                                \
+        (tq) = P##sub_pd(tq, P##mul_pd(a_, P##sub_pd(P##mul_pd(rx, dy_), P##mul_pd(ry, dx_)))); \
+        (s2m) = P##min_pd(s2_, s2m);   /* s2 < s2m ? s2 : s2m */                                 \
+    } while (0)
+
+/* The on-grid loops' set-up at width P, T: the view in registers, the
+ * cells' arrays, the scaled speeds and the belt point broadcast. */
+#define SF_ON_GRID_SETUP_V(P, T)                                                                   \
+    const sf_cof_view v = *cv;                                                                     \
+    const double *prx = c->rx, *pry = c->ry, *pwt = c->wt;                                         \
+    const T vus = P##set1_pd(us), vvs = P##set1_pd(vs), vws = P##set1_pd(ws);                      \
+    const T vxb = P##set1_pd(xb), vyb = P##set1_pd(yb), one = P##set1_pd(1.0)
+
 /* The on-grid loop in AVX-512 registers: one block of SF_LANES = 8 cells
  * per iteration, cell_on_grid's operations lane by lane in its order (the
  * same bits as wrench_lanes with cell_on_grid: tests/test_contact.c
@@ -328,24 +352,13 @@ __attribute__((target("avx512f"))) static double wrench_on_grid_x512(const sf_co
                                                                      double xb, double yb, double us, double vs,
                                                                      double ws, double acc[3], double *outside)
 {
-    const sf_cof_view v = *cv;
-    const double *prx = c->rx, *pry = c->ry, *pwt = c->wt;
-    const __m512d vus = _mm512_set1_pd(us), vvs = _mm512_set1_pd(vs), vws = _mm512_set1_pd(ws);
-    const __m512d vxb = _mm512_set1_pd(xb), vyb = _mm512_set1_pd(yb), one = _mm512_set1_pd(1.0);
+    SF_ON_GRID_SETUP_V(_mm512_, __m512d);
     __m512d fx = _mm512_setzero_pd(), fy = fx, tq = fx, s2m = _mm512_set1_pd(INFINITY);
     size_t b = 0, n = c->n;
     for (; b + SF_LANES <= n; b += SF_LANES) {
         __m512d rx = _mm512_loadu_pd(prx + b), ry = _mm512_loadu_pd(pry + b), wt = _mm512_loadu_pd(pwt + b);
         __m512d mu = sf_cof_view_eval_on8(&v, _mm512_add_pd(vxb, rx), _mm512_add_pd(vyb, ry));
-        /* cell_sum */
-        __m512d ax = _mm512_sub_pd(vus, _mm512_mul_pd(vws, ry)), ay = _mm512_add_pd(vvs, _mm512_mul_pd(vws, rx));
-        __m512d s2 = _mm512_add_pd(_mm512_mul_pd(ax, ax), _mm512_mul_pd(ay, ay));
-        __m512d r = _mm512_div_pd(one, _mm512_sqrt_pd(s2)), a = _mm512_mul_pd(wt, mu);
-        __m512d dx = _mm512_mul_pd(ax, r), dy = _mm512_mul_pd(ay, r);
-        fx = _mm512_sub_pd(fx, _mm512_mul_pd(a, dx));
-        fy = _mm512_sub_pd(fy, _mm512_mul_pd(a, dy));
-        tq = _mm512_sub_pd(tq, _mm512_mul_pd(a, _mm512_sub_pd(_mm512_mul_pd(rx, dy), _mm512_mul_pd(ry, dx))));
-        s2m = _mm512_min_pd(s2, s2m);   /* s2 < s2m ? s2 : s2m */
+        SF_CELL_SUM_V(_mm512_, __m512d, rx, ry, wt, mu, fx, fy, tq, s2m);
     }
     double lfx[SF_LANES], lfy[SF_LANES], ltq[SF_LANES], ls2[SF_LANES], out[SF_LANES] = { 0 };
     _mm512_storeu_pd(lfx, fx);
@@ -365,10 +378,7 @@ __attribute__((target("avx2"))) static double wrench_on_grid_x256(const sf_conta
                                                                   double xb, double yb, double us, double vs,
                                                                   double ws, double acc[3], double *outside)
 {
-    const sf_cof_view v = *cv;
-    const double *prx = c->rx, *pry = c->ry, *pwt = c->wt;
-    const __m256d vus = _mm256_set1_pd(us), vvs = _mm256_set1_pd(vs), vws = _mm256_set1_pd(ws);
-    const __m256d vxb = _mm256_set1_pd(xb), vyb = _mm256_set1_pd(yb), one = _mm256_set1_pd(1.0);
+    SF_ON_GRID_SETUP_V(_mm256_, __m256d);
     __m256d fx[2], fy[2], tq[2], s2m[2];
     for (int h = 0; h < 2; h++) {
         fx[h] = fy[h] = tq[h] = _mm256_setzero_pd();
@@ -380,15 +390,7 @@ __attribute__((target("avx2"))) static double wrench_on_grid_x256(const sf_conta
             size_t o = b + 4 * (size_t)h;
             __m256d rx = _mm256_loadu_pd(prx + o), ry = _mm256_loadu_pd(pry + o), wt = _mm256_loadu_pd(pwt + o);
             __m256d mu = sf_cof_view_eval_on4(&v, _mm256_add_pd(vxb, rx), _mm256_add_pd(vyb, ry));
-            /* cell_sum */
-            __m256d ax = _mm256_sub_pd(vus, _mm256_mul_pd(vws, ry)), ay = _mm256_add_pd(vvs, _mm256_mul_pd(vws, rx));
-            __m256d s2 = _mm256_add_pd(_mm256_mul_pd(ax, ax), _mm256_mul_pd(ay, ay));
-            __m256d r = _mm256_div_pd(one, _mm256_sqrt_pd(s2)), a = _mm256_mul_pd(wt, mu);
-            __m256d dx = _mm256_mul_pd(ax, r), dy = _mm256_mul_pd(ay, r);
-            fx[h] = _mm256_sub_pd(fx[h], _mm256_mul_pd(a, dx));
-            fy[h] = _mm256_sub_pd(fy[h], _mm256_mul_pd(a, dy));
-            tq[h] = _mm256_sub_pd(tq[h], _mm256_mul_pd(a, _mm256_sub_pd(_mm256_mul_pd(rx, dy), _mm256_mul_pd(ry, dx))));
-            s2m[h] = _mm256_min_pd(s2, s2m[h]);   /* s2 < s2m ? s2 : s2m */
+            SF_CELL_SUM_V(_mm256_, __m256d, rx, ry, wt, mu, fx[h], fy[h], tq[h], s2m[h]);
         }
     double lfx[SF_LANES], lfy[SF_LANES], ltq[SF_LANES], ls2[SF_LANES], out[SF_LANES] = { 0 };
     for (int h = 0; h < 2; h++) {
