@@ -53,7 +53,7 @@ static size_t oracle_nr(const sf_scene *s)
     return s->cells / 2 > 4 ? s->cells / 2 : 4;
 }
 
-enum { NQ = 7 };
+enum { NQ = 7, Q_VX = 4, Q_VY = 5 };   /* Q_VX, Q_VY: the columns vx+, vy+ */
 static const char *qname[NQ] = { "t [s]", "x [m]", "y [m]", "phi [rad]", "vx+ [m/s]", "vy+ [m/s]", "w+ [rad/s]" };
 
 /* The first transitions (up to K) of a solver run as rows of NQ values,
@@ -301,7 +301,7 @@ static int chk_ref_trajectory(const sf_case *c, sf_result *r)
         for (size_t i = 0; i < K; i++) {
             double a = Sf[NQ * i + q], b = Of[NQ * i + q];
             double di = isfinite(a) && isfinite(b) ? fabs(a - b) : INFINITY;
-            double ti = base + (q == 4 || q == 5 ? jump[i] : 0);   /* vx+, vy+ */
+            double ti = base + (q == Q_VX || q == Q_VY ? jump[i] : 0);
             if (!(di / ti <= worst)) {   /* the transition nearest its tolerance (a NaN ratio wins) */
                 worst = di / ti;
                 d = di;
@@ -313,14 +313,14 @@ static int chk_ref_trajectory(const sf_case *c, sf_result *r)
             }
         }
         char name[160];
-        if (q == 4 || q == 5)
+        if (q == Q_VX || q == Q_VY)
             snprintf(name, sizeof name, "|solver - oracle| at the worst of %zu transitions against its tolerance, %s", K,
                      qname[q]);
         else
             snprintf(name, sizeof name, "max over %zu transitions |solver - oracle|, %s", K, qname[q]);
         sf_check_le(r, name, d, tol);
         sf_note(r, "| %s | %.3g | %.3g | %.3g | %.3g | %.3g |", qname[q], d, eS, eO,
-                q == 4 || q == 5 ? jmax : 0.0, tol);
+                q == Q_VX || q == Q_VY ? jmax : 0.0, tol);
         if (q) {
             qi[q - 1] = q;
             rel[q - 1] = fmax(d / tol, 1e-16);
