@@ -396,6 +396,11 @@ sf_cof *check_case_cof(const sf_case *c, const sf_scene *s, sf_result *r)
  * disc does not accelerate) and r mu N in slip, so its range is from
  * k (x_e - d) at stick onset to k x_s at the break: 2 k d.  0 or -1 when
  * there is no cycle (d <= 0 or v_r <= 0). */
+double check_jump_speed(const sf_scene *s)
+{
+    return s->eps_lambda * sqrt(s->k / s->m) * s->R;
+}
+
 int ref_cycle(const sf_scene *s, double mu, ref_cycle1d *c)
 {
     double N = s->m * s->g;
@@ -403,7 +408,7 @@ int ref_cycle(const sf_scene *s, double mu, ref_cycle1d *c)
     c->xs = mu * N / s->k;
     c->xe = s->mu_k_ratio * mu * N / s->k;
     c->d = c->xs - c->xe;
-    c->vr = s->v_b - s->eps_lambda * c->omega * s->R;
+    c->vr = s->v_b - check_jump_speed(s);
     if (!(c->d > 0) || !(c->vr > 0))
         return -1;
     c->t_stick = 2 * c->d / s->v_b;

@@ -32,6 +32,10 @@ typedef struct {
  * common.c for the derivation.  0, or -1 when there is no cycle. */
 int ref_cycle(const sf_scene *s, double mu, ref_cycle1d *c);
 
+/* Eq. 14's jump speed eps_lambda omega_n R [m/s], the relative speed at
+ * which the disc leaves stick (the checks' own, not the solver's). */
+double check_jump_speed(const sf_scene *s);
+
 /* Power runs (issue 13): the scene the DATA GENERATOR draws from -- the
  * case's scene with the alternative of `slipfield verify --alternative`
  * applied (unchanged in a normal run).  Oracles use c->scene, never this. */

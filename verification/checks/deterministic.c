@@ -116,7 +116,7 @@ static int chk_slide_on(const sf_case *c, sf_result *r)
         sf_scene s = c->scene;
         s.dof = dof ? SF_DOF_3 : SF_DOF_1;
         double N = s.m * s.g, om = sqrt(s.k / s.m), xe = s.mu_k_ratio * s.mu_mean * N / s.k;
-        double vr = s.v_b - s.eps_lambda * om * s.R;
+        double vr = s.v_b - check_jump_speed(&s);
         char q[200];
         snprintf(q, sizeof q, "%s: slide-on scene (v_b - delta > x_e omega)", dof ? "3-DOF" : "1-D");
         sf_check_true(r, q, vr > xe * om, "v_b - delta vs x_e omega");

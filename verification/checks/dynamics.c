@@ -130,7 +130,7 @@ static void jump_row(void *ctx, const sf_osc_row *row)
          * -(cos psi, sin psi), psi = atan2(F_sy, F_sx) of the stick wrench
          * F_s = (k x, k y) (Eq. 6) at the break; spin 0 */
         const sf_scene *s = j->s;
-        double delta = s->eps_lambda * sqrt(s->k / s->m) * s->R;
+        double delta = check_jump_speed(s);
         double u = row->vx - s->v_b, v = row->vy, fx = s->k * j->prev_x, fy = s->k * j->prev_y;
         double mag = fabs(hypot(u, v) / delta - 1);
         /* angle between (u, v) and -(F_sx, F_sy): atan2(|cross|, -dot) */
@@ -183,7 +183,7 @@ static int chk_velocity_jump(const sf_case *c, sf_result *r)
      * is rounded at the scale of v_b, so u = vx - v_b (exact by Sterbenz)
      * carries up to ulp(v_b) against a length delta; cos, sin, atan2 add a
      * few ulp: bound 8 DBL_EPSILON (1 + v_b / delta), relative / radians. */
-    double delta = s0->eps_lambda * sqrt(s0->k / s0->m) * s0->R, rb14 = 8 * DBL_EPSILON * (1 + s0->v_b / delta);
+    double delta = check_jump_speed(s0), rb14 = 8 * DBL_EPSILON * (1 + s0->v_b / delta);
     sf_check_le(r, "Eq. 14 at every release: max | |(vx - v_b, vy)| / (eps_lambda omega_n R) - 1 |", a.mag_err, rb14);
     sf_check_le(r, "Eq. 14 at every release: max angle between (vx - v_b, vy) and -(k x, k y) [rad]", a.dir_err, rb14);
     sf_check_le(r, "Eq. 14 at every release: max |omega| just after it [rad/s]", a.spin_abs, 0);
@@ -196,7 +196,7 @@ static int chk_velocity_jump(const sf_case *c, sf_result *r)
                "to %.4g N at the releases). Without it the friction vanishes at the release and the spring alone "
                "accelerates the disc until a slip direction builds up: the sudden drop of Fig. 6(b). The two "
                "histories differ by %.3e m^2 s (Eq. 15) over %g s; PV_x %.6f m (jump) vs %.6f m (no jump).",
-            a.breaks, b.breaks, s0->eps_lambda * sqrt(s0->k / s0->m) * s0->R, a.minF_after_break,
+            a.breaks, b.breaks, delta, a.minF_after_break,
             a.maxF_after_break, e15, s0->T, ra.pv_x, rb.pv_x);
     sf_plot *p = sf_result_plot(r, "fig6_force", "Friction force with and without the velocity jump (Fig. 6b)",
                                 "t [s]", "Fx [N]");

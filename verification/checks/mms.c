@@ -608,7 +608,7 @@ static int chk_mms_events(const sf_case *c, sf_result *r)
                   .v_b = s->v_b, .muk_ratio = s->mu_k_ratio, .mu = s->mu_mean };
     /* the events in closed form */
     double wn = sqrt(s->k / s->m), rmax = s->mu_mean * q.N / s->k;
-    struct evtraj ev = { .v_b = s->v_b, .delta = s->eps_lambda * wn * s->R, .t1 = EV_T1, .x1 = EV_X1,
+    struct evtraj ev = { .v_b = s->v_b, .delta = check_jump_speed(s), .t1 = EV_T1, .x1 = EV_X1,
                          .y1 = EV_Y1, .phi1 = 0.1, .ca = cos(0.5), .sa = sin(0.5), .c = 1.5, .e = 0.8,
                          .wa = 0.15, .c2 = 1, .e2 = 0.5, .wc = 0.1 };
     if (!(hypot(EV_X1, EV_Y1) < rmax)) {

@@ -276,7 +276,7 @@ static int chk_ref_trajectory(const sf_case *c, sf_result *r)
     double *tt = check_alloc(K * sizeof(double)), *gap = check_alloc(K * sizeof(double));
     double qi[NQ - 1], rel[NQ - 1];   /* end-state mode: each state's gap over its tolerance */
     double *jump = check_alloc(K * sizeof(double));
-    double delta = s0->velocity_jump ? s0->eps_lambda * sqrt(s0->k / s0->m) * s0->R : 0, jmax = 0;
+    double delta = s0->velocity_jump ? check_jump_speed(s0) : 0, jmax = 0;
     for (size_t i = 0; i < K; i++) {
         /* Eq. 14 sets v+ = (v_b, 0, 0) - delta r/|r| from the position r =
          * (x, y) at the break, so the codes' post-jump velocities differ by
