@@ -1,5 +1,6 @@
 /* Unit tests: results.json (margins, the JSON of a case, non-finite values,
- * escaping) and the drift rules (verification/results.c, drift.c). */
+ * escaping), the drift rules (verification/results.c, drift.c) and the
+ * plot renderer's reading of gnuplot's messages (result.c). */
 #include "test_util.h"
 #include "drift.h"
 #include "report.h"
@@ -161,6 +162,41 @@ static void drift_rules(void **state)
     assert_false(sf_drift_time_grew(10.0, 15.0));
 }
 
+/* gnuplot runs for real: a clean plot, a warning (a failing row naming
+ * the plot and quoting gnuplot, not the echoed command) and an error (no
+ * output folder: -1, the plot named). */
+static void results_render_plots(void **state)
+{
+    (void)state;
+    char dir[] = "/tmp/sf-plot-XXXXXX", err[400], path[600];
+    assert_non_null(mkdtemp(dir));
+    const double x[] = { 1, 2, 3 }, y[] = { 1, 4, 9 }, flat[] = { 2, 2, 2 };
+    sf_result *r = sf_result_alloc();
+    sf_plot_series(sf_result_plot(r, "clean", "clean", "x [m]", "y [m]"), "y", SF_STYLE_LINES, 3, x, y);
+    sf_plot *p = sf_result_plot(r, "flat_log", "flat", "x [m]", "y [m]");
+    sf_plot_log(p, 0, 1);
+    sf_plot_series(p, "flat", SF_STYLE_LINES, 3, x, flat);
+    assert_int_equal(sf_result_render_plots(r, dir, err, sizeof err), 1);
+    assert_non_null(strstr(err, "plot flat_log: Warning: empty y range"));
+    assert_int_equal(sf_result_nrows(r), 1);
+    assert_false(sf_result_row(r, 0)->pass);
+    for (size_t i = 0; i < 2; i++) {
+        snprintf(path, sizeof path, "%s/%s.png", dir, i ? "flat_log" : "clean");
+        assert_int_equal(access(path, R_OK), 0);
+        unlink(path);
+    }
+    rmdir(dir);
+    sf_result_free(r);
+
+    r = sf_result_alloc();
+    sf_plot_series(sf_result_plot(r, "lost", "lost", "x [m]", "y [m]"), "y", SF_STYLE_LINES, 3, x, y);
+    assert_int_equal(sf_result_render_plots(r, "/nonexistent/sf-plot", err, sizeof err), -1);
+    assert_non_null(strstr(err, "gnuplot failed (status 1) on plot lost: line "));
+    assert_non_null(strstr(err, "cannot open file"));
+    assert_null(strstr(err, "set output"));
+    sf_result_free(r);
+}
+
 int main(void)
 {
     sf_init();
@@ -168,6 +204,7 @@ int main(void)
         cmocka_unit_test(results_row_margins),
         cmocka_unit_test(results_case_json),
         cmocka_unit_test(drift_rules),
+        cmocka_unit_test(results_render_plots),
     };
     return cmocka_run_group_tests_name("results", tests, NULL, NULL);
 }

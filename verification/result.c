@@ -593,20 +593,35 @@ static void write_plot(FILE *g, const sf_plot *p, const char *path, char *why, s
 static void read_messages(FILE *e, size_t nplots, char (*msg)[160])
 {
     static const char mark[] = "@sf-plot ";
+    static const char from[] = "\"/dev/stdin\" ";
     char line[512];
     size_t cur = 0;
+    int echo = 0;   /* msg[cur] was taken from the line before */
     rewind(e);
     while (fgets(line, sizeof line, e)) {
         line[strcspn(line, "\r\n")] = '\0';
         if (!strncmp(line, mark, sizeof mark - 1)) {
             cur = (size_t)strtoul(line + sizeof mark - 1, NULL, 10);
+            echo = 0;
             continue;
         }
-        /* a message about a command echoes it ("gnuplot> plot ...") and
-         * marks the place ("^") before saying what is wrong */
-        char *t = line + strspn(line, " \t^");
-        if (*t && strncmp(t, "gnuplot>", 8) && cur < nplots && !msg[cur][0])
+        /* a message about a command echoes it and marks the place ("^")
+         * on the next line before saying what is wrong ("\"/dev/stdin\"
+         * line 12: ..."): the echo is no message */
+        char *t = line + strspn(line, " \t");
+        if (*t == '^') {
+            if (echo)
+                msg[cur][0] = '\0';
+            echo = 0;
+            continue;
+        }
+        echo = 0;
+        if (!strncmp(t, from, sizeof from - 1))
+            t += sizeof from - 1;
+        if (*t && cur < nplots && !msg[cur][0]) {
             snprintf(msg[cur], sizeof msg[cur], "%s", t);
+            echo = 1;
+        }
     }
 }
 
@@ -631,13 +646,16 @@ int sf_result_render_plots(sf_result *r, const char *dir, char *err, size_t errl
         return -1;
     }
     if (pid == 0) {
-        /* gnuplot reads the script on stdin; no shell, no interpolated
-         * command line */
+        /* gnuplot reads the script from the pipe; no shell, no
+         * interpolated command line.  Named as a file, not left as
+         * stdin: gnuplot reads stdin a byte per system call (it may be a
+         * terminal), 6x slower on a trajectory's inline data, and a file
+         * stops at its first error */
         dup2(fd[0], 0);
         dup2(fileno(e), 2);
         close(fd[0]);
         close(fd[1]);
-        execlp("gnuplot", "gnuplot", (char *)NULL);
+        execlp("gnuplot", "gnuplot", "/dev/stdin", (char *)NULL);
         _exit(127);
     }
     close(fd[0]);
