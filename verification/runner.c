@@ -510,8 +510,10 @@ static int clear_reports(const char *root, const sf_case *cases, size_t n)
     return SF_EXIT_OK;
 }
 
-/* Fork case `next` into a free slot of run[].  Returns an exit status. */
-static int spawn_case(const sf_case *cases, size_t next, const verify_opts *o, job *run, sf_outcome *out)
+/* Fork case `next` into a free slot of run[] (the child frees run, out
+ * and order: the parent's).  Returns an exit status. */
+static int spawn_case(const sf_case *cases, size_t next, const verify_opts *o, job *run, sf_outcome *out,
+                      size_t *order)
 {
     int fd[2];
     if (pipe(fd) != 0) {
@@ -529,6 +531,7 @@ static int spawn_case(const sf_case *cases, size_t next, const verify_opts *o, j
            a leak check of the case process sees only its own */
         free(run);
         free(out);
+        free(order);
         run_child(&cases[next], o->root, fd[1], o->timeout, case_cpu_limit(o, &cases[next]));
     }
     close(fd[1]);
@@ -551,11 +554,46 @@ static double children_cpu(struct rusage *prev)
     return cpu;
 }
 
+typedef struct { double t; size_t k; } case_order;
+
+static int cmp_order(const void *a, const void *b)
+{
+    const case_order *x = a, *y = b;
+    return x->t > y->t ? -1 : x->t < y->t ? 1 : (x->k > y->k) - (x->k < y->k);
+}
+
+/* The order to start the cases in: longest recorded CPU time first (a
+ * case with none first of all: it may be long), so that the run does not
+ * end on one long case while the other slots idle.  Each case's seed
+ * comes from its id, so the order changes no result. */
+static size_t *start_order(const sf_case *cases, size_t n)
+{
+    case_order *t = malloc((n ? n : 1) * sizeof *t);
+    size_t *order = malloc((n ? n : 1) * sizeof *order);
+    if (!t || !order) {
+        free(t);
+        free(order);
+        return NULL;
+    }
+    for (size_t k = 0; k < n; k++) {
+        double rec = sf_casetime_recorded(cases[k].path, cases[k].id);
+        t[k] = (case_order){ rec < 0 ? INFINITY : rec, k };
+    }
+    qsort(t, n, sizeof *t, cmp_order);
+    for (size_t k = 0; k < n; k++)
+        order[k] = t[k].k;
+    free(t);
+    return order;
+}
+
 /* Run the cases, o->jobs at a time, each in its own process; out[k] gets
  * case k's outcome.  Returns an exit status. */
 static int run_cases(const sf_case *cases, size_t kept, const verify_opts *o, sf_outcome *out, job *run)
 {
     size_t next = 0, active = 0;
+    size_t *order = start_order(cases, kept);
+    if (!order)
+        return SF_EXIT_INTERNAL;
     /* CPU time of each case process (and of the gnuplot it ran): the
      * growth of RUSAGE_CHILDREN across the wait() that reaped it.  Unlike
      * wall time it hardly depends on what else the machine runs, so the
@@ -564,8 +602,10 @@ static int run_cases(const sf_case *cases, size_t kept, const verify_opts *o, sf
     getrusage(RUSAGE_CHILDREN, &ru_prev);
     while (next < kept || active > 0) {
         for (; next < kept && active < (size_t)o->jobs; next++, active++)
-            if (spawn_case(cases, next, o, run, out))
+            if (spawn_case(cases, order[next], o, run, out, order)) {
+                free(order);
                 return SF_EXIT_INTERNAL;
+            }
         int status;
         pid_t pid = wait(&status);
         if (pid < 0) {
@@ -582,6 +622,7 @@ static int run_cases(const sf_case *cases, size_t kept, const verify_opts *o, sf
                 break;
             }
     }
+    free(order);
     return SF_EXIT_OK;
 }
 
