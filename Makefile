@@ -72,12 +72,13 @@ CLI_OBJ := $(call objs,rel,$(CLI_SRC))
 TESTS := $(patsubst tests/%.c,$(BUILD)/rel/tests/%,$(TEST_SRC))
 TESTS_SAN := $(patsubst tests/%.c,$(BUILD)/san/tests/%,$(TEST_SRC))
 
-.PHONY: all deps verify test check bench mutants clean help report-test fuzz valgrind catalogue mpi-test install uninstall power layering coverage
+.PHONY: all deps verify test check bench mutants clean help report-test fuzz valgrind catalogue mpi-test install uninstall power layering coverage regressions
 .SECONDARY:
 .DEFAULT_GOAL := all
 
 help:
 	@echo "make verify   install deps if missing, build, run the quick-tier cases (TIER=full: quick and full; TIER=paper: the paper's claims at its scale, reports/paper.md; CASES='cases/field/*')"
+	@echo "make regressions  the pinned regression cases of the full tier (seeds that once failed; CI runs them) -> reports/regressions/"
 	@echo "make test     install deps if missing, run the CMocka unit tests (plain and under ASan+UBSan) and the CLI, install and report scripts"
 	@echo "make check    the same as make test"
 	@echo "make layering solver/ includes only solver/, verification/ not cli/ (also run by make test)"
@@ -209,6 +210,12 @@ ifneq ($(REPEAT),)
 else
 	@$(BUILD)/slipfield verify --jobs $(JOBS) --tier $(TIER) $(if $(SEED),--seed $(SEED)) $(if $(BASELINE),--baseline $(BASELINE)) $(VERIFY_FLAGS) $(CASES)
 endif
+
+# The full tier's pinned regression cases (a seed that once failed, kept
+# out of the quick tier for its time): CI runs them after make verify.
+REGRESSIONS = $(shell grep -lE '^pin_seed *= *true' cases/*/*.md | xargs grep -lE '^tier *= *full')
+regressions: all
+	@$(BUILD)/slipfield verify --jobs $(JOBS) --tier full --reports reports/regressions $(REGRESSIONS)
 
 # the power of each statistical case against its named alternative
 R ?= 50
