@@ -562,11 +562,12 @@ static int cmp_order(const void *a, const void *b)
     return x->t > y->t ? -1 : x->t < y->t ? 1 : (x->k > y->k) - (x->k < y->k);
 }
 
-/* The order to start the cases in: longest recorded CPU time first (a
- * case with none first of all: it may be long), so that the run does not
- * end on one long case while the other slots idle.  Each case's seed
+/* The order to start the cases in: with more than one slot, longest
+ * recorded CPU time first (a case with none first of all: it may be
+ * long), so that the run does not end on one long case while the other
+ * slots idle; with one, the cases' own (id) order.  Each case's seed
  * comes from its id, so the order changes no result. */
-static size_t *start_order(const sf_case *cases, size_t n)
+static size_t *start_order(const sf_case *cases, size_t n, int jobs)
 {
     case_order *t = malloc((n ? n : 1) * sizeof *t);
     size_t *order = malloc((n ? n : 1) * sizeof *order);
@@ -576,7 +577,7 @@ static size_t *start_order(const sf_case *cases, size_t n)
         return NULL;
     }
     for (size_t k = 0; k < n; k++) {
-        double rec = sf_casetime_recorded(cases[k].path, cases[k].id);
+        double rec = jobs > 1 ? sf_casetime_recorded(cases[k].path, cases[k].id) : 0;
         t[k] = (case_order){ rec < 0 ? INFINITY : rec, k };
     }
     qsort(t, n, sizeof *t, cmp_order);
@@ -591,7 +592,7 @@ static size_t *start_order(const sf_case *cases, size_t n)
 static int run_cases(const sf_case *cases, size_t kept, const verify_opts *o, sf_outcome *out, job *run)
 {
     size_t next = 0, active = 0;
-    size_t *order = start_order(cases, kept);
+    size_t *order = start_order(cases, kept, o->jobs);
     if (!order)
         return SF_EXIT_INTERNAL;
     /* CPU time of each case process (and of the gnuplot it ran): the
