@@ -587,13 +587,16 @@ static void write_plot(FILE *g, const sf_plot *p, const char *path, char *why, s
     free(written);
 }
 
+/* The file gnuplot reads its script from: the pipe (sf_result_render_plots). */
+#define GP_SCRIPT "/dev/stdin"
+
 /* Read gnuplot's messages (its stderr, in a temporary file) back: each
  * plot's script starts by printing a marker, so a message belongs to the
  * plot after the last marker.  msg[i] gets plot i's first message. */
 static void read_messages(FILE *e, size_t nplots, char (*msg)[160])
 {
     static const char mark[] = "@sf-plot ";
-    static const char from[] = "\"/dev/stdin\" ";
+    static const char from[] = "\"" GP_SCRIPT "\" ";   /* what gnuplot puts before "line N:" */
     char line[512];
     size_t cur = 0;
     int echo = 0;   /* msg[cur] was taken from the line before */
@@ -655,7 +658,7 @@ int sf_result_render_plots(sf_result *r, const char *dir, char *err, size_t errl
         dup2(fileno(e), 2);
         close(fd[0]);
         close(fd[1]);
-        execlp("gnuplot", "gnuplot", "/dev/stdin", (char *)NULL);
+        execlp("gnuplot", "gnuplot", GP_SCRIPT, (char *)NULL);
         _exit(127);
     }
     close(fd[0]);

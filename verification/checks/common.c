@@ -382,6 +382,11 @@ sf_cof *check_case_cof(const sf_case *c, const sf_scene *s, sf_result *r)
     return cof;
 }
 
+double check_jump_speed(const sf_scene *s)
+{
+    return s->eps_lambda * sqrt(s->k / s->m) * s->R;
+}
+
 /* The limit cycle of the 1-D model at static COF mu (Eqs. 3-4 with Eq. 1's
  * mu_k = r mu, Eq. 14's jump and Eq. 12's threshold).  Slip (u = v - v_b
  * < 0) is free harmonic motion about the kinetic equilibrium x_e = r mu N
@@ -396,11 +401,6 @@ sf_cof *check_case_cof(const sf_case *c, const sf_scene *s, sf_result *r)
  * disc does not accelerate) and r mu N in slip, so its range is from
  * k (x_e - d) at stick onset to k x_s at the break: 2 k d.  0 or -1 when
  * there is no cycle (d <= 0 or v_r <= 0). */
-double check_jump_speed(const sf_scene *s)
-{
-    return s->eps_lambda * sqrt(s->k / s->m) * s->R;
-}
-
 int ref_cycle(const sf_scene *s, double mu, ref_cycle1d *c)
 {
     double N = s->m * s->g;
