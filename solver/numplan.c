@@ -73,7 +73,9 @@
  * linear branch TB rtol, TB = 3e4 (2.2e4 measured, with a margin), covers
  * it; it binds above rtol = (TA/TB)^2 = 2.5e-9, i.e. for qoi_tol above
  * 3e-4 (at qoi_tol 1e-3: rtol 8.3e-9 instead of 2.8e-8, about 1.25x the
- * steps).
+ * steps).  That error was PV_F's sampling: the force's extrema inside
+ * slip steps were taken at the step ends, a miss of |F''| h^2 / 8; they
+ * are now located (oscillator.c, sec. 5.1 of docs/design.md).
  *
  * (6) The same design: at CV = mu_std / mu_mean above Table 1's 0.2 the
  * quadrature errs more, about in proportion to CV (a rougher field under

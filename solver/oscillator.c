@@ -453,34 +453,113 @@ static double hermite_vel(double s, void *p)
            (-12 * s2 + 28 * s3 - 15 * s4) * c->v1;
 }
 
-/* An extremum of x inside the slip step (t0, t1] (vx changes sign; p0, p1:
- * x, vx, ax at its ends): the root of the interpolant's velocity (GSL's
- * Brent, to ev_tol), then one trial step of the stepper from (t0, y0) to
- * it for the state ye.  Slip is smooth there (the relative speed is about
- * v_b), so the interpolant's velocity errs by O(h^5) and the root by that
- * over |ax|; x, flat at its extremum, errs by its square, the friction
- * force by its rate times it: far below the stepper's own error, at one
- * trial step where a search on trial steps takes about seven. */
-static double locate_extremum(sf_osc *o, double t0, const double *y0, const double p0[3], double t1,
-                              const double p1[3], double *ye, unsigned long *count)
+/* The root of F in [lo, hi] (a sign change) to tol in the bracket's
+ * width: GSL's Brent solver, its last estimate. */
+static double brent_root(gsl_root_fsolver *root, gsl_function *F, double lo, double hi, double tol)
 {
-    double h = t1 - t0, lo = 0, hi = 1, f0[NSTATE];
-    hermite_v c = { (p1[0] - p0[0]) / h, h, p0[1], p0[2], p1[2], p1[1] };
-    gsl_function F = { hermite_vel, &c };
-    double s = 0.5, tol = ev_tol(t1) / h;
-    (void)gsl_root_fsolver_set(o->root, &F, lo, hi);   /* a valid bracket: v0 v1 < 0, exactly the ends' values */
+    double s = 0.5 * (lo + hi);
+    (void)gsl_root_fsolver_set(root, F, lo, hi);
     for (int it = 0; it < 200; it++) {
-        gsl_root_fsolver_iterate(o->root);
-        s = gsl_root_fsolver_root(o->root);
-        lo = gsl_root_fsolver_x_lower(o->root);
-        hi = gsl_root_fsolver_x_upper(o->root);
+        gsl_root_fsolver_iterate(root);
+        s = gsl_root_fsolver_root(root);
+        lo = gsl_root_fsolver_x_lower(root);
+        hi = gsl_root_fsolver_x_upper(root);
         if (gsl_root_test_interval(lo, hi, tol, 0) == GSL_SUCCESS)
             break;
     }
-    sf_osc_slip_rhs(o, t0, y0, f0, NULL);
+    return s;
+}
+
+/* An extremum of x inside the slip step (t0, t1] (vx changes sign; p0, p1:
+ * x, vx, ax at its ends; f0 = f(t0, y0)): the root of the interpolant's
+ * velocity (GSL's Brent, to ev_tol), then one trial step of the stepper
+ * from (t0, y0) to it for the state ye.  Slip is smooth there (the
+ * relative speed is about v_b), so the interpolant's velocity errs by O(h^5) and the root by that
+ * over |ax|; x, flat at its extremum, errs by its square, the friction
+ * force by its rate times it: far below the stepper's own error, at one
+ * trial step where a search on trial steps takes about seven. */
+static double locate_extremum(sf_osc *o, double t0, const double *y0, const double *f0, const double p0[3], double t1,
+                              const double p1[3], double *ye, unsigned long *count)
+{
+    double h = t1 - t0;
+    hermite_v c = { (p1[0] - p0[0]) / h, h, p0[1], p0[2], p1[2], p1[1] };
+    gsl_function F = { hermite_vel, &c };
+    double s = brent_root(o->root, &F, 0, 1, ev_tol(t1) / h);   /* a valid bracket: v0 v1 < 0, exactly the ends' values */
     advance(o, t0, y0, f0, s * h, ye);
     (*count)++;
     return t0 + s * h;
+}
+
+/* The friction force's x component along a slip step: F = m ax + k x (the
+ * x row of Eq. 5), taken on the step's quintic Hermite interpolant of x
+ * (sample()'s, in power form: X(s) = sum c_j s^j, s in [0, 1]), a quintic
+ * in s whose value and rate are exact at the ends. */
+typedef struct {
+    double c[6], m_h2, k;   /* m_h2 = m / h^2 */
+} force_poly;
+
+static void force_poly_make(force_poly *f, double h, const double p0[3], const double p1[3], double m, double k)
+{
+    double h2 = h * h, d = p1[0] - p0[0] - h * p0[1] - 0.5 * h2 * p0[2], e = h * (p1[1] - p0[1]) - h2 * p0[2],
+           g = h2 * (p1[2] - p0[2]);
+    f->c[0] = p0[0];
+    f->c[1] = h * p0[1];
+    f->c[2] = 0.5 * h2 * p0[2];
+    f->c[3] = 10 * d - 4 * e + 0.5 * g;
+    f->c[4] = -15 * d + 7 * e - g;
+    f->c[5] = 6 * d - 3 * e + 0.5 * g;
+    f->m_h2 = m / h2;
+    f->k = k;
+}
+
+static double force_val(double s, const force_poly *f)
+{
+    const double *c = f->c;
+    double X = c[0] + s * (c[1] + s * (c[2] + s * (c[3] + s * (c[4] + s * c[5]))));
+    double X2 = 2 * c[2] + s * (6 * c[3] + s * (12 * c[4] + s * 20 * c[5]));
+    return f->k * X + f->m_h2 * X2;
+}
+
+static double force_rate(double s, void *p)
+{
+    const force_poly *f = p;
+    const double *c = f->c;
+    double X1 = c[1] + s * (2 * c[2] + s * (3 * c[3] + s * (4 * c[4] + s * 5 * c[5])));
+    double X3 = 6 * c[3] + s * (24 * c[4] + s * 60 * c[5]);
+    return f->k * X1 + f->m_h2 * X3;
+}
+
+/* The disc's slip speed scale, |U| + |w| R [m/s].  Within FORCE_MIN_SLIP
+ * stick thresholds (eps wn R) of stick the slip direction, and with it F,
+ * turns within a step, and the steps are short: F's extrema are sought
+ * only in steps that slip faster at both ends. */
+enum { FORCE_MIN_SLIP = 10 };
+
+static double slip_speed(const sf_osc *o, const double *y)
+{
+    return hypot(y[VX] - o->s.v_b, y[VY]) + fabs(y[W]) * o->s.R;
+}
+
+/* The interior extrema of F in a slip step (0 < s < 1), ascending, at most
+ * FORCE_SUB of them: a sign change of the interpolant's rate between
+ * FORCE_SUB + 1 equally spaced points, refined by GSL's Brent to tol (in
+ * s).  Two extrema within 1/FORCE_SUB of a step are a wiggle far below
+ * the step's error, and missed. */
+enum { FORCE_SUB = 8 };
+
+static size_t force_extrema(gsl_root_fsolver *root, force_poly *f, double tol, double s_out[FORCE_SUB])
+{
+    size_t n = 0;
+    gsl_function F = { force_rate, f };
+    double a = 0, ra = force_rate(0, f);
+    for (int j = 1; j <= FORCE_SUB; j++) {
+        double b = (double)j / FORCE_SUB, rb = force_rate(b, f);
+        if (ra * rb < 0)
+            s_out[n++] = brent_root(root, &F, a, b, tol);
+        a = b;
+        ra = rb;
+    }
+    return n;
 }
 
 /* Time to the stick break from (t0, y) with the belt patch fixed. */
@@ -589,6 +668,14 @@ static void note(acc *a, double x, double F)
         a->oFmin = fmin(a->oFmin, F);
         a->oFmax = fmax(a->oFmax, F);
     }
+}
+
+/* Would F widen the open cycle's or the open oscillation's force range
+ * by more than margin? */
+static int widens(const acc *a, double F, double margin)
+{
+    return (a->open && (F < a->Fmin - margin || F > a->Fmax + margin)) ||
+           (a->oopen && (F < a->oFmin - margin || F > a->oFmax + margin));
 }
 
 /* A stick span [t0, t1]: its part inside the window [t_skip, T] (the
@@ -992,18 +1079,57 @@ static int run_slip(run_state *r)
     }
     double t = r->t;
     wrench(o, t, y, q);   /* the step's end (GSL's last evaluation unless the step was cut at stick) */
-    double p1[3] = { y[X], y[VX], (-s->k * y[X] + q[0]) / s->m };
-    if (y0[VX] * y[VX] < 0) {   /* an extremum of x inside the step */
-        double yx[NSTATE], qx[3];
-        struct wrench_memo end = o->memo;   /* the end's wrench, asked for again by the next step */
-        double tx = locate_extremum(o, t0, y0, r->pa, t, p1, yx, &res->event_trials);
-        wrench(o, tx, yx, qx);   /* at the extremum's own time: the belt has moved on by t */
-        o->memo = end;
-        note(&r->a, yx[X], qx[0]);
-        track(o, tx, res, yx);
-        if (y0[VX] > 0 && (rc = x_maximum(&r->a, tx, yx[X], qx[0])))
-            return rc;
+    double p1[3] = { y[X], y[VX], (-s->k * y[X] + q[0]) / s->m }, h = t - t0;
+    /* Interior extrema of the friction force: PV_F is the continuous
+     * force's peak-to-valley (Sec. 3.1), and a step's ends alone miss an
+     * extremum inside it by about |F''| h^2 / 8, an error that falls only
+     * as rtol^0.4.  Located on the interpolant (O(h^4)), F is taken from a
+     * trial step to it, where it can widen an open range. */
+    force_poly fp;
+    double sf[FORCE_SUB], f0[NSTATE], margin = 0;
+    size_t nf = 0, kf = 0;
+    int have_f0 = 0;
+    struct wrench_memo end = o->memo;   /* the end's wrench, asked for again by the next step */
+    if (t >= r->a.t_skip && h > 0 && slip_speed(o, y0) > FORCE_MIN_SLIP * o->delta &&
+        slip_speed(o, y) > FORCE_MIN_SLIP * o->delta) {
+        force_poly_make(&fp, h, r->pa, p1, s->m, s->k);
+        nf = force_extrema(o->root, &fp, ev_tol(t) / h, sf);
+        /* a widening within the stepper's tolerance is not worth a trial
+         * step, nor one within the interpolant's round-off (m x'' from
+         * differences of x over h^2: large in the short steps of a sliding
+         * mode) */
+        margin = fmax(s->rtol * fmax(fabs(q[0]), fabs(s->m * r->pa[2] + s->k * r->pa[0])),
+                      64 * DBL_EPSILON * s->m * (fabs(r->pa[0]) + fabs(p1[0]) + s->R) / (h * h));
     }
+    double tx = INFINITY, yx[NSTATE], qx[3];
+    if (y0[VX] * y[VX] < 0) {   /* an extremum of x inside the step */
+        sf_osc_slip_rhs(o, t0, y0, f0, NULL);
+        have_f0 = 1;
+        tx = locate_extremum(o, t0, y0, f0, r->pa, t, p1, yx, &res->event_trials);
+        wrench(o, tx, yx, qx);   /* at the extremum's own time: the belt has moved on by t */
+    }
+    for (int before_x = 1; before_x >= 0; before_x--) {
+        for (; kf < nf && (!before_x || t0 + sf[kf] * h < tx); kf++) {
+            if (!widens(&r->a, force_val(sf[kf], &fp), margin))
+                continue;
+            if (!have_f0) {
+                sf_osc_slip_rhs(o, t0, y0, f0, NULL);
+                have_f0 = 1;
+            }
+            double yf[NSTATE], qf[3];
+            advance(o, t0, y0, f0, sf[kf] * h, yf);
+            res->event_trials++;
+            wrench(o, t0 + sf[kf] * h, yf, qf);
+            note(&r->a, yf[X], qf[0]);
+        }
+        if (before_x && isfinite(tx)) {
+            note(&r->a, yx[X], qx[0]);
+            track(o, tx, res, yx);
+            if (y0[VX] > 0 && (rc = x_maximum(&r->a, tx, yx[X], qx[0])))
+                return rc;
+        }
+    }
+    o->memo = end;
     sample(res, &r->next, t0, r->pa, t, p1);
     memcpy(r->pa, p1, sizeof r->pa);
     note(&r->a, y[X], q[0]);

@@ -715,6 +715,64 @@ static int chk_reproducible(const sf_case *c, sf_result *r)
     return SF_SUCCESS;
 }
 
+/* PV_F is the peak-to-valley of the continuous friction force (Sec. 3.1).
+ * On a belt so fast that the disc never sticks, the force's extrema lie
+ * inside slip steps, where the step ends alone miss them by ~|F''| h^2 / 8;
+ * each oscillation's PV_F at the scene's rtol must stay within
+ * `tolerance` (relative) of the same field at rtol 1e-11. */
+static int chk_force_extrema(const sf_case *c, sf_result *r)
+{
+    const sf_scene *s = &c->scene;
+    sf_cof *cof = check_case_cof(c, s, r);
+    if (!cof)
+        return SF_EFAIL;
+    sf_scene ref = *s;
+    ref.rtol = 1e-11;
+    sf_osc_result a, b;
+    if (check_osc_run(s, NULL, cof, 0, &a, NULL, NULL, r)) {
+        sf_cof_free(cof);
+        return SF_EFAIL;
+    }
+    if (check_osc_run(&ref, NULL, cof, 0, &b, NULL, NULL, r)) {
+        sf_osc_result_free(&a);
+        sf_cof_free(cof);
+        return SF_EFAIL;
+    }
+    sf_cof_free(cof);
+    char found[96];
+    snprintf(found, sizeof found, "%zu and %zu oscillations", a.nosc, b.nosc);
+    sf_check_true(r, "the same oscillations in both runs, at least 3", a.nosc == b.nosc && a.nosc >= 3, found);
+    size_t n = a.nosc < b.nosc ? a.nosc : b.nosc;
+    double worst = 0, *k = malloc((n ? n : 1) * sizeof *k), *d = malloc((n ? n : 1) * sizeof *d);
+    if (!k || !d) {
+        free(k);
+        free(d);
+        sf_osc_result_free(&a);
+        sf_osc_result_free(&b);
+        return SF_ENOMEM;
+    }
+    for (size_t i = 0; i < n; i++) {
+        k[i] = (double)i;
+        d[i] = fabs(a.osc_pv_F[i] / b.osc_pv_F[i] - 1);
+        worst = fmax(worst, d[i]);
+    }
+    char q[160];
+    snprintf(q, sizeof q, "largest relative difference of an oscillation's PV_F, rtol %g against 1e-11", s->rtol);
+    sf_check_le(r, q, worst, c->spec.tolerance);
+    sf_check_rel(r, "PV_F [N], mean over the oscillations", a.pv_F, b.pv_F, c->spec.tolerance);
+    sf_note(r, "rtol %g: %lu steps, %lu trial steps of event searches (x and force extrema), %zu transitions; rtol "
+               "1e-11: %lu steps, %zu transitions.", s->rtol, a.steps, a.event_trials, a.ntrans, b.steps, b.ntrans);
+    sf_plot *p = sf_result_plot(r, "force_extrema", "Each oscillation's PV_F: rtol against 1e-11",
+                                "oscillation [-]", "|PV_F / PV_F(1e-11) - 1| [-]");
+    sf_plot_series(p, "relative difference", SF_STYLE_POINTS, n, k, d);
+    sf_plot_hline(p, "tolerance", c->spec.tolerance);
+    free(k);
+    free(d);
+    sf_osc_result_free(&a);
+    sf_osc_result_free(&b);
+    return SF_SUCCESS;
+}
+
 const sf_check_def sf_checks_dynamics[] = {
     { "dyn_eps_study", chk_eps_study, "Fig. 7: Eq. 15 error vs eps_lambda against eps = 1e-5" },
     { "dyn_velocity_jump", chk_velocity_jump, "Fig. 6: what the velocity jump of Eq. 14 prevents" },
@@ -725,5 +783,6 @@ const sf_check_def sf_checks_dynamics[] = {
     { "dyn_free_disc", chk_free_disc, "free uniform disc: slide/spin ratio -> Farkas eps_0 = 0.653 (closed-form 3-DOF wrench)" },
     { "dyn_variable_limit", chk_variable_limit, "one random variable: the 1-D closed form at the drawn COF" },
     { "dyn_reproducible", chk_reproducible, "same seed, same bytes" },
+    { "dyn_force_extrema", chk_force_extrema, "PV_F of the continuous force: extrema inside slip steps, rtol against 1e-11" },
     { NULL, NULL, NULL }
 };
