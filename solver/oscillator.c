@@ -474,10 +474,11 @@ static double brent_root(gsl_root_fsolver *root, gsl_function *F, double lo, dou
  * x, vx, ax at its ends; f0 = f(t0, y0)): the root of the interpolant's
  * velocity (GSL's Brent, to ev_tol), then one trial step of the stepper
  * from (t0, y0) to it for the state ye.  Slip is smooth there (the
- * relative speed is about v_b), so the interpolant's velocity errs by O(h^5) and the root by that
- * over |ax|; x, flat at its extremum, errs by its square, the friction
- * force by its rate times it: far below the stepper's own error, at one
- * trial step where a search on trial steps takes about seven. */
+ * relative speed is about v_b), so the interpolant's velocity errs by
+ * O(h^5) and the root by that over |ax|; x, flat at its extremum, errs by
+ * its square, the friction force by its rate times it: far below the
+ * stepper's own error, at one trial step where a search on trial steps
+ * takes about seven. */
 static double locate_extremum(sf_osc *o, double t0, const double *y0, const double *f0, const double p0[3], double t1,
                               const double p1[3], double *ye, unsigned long *count)
 {
@@ -1006,7 +1007,7 @@ static int run_stick(run_state *r)
  * in *ratio (NaN without slip). */
 static long slowest_cell(const sf_osc *o, const double *y, double *ratio)
 {
-    double u = y[VX] - o->s.v_b, v = y[VY], w = y[W], scale = hypot(u, v) + fabs(w) * o->s.R;
+    double u = y[VX] - o->s.v_b, v = y[VY], w = y[W], scale = slip_speed(o, y);
     *ratio = NAN;
     if (!o->ct)
         return -1;
