@@ -2,7 +2,8 @@
  * on lognormal COF fields: the threshold study of Fig. 7, the velocity
  * jump of Fig. 6, long runs, the baseline responses and phase portraits of
  * Figs. 9 and 14, the exact stick section against the equatorial circle,
- * the one-random-variable limit, and reproducibility. */
+ * the one-random-variable limit, reproducibility, and PV_F as the
+ * continuous force's peak-to-valley. */
 #include "checks.h"
 #include "common.h"
 #include "../stats.h"
@@ -716,8 +717,9 @@ static int chk_reproducible(const sf_case *c, sf_result *r)
 }
 
 /* PV_F is the peak-to-valley of the continuous friction force (Sec. 3.1).
- * On a belt so fast that the disc never sticks, the force's extrema lie
- * inside slip steps, where the step ends alone miss them by ~|F''| h^2 / 8;
+ * On a belt so fast that the disc slips nearly all the time, the force's
+ * extrema lie inside slip steps, where the step ends alone miss them by
+ * ~|F''| h^2 / 8;
  * each oscillation's PV_F at the scene's rtol must stay within
  * `tolerance` (relative) of the same field at rtol 1e-11. */
 static int chk_force_extrema(const sf_case *c, sf_result *r)
@@ -763,7 +765,7 @@ static int chk_force_extrema(const sf_case *c, sf_result *r)
     sf_note(r, "rtol %g: %lu steps, %lu trial steps of event searches (x and force extrema), %zu transitions; rtol "
                "1e-11: %lu steps, %zu transitions.", s->rtol, a.steps, a.event_trials, a.ntrans, b.steps, b.ntrans);
     sf_plot *p = sf_result_plot(r, "force_extrema", "Each oscillation's PV_F: rtol against 1e-11",
-                                "oscillation [-]", "|PV_F / PV_F(1e-11) - 1| [-]");
+                                "oscillation index [-]", "|PV_F / PV_F(1e-11) - 1| [-]");
     sf_plot_series(p, "relative difference", SF_STYLE_POINTS, n, k, d);
     sf_plot_hline(p, "tolerance", c->spec.tolerance);
     free(k);
