@@ -757,6 +757,7 @@ static int chk_force_extrema(const sf_case *c, sf_result *r)
         k[i] = (double)i;
         d[i] = fabs(a.osc_pv_F[i] / b.osc_pv_F[i] - 1);
         worst = fmax(worst, d[i]);
+        d[i] = fmax(d[i], DBL_EPSILON);   /* the plot's log axis: equal values at one ulp */
     }
     char q[160];
     snprintf(q, sizeof q, "largest relative difference of an oscillation's PV_F, rtol %g against 1e-11", s->rtol);
@@ -766,6 +767,7 @@ static int chk_force_extrema(const sf_case *c, sf_result *r)
                "1e-11: %lu steps, %zu transitions.", s->rtol, a.steps, a.event_trials, a.ntrans, b.steps, b.ntrans);
     sf_plot *p = sf_result_plot(r, "force_extrema", "Each oscillation's PV_F: rtol against 1e-11",
                                 "oscillation index [-]", "|PV_F / PV_F(1e-11) - 1| [-]");
+    sf_plot_log(p, 0, 1);
     sf_plot_series(p, "relative difference", SF_STYLE_POINTS, n, k, d);
     sf_plot_hline(p, "tolerance", c->spec.tolerance);
     free(k);
