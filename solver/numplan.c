@@ -81,7 +81,9 @@
  * [-1.5, 3], CV 0.05-1, v_b 0.1-0.8 m/s, mean COF 0.2-1, T 30-100 s
  * (t_skip 10 s), one field each, the plan's rings at qoi_tol 1e-3; the
  * largest relative error of PV_x, PV_F and the stick fraction against
- * rtol 1e-11 on the same field (1e-10 against 1e-11: at most 1.7e-6):
+ * rtol 1e-11 on the same field (1e-10 against 1e-11: at most 1.7e-6;
+ * scripts/time-model-data.sh makes such a design, its points drawn by
+ * awk's generator where these were drawn by another):
  *   rtol          1e-5     3e-6     1e-6     3e-7     1e-7     1e-8     1e-10
  *   median        9.1e-5   4.6e-5   1.9e-5   7.1e-6   3.3e-6   5.6e-7   6.6e-9
  *   90%           7.3e-4   2.5e-4   7.3e-5   2.4e-5   1.6e-5   8.4e-6   5.6e-7
@@ -96,7 +98,7 @@
  * point), no linear branch.  At qoi_tol 1e-3: rtol 6.25e-8 instead of
  * 8.3e-9, 0.74x the CPU over the design (1e-7 against 1e-8).  The three
  * realisations above, seeds 1-3 of each (9 fields): at most 1.3e-5 at
- * 1e-6, 3.7e-6 at 6.25e-8. 
+ * 1e-6, 3.7e-6 at 6.25e-8.
  *
  * (6) The same design: at CV = mu_std / mu_mean above Table 1's 0.2 the
  * quadrature errs more, about in proportion to CV (a rougher field under
