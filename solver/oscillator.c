@@ -563,6 +563,15 @@ static size_t force_extrema(gsl_root_fsolver *root, force_poly *f, double tol, d
     return n;
 }
 
+/* f(t0, y0), the slip right-hand side at a step's start, evaluated once
+ * for the step's trial steps and only when one is made. */
+static void step_start_rhs(sf_osc *o, double t0, const double *y0, double *f0, int *have)
+{
+    if (!*have)
+        sf_osc_slip_rhs(o, t0, y0, f0, NULL);
+    *have = 1;
+}
+
 /* Time to the stick break from (t0, y) with the belt patch fixed. */
 double sf_osc_stick_duration(sf_osc *o, double t0, const double *y)
 {
@@ -1104,8 +1113,7 @@ static int run_slip(run_state *r)
     }
     double tx = INFINITY, yx[NSTATE], qx[3];
     if (y0[VX] * y[VX] < 0) {   /* an extremum of x inside the step */
-        sf_osc_slip_rhs(o, t0, y0, f0, NULL);
-        have_f0 = 1;
+        step_start_rhs(o, t0, y0, f0, &have_f0);
         tx = locate_extremum(o, t0, y0, f0, r->pa, t, p1, yx, &res->event_trials);
         wrench(o, tx, yx, qx);   /* at the extremum's own time: the belt has moved on by t */
     }
@@ -1113,10 +1121,7 @@ static int run_slip(run_state *r)
         for (; kf < nf && (!before_x || t0 + sf[kf] * h < tx); kf++) {
             if (!widens(&r->a, force_val(sf[kf], &fp), margin))
                 continue;
-            if (!have_f0) {
-                sf_osc_slip_rhs(o, t0, y0, f0, NULL);
-                have_f0 = 1;
-            }
+            step_start_rhs(o, t0, y0, f0, &have_f0);
             double yf[NSTATE], qf[3];
             advance(o, t0, y0, f0, sf[kf] * h, yf);
             res->event_trials++;
@@ -1126,8 +1131,10 @@ static int run_slip(run_state *r)
         if (before_x && isfinite(tx)) {
             note(&r->a, yx[X], qx[0]);
             track(o, tx, res, yx);
-            if (y0[VX] > 0 && (rc = x_maximum(&r->a, tx, yx[X], qx[0])))
+            if (y0[VX] > 0 && (rc = x_maximum(&r->a, tx, yx[X], qx[0]))) {
+                o->memo = end;
                 return rc;
+            }
         }
     }
     o->memo = end;
