@@ -130,7 +130,6 @@
 #define QCV 0.2
 #define TA 1.0
 #define SF_PLAN_MIN_RINGS 6
-#define SF_PLAN_MAX_RTOL 1e-6
 
 /* the pole rule's bump in l/R (see above) */
 static double pole_bump(double l_over_R)

@@ -91,6 +91,9 @@ double sf_plan_strip_points(const sf_scene *s, double h);
 #define SF_PLAN_CELLS_PER_L 1.0
 /* The largest ring count the plan chooses by itself. */
 #define SF_PLAN_MAX_RINGS 128
+/* The loosest rtol the plan chooses: above it stick onsets are missed at
+ * some fields (numplan.c (5)). */
+#define SF_PLAN_MAX_RTOL 1e-6
 
 enum { SF_PLAN_CHOSEN = 0, SF_PLAN_SCENE = 1 };   /* where a setting came from */
 

@@ -41,7 +41,7 @@ extern "C" {
 enum { SF_UNUM_PVX = 0, SF_UNUM_PVF = 1, SF_UNUM_SF = 2, SF_UNUM_NQ = 3 };
 
 #define SF_UNUM_FS 3.0          /* the GCI's safety factor for an assumed order */
-#define SF_UNUM_MAX_RTOL 1e-6   /* numplan.c: above it stick onsets are missed */
+#define SF_UNUM_MAX_RTOL SF_PLAN_MAX_RTOL   /* the plan's cap: above it stick onsets are missed */
 
 typedef struct {
     double q[SF_UNUM_NQ];       /* the run's pv_x [m], pv_F [N], stick fraction [-] */
