@@ -646,7 +646,7 @@ static void explain_cof(const sf_plan *p, const sf_scene *s, FILE *f)
                    "belt (footprint 2R, margin %.4g m each side, slack R ahead); the circulant strip over [0, T] "
                    "would need %.3g points%s\n",
                 s->cof_generator == SF_COFGEN_TILES ? "tiles" : "auto",
-                s->cof_generator == SF_COFGEN_TILES ? "" : ", strip above 2^21 points", in->nx, in->ny, in->dx,
+                s->cof_generator == SF_COFGEN_TILES ? "" : ", strip above 2^" SF_STR(SF_COF_AUTO_LOG2) " points", in->nx, in->ny, in->dx,
                 -in->y0, in->margin, in->strip_points,
                 in->strip_points > (double)SF_COF_MAX_POINTS ? " (above the cap of 2^24)" : "");
     else
@@ -655,7 +655,7 @@ static void explain_cof(const sf_plan *p, const sf_scene *s, FILE *f)
                    "(FFTW_ESTIMATE), reused for every realisation; circulant embedding (cof_generator = %s%s)\n",
                 in->nx, in->ny, in->dx, in->x0, -in->y0, (in->strip_diag / s->l) * (in->strip_diag / s->l),
                 SF_COF_SHORTCUT_E2, s->cof_generator == SF_COFGEN_AUTO ? "auto" : "circulant",
-                s->cof_generator == SF_COFGEN_AUTO ? ": strip at or below 2^21 points" : "");
+                s->cof_generator == SF_COFGEN_AUTO ? ": strip at or below 2^" SF_STR(SF_COF_AUTO_LOG2) " points" : "");
 }
 
 void sf_plan_explain(const sf_plan *p, const sf_scene *s, FILE *f)

@@ -78,11 +78,16 @@ double sf_plan_strip_points(const sf_scene *s, double h);
 
 /* cof_generator = auto takes the tiles above this many strip points.  The
  * circulant's memory grows with v_b T / l^2 (286 MB at 1.7e6 strip points,
- * l = 0.05 m, Table 1, T = 100 s; 1.1 GB at 6.8e6, l = 0.025 m); 2^21
- * keeps every existing case on the circulant (their bits unchanged, e.g.
- * cases/validation/fig16-bifurcation-lr at l/R = 0.1) and takes the tiles
- * from about l = 0.045 m at Table 1 (issue 14). */
-#define SF_COF_AUTO_POINTS ((size_t)1 << 21)
+ * l = 0.05 m, Table 1, T = 100 s; 1.1 GB at 6.8e6, l = 0.025 m), and its
+ * strip is sized by the spring-excursion bound, about 3x the belt the
+ * disc visits at Table 1: at l/R = 0.05-0.2 the tiles (the same law,
+ * noise only where the window goes) make a realisation 2.2-2.6x cheaper
+ * in a sweep, at l/R = 0.5-1 0.7-0.9x (docs/design.md sec. 6.1).  2^20
+ * takes them below about l = 0.064 m (l/R = 0.13) at Table 1; Table 1's
+ * own l = 0.1 m (0.43e6 points) stays on the circulant, where the tiles
+ * would also pay, because it would redraw the field of most cases.
+ * Until 2026-11-27 the threshold was 2^21, set for memory only. */
+#define SF_COF_AUTO_POINTS ((size_t)1 << SF_COF_AUTO_LOG2)
 
 /* The largest number of strip (or window) grid points a plan accepts. */
 #define SF_COF_MAX_POINTS ((size_t)1 << 24)

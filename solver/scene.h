@@ -31,6 +31,11 @@ typedef struct {
 enum { SF_INTEG_ADAPTIVE = 0, SF_INTEG_RK4 = 1, SF_INTEG_RK8PD = 2, SF_INTEG_RKCK = 3 };
 enum { SF_DOF_1 = 0, SF_DOF_3 = 1 };   /* values of the `dof` key ("1", "3") */
 enum { SF_COFGEN_AUTO = 0, SF_COFGEN_CIRCULANT = 1, SF_COFGEN_TILES = 2 };   /* `cof_generator` */
+/* auto takes the tiles above 2^SF_COF_AUTO_LOG2 strip points (numplan.h:
+ * SF_COF_AUTO_POINTS, and why); the key's help says the number */
+#define SF_COF_AUTO_LOG2 20
+#define SF_STR_(x) #x
+#define SF_STR(x) SF_STR_(x)   /* a macro's value as a string literal */
 enum { SF_COFMODEL_AUTO = 0, SF_COFMODEL_POINT = 1, SF_COFMODEL_CELL = 2 };   /* `cof_model` (numplan.h) */
 enum { SF_QOI_PAPER = 0, SF_QOI_CYCLES = 1 };   /* `qoi_def`: which definitions give pv_x, pv_F, stick_fraction (oscillator.h) */
 

@@ -298,7 +298,7 @@ static void plan_records(void **state)
     sf_scene_default(&s);
     s.T = 5;
     s.l = 0.1;
-    plan_says(&s, SF_PLAN_MODEL_POINT, "cof_generator = auto: strip at or below 2^21 points");
+    plan_says(&s, SF_PLAN_MODEL_POINT, "cof_generator = auto: strip at or below 2^" SF_STR(SF_COF_AUTO_LOG2) " points");
     s.cof_generator = SF_COFGEN_CIRCULANT;
     plan_says(&s, SF_PLAN_MODEL_POINT, "circulant embedding (cof_generator = circulant)");
     s.cof_generator = SF_COFGEN_TILES;
@@ -308,7 +308,7 @@ static void plan_records(void **state)
     s.T = 100;
     s.strip_halfwidth = 0.1;
     s.cof_model = SF_COFMODEL_POINT;
-    plan_says(&s, SF_PLAN_MODEL_POINT, "strip above 2^21 points");
+    plan_says(&s, SF_PLAN_MODEL_POINT, "strip above 2^" SF_STR(SF_COF_AUTO_LOG2) " points");
     plan_says(&s, SF_PLAN_MODEL_POINT, "(above the cap of 2^24)");
     s.T = 20;   /* a strip the cell averages take: auto chooses them */
     s.cof_model = SF_COFMODEL_AUTO;

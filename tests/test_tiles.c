@@ -76,7 +76,8 @@ static void random_access(void **state)
 }
 
 /* auto: the circulant where the strip is small (existing bits), tiles
- * above 2^21 strip points; precorrect needs the circulant. */
+ * above 2^20 strip points (Table 1's l = 0.1 m below, l = 0.05 m
+ * above); precorrect needs the circulant. */
 static void generator_choice(void **state)
 {
     (void)state;
@@ -86,12 +87,17 @@ static void generator_choice(void **state)
     char err[256] = "";
     assert_int_equal(sf_cof_plan_alloc(&s, &p, err, sizeof err), SF_SUCCESS);
     assert_int_equal(sf_cof_plan_get_info(p)->generator, SF_COFGEN_CIRCULANT);
+    assert_true(sf_cof_plan_get_info(p)->strip_points <= (double)SF_COF_AUTO_POINTS);
     sf_cof_plan_free(p);
-    s.l = 0.05;   /* l/R = 0.1: 1.7e6 strip points, the circulant as before */
+    s.l = 0.064;   /* 1.05e6 strip points: the last l (in mm) on the circulant */
     assert_int_equal(sf_cof_plan_alloc(&s, &p, err, sizeof err), SF_SUCCESS);
     assert_int_equal(sf_cof_plan_get_info(p)->generator, SF_COFGEN_CIRCULANT);
     sf_cof_plan_free(p);
-    s.l = 0.025;
+    s.l = 0.063;
+    assert_int_equal(sf_cof_plan_alloc(&s, &p, err, sizeof err), SF_SUCCESS);
+    assert_int_equal(sf_cof_plan_get_info(p)->generator, SF_COFGEN_TILES);
+    sf_cof_plan_free(p);
+    s.l = 0.05;   /* l/R = 0.1: 1.7e6 strip points */
     assert_int_equal(sf_cof_plan_alloc(&s, &p, err, sizeof err), SF_SUCCESS);
     assert_int_equal(sf_cof_plan_get_info(p)->generator, SF_COFGEN_TILES);
     assert_true(sf_cof_plan_get_info(p)->strip_points > (double)SF_COF_AUTO_POINTS);
