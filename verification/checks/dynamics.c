@@ -432,12 +432,19 @@ static int chk_exact_section(const sf_case *c, sf_result *r)
     sf_contact_spec spec = { s0->R, s0->m * s0->g, (sf_layout)s0->layout, s0->cells };
     sf_contact *ct;
     sf_contact_alloc(&spec, cof, &ct);
-    double worst = INFINITY, sum = 0, on_section = 0;
+    double worst = INFINITY, sum = 0, on_section = 0, M = sf_cof_window_margin(cof);
     size_t n = 0, earlier = 0;
+    unsigned long out0 = sf_cof_outside(cof);
+    int follow_rc = 0;
     for (size_t i = 1; i < h.n; i++)
         if (h.stick[i - 1] && !h.stick[i] && h.t[i] == h.t[i - 1]) {   /* the release row pair */
             double m, me;
             double xb = h.x[i - 1] - s0->v_b * h.t[i - 1], fx = s0->k * h.x[i - 1], fy = s0->k * h.y[i - 1];
+            /* a tiled COF holds a window of the belt, left where the last
+             * run ended: bring the release's patch into it, as the
+             * oscillator does before each step (a look-up outside is
+             * clamped to the window's edge, counted below) */
+            follow_rc |= sf_cof_follow(cof, xb - s0->R - M, xb + s0->R + M);
             sf_contact_stick_margin(ct, xb, h.y[i - 1], fx, fy, 0, &m);
             if (sf_contact_stick_margin(ct, xb, h.y[i - 1], fx, fy, 1, &me))
                 me = NAN;
@@ -449,6 +456,8 @@ static int chk_exact_section(const sf_case *c, sf_result *r)
         }
     sf_check_ge(r, "min circle margin at the exact-section releases [N] (>= 0 up to event tolerance)", worst,
                 -c->spec.tolerance);
+    sf_check_le(r, "COF look-ups of the margins off the grid (clamped to its edge) or a window that would not follow",
+                (double)(sf_cof_outside(cof) - out0) + (follow_rc ? 1 : 0), 0);
     sf_check_ge(r, "releases examined", (double)n, 10);
     /* The exact section was used: the break is ON it (consistency: the
      * solver's own section, not an independent oracle) and strictly inside

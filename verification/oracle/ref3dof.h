@@ -66,7 +66,9 @@ typedef struct {
  * t_skip, x0 ... w0) and COF cof (kept by pointer): RK4 step dt [s], nr
  * Gauss-Legendre radii and na trapezoid angles.  Refuses (SF_EINVAL)
  * dof = 1 and velocity_jump = false (this oracle models Eq. 5 with both
- * jumps only). */
+ * jumps only), and a tiled COF (cof_generator = tiles, or auto on a large
+ * strip: a window whose contents change as runs slide it; the oracle
+ * reads one fixed grid). */
 int ref3dof_alloc(const sf_scene *s, const sf_cof *cof, double dt, size_t nr, size_t na, ref3dof **out);
 /* The same oracle on a given rule: n nodes at offsets (rx, ry) [m] from
  * the disc's centre with weights w (any scale: normalised here), used for
