@@ -40,7 +40,10 @@
  * rho_l) / 2 at the cost of one draw and two runs, at level 0, 1 or both.
  * Per point the cheapest estimator of all, chosen on one half of the
  * fields and measured on the other, and the whole grid's ratio.  CPU of
- * this thread. */
+ * this thread.  Every point's field is the circulant strip (negating or
+ * subsampling needs the whole strip), so at l/R = 0.1, where
+ * `cof_generator = auto` now takes the tiles, plain here is the
+ * circulant's, not the product's (bench_estimators has that). */
 #include "bench.h"
 #include "cof.h"
 #include "lognormal.h"
