@@ -249,6 +249,14 @@ int sf_cmd_sweep(int argc, char **argv)
             char where[1100];
             snprintf(where, sizeof where, "%s, %s = %g", path, param, v[k]);
             sf_cli_warn_truncated("sweep", where, &s, cp);
+            const sf_cof_plan_info *in = sf_cof_plan_get_info(cp);
+            if (cv && in->kind == SF_COF_FIELD && in->generator == SF_COFGEN_TILES)
+                fprintf(stderr, "slipfield sweep: %s: warning: the field is a tiled window that follows the disc "
+                                "(%s): no control-variate companion, its columns are nan; cof_generator = circulant "
+                                "draws the whole strip\n",
+                        where, s.cof_generator == SF_COFGEN_TILES ? "cof_generator = tiles"
+                                                                  : "cof_generator = auto, the strip above 2^"
+                                                                    SF_STR(SF_COF_AUTO_LOG2) " points");
         }
         sf_cof_plan_free(cp);
         char ck[1100], label[128];

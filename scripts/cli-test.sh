@@ -137,6 +137,10 @@ printf 'l = 50\npad_cap = 1\nT = 20\n' > trunc.scene
 expect 0 "warning: the COF field's circulant embedding reached its padding cap" "$bin" run trunc.scene --summary tr.sum
 expect 0 "l = 50: warning: the COF field's circulant embedding reached its padding cap" "$bin" sweep trunc.scene \
     --param l --values 50 --realisations 2 --out tr.tsv
+# sweep --control-variate on a tiled field: no companion, said
+printf 'cof = field\ncof_generator = tiles\nT = 14\nt_skip = 4\ncells = 8\nrtol = 1e-6\n' > tcv.scene
+expect 0 "warning: the field is a tiled window that follows the disc (cof_generator = tiles): no control-variate" \
+    "$bin" sweep tcv.scene --param T --values 14 --realisations 2 --control-variate --out tcv.tsv
 
 # ---- sweeps: the swept value overrides the scene's; interruption -------------
 expect 0 "" "$bin" sweep sw.scene --param T --values 20 --realisations 2 --out T.tsv
