@@ -58,8 +58,8 @@ if [ "${ALL_RANDOM:-0}" = 1 ]; then
     # declared, not measured: every candidate counts as drawing random numbers
     mkdir -p "$tmp/s1" "$tmp/s2"
 else
-"$BIN" verify --seed 1 --jobs "$JOBS" --reports "$tmp/s1" $cand > /dev/null 2>&1 || true
-"$BIN" verify --seed 2 --jobs "$JOBS" --reports "$tmp/s2" $cand > /dev/null 2>&1 || true
+"$BIN" verify --seed 1 --jobs "$JOBS" --tier "$TIER" --reports "$tmp/s1" $cand > /dev/null 2>&1 || true
+"$BIN" verify --seed 2 --jobs "$JOBS" --tier "$TIER" --reports "$tmp/s2" $cand > /dev/null 2>&1 || true
 fi
 # a report's results, less its timings (a table column whose header, or a
 # line that, names CPU or wall time): they differ from run to run and say
@@ -84,7 +84,7 @@ done
 # on the cases that differed sorts them.  Both kinds rerun every run (the
 # verdict of neither can be carried over); only the first is listed as
 # drawing random numbers, the other in unrepeatable-cases.txt.
-[ -z "$differ" ] || [ "${ALL_RANDOM:-0}" = 1 ] || "$BIN" verify --seed 1 --jobs "$JOBS" --reports "$tmp/s1b" $differ > /dev/null 2>&1 || true
+[ -z "$differ" ] || [ "${ALL_RANDOM:-0}" = 1 ] || "$BIN" verify --seed 1 --jobs "$JOBS" --tier "$TIER" --reports "$tmp/s1b" $differ > /dev/null 2>&1 || true
 cases="$differ"
 : > "$out/random-cases.txt"
 : > "$out/unrepeatable-cases.txt"
