@@ -463,7 +463,8 @@ void sf_numplan_explain(const sf_numplan *p, FILE *f)
     if (p->quadrature && p->cell_average)
         fprintf(f, "plan: cof_model = cell_average (%s): Cartesian quadrature, cells = %zu per diameter (%s; cells of "
                    "%.3g m = %.3g l) seeing the COF averaged over each cell (effective Gaussian field, exact "
-                   "box-averaged covariance, grid spacing %.3g m; cellavg.h), predicted QoI error %.2g\n",
+                   "box-averaged covariance, grid spacing %.3g m; cellavg.h), predicted QoI error %.2g (an RMS over "
+                   "fields: one field can err more, up to 2.5x it in the measurements)\n",
                 p->cof_model_from == SF_PLAN_SCENE ? "set by the scene"
                                                     : "chosen: l/R below 0.05, predicted error within 3/4 qoi_tol, strip within 2^22 points",
                 p->cells, from(p->cells_from), p->cell_size, p->box_over_l, sf_cellavg_grid_spacing(p->cell_size), p->err_quad);
