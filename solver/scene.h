@@ -17,6 +17,8 @@
 extern "C" {
 #endif
 
+#include "sf_version.h"   /* SF_VERSION_STR, the stringifier SF_STR uses */
+
 #include <stddef.h>
 #include <stdio.h>
 
@@ -34,8 +36,7 @@ enum { SF_COFGEN_AUTO = 0, SF_COFGEN_CIRCULANT = 1, SF_COFGEN_TILES = 2 };   /* 
 /* auto takes the tiles above 2^SF_COF_AUTO_LOG2 strip points (numplan.h:
  * SF_COF_AUTO_POINTS, and why); the key's help says the number */
 #define SF_COF_AUTO_LOG2 20
-#define SF_STR_(x) #x
-#define SF_STR(x) SF_STR_(x)   /* a macro's value as a string literal */
+#define SF_STR(x) SF_VERSION_STR(x)   /* a macro's value as a string literal (sf_version.h's stringifier) */
 enum { SF_COFMODEL_AUTO = 0, SF_COFMODEL_POINT = 1, SF_COFMODEL_CELL = 2 };   /* `cof_model` (numplan.h) */
 enum { SF_QOI_PAPER = 0, SF_QOI_CYCLES = 1 };   /* `qoi_def`: which definitions give pv_x, pv_F, stick_fraction (oscillator.h) */
 
