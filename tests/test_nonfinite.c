@@ -19,6 +19,7 @@
 #include "sf_error.h"
 
 #include <string.h>
+#include <gsl/gsl_cdf.h>
 
 /* ---- harness ---- */
 
@@ -102,6 +103,22 @@ static void ks_tests_are_nan_with_a_nan_sample(void **state)
     assert_true(isnan(sf_ks2_test(a, 5, b, 5, &D)) && isnan(D));
     double c[5] = { 0.1, -0.3, NAN, 0.7, 1.2 };
     assert_true(isnan(sf_ks_test(c, 5, sf_cdf_normal, NULL, &D)) && isnan(D));
+}
+
+/* The RMS test refuses what it cannot judge (a NaN or Inf, one value)
+ * and otherwise is Student's t on the squares: e^2 = 1, 4, 9 has mean
+ * 14/3 and se 7/3, so against b = 2 t = (2/3) / (7/3) = 2/7 and
+ * p = Q_t(t, 2); zero spread decides by the mean alone. */
+static void rms_test_refuses_nonfinite(void **state)
+{
+    (void)state;
+    double a[3] = { 1, NAN, 2 }, b[3] = { 1, INFINITY, 2 }, c[3] = { 1, 2, 3 }, d[3] = { 2, 2, 2 };
+    assert_true(sf_rms_le_pvalue(a, 3, 1) == 0);
+    assert_true(sf_rms_le_pvalue(b, 3, 1) == 0);
+    assert_true(sf_rms_le_pvalue(c, 1, 10) == 0);
+    assert_true(fabs(sf_rms_le_pvalue(c, 3, 2) - gsl_cdf_tdist_Q(2.0 / 7, 2)) < 1e-14);
+    assert_true(sf_rms_le_pvalue(d, 3, 2) == 1);
+    assert_true(sf_rms_le_pvalue(d, 3, 1.9) == 0);
 }
 
 /* ---- one case per family ---- */
@@ -198,6 +215,7 @@ int main(void)
         cmocka_unit_test(nan_in_plot_or_data_fails),
         cmocka_unit_test(helpers_propagate_nan),
         cmocka_unit_test(ks_tests_are_nan_with_a_nan_sample),
+        cmocka_unit_test(rms_test_refuses_nonfinite),
         cmocka_unit_test(field_nan_fails),
         cmocka_unit_test(lognormal_nan_fails),
         cmocka_unit_test(contact_nan_fails),

@@ -97,6 +97,21 @@ double sf_var_pvalue(double s2, double sigma2, size_t n, int mean_known)
     return p > 1 ? 1 : p;
 }
 
+double sf_rms_le_pvalue(const double *e, size_t n, double b)
+{
+    if (n < 2)
+        return 0;
+    double m = 0, v = 0;
+    for (size_t i = 0; i < n; i++)
+        m += e[i] * e[i] / (double)n;
+    for (size_t i = 0; i < n; i++)
+        v += (e[i] * e[i] - m) * (e[i] * e[i] - m) / (double)(n - 1);
+    double se = sqrt(v / (double)n);
+    if (!isfinite(m) || !isfinite(se))
+        return 0;
+    return se > 0 ? gsl_cdf_tdist_Q((m - b * b) / se, (double)n - 1) : (m <= b * b ? 1 : 0);
+}
+
 double sf_cdf_normal(double x, void *params)
 {
     (void)params;

@@ -35,6 +35,14 @@ double sf_var_pvalue(double s2, double sigma2, size_t n, int mean_known);
  * se = 0: 1 inside the margin, 0 outside. */
 double sf_interval_null_p(double est, double se, double margin, double df);
 
+/* One-sided test of H0 "the RMS of e[0..n) is at most b": Student's t on
+ * the squares (n - 1 dof), p = Q_t((mean(e^2) - b^2) / se(e^2)).  For
+ * right-skewed squares (heavy-tailed errors) the upper t test is
+ * conservative: a large mean comes with a large sd.  A non-finite e or
+ * n < 2 gives 0 (the case fails); zero spread: 1 if mean(e^2) <= b^2,
+ * else 0. */
+double sf_rms_le_pvalue(const double *e, size_t n, double b);
+
 /* Standard normal CDF as an sf_cdf_fn. */
 double sf_cdf_normal(double x, void *params);
 

@@ -491,10 +491,11 @@ sf_cof *check_cellavg_filter(const sf_cof *fine, const sf_scene *sc, double box,
  * field (deviations times `scale`, check_cellavg_filter), and the point runs
  * sp[0..L) on that field.  The field is drawn
  * afresh for each use (the box filter slides a tiled window along the
- * whole strip; a run follows the disc).  QoIs: qc (its complete cycles in
- * *nc) and qr[3 l + q]. */
+ * whole strip; a run follows the disc).  QoIs: qc (its event structure in
+ * *hc) and qr[3 l + q] (structure hr[l]). */
 static int pair_runs(sf_cof_plan *cp, unsigned long seed, size_t i, const sf_scene *sc, double box, double scale,
-                     const sf_scene *sp, size_t L, double *qc, size_t *nc, double *qr, sf_result *r)
+                     const sf_scene *sp, size_t L, double *qc, check_qoi_shape *hc, double *qr, check_qoi_shape *hr,
+                     sf_result *r)
 {
     sf_cof *fine = NULL, *coarse = NULL;
     int rc = check_draw(cp, seed, i, &fine);
@@ -502,11 +503,11 @@ static int pair_runs(sf_cof_plan *cp, unsigned long seed, size_t i, const sf_sce
         rc = SF_EFAIL;
     sf_cof_free(fine);
     if (!rc)
-        rc = check_qoi_run(sc, coarse, qc, nc, r);
+        rc = check_qoi_run(sc, coarse, qc, hc, r);
     sf_cof_free(coarse);
     for (size_t l = 0; l < L && !rc; l++) {
         if (!(rc = check_draw(cp, seed, i, &fine)))
-            rc = check_qoi_run(&sp[l], fine, qr + 3 * l, NULL, r);
+            rc = check_qoi_run(&sp[l], fine, qr + 3 * l, hr + l, r);
         sf_cof_free(fine);
     }
     return rc;
@@ -550,21 +551,6 @@ static int pair_scenes(const sf_case *c, size_t k, int plan, size_t rings, doubl
     sp->cells = rings;
     sc->cof_model = SF_COFMODEL_CELL;
     return SF_SUCCESS;
-}
-
-/* The one-sided test of an RMS against a bound b from the per-realisation
- * errors e[0..n): H0 E e^2 <= b^2, t = (mean e^2 - b^2) / se(e^2), df =
- * n - 1 (the mean of n squares: approximately normal at n >= 30). */
-static double rms_le_p(const double *e, size_t n, double b)
-{
-    double *e2 = check_alloc(n * sizeof *e2);
-    for (size_t i = 0; i < n; i++)
-        e2[i] = e[i] * e[i];
-    double m = gsl_stats_mean(e2, 1, n), se = gsl_stats_sd(e2, 1, n) / sqrt((double)n);
-    free(e2);
-    if (!isfinite(m) || !isfinite(se))
-        return 0;
-    return se > 0 ? gsl_cdf_tdist_Q((m - b * b) / se, (double)n - 1) : (m <= b * b ? 1 : 0);
 }
 
 /* Two uses of one comparison on the same fine field (point model,
@@ -611,6 +597,7 @@ static int vs_point(const sf_case *c, sf_result *r, int plan)
     double *worst = check_alloc(K * sizeof *worst), *pred = check_alloc(K * sizeof *pred);
     double *e = check_alloc(n * L * sizeof *e), *g = check_alloc(n * L * sizeof *g);
     double *qr = check_alloc(3 * L * sizeof *qr);
+    check_qoi_shape *hr = check_alloc(L * sizeof *hr);
     double *ek = check_alloc(K * n * sizeof *ek);   /* each value's per-realisation errors, listed after the table */
     sf_scene *sp = check_alloc(L * sizeof *sp);
     if (plan)
@@ -655,29 +642,29 @@ static int vs_point(const sf_case *c, sf_result *r, int plan)
         }
         /* as in plan.c's qoi_tol check: a field on which no run forms a QoI
          * (no complete cycle in the window: at a slow belt, a long stick)
-         * or on which the runs disagree on forming one (a cycle or a stick
-         * at the window's edge: the per-realisation QoI jumps there, at any
-         * accuracy) is replaced by the next stream, up to 4n draws, and
-         * counted in the findings */
+         * or on which the runs count different events (check_qoi_shape: a
+         * cycle or a stick at the window's edge, a grazing maximum of x:
+         * the per-realisation QoI jumps there, at any accuracy) is replaced
+         * by the next stream, up to 4n draws, and counted in the findings */
         double e2 = 0, ew = 0, t0 = check_cpu_seconds();
         size_t used = 0, none = 0, edge = 0;
         for (size_t i = 0; used < n && i < 4 * n && !rc; i++) {
             double qc[3];
-            size_t nc;
-            if ((rc = pair_runs(cp, s0->seed, i, &sc, box, 1, sp, L, qc, &nc, qr, r)))
+            check_qoi_shape hc;
+            if ((rc = pair_runs(cp, s0->seed, i, &sc, box, 1, sp, L, qc, &hc, qr, hr, r)))
                 break;
-            /* by the runs' kinds (common.h: no QoI, no stick, a stick), not
-             * by the gaps: an infinite gap between runs of one kind is a
-             * disagreement, and fails the case below */
-            int kind = check_qoi_kind(qc), differ = 0;
+            /* by the runs' event structures (common.h: kind, oscillations,
+             * cycles), not by the gaps: an infinite gap between runs of one
+             * structure is a disagreement, and fails the case below */
+            int differ = 0;
             for (size_t l = 0; l < L; l++)
-                differ |= check_qoi_kind(qr + 3 * l) != kind;
-            if (differ || !kind) {
+                differ |= check_qoi_shape_differ(&hr[l], &hc);
+            if (differ || !hc.kind) {
                 *(differ ? &edge : &none) += 1;
                 continue;
             }
             for (size_t l = 0; l < L; l++) {
-                e[l * n + used] = check_qoi_gap_of(qc, nc, qr + 3 * l);
+                e[l * n + used] = check_qoi_gap_of(qc, hc.ncycles, qr + 3 * l);
                 g[l * n + used] = check_qoi_gap_of(qr + 3 * l, 1, qr + 3 * (L - 1));
             }
             double ei = e[(L - 1) * n + used++];
@@ -691,9 +678,10 @@ static int vs_point(const sf_case *c, sf_result *r, int plan)
             sf_note(r, "%s = %g: %zu realisation(s) without a complete cycle in either run replaced by the next "
                        "streams.", lab, c->spec.sweep.v[k], none);
         if (edge)
-            sf_note(r, "%s = %g: %zu realisation(s) on which the runs disagree on whether a QoI is formed (a cycle or "
-                       "stick at the window's edge: a jump of the per-realisation QoI, not an accuracy error) replaced "
-                       "by the next streams.", lab, c->spec.sweep.v[k], edge);
+            sf_note(r, "%s = %g: %zu realisation(s) on which the runs count different events (oscillations, cycles "
+                       "or a stick at the window's edge, or a maximum of x grazing vx = 0: a jump of the "
+                       "per-realisation QoI, not an accuracy error) replaced by the next streams.", lab,
+                    c->spec.sweep.v[k], edge);
         if (used < n) {   /* fails; no row to plot, the later values are not run */
             check_fields_row(r, lab, c->spec.sweep.v[k], used, n);
             short_k = 1;
@@ -718,9 +706,9 @@ static int vs_point(const sf_case *c, sf_result *r, int plan)
             sf_check_le(r, t, worst[k], c->spec.tolerance);
             if (stat) {
                 snprintf(t, sizeof t, "l/R = %g: RMS QoI error <= qoi_tol (one-sided t test on the squares)", x[k]);
-                sf_check_pvalue(r, t, rms_le_p(e + (L - 1) * n, n, s0->qoi_tol), arow, n);
+                sf_check_pvalue(r, t, sf_rms_le_pvalue(e + (L - 1) * n, n, s0->qoi_tol), arow, n);
                 snprintf(t, sizeof t, "l/R = %g: RMS QoI error <= the plan's prediction (one-sided t test)", x[k]);
-                sf_check_pvalue(r, t, rms_le_p(e + (L - 1) * n, n, pred[k]), arow, n);
+                sf_check_pvalue(r, t, sf_rms_le_pvalue(e + (L - 1) * n, n, pred[k]), arow, n);
             } else if (n >= 2) {
                 snprintf(t, sizeof t, "l/R = %g: RMS QoI error of the plan's cell averages vs the point reference <= "
                                       "qoi_tol", x[k]);
@@ -734,7 +722,7 @@ static int vs_point(const sf_case *c, sf_result *r, int plan)
             if (stat) {   /* the RMS over a few fields is itself random: test it, at alpha */
                 snprintf(t, sizeof t, "%s = %g: RMS QoI difference (cell averages vs point values, same field) <= "
                                       "tolerance x predicted (one-sided t test on the squares)", lab, x[k]);
-                sf_check_pvalue(r, t, rms_le_p(e + (L - 1) * n, n, c->spec.tolerance * pred[k]), arow, n);
+                sf_check_pvalue(r, t, sf_rms_le_pvalue(e + (L - 1) * n, n, c->spec.tolerance * pred[k]), arow, n);
             } else {
                 snprintf(t, sizeof t,
                          "%s = %g: RMS QoI difference (cell averages vs point values, same field) / predicted", lab,
@@ -784,16 +772,8 @@ static int vs_point(const sf_case *c, sf_result *r, int plan)
         else
             sf_plot_hline(p, "qoi_tol = 1e-3 (default)", 1e-3);
     }
-    if (!plan && kd) {   /* the per-field data behind each RMS (scripts/cellavg-data.sh stores them) */
-        sf_note(r, "\nEach realisation's error, in the order of the streams used:\n");
-        for (size_t k = 0; k < kd; k++) {
-            char line[1024];
-            int o = snprintf(line, sizeof line, "- %s = %g:", lab, x[k]);
-            for (size_t i = 0; i < n && o > 0 && (size_t)o < sizeof line; i++)
-                o += snprintf(line + o, sizeof line - (size_t)o, " %.4g", ek[k * n + i]);
-            sf_note(r, "%s", line);
-        }
-    }
+    if (!plan && kd)   /* the per-field data behind each RMS (scripts/cellavg-data.sh stores them) */
+        check_list_errors(r, lab, kd, x, n, ek);
     free(x);
     free(ach);
     free(worst);
@@ -802,6 +782,7 @@ static int vs_point(const sf_case *c, sf_result *r, int plan)
     free(ek);
     free(g);
     free(qr);
+    free(hr);
     free(sp);
     return rc ? SF_EFAIL : SF_SUCCESS;
 }
@@ -931,7 +912,7 @@ static int chk_calibration(const sf_case *c, sf_result *r)
             sf_note(r, "| %g | %g | %g | %g | %g | %.3f | %g | %g | %g | %zu | %.3g | %.2g | %.3g | %.3f | %.3g | %.2g |",
                     v[CC_PT], v[CC_LR], v[CC_CV], v[CC_VB], v[CC_MU], pt[k].beta, v[CC_CELLS], v[CC_RINGS], v[CC_T],
                     pt[k].n, pt[k].pred, pt[k].ref, sqrt(m2), sqrt(m2) / pt[k].pred, w,
-                    pt[k].n >= 2 ? rms_le_p(ek, pt[k].n, pt[k].pred) : 1.0);
+                    pt[k].n >= 2 ? sf_rms_le_pvalue(ek, pt[k].n, pt[k].pred) : 1.0);
         }
         double mz = gsl_stats_mean(z, 1, rows), sez = gsl_stats_sd(z, 1, rows) / sqrt((double)rows);
         sf_note(r, "\nPooled over the %zu fields (not a gate: err_cell bounds each point, not their average): mean "
@@ -1053,8 +1034,8 @@ static int chk_qoi_stats(const sf_case *c, sf_result *r)
         }
         for (size_t i = 0; i < n && !rc; i++) {
             double qc[3], qp[3];
-            size_t nc;
-            rc = pair_runs(cp, s0->seed, i, &sc, box, scale, &sp, 1, qc, &nc, qp, r);
+            check_qoi_shape hc, hp;
+            rc = pair_runs(cp, s0->seed, i, &sc, box, scale, &sp, 1, qc, &hc, qp, &hp, r);
             for (int j = 0; j < NQ && !rc; j++) {
                 q[j * n + i] = qc[j];
                 q[(NQ + j) * n + i] = qp[j];

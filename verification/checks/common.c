@@ -419,7 +419,7 @@ int ref_cycle(const sf_scene *s, double mu, ref_cycle1d *c)
     return 0;
 }
 
-int check_qoi_run(const sf_scene *s, const sf_cof *cof, double q[3], size_t *ncycles, sf_result *r)
+int check_qoi_run(const sf_scene *s, const sf_cof *cof, double q[3], check_qoi_shape *shape, sf_result *r)
 {
     sf_osc_result a;
     int rc = check_osc_run(s, NULL, cof, 0, &a, NULL, NULL, r);
@@ -428,8 +428,8 @@ int check_qoi_run(const sf_scene *s, const sf_cof *cof, double q[3], size_t *ncy
     q[0] = a.pv_x;
     q[1] = a.pv_F;
     q[2] = a.stick_fraction;
-    if (ncycles)
-        *ncycles = a.ncycles;
+    if (shape)
+        *shape = (check_qoi_shape){ check_qoi_kind(q), a.nosc, a.ncycles };
     sf_osc_result_free(&a);
     return SF_SUCCESS;
 }
@@ -449,6 +449,20 @@ double check_qoi_gap_of(const double q[3], size_t ncycles, const double qref[3])
     return e;
 }
 
+void check_list_errors(sf_result *r, const char *lab, size_t K, const double *x, size_t n, const double *e)
+{
+    size_t len = 64 + strlen(lab) + 16 * n;
+    char *line = check_alloc(len);
+    sf_note(r, "\nEach realisation's error, in the order of the streams used:\n");
+    for (size_t k = 0; k < K; k++) {
+        int o = snprintf(line, len, "- %s = %g:", lab, x[k]);
+        for (size_t i = 0; i < n && o > 0 && (size_t)o < len; i++)
+            o += snprintf(line + o, len - (size_t)o, " %.4g", e[k * n + i]);
+        sf_note(r, "%s", line);
+    }
+    free(line);
+}
+
 void check_fields_row(sf_result *r, const char *lab, double x, size_t used, size_t n)
 {
     char t[160], found[96];
@@ -463,15 +477,20 @@ int check_qoi_kind(const double q[3])
     return isnan(q[0]) ? 0 : q[2] > 0 ? 2 : 1;
 }
 
+int check_qoi_shape_differ(const check_qoi_shape *a, const check_qoi_shape *b)
+{
+    return a->kind != b->kind || a->nosc != b->nosc || a->ncycles != b->ncycles;
+}
+
 int check_qoi_gap(const sf_scene *s, const sf_cof *cof, const sf_scene *sref, const sf_cof *cref, double *gap,
-                  int *kinds_differ, sf_result *r)
+                  int *shapes_differ, sf_result *r)
 {
     double qa[3], qb[3];
-    size_t nb;
-    int rc = check_qoi_run(sref, cref, qa, NULL, r);
-    if (!rc && !(rc = check_qoi_run(s, cof, qb, &nb, r))) {
-        *gap = check_qoi_gap_of(qb, nb, qa);
-        *kinds_differ = check_qoi_kind(qa) != check_qoi_kind(qb);
+    check_qoi_shape ha, hb;
+    int rc = check_qoi_run(sref, cref, qa, &ha, r);
+    if (!rc && !(rc = check_qoi_run(s, cof, qb, &hb, r))) {
+        *gap = check_qoi_gap_of(qb, hb.ncycles, qa);
+        *shapes_differ = check_qoi_shape_differ(&ha, &hb);
     }
     return rc;
 }

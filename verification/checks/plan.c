@@ -313,7 +313,8 @@ static int chk_reuse(const sf_case *c, sf_result *r)
  * (the reference).  The achieved error of a realisation is the largest
  * relative difference of PV_x, PV_F and stick fraction; the check: its RMS
  * over the realisations at or below qoi_tol at every l/R (and the
- * prediction the plan printed is noted beside it).  Where the plan needs no
+ * prediction the plan printed is noted beside it; each field's error is
+ * listed after the table).  Where the plan needs no
  * quadrature (the strip is one random variable at large l/R) the reference
  * differs in rtol only.  The reference is the same code at a finer
  * setting: this verifies the plan's error control, not the model. */
@@ -327,6 +328,7 @@ static int chk_qoi_tol(const sf_case *c, sf_result *r)
     }
     double *x = check_alloc(K * sizeof *x), *ach = check_alloc(K * sizeof *ach);
     double *worst = check_alloc(K * sizeof *worst), *pred = check_alloc(K * sizeof *pred);
+    double *es = check_alloc(K * n * sizeof *es);   /* each l/R's per-realisation errors */
     sf_note(r, "Each realisation at the plan's settings for qoi_tol = %g against 4x its rings and rtol / 100 on the "
                "same field; %zu realisations per l/R (streams sf_mc_seed(seed, i)); error: the largest relative "
                "difference of PV_x, PV_F and stick fraction.\n\n| l/R | cells (plan) | rtol (plan) | predicted | "
@@ -351,12 +353,14 @@ static int chk_qoi_tol(const sf_case *c, sf_result *r)
         /* a field with no complete cycle in T at either setting has no QoI
          * to compare (a long stick or slip phase: about 2% of the fields at
          * l/R = 0.5, T = 30 s): the next stream replaces it, up to 4n draws.
-         * So does a field on which the two settings disagree on whether a
-         * QoI is formed at all (an oscillation or a stick that starts or
-         * ends at the window's edge at one setting only: the per-realisation
-         * QoI jumps there whatever the accuracy, e.g. seed 672499010 at
-         * l/R = 0.5); such fields are counted and reported. */
+         * So does a field on which the two settings count different events
+         * (check_qoi_shape: an oscillation or a stick at the window's edge
+         * at one setting only, e.g. seed 672499010 at l/R = 0.5; a maximum
+         * of x grazing vx = 0 in a long slip): the per-realisation QoI
+         * jumps there whatever the accuracy; such fields are counted and
+         * reported with the size of each jump. */
         size_t used = 0, none = 0, edge = 0;
+        char jumps[128] = "";   /* the first few jumps' gaps */
         for (size_t i = 0; used < n && i < 4 * n && !rc; i++) {
             sf_cof *cof = NULL;
             rc = check_draw(cp, s.seed, i, &cof);
@@ -372,12 +376,14 @@ static int chk_qoi_tol(const sf_case *c, sf_result *r)
             if (!rc && !(rc = check_qoi_gap(&s, cof, &ref, cof, &e, &differ, r))) {
                 if (isnan(e))
                     none++;
-                else if (differ)   /* by the runs' kinds (common.h): an infinite gap otherwise fails */
-                    edge++;
+                else if (differ) {   /* by the runs' event structures (common.h): an infinite gap otherwise fails */
+                    if (edge++ < 8 && strlen(jumps) < sizeof jumps - 16)
+                        snprintf(jumps + strlen(jumps), sizeof jumps - strlen(jumps), " %.3g", e);
+                }
                 else {
                     e2 += e * e / (double)n;
                     ew = sf_max(ew, e);
-                    used++;
+                    es[k * n + used++] = e;
                 }
             }
             sf_cof_free(cof);
@@ -389,9 +395,10 @@ static int chk_qoi_tol(const sf_case *c, sf_result *r)
             sf_note(r, "l/R = %g: %zu realisation(s) without a complete cycle at either setting replaced by the next "
                        "streams.", c->spec.sweep.v[k], none);
         if (edge)
-            sf_note(r, "l/R = %g: %zu realisation(s) on which the two settings disagree on whether a QoI is formed "
-                       "(a cycle or stick at the window's edge: a jump of the per-realisation QoI, not an accuracy "
-                       "error) replaced by the next streams.", c->spec.sweep.v[k], edge);
+            sf_note(r, "l/R = %g: %zu realisation(s) on which the two settings count different events (oscillations, "
+                       "cycles or a stick at the window's edge, or a maximum of x grazing vx = 0: a jump of the "
+                       "per-realisation QoI, not an accuracy error) replaced by the next streams; their QoI gaps:%s",
+                    c->spec.sweep.v[k], edge, jumps);
         char t[160];
         check_fields_row(r, "l/R", c->spec.sweep.v[k], used, n);
         x[k] = c->spec.sweep.v[k];
@@ -408,6 +415,8 @@ static int chk_qoi_tol(const sf_case *c, sf_result *r)
         snprintf(t, sizeof t, "l/R = %g: RMS QoI error at the plan's settings (requested qoi_tol)", x[k]);
         sf_check_le(r, t, ach[k], s0->qoi_tol);
     }
+    if (!rc)
+        check_list_errors(r, "l/R", K, x, n, es);
     if (!rc) {
         sf_plot *p = sf_result_plot(r, "qoi_tol", "Accuracy plan: achieved QoI error vs l/R", "l/R [-]",
                                     "relative QoI error [-]");
@@ -421,6 +430,7 @@ static int chk_qoi_tol(const sf_case *c, sf_result *r)
     free(ach);
     free(worst);
     free(pred);
+    free(es);
     return rc ? SF_EFAIL : SF_SUCCESS;
 }
 
