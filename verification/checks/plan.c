@@ -379,8 +379,7 @@ static int chk_qoi_tol(const sf_case *c, sf_result *r)
                 else if (differ) {   /* by the runs' event structures (common.h): an infinite gap otherwise fails */
                     if (edge++ < 8 && strlen(jumps) < sizeof jumps - 16)
                         snprintf(jumps + strlen(jumps), sizeof jumps - strlen(jumps), " %.3g", e);
-                }
-                else {
+                } else {
                     e2 += e * e / (double)n;
                     ew = sf_max(ew, e);
                     es[k * n + used++] = e;
@@ -397,7 +396,8 @@ static int chk_qoi_tol(const sf_case *c, sf_result *r)
         if (edge)
             sf_note(r, "l/R = %g: %zu realisation(s) on which the two settings count different events (oscillations, "
                        "cycles or a stick at the window's edge, or a maximum of x grazing vx = 0: a jump of the "
-                       "per-realisation QoI, not an accuracy error) replaced by the next streams; their QoI gaps:%s",
+                       "per-realisation QoI, not an accuracy error) replaced by the next streams; their QoI gaps "
+                       "(the first 8):%s",
                     c->spec.sweep.v[k], edge, jumps);
         char t[160];
         check_fields_row(r, "l/R", c->spec.sweep.v[k], used, n);
