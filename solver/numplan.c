@@ -487,6 +487,9 @@ void sf_numplan_explain(const sf_numplan *p, FILE *f)
         else
             fprintf(f, "plan: predicted QoI error %.2g (the budget: outside the design the sharper fit covers, "
                        "numplan.c)\n", p->err_pred);
+        fprintf(f, "plan: not bounded: a jump of a realisation's QoIs where runs at other settings count other "
+                   "oscillations or stick cycles (a maximum of x grazing vx = 0, an event at the window's edge); "
+                   "its probability shrinks with the error, its size does not (docs/design.md sec. 6)\n");
     }
     if (*p->warning)
         fprintf(f, "plan warning: %s\n", p->warning);

@@ -200,6 +200,7 @@ static void plan_prediction_edges(void **state)
     assert_true(p.err_pred < p.err_total);
     text = numplan_text(&p);
     assert_non_null(strstr(text, "95% of realisations below it"));
+    assert_non_null(strstr(text, "plan: not bounded: a jump of a realisation's QoIs"));
     free(text);
     /* outside the box, one departure at a time: the budget */
     for (int k = 0; k < 11; k++) {
