@@ -23,7 +23,7 @@ static void usage(FILE *f)
     fputs("usage: slipfield sweep SCENE --param NAME --values A,B,C --realisations N --out FILE\n"
           "                       [--summary FILE] [--threads T] [--resume]\n"
           "                       [--target-se X [--pilot N0] | --control-variate |\n"
-          "                        --estimator mlmc [--pilot N0]]\n"
+          "                        --estimator mlmc|antithetic [--pilot N0]]\n"
           "Monte Carlo sweep: at each value of NAME, N realisations of the scene.\n"
           "  --param NAME      a numeric scene key, or l_over_R (l = value x R), or\n"
           "                    mu_mean (at the scene's CV: mu_std scales with it)\n"
@@ -73,6 +73,15 @@ static void usage(FILE *f)
           "                    level's work, and per ratio the estimate, its interval,\n"
           "                    each level's variance and the variance reduction factor;\n"
           "                    the rows are level 1's fine realisations\n"
+          "  --estimator antithetic  pairs of the drawn field G and its antithetic -G\n"
+          "                    (negated before the lognormal map; -G has G's law): one\n"
+          "                    draw, two runs, the pair mean unbiased; a pilot of N0\n"
+          "                    pairs (--pilot, default min(10, N)) sets the pairs for\n"
+          "                    plain Monte Carlo's variance with N; the summary adds\n"
+          "                    anti_n, a pair's and a plain realisation's work, and per\n"
+          "                    ratio the estimate, its interval (Student over the pair\n"
+          "                    means), rho = corr(Q(G), Q(-G)) and the variance\n"
+          "                    reduction factor; the rows are the pairs' G members\n"
           "  --threads T       OpenMP threads (default: all); results do not depend on it\n"
           "  --resume          continue from FILE.ckpt<k> checkpoints of an interrupted run\n"
           "                    (and remove the temporary files a killed run left)\n"
@@ -178,27 +187,29 @@ int sf_cmd_sweep(int argc, char **argv)
         fprintf(stderr, "slipfield sweep: --target-se takes a standard error > 0 (got %g)\n", target_se);
         return SF_EXIT_USAGE;
     }
-    int ml = 0;
-    if (estimator && !(ml = !strcmp(estimator, "mlmc")) && strcmp(estimator, "plain")) {
-        fprintf(stderr, "slipfield sweep: --estimator takes plain or mlmc (got '%s')\n", estimator);
+    int ml = 0, anti = 0;
+    if (estimator && !(ml = !strcmp(estimator, "mlmc")) && !(anti = !strcmp(estimator, "antithetic")) &&
+        strcmp(estimator, "plain")) {
+        fprintf(stderr, "slipfield sweep: --estimator takes plain, mlmc or antithetic (got '%s')\n", estimator);
         return SF_EXIT_USAGE;
     }
-    if (ml && (staged || cv || resume)) {
-        fprintf(stderr, "slipfield sweep: --estimator mlmc does not combine with --target-se, --control-variate "
-                        "or --resume\n");
+    if ((ml || anti) && (staged || cv || resume)) {
+        fprintf(stderr, "slipfield sweep: --estimator %s does not combine with --target-se, --control-variate "
+                        "or --resume\n", estimator);
         return SF_EXIT_USAGE;
     }
-    if (pilot && !staged && !ml) {
-        fprintf(stderr, "slipfield sweep: --pilot needs --target-se or --estimator mlmc\n");
+    if (pilot && !staged && !ml && !anti) {
+        fprintf(stderr, "slipfield sweep: --pilot needs --target-se or --estimator mlmc|antithetic\n");
         return SF_EXIT_USAGE;
     }
+    int paired = ml || anti;   /* the estimators sized from a pilot of pairs */
     if (staged && cv) {
         fprintf(stderr, "slipfield sweep: --control-variate and --target-se do not combine\n");
         return SF_EXIT_USAGE;
     }
-    if ((staged || ml) && !pilot)
-        pilot = n < (ml ? 10 : 20) ? n : ml ? 10 : 20;
-    if ((staged || ml) && (pilot < 2 || pilot > n)) {
+    if ((staged || paired) && !pilot)
+        pilot = n < (paired ? 10 : 20) ? n : paired ? 10 : 20;
+    if ((staged || paired) && (pilot < 2 || pilot > n)) {
         fprintf(stderr, "slipfield sweep: --pilot %zu: the pilot needs 2 to %zu (the cap, --realisations) realisations\n",
                 pilot, n);
         return SF_EXIT_USAGE;
@@ -265,6 +276,7 @@ int sf_cmd_sweep(int argc, char **argv)
         sf_sweep_point p;
         const char *ckp = strcmp(out_path, "-") ? ck : NULL;
         rc = ml       ? sf_sweep_run_mlmc(&s, n, pilot, (int)threads, label, &p, err, sizeof err)
+             : anti   ? sf_sweep_run_antithetic(&s, n, pilot, (int)threads, label, &p, err, sizeof err)
              : staged ? sf_sweep_run_target(&s, target_se, pilot, n, (int)threads, ckp, resume, label, &p, err, sizeof err)
              : cv   ? sf_sweep_run_cv(&s, n, (int)threads, ckp, resume, label, &p, err, sizeof err)
                     : sf_sweep_run(&s, n, (int)threads, ckp, resume, label, &p, err, sizeof err);

@@ -115,19 +115,25 @@ expect 2 "in [t_skip, T] (pv_x = nan): raise T" "$bin" sweep sw.scene --param T 
 for a in "--target-se 0" "--target-se -0.1" "--target-se nan" "--target-se x"; do
     expect 2 "--target-se" "$bin" sweep sw.scene --param T --values 20 --realisations 5 $a --out sw.tsv
 done
-expect 2 "--pilot needs --target-se or --estimator mlmc" "$bin" sweep sw.scene --param T --values 20 --realisations 5 --pilot 3 --out sw.tsv
+expect 2 "--pilot needs --target-se or --estimator mlmc|antithetic" "$bin" sweep sw.scene --param T --values 20 --realisations 5 --pilot 3 --out sw.tsv
 expect 2 "--pilot takes a whole number from 2" "$bin" sweep sw.scene --param T --values 20 --realisations 5 --target-se 0.1 --pilot 1 --out sw.tsv
 expect 2 "the pilot needs 2 to 5" "$bin" sweep sw.scene --param T --values 20 --realisations 5 --target-se 0.1 --pilot 6 --out sw.tsv
 expect 2 "do not combine" "$bin" sweep sw.scene --param T --values 20 --realisations 5 --target-se 0.1 --control-variate --out sw.tsv
 expect 2 "--control-variate takes no value" "$bin" sweep sw.scene --param T --values 20 --realisations 5 --control-variate=1 --out sw.tsv
-expect 2 "--estimator takes plain or mlmc" "$bin" sweep sw.scene --param T --values 20 --realisations 5 --estimator mc --out sw.tsv
+expect 2 "--estimator takes plain, mlmc or antithetic" "$bin" sweep sw.scene --param T --values 20 --realisations 5 --estimator mc --out sw.tsv
 expect 2 "does not combine" "$bin" sweep sw.scene --param T --values 20 --realisations 5 --estimator mlmc --control-variate --out sw.tsv
 expect 2 "the pilot needs 2 to 5" "$bin" sweep sw.scene --param T --values 20 --realisations 5 --estimator mlmc --pilot 6 --out sw.tsv
+expect 2 "--estimator antithetic does not combine" "$bin" sweep sw.scene --param T --values 20 --realisations 5 --estimator antithetic --resume --out sw.tsv
+expect 2 "the pilot needs 2 to 5" "$bin" sweep sw.scene --param T --values 20 --realisations 5 --estimator antithetic --pilot 6 --out sw.tsv
 [ ! -e sw.tsv ] && ok || bad "a refused two-stage sweep left sw.tsv"
 printf 'cof = variable\nT = 14\nt_skip = 4\n' > var.scene
 expect 0 "" "$bin" sweep var.scene --param T --values 14 --realisations 6 --target-se 1e-9 --pilot 3 --out st.tsv --summary st.sum
 [ "$(awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == "stop") c = i } NR == 2 { print $3, $c }' st.sum)" = "6 cap" ] \
     && ok || bad "two-stage sweep at the cap: $(cat st.sum)"
+# antithetic pairs: one variable per realisation, the pairs in the summary
+expect 0 "" "$bin" sweep var.scene --param T --values 14 --realisations 6 --estimator antithetic --pilot 3 --out an.tsv --summary an.sum
+[ "$(awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == "anti_n") c = i } NR == 2 { print ($c >= 3 && $c <= 6) }' an.sum)" = "1" ] \
+    && ok || bad "antithetic sweep: anti_n: $(cat an.sum)"
 # run: no QoI is said; no --out nor --summary prints the summary
 printf 'cof = uniform\nT = 5\n' > t5.scene
 expect 0 "warning: no quantity of interest" "$bin" run t5.scene

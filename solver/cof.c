@@ -28,6 +28,8 @@ struct sf_cof {
      * (key, lattice point) alone, so the window is a cache of the field */
     sf_tiles *tiles;
     sf_lognormal ln;
+    uint64_t key;              /* the realisation's key (sf_tiles_set_key) */
+    double sign;               /* +1; -1 for the antithetic window: the Nataf map of -G */
     long i_lo;
     int filled;
     size_t slack_r;            /* columns kept ahead on the +x side when sliding */
@@ -142,7 +144,7 @@ static int window_make(sf_cof *c, long i, size_t c0, size_t cnt)
     for (size_t j = 0; j < c->n; j++) {
         double *g = c->grid + c0 + c->m * j;
         for (size_t k = 0; k < cnt; k++)
-            g[k] = sf_lognormal_map(&c->ln, g[k]);
+            g[k] = sf_lognormal_map(&c->ln, c->sign * g[k]);
     }
     c->columns_made += cnt;
     return SF_SUCCESS;
@@ -365,15 +367,11 @@ int sf_cof_plan_truncated(const sf_cof_plan *p) { return p->truncated; }
 double sf_cof_plan_cell_std(const sf_cof_plan *p) { return p->cfield ? sqrt(sf_cellavg_var(&p->ca)) : 0; }
 struct sf_field *sf_cof_plan_cell_field(const sf_cof_plan *p) { return p->cfield; }
 
-/* A tiled realisation: its key is 64 bits from rng (two 32-bit draws);
+/* A tiled realisation of key `key` (sign -1: of -G, the antithetic);
  * the window starts over the disc at the origin. */
-static int draw_window(const sf_cof_plan *p, gsl_rng *rng, sf_cof **out)
+static int window_of_key(const sf_cof_plan *p, uint64_t key, double sign, sf_cof **out)
 {
     const sf_cof_plan_info *in = &p->info;
-    if (!rng)
-        return SF_EINVAL;
-    uint64_t key = (uint64_t)gsl_rng_get(rng) << 32;
-    key ^= (uint64_t)gsl_rng_get(rng);
     sf_cof *c = cof_new(SF_COF_FIELD);
     if (!c)
         return SF_ENOMEM;
@@ -383,6 +381,8 @@ static int draw_window(const sf_cof_plan *p, gsl_rng *rng, sf_cof **out)
     c->dy = in->dy;
     c->y0 = in->y0;
     c->ln = p->ln;
+    c->key = key;
+    c->sign = sign;
     c->margin = in->margin;
     c->slack_r = (size_t)ceil(in->margin / in->dx);
     sf_tiles_spec ts = { in->ny, in->dx, in->dy, p->l, 0, 0 };
@@ -400,6 +400,16 @@ static int draw_window(const sf_cof_plan *p, gsl_rng *rng, sf_cof **out)
     }
     *out = c;
     return SF_SUCCESS;
+}
+
+/* A tiled realisation: its key is 64 bits from rng (two 32-bit draws). */
+static int draw_window(const sf_cof_plan *p, gsl_rng *rng, sf_cof **out)
+{
+    if (!rng)
+        return SF_EINVAL;
+    uint64_t key = (uint64_t)gsl_rng_get(rng) << 32;
+    key ^= (uint64_t)gsl_rng_get(rng);
+    return window_of_key(p, key, 1, out);
 }
 
 int sf_cof_plan_draw(sf_cof_plan *p, gsl_rng *rng, sf_cof **out)
@@ -439,6 +449,48 @@ int sf_cof_plan_draw(sf_cof_plan *p, gsl_rng *rng, sf_cof **out)
         }
         grid_done(c);
         *out = c;
+        return SF_SUCCESS;
+    }
+    }
+    return SF_EINVAL;
+}
+
+int sf_cof_plan_antithetic(const sf_cof_plan *p, const sf_cof *c, sf_cof **out)
+{
+    *out = NULL;
+    if (!c || c->kind != p->info.kind ||
+        (c->kind == SF_COF_FIELD &&
+         (!!c->tiles != (p->info.generator == SF_COFGEN_TILES) || (c->box > 0) != (p->cfield != NULL))))
+        return SF_EINVAL;
+    /* exp(mu_g - sigma_g G) = exp(2 mu_g) / exp(mu_g + sigma_g G) */
+    double e2 = exp(2 * p->ln.mu_g);
+    switch (c->kind) {
+    case SF_COF_UNIFORM:
+        return sf_cof_alloc_uniform(c->mu, out);
+    case SF_COF_VARIABLE: {
+        int rc = sf_cof_alloc_uniform(e2 / c->mu, out);
+        if (*out)
+            (*out)->kind = SF_COF_VARIABLE;
+        return rc;
+    }
+    case SF_COF_FIELD: {
+        if (c->tiles)   /* the same key, the Gaussian values negated */
+            return window_of_key(p, c->key, -c->sign, out);
+        sf_cof *a;
+        int rc = grid_new(c->m, c->n, c->x0, c->y0, c->dx, c->dy, &a);
+        if (rc)
+            return rc;
+        size_t np = c->m * c->n;
+        if (c->box > 0) {   /* cell averages: mubar + sd G -> mubar - sd G */
+            for (size_t k = 0; k < np; k++)
+                a->grid[k] = 2 * p->ca.mubar - c->grid[k];
+            a->box = c->box;
+        } else {
+            for (size_t k = 0; k < np; k++)
+                a->grid[k] = e2 / c->grid[k];
+        }
+        grid_done(a);
+        *out = a;
         return SF_SUCCESS;
     }
     }

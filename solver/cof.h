@@ -217,6 +217,15 @@ struct sf_field *sf_cof_plan_cell_field(const sf_cof_plan *p);
  * belt is made as sf_cof_follow() asks for it (the oscillator does). */
 int sf_cof_plan_draw(sf_cof_plan *p, gsl_rng *rng, sf_cof **out);
 
+/* The antithetic of COF c, which plan p drew: the same realisation with
+ * its Gaussian values negated, G -> -G, before the marginal map (the
+ * lognormal strip: exp(2 mu_g) / mu at each node; cell averages:
+ * 2 mubar - mu; tiles: the same key, -G; one variable: exp(2 mu_g) / mu;
+ * uniform: itself).  -G has G's law, so the antithetic is a realisation
+ * of the same model, drawn at no cost of the generator (tiles make their
+ * columns again as the window slides).  SF_EINVAL for a COF of another
+ * kind or generator than p's. */
+int sf_cof_plan_antithetic(const sf_cof_plan *p, const sf_cof *c, sf_cof **out);
 /* Convenience: plan, draw one realisation, free the plan. */
 int sf_cof_from_scene(const sf_scene *s, gsl_rng *rng, sf_cof **out);
 

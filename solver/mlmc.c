@@ -53,13 +53,9 @@ void sf_mlmc_sizes(const double *v0, const double *v1, const double *vf, int nq,
     *n1 = clampz(m1, n_pilot, n_plain);
 }
 
-typedef struct {
-    sf_sweep_ws w;            /* the sweep's: scene, fine plan, COF plan */
-    const sf_plan *coarse;
-    double draw;              /* a draw's work */
-} ml_ws;
+typedef sf_mlmc_ws ml_ws;
 
-static void *ml_ws_alloc(void *ctx)
+void *sf_mlmc_ws_alloc(void *ctx)
 {
     const ml_ws *c = ctx;
     ml_ws *m = sf_malloc(sizeof *m);
@@ -77,7 +73,7 @@ static void *ml_ws_alloc(void *ctx)
     return m;
 }
 
-static void ml_ws_free(void *p)
+void sf_mlmc_ws_free(void *p)
 {
     ml_ws *m = p;
     sf_cof_plan_free_mt(m->w.plan);
@@ -217,7 +213,8 @@ int sf_sweep_run_mlmc(const sf_scene *s, size_t n_plain, size_t n_pilot, int thr
     if (!pairs)
         return SF_ENOMEM;
     ml_ws ctx = { { s, &fine, NULL, NULL, 0 }, &coarse, 0 };
-    sf_mc_ops ops1 = { ml_ws_alloc, ml_ws_free, realise_pair }, ops0 = { ml_ws_alloc, ml_ws_free, realise_coarse };
+    sf_mc_ops ops1 = { sf_mlmc_ws_alloc, sf_mlmc_ws_free, realise_pair },
+              ops0 = { sf_mlmc_ws_alloc, sf_mlmc_ws_free, realise_coarse };
     sf_mc_spec spec1 = { n_plain, P_OUT, s->seed, threads, NULL, 0, 0, label };
     rc = sf_mc_run_range(&spec1, 0, n_pilot, &ops1, &ctx, pairs, NULL, err, errlen);
     double v0[NQ], v1[NQ], vf[NQ];

@@ -37,6 +37,7 @@ extern "C" {
 #endif
 
 #include "numplan.h"
+#include "sweep.h"
 
 /* The coarse plan: half the fine plan's rings or cells per diameter (at
  * least 2) for the point model, the same cells for cell averages (their
@@ -53,6 +54,18 @@ void sf_mlmc_coarse_plan(const sf_plan *fine, sf_plan *coarse);
 #define SF_MLMC_DRAW_WORK_CELL 25.0     /* a cell-average strip point (one real FFT) */
 #define SF_MLMC_RUN_WORK 6e5            /* a run's fixed cost */
 double sf_mlmc_draw_work(const sf_cof_plan_info *info);
+
+/* A Monte Carlo workspace (montecarlo.h's ws_alloc / ws_free) for the
+ * estimators that run more than one solve per draw (this one and
+ * antithetic.h): ctx is an sf_mlmc_ws with w's scene and fine plan set;
+ * each thread's copy has its own COF plan and the work of its draw. */
+typedef struct {
+    sf_sweep_ws w;            /* the sweep's: scene, fine plan, COF plan */
+    const sf_plan *coarse;    /* two levels: the coarse plan (NULL otherwise) */
+    double draw;              /* a draw's work */
+} sf_mlmc_ws;
+void *sf_mlmc_ws_alloc(void *ctx);
+void sf_mlmc_ws_free(void *ws);
 
 #define SF_MLMC_N0_CAP 4                /* n0 <= 4 n_plain */
 #define SF_MLMC_LEVEL0_STREAM ((size_t)-1)

@@ -25,6 +25,7 @@
 #include "mcstop.h"        /* two-stage sample sizes (Stein) */
 #include "sweep.h"         /* parameter sweeps */
 #include "mlmc.h"          /* the two-level estimator of a sweep point */
+#include "antithetic.h"    /* antithetic pairs: an estimator of a sweep point */
 #include "sobol.h"         /* Sobol' indices by pick-freeze */
 #include "sensitivity.h"   /* Sobol' indices of the QoI ratios */
 #include "unum.h"          /* numerical error of a run's QoIs */

@@ -396,6 +396,14 @@ void sf_sweep_summary_header(FILE *f)
         fprintf(f, "\t%s_ml_ratio_mean[-]\t%s_ml_ratio_se[-]\t%s_ml_ratio_ci%d_lo[-]\t%s_ml_ratio_ci%d_hi[-]"
                    "\t%s_ml_var0[-]\t%s_ml_var1[-]\t%s_ml_vrf[-]",
                 qname[q], qname[q], qname[q], lv, qname[q], lv, qname[q], qname[q], qname[q]);
+    /* antithetic pairs (nan without them): the pairs, a pair's and a
+       plain realisation's work [cell evaluations], per ratio the
+       estimate, its interval, rho and the variance reduction factor */
+    fputs("\tanti_n\tanti_cost\tanti_cost_plain", f);
+    for (int q = 0; q < SF_SWEEP_NQ; q++)
+        fprintf(f, "\t%s_anti_ratio_mean[-]\t%s_anti_ratio_se[-]\t%s_anti_ratio_ci%d_lo[-]\t%s_anti_ratio_ci%d_hi[-]"
+                   "\t%s_anti_rho[-]\t%s_anti_vrf[-]",
+                qname[q], qname[q], qname[q], lv, qname[q], lv, qname[q], qname[q]);
     fputc('\n', f);
 }
 
@@ -433,6 +441,16 @@ void sf_sweep_summary_row(FILE *f, const char *param, double value, const sf_swe
         else
             fputs("\tnan\tnan\tnan\tnan\tnan\tnan\tnan", f);
     }
+    int an = p->anti.n > 0;
+    fprintf(f, "\t%zu\t%.6g\t%.6g", p->anti.n, an ? p->anti.cost : NAN, an ? p->anti.cost_fine : NAN);
+    for (int q = 0; q < SF_SWEEP_NQ; q++) {
+        const sf_sweep_anti *e = &p->anti.q[q];
+        if (an)
+            fprintf(f, "\t%.17g\t%.17g\t%.17g\t%.17g\t%.6g\t%.6g", e->mean, e->se, e->ci_lo, e->ci_hi, e->rho,
+                    e->vrf);
+        else
+            fputs("\tnan\tnan\tnan\tnan\tnan\tnan", f);
+    }
     fputc('\n', f);
 }
 
@@ -446,6 +464,8 @@ void sf_sweep_point_free(sf_sweep_point *p)
     free(p->num_apriori);
     free(p->ml.coarse0);
     free(p->ml.coarse1);
+    free(p->anti.qoi_anti);
+    p->anti.qoi_anti = NULL;
     p->qoi = p->ratio = p->companion = p->num_qc = p->num_rho = p->num_apriori = NULL;
     p->ml.coarse0 = p->ml.coarse1 = NULL;
     p->num_m = 0;

@@ -24,7 +24,6 @@ extern "C" {
 #include <gsl/gsl_rng.h>
 #include "cof.h"
 #include "scene.h"
-#include "cof.h"
 
 enum { SF_SWEEP_PVX = 0, SF_SWEEP_PVF = 1, SF_SWEEP_SF = 2, SF_SWEEP_NQ = 3 };
 
@@ -61,6 +60,12 @@ typedef struct {
     size_t m[2];
     double var[2], var_fine, mean, se, df, ci_lo, ci_hi, vrf;
 } sf_sweep_ml;
+
+/* One ratio's antithetic estimate (sf_sweep_point.anti, below). */
+typedef struct {
+    size_t m;
+    double rho, var_fine, mean, se, ci_lo, ci_hi, vrf;
+} sf_sweep_anti;
 
 typedef struct {
     double det[SF_SWEEP_NQ];    /* deterministic pv_x [m], pv_F [N], stick fraction [-] */
@@ -130,6 +135,23 @@ typedef struct {
         double cost[2], cost_fine, work;
         sf_sweep_ml q[SF_SWEEP_NQ];
     } ml;
+    /* Antithetic pairs (sf_sweep_run_antithetic, antithetic.h; n = 0
+     * otherwise): pair i runs realisation i's field G (the rows above:
+     * plain Monte Carlo's first n, bit for bit) and its antithetic -G
+     * (qoi_anti, n x SF_SWEEP_NQ, in their units).  cost: a pair's mean
+     * work [cell evaluations] (mlmc.h's model), cost_fine a plain
+     * realisation's; per ratio over the m pairs whose both members are
+     * finite: rho = corr(Q(G), Q(-G)), the mean of the pair means, se =
+     * their std / sqrt(m), the Student interval at m - 1 degrees of
+     * freedom, var_fine the variance of the 2 m members' ratios and vrf
+     * = var_fine cost_fine / (se^2 work), the variance plain Monte Carlo
+     * reaches at the same work over this estimator's. */
+    struct {
+        size_t n;
+        double *qoi_anti;
+        double cost, cost_fine, work;
+        sf_sweep_anti q[SF_SWEEP_NQ];
+    } anti;
 } sf_sweep_point;
 
 /* A Monte Carlo workspace over a scene's COF draws (montecarlo.h's
@@ -182,6 +204,12 @@ double sf_sweep_companion(const sf_cof *cof, const sf_scene *s);
  * (reused as level 1's first) that set each level's sample size. */
 int sf_sweep_run_mlmc(const sf_scene *s, size_t n_plain, size_t n_pilot, int threads, const char *label,
                       sf_sweep_point *out, char *err, size_t errlen);
+
+/* An antithetic sweep point (antithetic.h): the ratio means at the
+ * variance plain Monte Carlo reaches with n_plain realisations, from
+ * n_pilot pairs (reused as the first) that set the number of pairs. */
+int sf_sweep_run_antithetic(const sf_scene *s, size_t n_plain, size_t n_pilot, int threads, const char *label,
+                            sf_sweep_point *out, char *err, size_t errlen);
 
 /* One run of scene s on plan pl and a drawn cof: its QoIs into out and,
  * when work is not NULL, its work [cell evaluations] (wrench evaluations

@@ -669,6 +669,17 @@ static int sweep_mlmc(void *ctx)
     return rc;
 }
 
+static int sweep_anti(void *ctx)
+{
+    sf_sweep_point pt;
+    char err[256] = "";
+    int rc = sf_sweep_run_antithetic(ctx, 2, 2, 1, NULL, &pt, err, sizeof err);
+    if (!rc)
+        assert_true(pt.anti.n == 2 && isfinite(pt.anti.q[0].mean));
+    sf_sweep_point_free(&pt);
+    return rc;
+}
+
 /* a small field scene for the sweep's walks */
 static void scene_sweep(sf_scene *s)
 {
@@ -686,6 +697,7 @@ static void sweeps(void **state)
     assert_true(walk("sf_sweep_run", sweep, &s, SF_SUCCESS, 0) > 20);
     assert_true(walk("sf_sweep_run_target", sweep2, &s, SF_SUCCESS, 0) > 20);
     assert_true(walk("sf_sweep_run_cv", sweep_cv, &s, SF_SUCCESS, 0) > 20);
+    assert_true(walk("sf_sweep_run_antithetic", sweep_anti, &s, SF_SUCCESS, 0) > 20);
 }
 
 /* the two-level sweep's walk: a test of its own, the longest (about half

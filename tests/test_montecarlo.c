@@ -5,7 +5,9 @@
 #include "montecarlo.h"
 #include "sweep.h"
 #include "mcstop.h"
+#include "antithetic.h"
 #include "mlmc.h"
+#include "lognormal.h"
 #include "scene.h"
 #include "cof.h"
 #include <stdint.h>
@@ -480,6 +482,107 @@ static void mlmc_estimator(void **state)
     sf_sweep_point_free(&a);
 }
 
+/* Antithetic pairs: the size rule, the antithetic COF of each kind, and
+ * a point (the same bits on two threads; the G members are plain Monte
+ * Carlo's; its summary columns). */
+static void anti_estimator(void **state)
+{
+    (void)state;
+    /* sizes: Var(pair mean) / (Var Q / n_plain), floored at the pilot and
+       capped at n_plain; an unusable ratio sets none */
+    double vp[3] = { 0.25, 0.01, NAN }, vf[3] = { 1, 1, 1 };
+    assert_int_equal(sf_anti_size(vp, vf, 3, 100, 10), 25);
+    vp[0] = 2;
+    assert_int_equal(sf_anti_size(vp, vf, 3, 100, 10), 100);
+    assert_int_equal(sf_anti_size(vp, vf, 0, 100, 10), 10);
+    vf[0] = 0;
+    vp[1] = 0.05;
+    assert_int_equal(sf_anti_size(vp, vf, 2, 100, 10), 10);
+    /* the antithetic COF: uniform itself, one variable exp(2 mu_g) / mu,
+       a grid node by node; a COF of another kind is refused */
+    sf_scene s;
+    sf_scene_default(&s);
+    sf_lognormal ln;
+    sf_lognormal_init(&ln, s.mu_mean, s.mu_std);
+    sf_cof_plan *pl;
+    sf_cof *c, *a;
+    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+    s.cof = SF_COF_VARIABLE;
+    assert_int_equal(sf_cof_plan_alloc(&s, &pl, NULL, 0), SF_SUCCESS);
+    assert_int_equal(sf_cof_plan_draw(pl, rng, &c), SF_SUCCESS);
+    assert_int_equal(sf_cof_plan_antithetic(pl, c, &a), SF_SUCCESS);
+    assert_int_equal(sf_cof_get_kind(a), SF_COF_VARIABLE);
+    assert_true(fabs(log(sf_cof_eval(c, 0, 0)) + log(sf_cof_eval(a, 0, 0)) - 2 * ln.mu_g) < 1e-14);
+    sf_cof_free(a);
+    sf_cof *u;
+    assert_int_equal(sf_cof_alloc_uniform(0.3, &u), SF_SUCCESS);
+    assert_int_equal(sf_cof_plan_antithetic(pl, u, &a), SF_EINVAL);   /* another kind */
+    assert_null(a);
+    sf_cof_plan_free(pl);
+    s.cof = SF_COF_UNIFORM;
+    assert_int_equal(sf_cof_plan_alloc(&s, &pl, NULL, 0), SF_SUCCESS);
+    assert_int_equal(sf_cof_plan_antithetic(pl, u, &a), SF_SUCCESS);
+    assert_true(sf_cof_eval(a, 1, 1) == 0.3);
+    sf_cof_free(a);
+    assert_int_equal(sf_cof_plan_antithetic(pl, c, &a), SF_EINVAL);   /* a variable to a uniform plan */
+    sf_cof_plan_free(pl);
+    sf_cof_free(c);
+    s.cof = SF_COF_FIELD;
+    s.l = 0.5;
+    s.T = 14;
+    s.t_skip = 4;
+    assert_int_equal(sf_cof_plan_alloc(&s, &pl, NULL, 0), SF_SUCCESS);
+    assert_int_equal(sf_cof_plan_antithetic(pl, u, &a), SF_EINVAL);
+    assert_int_equal(sf_cof_plan_draw(pl, rng, &c), SF_SUCCESS);
+    assert_int_equal(sf_cof_set_box(c, 0.01), SF_SUCCESS);   /* cell averages to a point-value plan */
+    assert_int_equal(sf_cof_plan_antithetic(pl, c, &a), SF_EINVAL);
+    assert_int_equal(sf_cof_set_box(c, 0), SF_SUCCESS);
+    assert_int_equal(sf_cof_plan_antithetic(pl, c, &a), SF_SUCCESS);
+    size_t m, n;
+    const double *x, *y;
+    assert_int_equal(sf_cof_grid_view(c, &m, &n, NULL, NULL, NULL, NULL, &x), SF_SUCCESS);
+    assert_int_equal(sf_cof_grid_view(a, NULL, NULL, NULL, NULL, NULL, NULL, &y), SF_SUCCESS);
+    for (size_t k = 0; k < m * n; k++)
+        assert_true(fabs(log(x[k]) + log(y[k]) - 2 * ln.mu_g) < 1e-13);
+    sf_cof_free(a);
+    sf_cof_free(c);
+    sf_cof_free(u);
+    sf_cof_plan_free(pl);
+    gsl_rng_free(rng);
+    /* a point */
+    char err[200];
+    sf_sweep_point p, b, q;
+    assert_int_equal(sf_sweep_run_antithetic(&s, 8, 1, 1, NULL, &p, err, sizeof err), SF_EINVAL);
+    assert_int_equal(sf_sweep_run_antithetic(&s, 3, 4, 1, NULL, &p, err, sizeof err), SF_EINVAL);
+    assert_int_equal(sf_sweep_run_antithetic(&s, 8, 3, 1, NULL, &p, err, sizeof err), SF_SUCCESS);
+    assert_int_equal(sf_sweep_run_antithetic(&s, 8, 3, 2, NULL, &b, err, sizeof err), SF_SUCCESS);
+    assert_int_equal(sf_sweep_run(&s, p.n, 1, NULL, 0, NULL, &q, err, sizeof err), SF_SUCCESS);
+    assert_true(p.anti.n == p.n && p.n >= 3 && p.n <= 8);
+    assert_memory_equal(p.qoi, b.qoi, p.n * SF_SWEEP_NQ * sizeof *p.qoi);
+    assert_memory_equal(p.qoi, q.qoi, p.n * SF_SWEEP_NQ * sizeof *p.qoi);
+    assert_memory_equal(p.anti.qoi_anti, b.anti.qoi_anti, p.n * SF_SWEEP_NQ * sizeof *p.qoi);
+    assert_memory_equal(p.anti.q, b.anti.q, sizeof p.anti.q);
+    assert_true(p.anti.cost > p.anti.cost_fine && p.anti.work == (double)p.n * p.anti.cost);
+    for (int k = 0; k < SF_SWEEP_NQ; k++) {
+        const sf_sweep_anti *e = &p.anti.q[k];
+        assert_true(isfinite(e->mean) && e->se > 0 && e->ci_lo < e->mean && e->mean < e->ci_hi && e->vrf > 0);
+        assert_true(e->m > 2 ? e->rho >= -1 && e->rho <= 1 : isnan(e->rho));   /* a correlation needs 3 pairs */
+    }
+    char *text = summary_text("l_over_R", 1, &p);
+    assert_true(summary_field(text, "pv_F_anti_ratio_mean[-]") == p.anti.q[SF_SWEEP_PVF].mean);
+    assert_true(summary_field(text, "anti_n") == (double)p.anti.n);
+    free(text);
+    text = summary_text("l_over_R", 1, &q);   /* without it: nan */
+    assert_true(isnan(summary_field(text, "stick_fraction_anti_vrf[-]")) && isnan(summary_field(text, "anti_cost")));
+    free(text);
+    sf_sweep_point_free(&p);
+    sf_sweep_point_free(&b);
+    sf_sweep_point_free(&q);
+    s.T = 10.5;   /* no deterministic reference: refused before any realisation */
+    assert_int_not_equal(sf_sweep_run_antithetic(&s, 4, 2, 1, NULL, &p, err, sizeof err), SF_SUCCESS);
+    sf_sweep_point_free(&p);
+}
+
 static void shortest_text(void **state)
 {
     (void)state;
@@ -508,6 +611,7 @@ int main(void)
         cmocka_unit_test(stein_sweep),
         cmocka_unit_test(cv_estimator),
         cmocka_unit_test(mlmc_estimator),
+        cmocka_unit_test(anti_estimator),
     };
     return cmocka_run_group_tests_name("montecarlo", tests, NULL, NULL);
 }

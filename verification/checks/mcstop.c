@@ -13,7 +13,11 @@
 #include "checks.h"
 #include "common.h"
 #include "mcstop.h"
+#include "antithetic.h"
+#include "cof.h"
+#include "lognormal.h"
 #include "mlmc.h"
+#include "numplan.h"
 #include "montecarlo.h"
 #include "sweep.h"
 #include "sf_error.h"
@@ -337,6 +341,37 @@ static double finite_mean(const double *x, size_t n, size_t *m, double *var)
     return mean;
 }
 
+/* the estimators the checks below compare with plain Monte Carlo */
+enum { EST_MLMC, EST_ANTI };
+
+/* The estimator's point at scene s (its pilot ML_PILOT, plain's variance
+ * at s->samples as the target) and plain Monte Carlo's of as many rows:
+ * SF_SUCCESS, or the failure noted in r and both points freed. */
+static int est_and_plain(const sf_scene *s, int est, sf_sweep_point *p, sf_sweep_point *pl, sf_result *r)
+{
+    char err[256] = "";
+    memset(pl, 0, sizeof *pl);
+    int rc = est == EST_MLMC ? sf_sweep_run_mlmc(s, s->samples, ML_PILOT, 0, NULL, p, err, sizeof err)
+                             : sf_sweep_run_antithetic(s, s->samples, ML_PILOT, 0, NULL, p, err, sizeof err);
+    if (!rc)
+        rc = sf_sweep_run(s, p->n, 0, NULL, 0, NULL, pl, err, sizeof err);
+    if (rc) {
+        sf_note(r, "The sweep failed: %s\n", *err ? err : sf_strerror(rc));
+        sf_sweep_point_free(p);
+        sf_sweep_point_free(pl);
+    }
+    return rc;
+}
+
+/* The estimator's rows (p->qoi) that differ from plain's, bit for bit. */
+static double rows_differ(const sf_sweep_point *p, const sf_sweep_point *pl)
+{
+    size_t diff = 0;
+    for (size_t i = 0; i < p->n * SF_SWEEP_NQ; i++)
+        diff += memcmp(&p->qoi[i], &pl->qoi[i], sizeof *p->qoi) != 0;
+    return (double)diff;
+}
+
 /* Exact, at one point: (1) each ratio's estimate is level 0's mean of
  * coarse ratios plus level 1's mean of fine - coarse, recomputed here
  * from the values the point keeps; (2) level 1's fine values are plain
@@ -350,17 +385,9 @@ static int chk_mlmc_levels(const sf_case *c, sf_result *r)
     const sf_scene *s = &c->scene;
     char err[256] = "";
     sf_sweep_point p, pl;
-    int rc = sf_sweep_run_mlmc(s, s->samples, ML_PILOT, 0, NULL, &p, err, sizeof err);
-    if (!rc)
-        rc = sf_sweep_run(s, p.n, 0, NULL, 0, NULL, &pl, err, sizeof err);
-    else
-        memset(&pl, 0, sizeof pl);
-    if (rc) {
-        sf_note(r, "The sweep failed: %s\n", *err ? err : sf_strerror(rc));
-        sf_sweep_point_free(&p);
-        sf_sweep_point_free(&pl);
+    int rc = est_and_plain(s, EST_MLMC, &p, &pl, r);
+    if (rc)
         return rc;
-    }
     size_t n1 = p.ml.n[1], n0 = p.ml.n[0];
     double gap = 0, segap = 0;
     double *d = check_alloc(n1 * sizeof *d), *b = check_alloc((n0 ? n0 : 1) * sizeof *b), *x = check_alloc(n1 * sizeof *x);
@@ -400,10 +427,7 @@ static int chk_mlmc_levels(const sf_case *c, sf_result *r)
                    "(sums of <= 4 N terms of order 1: round-off ~1e-14)", gap, 1e-12);
     sf_check_le(r, "relative |se - sqrt(var0 / m0 + var1 / m1)| over the m_l finite values, max over the ratios", segap,
                 1e-10);
-    size_t diff = 0;
-    for (size_t i = 0; i < n1 * SF_SWEEP_NQ; i++)
-        diff += memcmp(&p.qoi[i], &pl.qoi[i], sizeof *p.qoi) != 0;
-    sf_check_le(r, "level 1's fine values that differ from plain Monte Carlo's first n1 (bits)", (double)diff, 0);
+    sf_check_le(r, "level 1's fine values that differ from plain Monte Carlo's first n1 (bits)", rows_differ(&p, &pl), 0);
     /* the coarse runs, made here from the scene */
     sf_plan fp, cp;
     sf_scene sc = *s;
@@ -456,12 +480,157 @@ static int chk_mlmc_levels(const sf_case *c, sf_result *r)
     return rc;
 }
 
-/* Statistical, per sweep point: the two-level estimate of each ratio mean
- * against plain Monte Carlo's on independent streams (seed' =
- * sf_mc_seed(seed, 1) ^ 1, N = samples), z = difference / sqrt(se_ml^2 +
- * se_plain^2), two-sided normal p-value at alpha / (3 K); each level's
- * N, variance and work, and the variance reduction factor, reported. */
-static int chk_mlmc_unbiased(const sf_case *c, sf_result *r)
+/* ---- antithetic pairs (sweep.h: sf_sweep_run_antithetic, antithetic.h) ---- */
+
+/* The largest departure of COF a (drawn by plan pl of scene s) and its
+ * antithetic b from the law's identity at every node they hold: the
+ * lognormal point values ln a + ln b = 2 mu_g (a = exp(mu_g + sigma_g G),
+ * b = exp(mu_g - sigma_g G)); cell averages a + b = 2 mu_mean (mubar -+
+ * sd G).  A tiled window is compared at windows along the run's belt
+ * (xb = -v_b t, t = 0 .. T), each made by both COFs afresh from their key. */
+static double anti_identity(const sf_scene *s, const sf_cof *a, const sf_cof *b, size_t *nodes)
+{
+    sf_lognormal ln;
+    sf_lognormal_init(&ln, s->mu_mean, s->mu_std);
+    double worst = 0, span = s->v_b * s->T;
+    int steps = sf_cof_window_margin(a) > 0 ? 8 : 1;
+    *nodes = 0;
+    for (int k = 0; k < steps; k++) {
+        double xb = -span * (double)k / (double)(steps > 1 ? steps - 1 : 1);
+        if (steps > 1 && (sf_cof_follow(a, xb - s->R, xb + s->R) || sf_cof_follow(b, xb - s->R, xb + s->R)))
+            return INFINITY;
+        size_t m, n, m2, n2;
+        double xa, xb2, dx;
+        const double *u, *v;
+        if (sf_cof_grid_view(a, &m, &n, &xa, NULL, &dx, NULL, &u) ||
+            sf_cof_grid_view(b, &m2, &n2, &xb2, NULL, NULL, NULL, &v) || n != n2)
+            return INFINITY;
+        /* the windows may stand at other lattice columns: compare the columns both hold */
+        long off = lround((xa - xb2) / dx);   /* a's column i is b's column i + off */
+        for (size_t j = 0; j < n; j++)
+            for (size_t i = 0; i < m; i++) {
+                long ib = (long)i + off;
+                if (ib < 0 || ib >= (long)m2)
+                    continue;
+                double x = u[i + m * j], y = v[(size_t)ib + m2 * j];
+                double d = sf_cof_box(a) > 0 ? x + y - 2 * s->mu_mean : log(x) + log(y) - 2 * ln.mu_g;
+                worst = isfinite(d) ? sf_max(worst, fabs(d)) : INFINITY;
+                (*nodes)++;
+            }
+    }
+    return worst;
+}
+
+/* Exact, at one point: (1) each ratio's estimate is the mean of the pair
+ * means, and its se their std / sqrt(m), recomputed here from the
+ * members the point keeps; (2) the pairs' G members are plain Monte
+ * Carlo's first n, bit for bit; (3) the antithetic field of stream 0's
+ * draw obeys the law's identity at every node (anti_identity); (4) the
+ * first antithetic member is what this check's own run on that field
+ * gives, bit for bit. */
+static int chk_anti_pairs(const sf_case *c, sf_result *r)
+{
+    const sf_scene *s = &c->scene;
+    char err[256] = "";
+    sf_sweep_point p, pl;
+    int rc = est_and_plain(s, EST_ANTI, &p, &pl, r);
+    if (rc)
+        return rc;
+    size_t n = p.anti.n;
+    double gap = 0, segap = 0;
+    double *h = check_alloc(n * sizeof *h), *xa = check_alloc(n * sizeof *xa), *xb = check_alloc(n * sizeof *xb);
+    sf_plot *plt = sf_result_plot(r, "pairs", "Antithetic pairs: the ratio on -G against the ratio on G",
+                                  "ratio on G [-]", "ratio on -G [-]");
+    for (int q = 0; q < 3; q++) {
+        size_t m = 0;
+        for (size_t i = 0; i < n; i++) {
+            double a = p.qoi[i * SF_SWEEP_NQ + q] / p.det[q], b = p.anti.qoi_anti[i * SF_SWEEP_NQ + q] / p.det[q];
+            h[i] = isfinite(a) && isfinite(b) ? 0.5 * (a + b) : NAN;
+            if (isfinite(h[i])) {
+                xa[m] = a;
+                xb[m++] = b;
+            }
+        }
+        sf_plot_series(plt, ratio_name[q], SF_STYLE_POINTS, m, xa, xb);
+        size_t k;
+        double v, mean = finite_mean(h, n, &k, &v);
+        char what[160];
+        snprintf(what, sizeof what, "%s: pairs with both members finite", ratio_name[q]);
+        sf_result_sample(r, what, k, n - k);
+        gap = sf_max(gap, fabs(p.anti.q[q].mean - mean));
+        segap = sf_max(segap, fabs(p.anti.q[q].se - sqrt(v / (double)k)) / sqrt(v / (double)k));
+    }
+    free(h);
+    free(xa);
+    free(xb);
+    sf_check_le(r, "|estimate - mean of the pair means (Q(G) + Q(-G)) / 2|, max over the ratios (means of <= N "
+                   "terms of order 1: round-off ~1e-15)", gap, 1e-12);
+    sf_check_le(r, "relative |se - std of the pair means / sqrt(m)| over the m pairs with both members finite, max "
+                   "over the ratios", segap, 1e-10);
+    sf_check_le(r, "the pairs' G members that differ from plain Monte Carlo's first n (bits)", rows_differ(&p, &pl), 0);
+    /* the antithetic of stream 0's field, made here */
+    sf_plan fp;
+    sf_cof_plan *plan = NULL;
+    sf_cof *cof = NULL, *anti = NULL;
+    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+    gsl_rng_set(rng, sf_mc_seed(s->seed, 0));
+    double out[SF_SWEEP_NQ], ident = INFINITY;
+    size_t nodes = 0;
+    rc = sf_plan_make(s, &fp, err, sizeof err);
+    fp.history = 0;
+    if (!rc)
+        rc = sf_cof_plan_build(s, &fp, &plan, err, sizeof err);
+    if (!rc)
+        rc = sf_cof_plan_draw(plan, rng, &cof);
+    if (!rc)
+        rc = sf_cof_plan_antithetic(plan, cof, &anti);
+    if (!rc)
+        rc = sf_sweep_solve(s, &fp, anti, out, NULL);
+    if (!rc)
+        ident = anti_identity(s, cof, anti, &nodes);
+    if (rc) {
+        sf_note(r, "The antithetic run failed: %s\n", *err ? err : sf_strerror(rc));
+    } else {
+        int box = sf_cof_box(cof) > 0;
+        sf_check_le(r, box ? "max over the nodes of |a + b - 2 mu_mean|, a the cell averages of G, b of -G (values "
+                             "of order 0.1: round-off ~1e-16)"
+                           : "max over the nodes of |ln a + ln b - 2 mu_g|, a the COF of G, b of -G (logs of "
+                             "order 1: round-off ~1e-15)",
+                    ident, 1e-12);
+        size_t differ = 0, none = 0;
+        for (int q = 0; q < 3; q++) {
+            int both_none = isnan(p.anti.qoi_anti[q]) && isnan(out[q]);
+            none += both_none;
+            differ += !both_none && memcmp(&p.anti.qoi_anti[q], &out[q], sizeof out[q]) != 0;
+        }
+        sf_check_le(r, "first antithetic member's QoIs that differ from this check's run on stream 0's antithetic "
+                       "field (bits; the same operations)", (double)differ, 0);
+        if (none)
+            sf_note(r, "%zu of the first antithetic member's 3 QoIs are formed by neither run (NaN in both: no cycle "
+                       "in the window), the same outcome.\n", none);
+        sf_note(r, "l/R = %g, %s, plain Monte Carlo's variance at %zu realisations as the target (seed %lu): %zu "
+                   "pairs; the identity compared at %zu nodes. rho = corr(Q(G), Q(-G)): %.3f (PV_x), %.3f (PV_F), "
+                   "%.3f (stick fraction).\n",
+                s->l / s->R, box ? "cell averages" : sf_cof_window_margin(cof) > 0 ? "tiles" : "circulant strip",
+                s->samples, s->seed, n, nodes, p.anti.q[0].rho, p.anti.q[1].rho, p.anti.q[2].rho);
+    }
+    gsl_rng_free(rng);
+    sf_cof_free(cof);
+    sf_cof_free(anti);
+    sf_cof_plan_free(plan);
+    sf_sweep_point_free(&p);
+    sf_sweep_point_free(&pl);
+    return rc;
+}
+
+/* Statistical, per sweep point: an estimator's ratio means (two levels,
+ * or antithetic pairs) against plain Monte Carlo's on independent streams
+ * (seed' = sf_mc_seed(seed, 1) ^ 1, N = samples): Welch's t =
+ * difference / sqrt(se_est^2 + se_plain^2) at the Welch-Satterthwaite
+ * degrees of freedom (the estimator's own: two levels' df, the pairs'
+ * m - 1), two-sided p-value at alpha / (3 K); each estimator's sizes and
+ * work, and the variance reduction factor, reported. */
+static int estimator_unbiased(const sf_case *c, sf_result *r, int est)
 {
     const sf_scene *s0 = &c->scene;
     size_t K = c->spec.sweep.n;
@@ -472,43 +641,57 @@ static int chk_mlmc_unbiased(const sf_case *c, sf_result *r)
     size_t used = 0;
     int rc = SF_SUCCESS;
     double alpha = c->spec.alpha / (double)(3 * K);
+    const char *name = est == EST_MLMC ? "two levels" : "antithetic";
     for (size_t k = 0; k < K && !rc; k++) {
         sf_scene s = *s0, sp;
-        sf_sweep_point ml, p;
+        sf_sweep_point e, p;
         char err[256] = "";
         memset(&p, 0, sizeof p);
-        memset(&ml, 0, sizeof ml);
+        memset(&e, 0, sizeof e);
         rc = sf_sweep_set(&s, c->spec.sweep_param, c->spec.sweep.v[k], err, sizeof err);
         sp = s;
         sp.seed = sf_mc_seed(s.seed, 1) ^ 1;
         if (!rc)
-            rc = sf_sweep_run_mlmc(&s, s0->samples, ML_PILOT, 0, NULL, &ml, err, sizeof err);
+            rc = est == EST_MLMC ? sf_sweep_run_mlmc(&s, s0->samples, ML_PILOT, 0, NULL, &e, err, sizeof err)
+                                 : sf_sweep_run_antithetic(&s, s0->samples, ML_PILOT, 0, NULL, &e, err, sizeof err);
         if (!rc)
             rc = sf_sweep_run(&sp, s0->samples, 0, NULL, 0, NULL, &p, err, sizeof err);
         if (rc) {
             sf_note(r, "**Sweep failed at %s = %g:** %s\n", c->spec.sweep_param, c->spec.sweep.v[k], err);
-            sf_sweep_point_free(&ml);
+            sf_sweep_point_free(&e);
             sf_sweep_point_free(&p);
             break;
         }
         lr[k] = s.l / s.R;
         for (int q = 0; q < 3; q++) {
-            const sf_sweep_ml *e = &ml.ml.q[q];
-            double z = (e->mean - p.rstat[q].mean) / hypot(e->se, p.rstat[q].se);
+            const sf_sweep_ml *ml = &e.ml.q[q];
+            const sf_sweep_anti *an = &e.anti.q[q];
+            double mean = est == EST_MLMC ? ml->mean : an->mean, se = est == EST_MLMC ? ml->se : an->se;
+            double df = est == EST_MLMC ? ml->df : (double)an->m - 1, pse = p.rstat[q].se;
+            double pdf = (double)p.rstat[q].n_used - 1, a = se * se, b = pse * pse;
+            double den = (a > 0 ? a * a / df : 0) + (b > 0 ? b * b / pdf : 0);
+            double t = (mean - p.rstat[q].mean) / sqrt(a + b), nu = den > 0 ? (a + b) * (a + b) / den : NAN;
             char what[200];
-            snprintf(what, sizeof what, "l/R = %g: %s ratio mean, two levels %.5f = plain %.5f (z test)", lr[k],
-                     ratio_name[q], e->mean, p.rstat[q].mean);
-            sf_check_pvalue(r, what, 2 * gsl_cdf_ugaussian_Q(fabs(z)), alpha, p.rstat[q].n_used);
-            vrf[k * 3 + q] = e->vrf;
-            used += (size_t)snprintf(tab + used, sizeof tab - used,
-                                     "| %g | %s | %.5f +- %.5f | %.5f +- %.5f | %zu / %zu | %.3g / %.3g | %.3g / %.3g "
-                                     "| %.3g |\n", lr[k], ratio_name[q], p.rstat[q].mean, p.rstat[q].se, e->mean, e->se,
-                                     ml.ml.n[0], ml.ml.n[1], e->var[0], e->var[1], ml.ml.cost[0], ml.ml.cost[1], e->vrf);
+            snprintf(what, sizeof what, "l/R = %g: %s ratio mean, %s %.5f = plain %.5f (Welch t test, %.0f df)",
+                     lr[k], ratio_name[q], name, mean, p.rstat[q].mean, nu);
+            sf_check_pvalue(r, what, 2 * gsl_cdf_tdist_Q(fabs(t), nu), alpha, p.rstat[q].n_used);
+            vrf[k * 3 + q] = est == EST_MLMC ? ml->vrf : an->vrf;
+            if (est == EST_MLMC)
+                used += (size_t)snprintf(tab + used, sizeof tab - used,
+                                         "| %g | %s | %.5f +- %.5f | %.5f +- %.5f | %zu / %zu | %.3g / %.3g | %.3g / "
+                                         "%.3g | %.3g |\n", lr[k], ratio_name[q], p.rstat[q].mean, pse, mean, se,
+                                         e.ml.n[0], e.ml.n[1], ml->var[0], ml->var[1], e.ml.cost[0], e.ml.cost[1],
+                                         ml->vrf);
+            else
+                used += (size_t)snprintf(tab + used, sizeof tab - used,
+                                         "| %g | %s | %.5f +- %.5f | %.5f +- %.5f | %zu | %.3f | %.3g / %.3g | %.3g "
+                                         "|\n", lr[k], ratio_name[q], p.rstat[q].mean, pse, mean, se, e.anti.n,
+                                         an->rho, e.anti.cost, e.anti.cost_fine, an->vrf);
         }
-        sf_sweep_point_free(&ml);
+        sf_sweep_point_free(&e);
         sf_sweep_point_free(&p);
     }
-    if (!rc) {
+    if (!rc && est == EST_MLMC) {
         sf_note(r, "Plain Monte Carlo: %zu realisations per point on independent streams; two levels: plain's "
                    "variance at %zu as the target, a pilot of %d pairs (seed %lu). Ratio means (+- standard error), "
                    "each level's N (n0 coarse / n1 pairs), variance (V0 of the coarse ratio, V1 of fine - coarse), "
@@ -517,11 +700,23 @@ static int chk_mlmc_unbiased(const sf_case *c, sf_result *r)
                    "|---|---|---|---|---|---|---|---|\n%s\n",
                 s0->samples, s0->samples, ML_PILOT, s0->seed, tab);
         plot_vrf(r, "Variance reduction of the two-level estimator at equal work", K, lr, vrf);
+    } else if (!rc) {
+        sf_note(r, "Plain Monte Carlo: %zu realisations per point on independent streams; antithetic pairs: plain's "
+                   "variance at %zu as the target, a pilot of %d pairs (seed %lu). Ratio means (+- standard error), "
+                   "the pairs, rho = corr(Q(G), Q(-G)), the work of a pair and of a plain realisation [cell "
+                   "evaluations] and the variance reduction factor at equal work:\n\n"
+                   "| l/R | QoI | plain | antithetic | pairs | rho | work: pair / plain | reduction |\n"
+                   "|---|---|---|---|---|---|---|---|\n%s\n",
+                s0->samples, s0->samples, ML_PILOT, s0->seed, tab);
+        plot_vrf(r, "Variance reduction of antithetic pairs at equal work", K, lr, vrf);
     }
     free(lr);
     free(vrf);
     return rc;
 }
+
+static int chk_mlmc_unbiased(const sf_case *c, sf_result *r) { return estimator_unbiased(c, r, EST_MLMC); }
+static int chk_anti_unbiased(const sf_case *c, sf_result *r) { return estimator_unbiased(c, r, EST_ANTI); }
 
 const sf_check_def sf_checks_mcstop[] = {
     { "mc_mlmc_levels", chk_mlmc_levels,
@@ -529,6 +724,11 @@ const sf_check_def sf_checks_mcstop[] = {
       "are the coarse plan's on the level's field" },
     { "mc_mlmc_unbiased", chk_mlmc_unbiased,
       "two-level estimator: its ratio means equal plain Monte Carlo's on independent streams; per-level N, V, C" },
+    { "mc_anti_pairs", chk_anti_pairs,
+      "antithetic pairs: the estimate is the pair means' mean, the G members are plain MC's streams, the "
+      "antithetic field obeys ln a + ln b = 2 mu_g (cell averages: a + b = 2 mu_mean)" },
+    { "mc_anti_unbiased", chk_anti_unbiased,
+      "antithetic pairs: its ratio means equal plain Monte Carlo's on independent streams; pairs, rho, reduction" },
     { "mc_cv_unbiased", chk_cv_unbiased,
       "control variate: the companion's mean is mu_mean, the estimator is the regression one, its reduction" },
     { "mc_stein_coverage", chk_stein_coverage,

@@ -1,0 +1,158 @@
+#include "antithetic.h"
+#include "cof.h"
+#include "mlmc.h"
+#include "montecarlo.h"
+#include "sf_alloc.h"
+#include "sf_error.h"
+#include "sweep.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <gsl/gsl_cdf.h>
+#include <gsl/gsl_statistics_double.h>
+
+enum { NQ = SF_SWEEP_NQ };
+/* a pair's values: QoIs of G, QoIs of -G, a draw's work, the draws a
+ * pair makes (1, or 2 for a tiled window: it makes its columns as it
+ * slides, in each run), each run's work */
+enum { A_ANTI = NQ, A_DRAW = 2 * NQ, A_NDRAW, A_W0, A_W1, A_OUT };
+
+size_t sf_anti_size(const double *vpair, const double *vf, int nq, size_t n_plain, size_t n_pilot)
+{
+    double m = 0;
+    for (int q = 0; q < nq; q++) {
+        double target = vf[q] / (double)n_plain;
+        if (!(target > 0) || !isfinite(target) || !(vpair[q] >= 0) || !isfinite(vpair[q]))
+            continue;
+        m = fmax(m, ceil(vpair[q] / target));
+    }
+    return !(m > (double)n_pilot) ? n_pilot : m >= (double)n_plain ? n_plain : (size_t)m;
+}
+
+static int realise_pair(void *ws, size_t i, gsl_rng *rng, double *out)
+{
+    (void)i;
+    sf_mlmc_ws *m = ws;
+    sf_cof *cof, *anti = NULL;
+    int rc = sf_cof_plan_draw(m->w.plan, rng, &cof);
+    if (rc)
+        return rc;
+    rc = sf_cof_plan_antithetic(m->w.plan, cof, &anti);
+    if (!rc)
+        rc = sf_sweep_solve(m->w.s, m->w.pl, cof, out, &out[A_W0]);
+    if (!rc)
+        rc = sf_sweep_solve(m->w.s, m->w.pl, anti, out + A_ANTI, &out[A_W1]);
+    out[A_DRAW] = m->draw;
+    out[A_NDRAW] = sf_cof_window_margin(cof) > 0 ? 2 : 1;
+    sf_cof_free(cof);
+    sf_cof_free(anti);
+    return rc;
+}
+
+/* ratio q of the first n pairs: the members a[k], b[k] and pair means
+ * h[k] over the k = *m pairs whose both members are finite */
+static void pair_ratios(const double *v, size_t n, const double *det, int q, double *a, double *b, double *h,
+                        size_t *m)
+{
+    size_t k = 0;
+    for (size_t i = 0; i < n; i++) {
+        double x = v[i * A_OUT + q] / det[q], y = v[i * A_OUT + A_ANTI + q] / det[q];
+        if (isfinite(x) && isfinite(y)) {
+            a[k] = x;
+            b[k] = y;
+            h[k++] = 0.5 * (x + y);
+        }
+    }
+    *m = k;
+}
+
+/* the variance of the 2 m members a[], b[] (each a realisation of Q) */
+static double member_var(const double *a, const double *b, size_t m, double *buf)
+{
+    memcpy(buf, a, m * sizeof *a);
+    memcpy(buf + m, b, m * sizeof *b);
+    return m > 0 ? gsl_stats_variance(buf, 1, 2 * m) : NAN;
+}
+
+/* the mean work of a pair (pair = 1) or of a plain realisation, its G
+ * member alone (pair = 0), over n pairs */
+static double mean_work(const double *v, size_t n, int pair)
+{
+    double w = 0;
+    for (size_t i = 0; i < n; i++) {
+        const double *r = v + i * A_OUT;
+        w += pair ? r[A_DRAW] * r[A_NDRAW] + r[A_W0] + r[A_W1] + 2 * SF_MLMC_RUN_WORK
+                  : r[A_DRAW] + r[A_W0] + SF_MLMC_RUN_WORK;
+    }
+    return w / (double)n;
+}
+
+int sf_sweep_run_antithetic(const sf_scene *s, size_t n_plain, size_t n_pilot, int threads, const char *label,
+                            sf_sweep_point *out, char *err, size_t errlen)
+{
+    memset(out, 0, sizeof *out);
+    if (n_pilot < 2 || n_plain < n_pilot)
+        return sf_seterr(err, errlen, SF_EINVAL, "antithetic sweep: 2 <= pilot (%zu) <= realisations (%zu)", n_pilot,
+                         n_plain);
+    int rc = sf_sweep_det(s, out->det, err, errlen);
+    if (rc)
+        return rc;
+    sf_plan fine;
+    if ((rc = sf_plan_make(s, &fine, err, errlen)))
+        return rc;
+    fine.history = 0;
+    double *pairs = sf_calloc(n_plain * A_OUT, sizeof *pairs), *buf = sf_malloc(5 * n_plain * sizeof *buf);
+    if (!pairs || !buf) {
+        free(pairs);
+        free(buf);
+        return SF_ENOMEM;
+    }
+    double *a = buf, *b = a + n_plain, *h = b + n_plain, *mb = h + n_plain;
+    sf_mlmc_ws ctx = { { s, &fine, NULL, NULL, 0 }, NULL, 0 };
+    sf_mc_ops ops = { sf_mlmc_ws_alloc, sf_mlmc_ws_free, realise_pair };
+    sf_mc_spec spec = { n_plain, A_OUT, s->seed, threads, NULL, 0, 0, label };
+    rc = sf_mc_run_range(&spec, 0, n_pilot, &ops, &ctx, pairs, NULL, err, errlen);
+    size_t n = 0, m;
+    if (!rc) {
+        double vp[NQ], vf[NQ];
+        for (int q = 0; q < NQ; q++) {
+            pair_ratios(pairs, n_pilot, out->det, q, a, b, h, &m);
+            vp[q] = m > 1 ? gsl_stats_variance(h, 1, m) : NAN;
+            vf[q] = m > 1 ? member_var(a, b, m, mb) : NAN;
+        }
+        n = sf_anti_size(vp, vf, NQ, n_plain, n_pilot);
+        rc = sf_mc_run_range(&spec, n_pilot, n, &ops, &ctx, pairs, NULL, err, errlen);
+    }
+    if (!rc && (!(out->qoi = sf_calloc(n * NQ, sizeof *out->qoi)) ||
+                !(out->ratio = sf_calloc(n * NQ, sizeof *out->ratio)) ||
+                !(out->anti.qoi_anti = sf_calloc(n * NQ, sizeof *out->anti.qoi_anti))))
+        rc = SF_ENOMEM;
+    if (!rc) {   /* the rows: the pairs' fields G, plain Monte Carlo's first n */
+        out->n = out->anti.n = n;
+        for (size_t i = 0; i < n; i++) {
+            memcpy(out->qoi + i * NQ, pairs + i * A_OUT, NQ * sizeof *pairs);
+            memcpy(out->anti.qoi_anti + i * NQ, pairs + i * A_OUT + A_ANTI, NQ * sizeof *pairs);
+        }
+        out->anti.cost = mean_work(pairs, n, 1);
+        out->anti.cost_fine = mean_work(pairs, n, 0);
+        out->anti.work = (double)n * out->anti.cost;
+        rc = sf_sweep_point_stats(out);
+    }
+    for (int q = 0; q < NQ && !rc; q++) {
+        sf_sweep_anti *e = &out->anti.q[q];
+        pair_ratios(pairs, n, out->det, q, a, b, h, &m);
+        e->m = m;
+        e->mean = m ? gsl_stats_mean(h, 1, m) : NAN;
+        e->se = m > 1 ? sqrt(gsl_stats_variance_m(h, 1, m, e->mean) / (double)m) : NAN;
+        e->rho = m > 2 ? gsl_stats_correlation(a, 1, b, 1, m) : NAN;
+        e->var_fine = m > 1 ? member_var(a, b, m, mb) : NAN;
+        double t = m > 1 ? gsl_cdf_tdist_Pinv(0.5 * (1 + SF_SWEEP_CI_LEVEL), (double)(m - 1)) : NAN;
+        e->ci_lo = e->mean - t * e->se;
+        e->ci_hi = e->mean + t * e->se;
+        e->vrf = e->var_fine * out->anti.cost_fine / (e->se * e->se * out->anti.work);
+    }
+    free(pairs);
+    free(buf);
+    return rc;
+}

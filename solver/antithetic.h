@@ -1,0 +1,40 @@
+/* slipfield: antithetic pairs, an estimator of a sweep point's ratio
+ * means (sweep.h: sf_sweep_run_antithetic).
+ *
+ * A pair runs one drawn field G and its antithetic -G (cof.h:
+ * sf_cof_plan_antithetic): -G has G's law, so each member is a
+ * realisation of the model and the pair mean (Q(G) + Q(-G)) / 2 is an
+ * unbiased estimate of E[Q], of variance Var Q (1 + rho) / 2, rho =
+ * corr(Q(G), Q(-G)).  Pairs are independent (pair i draws G from plain
+ * Monte Carlo's stream i: its first members are plain's first n values,
+ * bit for bit), so the interval is Student's over the pair means.  A pair
+ * costs one draw and two runs; against plain Monte Carlo at the same
+ * variance it saves 2 (d + r) / ((d + 2 r)(1 + rho)), d a draw's work and
+ * r a run's: the draw where the field is costly, and more where the QoIs
+ * follow the field's sign (rho < 0: the disc averages it over few
+ * correlation lengths, or over cell averages); at rho > 0 it costs more
+ * than plain.
+ *
+ * Sample size: the first n_pilot pairs give, per ratio, the variance of
+ * the pair means and Var Q (over both members); the target is plain Monte
+ * Carlo's variance at n_plain, Var Q / n_plain, and
+ *   n = ceil(max over the ratios of Var(pair mean) / target),
+ * n_pilot <= n <= n_plain.  The pilot pairs are the first n (as the
+ * two-level estimator's, mlmc.h, whose coverage check this one shares). */
+#ifndef SF_ANTITHETIC_H
+#define SF_ANTITHETIC_H
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#include <stddef.h>
+
+/* The pairs from the pilot's per-ratio variances vpair[q] (of the pair
+ * means) and vf[q] (of a member): the rule above; a ratio whose
+ * variances are not finite and positive sets no size. */
+size_t sf_anti_size(const double *vpair, const double *vf, int nq, size_t n_plain, size_t n_pilot);
+
+#ifdef __cplusplus
+}
+#endif
+#endif
