@@ -289,6 +289,12 @@ int sf_cmd_sweep(int argc, char **argv)
                 fprintf(stderr, "slipfield sweep: %s = %g: warning: %zu of %zu realisations formed no quantity of "
                                 "interest (no complete cycle after t_skip: nan ratios, left out of the means)\n",
                         param, v[k], p.n - p.n_valid, p.n);
+            static const char *const qname_cli[SF_SWEEP_NQ] = { "pv_x", "pv_F", "stick_fraction" };
+            for (int q = 0; anti && q < SF_SWEEP_NQ; q++)
+                if (p.anti.q[q].m < p.anti.n)
+                    fprintf(stderr, "slipfield sweep: %s = %g: warning: %zu of %zu antithetic pairs have a member that "
+                                    "formed no %s (nan): left out of that ratio's estimate (the summary's %s_anti_n_used)\n",
+                            param, v[k], p.anti.n - p.anti.q[q].m, p.anti.n, qname_cli[q], qname_cli[q]);
             if (p.from_checkpoint)
                 fprintf(stderr, "slipfield sweep: %s = %g: %zu of %zu realisations from the checkpoint\n", param,
                         v[k], p.from_checkpoint, p.n);

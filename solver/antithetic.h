@@ -20,7 +20,14 @@
  * Carlo's variance at n_plain, Var Q / n_plain, and
  *   n = ceil(max over the ratios of Var(pair mean) / target),
  * n_pilot <= n <= n_plain.  The pilot pairs are the first n (as the
- * two-level estimator's, mlmc.h, whose coverage check this one shares). */
+ * two-level estimator's, mlmc.h, whose coverage check this one shares).
+ *
+ * A pair with a member that forms no QoI (no complete cycle in the
+ * window: NaN) is left out of that ratio's estimate and counted (the
+ * summary's *_anti_n_used; `slipfield sweep` warns).  The estimate is
+ * then of the mean over fields whose G and -G both form it, where plain
+ * Monte Carlo's is over fields that form it: the two agree when no pair
+ * is left out (at T = 100 s, Table 1, none is). */
 #ifndef SF_ANTITHETIC_H
 #define SF_ANTITHETIC_H
 #ifdef __cplusplus

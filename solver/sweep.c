@@ -397,13 +397,14 @@ void sf_sweep_summary_header(FILE *f)
                    "\t%s_ml_var0[-]\t%s_ml_var1[-]\t%s_ml_vrf[-]",
                 qname[q], qname[q], qname[q], lv, qname[q], lv, qname[q], qname[q], qname[q]);
     /* antithetic pairs (nan without them): the pairs, a pair's and a
-       plain realisation's work [cell evaluations], per ratio the
-       estimate, its interval, rho and the variance reduction factor */
+       plain realisation's work [cell evaluations], per ratio the pairs
+       used (both members finite; the others are excluded and counted),
+       the estimate, its interval, rho and the variance reduction factor */
     fputs("\tanti_n\tanti_cost\tanti_cost_plain", f);
     for (int q = 0; q < SF_SWEEP_NQ; q++)
-        fprintf(f, "\t%s_anti_ratio_mean[-]\t%s_anti_ratio_se[-]\t%s_anti_ratio_ci%d_lo[-]\t%s_anti_ratio_ci%d_hi[-]"
-                   "\t%s_anti_rho[-]\t%s_anti_vrf[-]",
-                qname[q], qname[q], qname[q], lv, qname[q], lv, qname[q], qname[q]);
+        fprintf(f, "\t%s_anti_n_used\t%s_anti_ratio_mean[-]\t%s_anti_ratio_se[-]\t%s_anti_ratio_ci%d_lo[-]"
+                   "\t%s_anti_ratio_ci%d_hi[-]\t%s_anti_rho[-]\t%s_anti_vrf[-]",
+                qname[q], qname[q], qname[q], qname[q], lv, qname[q], lv, qname[q], qname[q]);
     fputc('\n', f);
 }
 
@@ -446,10 +447,10 @@ void sf_sweep_summary_row(FILE *f, const char *param, double value, const sf_swe
     for (int q = 0; q < SF_SWEEP_NQ; q++) {
         const sf_sweep_anti *e = &p->anti.q[q];
         if (an)
-            fprintf(f, "\t%.17g\t%.17g\t%.17g\t%.17g\t%.6g\t%.6g", e->mean, e->se, e->ci_lo, e->ci_hi, e->rho,
-                    e->vrf);
+            fprintf(f, "\t%zu\t%.17g\t%.17g\t%.17g\t%.17g\t%.6g\t%.6g", e->m, e->mean, e->se, e->ci_lo, e->ci_hi,
+                    e->rho, e->vrf);
         else
-            fputs("\tnan\tnan\tnan\tnan\tnan\tnan", f);
+            fputs("\t0\tnan\tnan\tnan\tnan\tnan\tnan", f);
     }
     fputc('\n', f);
 }

@@ -571,6 +571,7 @@ static void anti_estimator(void **state)
     char *text = summary_text("l_over_R", 1, &p);
     assert_true(summary_field(text, "pv_F_anti_ratio_mean[-]") == p.anti.q[SF_SWEEP_PVF].mean);
     assert_true(summary_field(text, "anti_n") == (double)p.anti.n);
+    assert_true(summary_field(text, "pv_x_anti_n_used") == (double)p.anti.q[SF_SWEEP_PVX].m);
     free(text);
     text = summary_text("l_over_R", 1, &q);   /* without it: nan */
     assert_true(isnan(summary_field(text, "stick_fraction_anti_vrf[-]")) && isnan(summary_field(text, "anti_cost")));

@@ -674,14 +674,7 @@ static int vs_point(const sf_case *c, sf_result *r, int plan)
         sf_cof_plan_free(cp);
         if (rc)
             break;
-        if (none)
-            sf_note(r, "%s = %g: %zu realisation(s) without a complete cycle in either run replaced by the next "
-                       "streams.", lab, c->spec.sweep.v[k], none);
-        if (edge)
-            sf_note(r, "%s = %g: %zu realisation(s) on which the runs count different events (oscillations, cycles "
-                       "or a stick at the window's edge, or a maximum of x grazing vx = 0: a jump of the "
-                       "per-realisation QoI, not an accuracy error) replaced by the next streams.", lab,
-                    c->spec.sweep.v[k], edge);
+        check_replaced_notes(r, lab, c->spec.sweep.v[k], none, edge, NULL);
         if (used < n) {   /* fails; no row to plot, the later values are not run */
             check_fields_row(r, lab, c->spec.sweep.v[k], used, n);
             short_k = 1;

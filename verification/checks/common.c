@@ -477,6 +477,18 @@ int check_qoi_kind(const double q[3])
     return isnan(q[0]) ? 0 : q[2] > 0 ? 2 : 1;
 }
 
+void check_replaced_notes(sf_result *r, const char *lab, double x, size_t none, size_t edge, const char *jumps)
+{
+    if (none)
+        sf_note(r, "%s = %g: %zu realisation(s) without a complete cycle in either run replaced by the next streams.",
+                lab, x, none);
+    if (edge)
+        sf_note(r, "%s = %g: %zu realisation(s) on which the runs count different events (oscillations, cycles or a "
+                   "stick at the window's edge, or a maximum of x grazing vx = 0: a jump of the per-realisation QoI, "
+                   "not an accuracy error) replaced by the next streams%s%s",
+                lab, x, edge, jumps ? "; their QoI gaps (the first 8):" : ".", jumps ? jumps : "");
+}
+
 int check_qoi_shape_differ(const check_qoi_shape *a, const check_qoi_shape *b)
 {
     return a->kind != b->kind || a->nosc != b->nosc || a->ncycles != b->ncycles;

@@ -192,6 +192,10 @@ double check_qoi_gap_of(const double q[3], size_t ncycles, const double qref[3])
  * A requirement met or not (sf_check_true), not a margin: at used = n it is
  * not "near the edge". */
 void check_fields_row(sf_result *r, const char *lab, double x, size_t used, size_t n);
+/* The findings' account of the fields replaced at lab = x: `none` that
+ * formed no QoI in either run, `edge` whose runs count different events
+ * (check_qoi_shape_differ), with their QoI gaps (`jumps`, may be NULL). */
+void check_replaced_notes(sf_result *r, const char *lab, double x, size_t none, size_t edge, const char *jumps);
 /* The per-realisation errors behind each RMS of a sweep, after its table:
  * a line "- lab = x[k]: e..." per value, e[k * n + i] in stream order. */
 void check_list_errors(sf_result *r, const char *lab, size_t K, const double *x, size_t n, const double *e);

@@ -390,15 +390,7 @@ static int chk_qoi_tol(const sf_case *c, sf_result *r)
         sf_cof_plan_free(cp);
         if (rc)
             break;
-        if (none)
-            sf_note(r, "l/R = %g: %zu realisation(s) without a complete cycle at either setting replaced by the next "
-                       "streams.", c->spec.sweep.v[k], none);
-        if (edge)
-            sf_note(r, "l/R = %g: %zu realisation(s) on which the two settings count different events (oscillations, "
-                       "cycles or a stick at the window's edge, or a maximum of x grazing vx = 0: a jump of the "
-                       "per-realisation QoI, not an accuracy error) replaced by the next streams; their QoI gaps "
-                       "(the first 8):%s",
-                    c->spec.sweep.v[k], edge, jumps);
+        check_replaced_notes(r, "l/R", c->spec.sweep.v[k], none, edge, jumps);
         char t[160];
         check_fields_row(r, "l/R", c->spec.sweep.v[k], used, n);
         x[k] = c->spec.sweep.v[k];
