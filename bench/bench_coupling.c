@@ -85,45 +85,6 @@ static int derived(const sf_cof *f, size_t k, const sf_lognormal *ln, double mub
     return rc || (box > 0 && sf_cof_set_box(*out, box));
 }
 
-/* The grid of b x b boxes over a cell-average grid of m x n nodes from
- * (x0, y0) at spacing d = box / 3: coarse node (I, J) is the centre of
- * the fine boxes at nodes (b I + 3 u, b J + 3 v), u, v < b. */
-static void box_grid(size_t m, size_t n, double x0, double y0, double d, size_t b, sf_cof_plan_info *c)
-{
-    size_t o = 3 * (b - 1);   /* the span of the fine box centres, in nodes */
-    c->nx = m > o ? (m - 1 - o) / b + 1 : 0;
-    c->ny = n > o ? (n - 1 - o) / b + 1 : 0;
-    c->x0 = x0 + 0.5 * (double)o * d;
-    c->y0 = y0 + 0.5 * (double)o * d;
-    c->dx = c->dy = (double)b * d;
-}
-
-/* The cell averages of grid COF f over b x b of its boxes. */
-static int boxes(const sf_cof *f, size_t b, sf_cof **out)
-{
-    size_t m, n;
-    double x0, y0, dx, dy;
-    const double *mu;
-    if (sf_cof_grid_view(f, &m, &n, &x0, &y0, &dx, &dy, &mu))
-        return 1;
-    sf_cof_plan_info c;
-    box_grid(m, n, x0, y0, dx, b, &c);
-    double *v = c.nx && c.ny ? malloc(c.nx * c.ny * sizeof *v) : NULL;
-    if (!v)
-        return 1;
-    for (size_t J = 0; J < c.ny; J++)
-        for (size_t I = 0; I < c.nx; I++) {
-            double s = 0;
-            for (size_t u = 0; u < b; u++)
-                for (size_t w = 0; w < b; w++)
-                    s += mu[b * I + 3 * u + m * (b * J + 3 * w)];
-            v[I + c.nx * J] = s / (double)(b * b);
-        }
-    int rc = sf_cof_alloc_grid(c.nx, c.ny, c.x0, c.y0, c.dx, c.dy, v, out);
-    free(v);
-    return rc || sf_cof_set_box(*out, (double)b * sf_cof_box(f));
-}
-
 /* coarse level j's field derived from fine field f (k = 1: f itself, *own = 0) */
 static int coarse_of(const sf_cof *f, int j, const sf_lognormal *ln, double mubar, const sf_cof **c, sf_cof **own)
 {
@@ -132,7 +93,7 @@ static int coarse_of(const sf_cof *f, int j, const sf_lognormal *ln, double muba
         *c = f;
         return 0;
     }
-    int rc = cpl[j].b ? boxes(f, cpl[j].b, own) : derived(f, cpl[j].k, ln, mubar, own);
+    int rc = cpl[j].b ? sf_cof_box_means(f, cpl[j].b, own) : derived(f, cpl[j].k, ln, mubar, own);
     *c = *own;
     return rc;
 }
@@ -350,8 +311,8 @@ int bench_coupling(FILE *f, const char *dir)
             if (cpl[j].b) {
                 if (!ca)
                     continue;
-                box_grid(in->nx, in->ny, in->x0, in->y0, in->dx, cpl[j].b, &pk.cof);
-                pk.cof.box = (double)cpl[j].b * in->box;
+                if (sf_cof_box_grid(in, cpl[j].b, &pk.cof))
+                    continue;
                 L->run.num.cells = CA_CELLS / cpl[j].b;
                 L->run.num.cell_size = pk.cof.box;
                 L->run.num.box_over_l = pk.cof.box / s.l;

@@ -23,7 +23,7 @@ static void usage(FILE *f)
     fputs("usage: slipfield sweep SCENE --param NAME --values A,B,C --realisations N --out FILE\n"
           "                       [--summary FILE] [--threads T] [--resume]\n"
           "                       [--target-se X [--pilot N0] | --control-variate |\n"
-          "                        --estimator mlmc|antithetic [--pilot N0]]\n"
+          "                        --estimator mlmc|mlmc-boxes|antithetic [--pilot N0]]\n"
           "Monte Carlo sweep: at each value of NAME, N realisations of the scene.\n"
           "  --param NAME      a numeric scene key, or l_over_R (l = value x R), or\n"
           "                    mu_mean (at the scene's CV: mu_std scales with it)\n"
@@ -73,6 +73,13 @@ static void usage(FILE *f)
           "                    level's work, and per ratio the estimate, its interval,\n"
           "                    each level's variance and the variance reduction factor;\n"
           "                    the rows are level 1's fine realisations\n"
+          "  --estimator mlmc-boxes  two levels where the plan draws cell averages (small\n"
+          "                    l/R): the fine plan's cells rounded up to a multiple of 4;\n"
+          "                    level 1 runs the coarse plan (a quarter of the cells per\n"
+          "                    diameter, rtol 1e-5) on the means of 4 x 4 of the fine\n"
+          "                    field's boxes (the law of the coarse model, exactly);\n"
+          "                    level 0 draws its own coarse fields, in antithetic pairs;\n"
+          "                    the summary's columns as --estimator mlmc\n"
           "  --estimator antithetic  pairs of the drawn field G and its antithetic -G\n"
           "                    (negated before the lognormal map; -G has G's law): one\n"
           "                    draw, two runs, the pair mean unbiased; a pilot of N0\n"
@@ -187,10 +194,11 @@ int sf_cmd_sweep(int argc, char **argv)
         fprintf(stderr, "slipfield sweep: --target-se takes a standard error > 0 (got %g)\n", target_se);
         return SF_EXIT_USAGE;
     }
-    int ml = 0, anti = 0;
+    int ml = 0, anti = 0, boxes = 0;
     if (estimator && !(ml = !strcmp(estimator, "mlmc")) && !(anti = !strcmp(estimator, "antithetic")) &&
-        strcmp(estimator, "plain")) {
-        fprintf(stderr, "slipfield sweep: --estimator takes plain, mlmc or antithetic (got '%s')\n", estimator);
+        !(boxes = ml = !strcmp(estimator, "mlmc-boxes")) && strcmp(estimator, "plain")) {
+        fprintf(stderr, "slipfield sweep: --estimator takes plain, mlmc, mlmc-boxes or antithetic (got '%s')\n",
+                estimator);
         return SF_EXIT_USAGE;
     }
     if ((ml || anti) && (staged || cv || resume)) {
@@ -199,7 +207,7 @@ int sf_cmd_sweep(int argc, char **argv)
         return SF_EXIT_USAGE;
     }
     if (pilot && !staged && !ml && !anti) {
-        fprintf(stderr, "slipfield sweep: --pilot needs --target-se or --estimator mlmc|antithetic\n");
+        fprintf(stderr, "slipfield sweep: --pilot needs --target-se or --estimator mlmc|mlmc-boxes|antithetic\n");
         return SF_EXIT_USAGE;
     }
     int paired = ml || anti;   /* the estimators sized from a pilot of pairs */
@@ -275,7 +283,8 @@ int sf_cmd_sweep(int argc, char **argv)
         snprintf(label, sizeof label, "%s = %g", param, v[k]);
         sf_sweep_point p;
         const char *ckp = strcmp(out_path, "-") ? ck : NULL;
-        rc = ml       ? sf_sweep_run_mlmc(&s, n, pilot, (int)threads, label, &p, err, sizeof err)
+        rc = boxes    ? sf_sweep_run_mlmc_boxes(&s, n, pilot, (int)threads, label, &p, err, sizeof err)
+             : ml     ? sf_sweep_run_mlmc(&s, n, pilot, (int)threads, label, &p, err, sizeof err)
              : anti   ? sf_sweep_run_antithetic(&s, n, pilot, (int)threads, label, &p, err, sizeof err)
              : staged ? sf_sweep_run_target(&s, target_se, pilot, n, (int)threads, ckp, resume, label, &p, err, sizeof err)
              : cv   ? sf_sweep_run_cv(&s, n, (int)threads, ckp, resume, label, &p, err, sizeof err)

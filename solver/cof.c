@@ -497,6 +497,59 @@ int sf_cof_plan_antithetic(const sf_cof_plan *p, const sf_cof *c, sf_cof **out)
     return SF_EINVAL;
 }
 
+/* the box grid of m x n cell-average nodes from (x0, y0) at spacing d */
+static int box_grid_of(size_t m, size_t n, double x0, double y0, double d, size_t b, sf_cof_plan_info *c)
+{
+    size_t o = 3 * (b - 1);   /* the span of a big box's fine centres, in nodes */
+    if (b < 2 || m < o + 2 || n < o + 2 || !(d > 0))
+        return SF_EINVAL;
+    c->nx = (m - 1 - o) / b + 1;
+    c->ny = (n - 1 - o) / b + 1;
+    c->x0 = x0 + 0.5 * (double)o * d;
+    c->y0 = y0 + 0.5 * (double)o * d;
+    c->dx = c->dy = (double)b * d;
+    return SF_SUCCESS;
+}
+
+int sf_cof_box_grid(const sf_cof_plan_info *fine, size_t b, sf_cof_plan_info *coarse)
+{
+    if (fine->kind != SF_COF_FIELD || !(fine->box > 0) || fine->generator == SF_COFGEN_TILES)
+        return SF_EINVAL;
+    sf_cof_plan_info c = *fine;
+    int rc = box_grid_of(fine->nx, fine->ny, fine->x0, fine->y0, fine->dx, b, &c);
+    if (rc)
+        return rc;
+    c.box = (double)b * fine->box;
+    *coarse = c;
+    return SF_SUCCESS;
+}
+
+int sf_cof_box_means(const sf_cof *f, size_t b, sf_cof **out)
+{
+    *out = NULL;
+    if (f->kind != SF_COF_FIELD || !(f->box > 0) || f->tiles)
+        return SF_EINVAL;
+    sf_cof_plan_info g;
+    int rc = box_grid_of(f->m, f->n, f->x0, f->y0, f->dx, b, &g);
+    sf_cof *c;
+    if (rc || (rc = grid_new(g.nx, g.ny, g.x0, g.y0, g.dx, g.dy, &c)))
+        return rc;
+    size_t m = f->m;
+    double w = 1.0 / (double)(b * b);
+    for (size_t J = 0; J < g.ny; J++)
+        for (size_t I = 0; I < g.nx; I++) {
+            double sum = 0;
+            for (size_t v = 0; v < b; v++)
+                for (size_t u = 0; u < b; u++)
+                    sum += f->grid[b * I + 3 * u + m * (b * J + 3 * v)];
+            c->grid[I + g.nx * J] = sum * w;
+        }
+    c->box = (double)b * f->box;
+    grid_done(c);
+    *out = c;
+    return SF_SUCCESS;
+}
+
 int sf_cof_from_scene(const sf_scene *s, gsl_rng *rng, sf_cof **out)
 {
     sf_cof_plan *p;

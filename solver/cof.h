@@ -226,6 +226,20 @@ int sf_cof_plan_draw(sf_cof_plan *p, gsl_rng *rng, sf_cof **out);
  * columns again as the window slides).  SF_EINVAL for a COF of another
  * kind or generator than p's. */
 int sf_cof_plan_antithetic(const sf_cof_plan *p, const sf_cof *c, sf_cof **out);
+/* Boxes of boxes (cell averages only, cellavg.h).  The average of the
+ * field over a box of side b h is the mean of the b^2 averages over the
+ * boxes of side h that tile it, and the covariance is linear in the
+ * field, so the means of b x b fine node values 3 nodes apart (a node
+ * spacing is box / 3) have exactly the mean, covariance and Gaussian law
+ * of the cell-average model at box b h, on a grid of spacing b h / 3
+ * whose nodes are the big boxes' centres.  sf_cof_box_grid: that grid
+ * from a cell-average plan's strip `fine` (coarse->box = b fine->box,
+ * the rest of *coarse copied from *fine); SF_EINVAL unless fine is cell
+ * averages with at least 3 (b - 1) + 2 nodes a side and b >= 2.
+ * sf_cof_box_means: the coarse COF derived from a drawn cell-average COF
+ * c, on exactly that grid. */
+int sf_cof_box_grid(const sf_cof_plan_info *fine, size_t b, sf_cof_plan_info *coarse);
+int sf_cof_box_means(const sf_cof *c, size_t b, sf_cof **out);
 /* Convenience: plan, draw one realisation, free the plan. */
 int sf_cof_from_scene(const sf_scene *s, gsl_rng *rng, sf_cof **out);
 

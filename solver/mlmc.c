@@ -70,6 +70,14 @@ void *sf_mlmc_ws_alloc(void *ctx)
     m->w = *w;   /* the copy owns w's COF plan */
     free(w);
     m->draw = sf_mlmc_draw_work(sf_cof_plan_get_info(m->w.plan));
+    m->cplan = NULL;
+    if (m->cdraw) {   /* level 0's own draw on the coarse grid */
+        if (sf_cof_plan_build_mt(m->w.s, m->cdraw, &m->cplan, NULL, 0)) {
+            sf_mlmc_ws_free(m);
+            return NULL;
+        }
+        m->cdraw_work = sf_mlmc_draw_work(sf_cof_plan_get_info(m->cplan));
+    }
     return m;
 }
 
@@ -77,21 +85,50 @@ void sf_mlmc_ws_free(void *p)
 {
     ml_ws *m = p;
     sf_cof_plan_free_mt(m->w.plan);
+    if (m->cplan)
+        sf_cof_plan_free_mt(m->cplan);
     free(m);
 }
 
-/* a pair on one field (level 1), or the coarse run alone (level 0) */
+/* level 0 of boxes of boxes: an antithetic pair of coarse runs on a field
+ * drawn on the coarse grid; out: the pair's mean QoIs */
+static int realise_boxes0(ml_ws *m, gsl_rng *rng, double *out)
+{
+    sf_cof *c, *a = NULL;
+    double qa[NQ];
+    int rc = sf_cof_plan_draw(m->cplan, rng, &c);
+    if (rc)
+        return rc;
+    rc = sf_cof_plan_antithetic(m->cplan, c, &a);
+    if (!rc)
+        rc = sf_sweep_solve(m->w.s, m->coarse, c, out, NULL);
+    if (!rc)
+        rc = sf_sweep_solve(m->w.s, m->coarse, a, qa, NULL);
+    for (int q = 0; q < NQ; q++)
+        out[q] = 0.5 * (out[q] + qa[q]);   /* NaN when either member forms no QoI */
+    sf_cof_free(c);
+    sf_cof_free(a);
+    return rc;
+}
+
+/* a pair on one field (level 1: the coarse run on the field itself or on
+ * its box means), or the coarse run alone (level 0) */
 static int realise(ml_ws *m, gsl_rng *rng, int pair, double *out)
 {
-    sf_cof *cof;
+    if (!pair && m->cplan)
+        return realise_boxes0(m, rng, out);
+    sf_cof *cof, *box = NULL;
     int rc = sf_cof_plan_draw(m->w.plan, rng, &cof);
     if (rc)
         return rc;
     if (pair) {
-        rc = sf_sweep_solve(m->w.s, m->w.pl, cof, out, &out[P_WF]);
+        rc = m->b ? sf_cof_box_means(cof, m->b, &box) : SF_SUCCESS;
         if (!rc)
-            rc = sf_sweep_solve(m->w.s, m->coarse, cof, out + P_C, &out[P_WC]);
+            rc = sf_sweep_solve(m->w.s, m->w.pl, cof, out, &out[P_WF]);
+        if (!rc)
+            rc = sf_sweep_solve(m->w.s, m->coarse, box ? box : cof, out + P_C, &out[P_WC]);
         out[P_DRAW] = m->draw;
+        sf_cof_free(box);
     } else {
         rc = sf_sweep_solve(m->w.s, m->coarse, cof, out, NULL);
     }
@@ -137,6 +174,17 @@ static int pair_vars(const double *v, size_t n, const double *det, int q, double
     return SF_SUCCESS;
 }
 
+/* the variance of ratio q (value / det) over level 0's first n samples
+ * (NQ values each) that are finite (x: room for n); NAN below 2 */
+static double finite_var(const double *v, size_t n, int q, double det, double *x)
+{
+    size_t k = 0;
+    for (size_t i = 0; i < n; i++)
+        if (isfinite(v[i * NQ + q] / det))
+            x[k++] = v[i * NQ + q] / det;
+    return k > 1 ? gsl_stats_variance(x, 1, k) : NAN;
+}
+
 /* the mean work of a level over n samples: pairs (fine + coarse) or the
  * coarse run of a pair alone */
 static double mean_work(const double *v, size_t n, int fine, int coarse)
@@ -148,7 +196,7 @@ static double mean_work(const double *v, size_t n, int fine, int coarse)
     return w / (double)n;
 }
 
-static int ml_stats(sf_sweep_point *p, const double *pairs)
+static int ml_stats(sf_sweep_point *p, const double *pairs, int boxes)
 {
     const double *lev0 = p->ml.coarse0;
     for (int q = 0; q < NQ; q++) {
@@ -179,7 +227,10 @@ static int ml_stats(sf_sweep_point *p, const double *pairs)
         e->m[1] = m1;
         e->var[0] = v0;
         e->var[1] = vd;
-        e->var_fine = v0 + (vf - vc);   /* Var Q_c from level 0's many values, plus the pairs' Var Q_f - Var Q_c */
+        /* Var Q_c from level 0's many values, plus the pairs' Var Q_f -
+           Var Q_c; boxes of boxes: level 0's values are pair means, and
+           the pairs' Var Q_f stands alone */
+        e->var_fine = boxes ? vf : v0 + (vf - vc);
         e->mean = sum[0] / (double)m0 + sum[1] / (double)m1;
         double a = v0 / (double)m0, b = vd / (double)m1;
         e->se = sqrt(a + b);
@@ -194,7 +245,19 @@ static int ml_stats(sf_sweep_point *p, const double *pairs)
     return SF_SUCCESS;
 }
 
-int sf_sweep_run_mlmc(const sf_scene *s, size_t n_plain, size_t n_pilot, int threads, const char *label,
+/* level 0's work per sample: the coarse draw and run of a pair's field,
+ * or (boxes of boxes) a coarse-grid draw and two coarse runs */
+static double level0_work(const ml_ws *c, const double *pairs, size_t n)
+{
+    if (!c->cdraw)
+        return mean_work(pairs, n, 0, 1);
+    double w = 0;
+    for (size_t i = 0; i < n; i++)
+        w += pairs[i * P_OUT + P_WC] + SF_MLMC_RUN_WORK;
+    return c->cdraw_work + 2 * w / (double)n;
+}
+
+static int run_levels(const sf_scene *s, size_t n_plain, size_t n_pilot, int threads, const char *label, int boxes,
                       sf_sweep_point *out, char *err, size_t errlen)
 {
     memset(out, 0, sizeof *out);
@@ -204,15 +267,29 @@ int sf_sweep_run_mlmc(const sf_scene *s, size_t n_plain, size_t n_pilot, int thr
     int rc = sf_sweep_det(s, out->det, err, errlen);
     if (rc)
         return rc;
-    sf_plan fine, coarse;
-    if ((rc = sf_plan_make(s, &fine, err, errlen)))
-        return rc;
-    fine.history = 0;
-    sf_mlmc_coarse_plan(&fine, &coarse);
+    sf_plan fine, coarse, cdraw;
+    if (boxes) {
+        if ((rc = sf_mlmc_box_plans(s, &fine, &coarse, &cdraw, err, errlen)))
+            return rc;
+    } else {
+        if ((rc = sf_plan_make(s, &fine, err, errlen)))
+            return rc;
+        fine.history = 0;
+        sf_mlmc_coarse_plan(&fine, &coarse);
+    }
     double *pairs = sf_calloc(n_plain * P_OUT, sizeof *pairs), *lev0 = NULL;
     if (!pairs)
         return SF_ENOMEM;
-    ml_ws ctx = { { s, &fine, NULL, NULL, 0 }, &coarse, 0 };
+    ml_ws ctx = { { s, &fine, NULL, NULL, 0 }, &coarse, 0, boxes ? SF_MLMC_BOX : 0, boxes ? &cdraw : NULL, NULL, 0 };
+    if (boxes) {   /* the level-0 draw's work, for the sizes (a thread's copy measures its own) */
+        sf_cof_plan *cp;
+        if ((rc = sf_cof_plan_build(s, &cdraw, &cp, err, errlen))) {
+            free(pairs);
+            return rc;
+        }
+        ctx.cdraw_work = sf_mlmc_draw_work(sf_cof_plan_get_info(cp));
+        sf_cof_plan_free(cp);
+    }
     sf_mc_ops ops1 = { sf_mlmc_ws_alloc, sf_mlmc_ws_free, realise_pair },
               ops0 = { sf_mlmc_ws_alloc, sf_mlmc_ws_free, realise_coarse };
     sf_mc_spec spec1 = { n_plain, P_OUT, s->seed, threads, NULL, 0, 0, label };
@@ -221,17 +298,34 @@ int sf_sweep_run_mlmc(const sf_scene *s, size_t n_plain, size_t n_pilot, int thr
     size_t m;
     for (int q = 0; q < NQ && !rc; q++)
         rc = pair_vars(pairs, n_pilot, out->det, q, &v0[q], &v1[q], &vf[q], &m);
-    size_t n0 = 0, n1 = 0;
+    size_t n0 = 0, n1 = 0, cap0 = SF_MLMC_N0_CAP * n_plain;
+    sf_mc_spec spec0 = { boxes ? cap0 : 0, NQ, sf_mc_seed(s->seed, SF_MLMC_LEVEL0_STREAM), threads, NULL, 0, 0, label };
+    if (!rc && boxes) {   /* level 0's own pilot: its antithetic pairs' variance, reused as its first samples */
+        if (!(lev0 = sf_calloc(cap0 * NQ, sizeof *lev0)))
+            rc = SF_ENOMEM;
+        if (!rc)
+            rc = sf_mc_run_range(&spec0, 0, n_pilot, &ops0, &ctx, lev0, NULL, err, errlen);
+        double *x = rc ? NULL : sf_malloc(n_pilot * sizeof *x);
+        if (!rc && !x)
+            rc = SF_ENOMEM;
+        for (int q = 0; q < NQ && !rc; q++)
+            v0[q] = finite_var(lev0, n_pilot, q, out->det[q], x);
+        free(x);
+    }
     if (!rc) {
-        sf_mlmc_sizes(v0, v1, vf, NQ, mean_work(pairs, n_pilot, 0, 1), mean_work(pairs, n_pilot, 1, 1), n_plain,
+        sf_mlmc_sizes(v0, v1, vf, NQ, level0_work(&ctx, pairs, n_pilot), mean_work(pairs, n_pilot, 1, 1), n_plain,
                       n_pilot, &n0, &n1);
         rc = sf_mc_run_range(&spec1, n_pilot, n1, &ops1, &ctx, pairs, NULL, err, errlen);
     }
-    if (!rc && !(lev0 = sf_calloc(n0 * NQ, sizeof *lev0)))
-        rc = SF_ENOMEM;
-    sf_mc_spec spec0 = { n0, NQ, sf_mc_seed(s->seed, SF_MLMC_LEVEL0_STREAM), threads, NULL, 0, 0, label };
-    if (!rc)
-        rc = sf_mc_run(&spec0, &ops0, &ctx, lev0, NULL, err, errlen);
+    if (!rc && boxes) {
+        rc = sf_mc_run_range(&spec0, n_pilot, n0, &ops0, &ctx, lev0, NULL, err, errlen);
+    } else if (!rc) {
+        spec0.n = n0;
+        if (!(lev0 = sf_calloc(n0 * NQ, sizeof *lev0)))
+            rc = SF_ENOMEM;
+        if (!rc)
+            rc = sf_mc_run(&spec0, &ops0, &ctx, lev0, NULL, err, errlen);
+    }
     if (!rc && (!(out->qoi = sf_calloc(n1 * NQ, sizeof *out->qoi)) ||
                 !(out->ratio = sf_calloc(n1 * NQ, sizeof *out->ratio)) ||
                 !(out->ml.coarse1 = sf_calloc(n1 * NQ, sizeof *out->ml.coarse1))))
@@ -246,15 +340,58 @@ int sf_sweep_run_mlmc(const sf_scene *s, size_t n_plain, size_t n_pilot, int thr
         }
         out->ml.n[0] = n0;
         out->ml.n[1] = n1;
-        out->ml.cost[0] = mean_work(pairs, n1, 0, 1);
+        out->ml.cost[0] = level0_work(&ctx, pairs, n1);
         out->ml.cost[1] = mean_work(pairs, n1, 1, 1);
         out->ml.cost_fine = mean_work(pairs, n1, 1, 0);
         out->ml.work = (double)n0 * out->ml.cost[0] + (double)n1 * out->ml.cost[1];
         rc = sf_sweep_point_stats(out);
     }
     if (!rc)
-        rc = ml_stats(out, pairs);
+        rc = ml_stats(out, pairs, boxes);
     free(pairs);
     free(lev0);
     return rc;
+}
+
+int sf_sweep_run_mlmc(const sf_scene *s, size_t n_plain, size_t n_pilot, int threads, const char *label,
+                      sf_sweep_point *out, char *err, size_t errlen)
+{
+    return run_levels(s, n_plain, n_pilot, threads, label, 0, out, err, errlen);
+}
+
+int sf_sweep_run_mlmc_boxes(const sf_scene *s, size_t n_plain, size_t n_pilot, int threads, const char *label,
+                            sf_sweep_point *out, char *err, size_t errlen)
+{
+    return run_levels(s, n_plain, n_pilot, threads, label, 1, out, err, errlen);
+}
+
+int sf_mlmc_box_plans(const sf_scene *s, sf_plan *fine, sf_plan *coarse, sf_plan *cdraw, char *err, size_t errlen)
+{
+    int rc = sf_plan_make(s, fine, err, errlen);
+    if (rc)
+        return rc;
+    if (!fine->num.cell_average)
+        return sf_seterr(err, errlen, SF_EINVAL, "two levels on boxes of boxes need a plan that draws cell averages "
+                         "(cof = field with cof_model = cell_average, or auto at small l/R); this scene's does not");
+    sf_scene sb = *s;   /* the plan's cells rounded up to a multiple of b */
+    size_t b = SF_MLMC_BOX;
+    sb.cof_model = SF_COFMODEL_CELL;
+    sb.cells = (fine->num.cells + b - 1) / b * b;
+    if ((rc = sf_plan_make(&sb, fine, err, errlen)))
+        return rc;
+    fine->history = 0;
+    fine->cof.x0 -= SF_MLMC_BOX_PAD * fine->cof.dx;
+    fine->cof.y0 -= SF_MLMC_BOX_PAD * fine->cof.dy;
+    fine->cof.nx += 2 * SF_MLMC_BOX_PAD;
+    fine->cof.ny += 2 * SF_MLMC_BOX_PAD;
+    sf_mlmc_coarse_plan(fine, coarse);
+    *cdraw = *fine;
+    if ((rc = sf_cof_box_grid(&fine->cof, b, &cdraw->cof)))
+        return sf_seterr(err, errlen, rc, "boxes of boxes: the %zu x %zu strip is too small for %zu x %zu boxes",
+                         fine->cof.nx, fine->cof.ny, b, b);
+    coarse->num.cells = fine->num.cells / b;
+    coarse->num.cell_size = cdraw->cof.box;
+    coarse->num.box_over_l = cdraw->cof.box / s->l;
+    coarse->cof = cdraw->cof;
+    return SF_SUCCESS;
 }

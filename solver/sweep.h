@@ -205,6 +205,11 @@ double sf_sweep_companion(const sf_cof *cof, const sf_scene *s);
 int sf_sweep_run_mlmc(const sf_scene *s, size_t n_plain, size_t n_pilot, int threads, const char *label,
                       sf_sweep_point *out, char *err, size_t errlen);
 
+/* The same on boxes of boxes (mlmc.h: SF_MLMC_BOX): for a scene whose
+ * plan draws cell averages (SF_EINVAL with the reason otherwise). */
+int sf_sweep_run_mlmc_boxes(const sf_scene *s, size_t n_plain, size_t n_pilot, int threads, const char *label,
+                            sf_sweep_point *out, char *err, size_t errlen);
+
 /* An antithetic sweep point (antithetic.h): the ratio means at the
  * variance plain Monte Carlo reaches with n_plain realisations, from
  * n_pilot pairs (reused as the first) that set the number of pairs. */

@@ -680,6 +680,17 @@ static int sweep_anti(void *ctx)
     return rc;
 }
 
+static int sweep_boxes(void *ctx)
+{
+    sf_sweep_point pt;
+    char err[256] = "";
+    int rc = sf_sweep_run_mlmc_boxes(ctx, 2, 2, 1, NULL, &pt, err, sizeof err);
+    if (!rc)
+        assert_true(pt.ml.n[1] >= 2 && isfinite(pt.ml.q[0].mean));
+    sf_sweep_point_free(&pt);
+    return rc;
+}
+
 /* a small field scene for the sweep's walks */
 static void scene_sweep(sf_scene *s)
 {
@@ -698,6 +709,13 @@ static void sweeps(void **state)
     assert_true(walk("sf_sweep_run_target", sweep2, &s, SF_SUCCESS, 0) > 20);
     assert_true(walk("sf_sweep_run_cv", sweep_cv, &s, SF_SUCCESS, 0) > 20);
     assert_true(walk("sf_sweep_run_antithetic", sweep_anti, &s, SF_SUCCESS, 0) > 20);
+    scene_sweep(&s);   /* boxes of boxes need cell averages: few, for a short walk */
+    s.cof_model = SF_COFMODEL_CELL;
+    s.cells = 8;
+    s.l = 0.05;
+    s.T = 14;
+    s.t_skip = 4;
+    assert_true(walk("sf_sweep_run_mlmc_boxes", sweep_boxes, &s, SF_SUCCESS, 0) > 20);
 }
 
 /* the two-level sweep's walk: a test of its own, the longest (about half

@@ -584,6 +584,74 @@ static void anti_estimator(void **state)
     sf_sweep_point_free(&p);
 }
 
+/* Two levels on boxes of boxes: the box grid and means (cof.h), the
+ * plans, and a point (the same bits on two threads). */
+static void boxes_estimator(void **state)
+{
+    (void)state;
+    /* the box grid: 4 x 4 boxes of a 20 x 17 cell-average strip from
+       (1, 2) at spacing 0.5 (box 1.5): nodes (20 - 1 - 9) / 4 + 1 = 3 and
+       (17 - 1 - 9) / 4 + 1 = 2, origin + 4.5 spacings, spacing 2 */
+    sf_cof_plan_info in = { .kind = SF_COF_FIELD, .nx = 20, .ny = 17, .x0 = 1, .y0 = 2, .dx = 0.5, .dy = 0.5,
+                            .box = 1.5 }, c;
+    assert_int_equal(sf_cof_box_grid(&in, 4, &c), SF_SUCCESS);
+    assert_true(c.nx == 3 && c.ny == 2 && c.x0 == 3.25 && c.y0 == 4.25 && c.dx == 2 && c.dy == 2 && c.box == 6);
+    assert_int_equal(sf_cof_box_grid(&in, 1, &c), SF_EINVAL);
+    in.ny = 10;   /* fewer than 3 (b - 1) + 2 nodes */
+    assert_int_equal(sf_cof_box_grid(&in, 4, &c), SF_EINVAL);
+    in.ny = 17;
+    in.box = 0;   /* point values */
+    assert_int_equal(sf_cof_box_grid(&in, 4, &c), SF_EINVAL);
+    /* the means: node values i + 100 j, so a box mean is the mean index */
+    double v[20 * 17];
+    for (size_t j = 0; j < 17; j++)
+        for (size_t i = 0; i < 20; i++)
+            v[i + 20 * j] = (double)i + 100 * (double)j;
+    sf_cof *f, *g;
+    assert_int_equal(sf_cof_alloc_grid(20, 17, 1, 2, 0.5, 0.5, v, &f), SF_SUCCESS);
+    assert_int_equal(sf_cof_box_means(f, 4, &g), SF_EINVAL);   /* not cell averages */
+    assert_int_equal(sf_cof_set_box(f, 1.5), SF_SUCCESS);
+    assert_int_equal(sf_cof_box_means(f, 4, &g), SF_SUCCESS);
+    size_t m, n;
+    double x0, dx;
+    const double *u;
+    assert_int_equal(sf_cof_grid_view(g, &m, &n, &x0, NULL, &dx, NULL, &u), SF_SUCCESS);
+    assert_true(m == 3 && n == 2 && x0 == 3.25 && dx == 2 && sf_cof_box(g) == 6);
+    /* node (I, J): fine columns 4 I + {0, 3, 6, 9}, rows 4 J + {0, 3, 6, 9} */
+    for (size_t J = 0; J < n; J++)
+        for (size_t I = 0; I < m; I++)
+            assert_true(fabs(u[I + m * J] - ((double)(4 * I) + 4.5 + 100 * ((double)(4 * J) + 4.5))) < 1e-12);
+    sf_cof_free(g);
+    sf_cof_free(f);
+    /* the plans: refused where the plan draws point values */
+    sf_scene s;
+    sf_scene_default(&s);
+    s.cof = SF_COF_FIELD;
+    sf_plan fp, cp, dp;
+    char err[200];
+    assert_int_equal(sf_mlmc_box_plans(&s, &fp, &cp, &dp, err, sizeof err), SF_EINVAL);
+    assert_non_null(strstr(err, "cell averages"));
+    s.l = 0.015;   /* l/R = 0.03: the plan's cell averages, 59 cells -> 60 */
+    s.T = 14;
+    s.t_skip = 4;
+    assert_int_equal(sf_mlmc_box_plans(&s, &fp, &cp, &dp, err, sizeof err), SF_SUCCESS);
+    assert_true(fp.num.cells % SF_MLMC_BOX == 0 && cp.num.cells == fp.num.cells / SF_MLMC_BOX);
+    assert_true(fabs(dp.cof.box - SF_MLMC_BOX * fp.cof.box) < 1e-15 && cp.num.rtol == SF_MLMC_RTOL);
+    /* a point, on one and two threads */
+    sf_sweep_point a, b;
+    assert_int_equal(sf_sweep_run_mlmc_boxes(&s, 8, 3, 1, NULL, &a, err, sizeof err), SF_SUCCESS);
+    assert_int_equal(sf_sweep_run_mlmc_boxes(&s, 8, 3, 2, NULL, &b, err, sizeof err), SF_SUCCESS);
+    assert_true(a.ml.n[0] >= 3 && a.ml.n[1] >= 3 && a.ml.n[0] == b.ml.n[0] && a.ml.n[1] == b.ml.n[1]);
+    assert_memory_equal(a.qoi, b.qoi, a.n * SF_SWEEP_NQ * sizeof *a.qoi);
+    assert_memory_equal(a.ml.coarse0, b.ml.coarse0, a.ml.n[0] * SF_SWEEP_NQ * sizeof *a.qoi);
+    assert_memory_equal(a.ml.q, b.ml.q, sizeof a.ml.q);
+    assert_true(a.ml.cost[0] < a.ml.cost_fine && isfinite(a.ml.q[0].mean) && a.ml.q[0].se > 0);
+    sf_sweep_point_free(&a);
+    sf_sweep_point_free(&b);
+    assert_int_equal(sf_sweep_run_mlmc_boxes(&s, 8, 1, 1, NULL, &a, err, sizeof err), SF_EINVAL);
+    sf_sweep_point_free(&a);
+}
+
 static void shortest_text(void **state)
 {
     (void)state;
@@ -613,6 +681,7 @@ int main(void)
         cmocka_unit_test(cv_estimator),
         cmocka_unit_test(mlmc_estimator),
         cmocka_unit_test(anti_estimator),
+        cmocka_unit_test(boxes_estimator),
     };
     return cmocka_run_group_tests_name("montecarlo", tests, NULL, NULL);
 }

@@ -342,7 +342,7 @@ static double finite_mean(const double *x, size_t n, size_t *m, double *var)
 }
 
 /* the estimators the checks below compare with plain Monte Carlo */
-enum { EST_MLMC, EST_ANTI };
+enum { EST_MLMC, EST_ANTI, EST_BOXES };
 
 /* The estimator's point at scene s (its pilot ML_PILOT, plain's variance
  * at s->samples as the target) and plain Monte Carlo's of as many rows:
@@ -372,6 +372,52 @@ static double rows_differ(const sf_sweep_point *p, const sf_sweep_point *pl)
     return (double)diff;
 }
 
+/* The two levels' estimate and its se recomputed from the values point p
+ * keeps (rows (1) and (2) of the checks below), with the plot of level
+ * 1's differences. */
+static void ml_recompute(const sf_sweep_point *p, sf_result *r)
+{
+    size_t n1 = p->ml.n[1], n0 = p->ml.n[0];
+    double gap = 0, segap = 0;
+    double *d = check_alloc(n1 * sizeof *d), *b = check_alloc((n0 ? n0 : 1) * sizeof *b), *x = check_alloc(n1 * sizeof *x);
+    sf_plot *plt = sf_result_plot(r, "levels", "Level 1: fine - coarse ratio per pair (one field each)", "pair [-]",
+                                  "fine - coarse ratio [-]");
+    double *xf = check_alloc(n1 * sizeof *xf), *df = check_alloc(n1 * sizeof *df);
+    for (int q = 0; q < 3; q++) {
+        size_t nf = 0;   /* the plot shows the pairs whose difference is finite */
+        for (size_t i = 0; i < n1; i++) {
+            x[i] = (double)i;
+            d[i] = (p->qoi[i * SF_SWEEP_NQ + q] - p->ml.coarse1[i * SF_SWEEP_NQ + q]) / p->det[q];
+            if (isfinite(d[i])) {
+                xf[nf] = x[i];
+                df[nf++] = d[i];
+            }
+        }
+        sf_plot_series(plt, ratio_name[q], SF_STYLE_POINTS, nf, xf, df);
+        for (size_t i = 0; i < n0; i++)
+            b[i] = p->ml.coarse0[i * SF_SWEEP_NQ + q] / p->det[q];
+        size_t m0, m1;   /* the finite values (a realisation may form no QoI: excluded) */
+        double v0, v1, mean = finite_mean(b, n0, &m0, &v0) + finite_mean(d, n1, &m1, &v1);
+        char what[160];
+        snprintf(what, sizeof what, "%s: level 0's coarse ratios", ratio_name[q]);
+        sf_result_sample(r, what, m0, n0 - m0);
+        snprintf(what, sizeof what, "%s: level 1's fine - coarse ratios", ratio_name[q]);
+        sf_result_sample(r, what, m1, n1 - m1);
+        gap = sf_max(gap, fabs(p->ml.q[q].mean - mean));
+        double se = sqrt(v0 / (double)m0 + v1 / (double)m1);
+        segap = sf_max(segap, fabs(p->ml.q[q].se - se) / se);
+    }
+    free(d);
+    free(b);
+    free(x);
+    free(xf);
+    free(df);
+    sf_check_le(r, "|estimate - (level 0's mean coarse ratio + level 1's mean fine - coarse)|, max over the ratios "
+                   "(sums of <= 4 N terms of order 1: round-off ~1e-14)", gap, 1e-12);
+    sf_check_le(r, "relative |se - sqrt(var0 / m0 + var1 / m1)| over the m_l finite values, max over the ratios", segap,
+                1e-10);
+}
+
 /* Exact, at one point: (1) each ratio's estimate is level 0's mean of
  * coarse ratios plus level 1's mean of fine - coarse, recomputed here
  * from the values the point keeps; (2) level 1's fine values are plain
@@ -388,45 +434,7 @@ static int chk_mlmc_levels(const sf_case *c, sf_result *r)
     int rc = est_and_plain(s, EST_MLMC, &p, &pl, r);
     if (rc)
         return rc;
-    size_t n1 = p.ml.n[1], n0 = p.ml.n[0];
-    double gap = 0, segap = 0;
-    double *d = check_alloc(n1 * sizeof *d), *b = check_alloc((n0 ? n0 : 1) * sizeof *b), *x = check_alloc(n1 * sizeof *x);
-    sf_plot *plt = sf_result_plot(r, "levels", "Level 1: fine - coarse ratio per pair (one field each)", "pair [-]",
-                                  "fine - coarse ratio [-]");
-    double *xf = check_alloc(n1 * sizeof *xf), *df = check_alloc(n1 * sizeof *df);
-    for (int q = 0; q < 3; q++) {
-        size_t nf = 0;   /* the plot shows the pairs whose difference is finite */
-        for (size_t i = 0; i < n1; i++) {
-            x[i] = (double)i;
-            d[i] = (p.qoi[i * SF_SWEEP_NQ + q] - p.ml.coarse1[i * SF_SWEEP_NQ + q]) / p.det[q];
-            if (isfinite(d[i])) {
-                xf[nf] = x[i];
-                df[nf++] = d[i];
-            }
-        }
-        sf_plot_series(plt, ratio_name[q], SF_STYLE_POINTS, nf, xf, df);
-        for (size_t i = 0; i < n0; i++)
-            b[i] = p.ml.coarse0[i * SF_SWEEP_NQ + q] / p.det[q];
-        size_t m0, m1;   /* the finite values (a realisation may form no QoI: excluded) */
-        double v0, v1, mean = finite_mean(b, n0, &m0, &v0) + finite_mean(d, n1, &m1, &v1);
-        char what[160];
-        snprintf(what, sizeof what, "%s: level 0's coarse ratios", ratio_name[q]);
-        sf_result_sample(r, what, m0, n0 - m0);
-        snprintf(what, sizeof what, "%s: level 1's fine - coarse ratios", ratio_name[q]);
-        sf_result_sample(r, what, m1, n1 - m1);
-        gap = sf_max(gap, fabs(p.ml.q[q].mean - mean));
-        double se = sqrt(v0 / (double)m0 + v1 / (double)m1);
-        segap = sf_max(segap, fabs(p.ml.q[q].se - se) / se);
-    }
-    free(d);
-    free(b);
-    free(x);
-    free(xf);
-    free(df);
-    sf_check_le(r, "|estimate - (level 0's mean coarse ratio + level 1's mean fine - coarse)|, max over the ratios "
-                   "(sums of <= 4 N terms of order 1: round-off ~1e-14)", gap, 1e-12);
-    sf_check_le(r, "relative |se - sqrt(var0 / m0 + var1 / m1)| over the m_l finite values, max over the ratios", segap,
-                1e-10);
+    ml_recompute(&p, r);
     sf_check_le(r, "level 1's fine values that differ from plain Monte Carlo's first n1 (bits)", rows_differ(&p, &pl), 0);
     /* the coarse runs, made here from the scene */
     sf_plan fp, cp;
@@ -472,11 +480,146 @@ static int chk_mlmc_levels(const sf_case *c, sf_result *r)
                        "the same outcome.\n", none);
         sf_note(r, "l/R = %g, %zu realisations' variance as the target (seed %lu): level 0 %zu coarse "
                    "realisations, level 1 %zu pairs (coarse plan: %zu -> %zu %s, rtol %g -> %g).\n",
-                s->l / s->R, s->samples, s->seed, n0, n1, fp.num.cells, sc.cells ? sc.cells : fp.num.cells,
+                s->l / s->R, s->samples, s->seed, p.ml.n[0], p.ml.n[1], fp.num.cells, sc.cells ? sc.cells : fp.num.cells,
                 fp.num.layout ? "cells per diameter" : "rings", fp.num.rtol, sc.rtol);
     }
     sf_sweep_point_free(&p);
     sf_sweep_point_free(&pl);
+    return rc;
+}
+
+/* The box means of grid COF f over b x b of its boxes, computed here from
+ * their definition: coarse node (X, Y) of grid g is the centre of a box
+ * of side B = b box; the fine boxes that tile it have their centres at X
+ * - B/2 + box (u + 1/2), u < b (and so in y), each of which must be a
+ * fine node (|index - integer| <= 1e-9: the grids align); *worst: the
+ * largest |g's value - the mean of those b^2 fine values|, relative to
+ * the mean COF, and *misaligned the centres that are not fine nodes or
+ * lie off the fine grid. */
+static void box_means_by_definition(const sf_cof *f, const sf_cof *g, size_t b, double mu_mean, double *worst,
+                                    size_t *misaligned)
+{
+    size_t m, n, M, N;
+    double x0, y0, dx, dy, X0, Y0, DX, DY;
+    const double *u, *v;
+    *worst = INFINITY;
+    *misaligned = 1;
+    if (sf_cof_grid_view(f, &m, &n, &x0, &y0, &dx, &dy, &u) || sf_cof_grid_view(g, &M, &N, &X0, &Y0, &DX, &DY, &v))
+        return;
+    double box = sf_cof_box(f), B = (double)b * box, w = 0;
+    size_t bad = 0;
+    for (size_t J = 0; J < N; J++)
+        for (size_t I = 0; I < M; I++) {
+            double X = X0 + (double)I * DX, Y = Y0 + (double)J * DY, sum = 0;
+            for (size_t a = 0; a < b; a++)
+                for (size_t c = 0; c < b; c++) {
+                    double fi = (X - 0.5 * B + box * ((double)c + 0.5) - x0) / dx;
+                    double fj = (Y - 0.5 * B + box * ((double)a + 0.5) - y0) / dy;
+                    long i = lround(fi), j = lround(fj);
+                    if (fabs(fi - (double)i) > 1e-9 || fabs(fj - (double)j) > 1e-9 || i < 0 || j < 0 ||
+                        i >= (long)m || j >= (long)n) {
+                        bad++;
+                        continue;
+                    }
+                    sum += u[(size_t)i + m * (size_t)j];
+                }
+            w = sf_max(w, fabs(v[I + M * J] - sum / (double)(b * b)) / mu_mean);
+        }
+    *worst = w;
+    *misaligned = bad;
+}
+
+/* Exact, at one point (sf_sweep_run_mlmc_boxes): (1)-(2) the estimate
+ * and its se from the level values (ml_recompute); (3) the box means of
+ * stream 0's fine field against their definition (box_means_by_definition)
+ * and their grid against level 0's own-draw grid (the law's support); (4)
+ * level 1's first fine and coarse values and level 0's first value (the
+ * mean of an antithetic pair of coarse runs on the level-0 stream's
+ * draw) against this check's own runs, bit for bit. */
+static int chk_mlmc_boxes(const sf_case *c, sf_result *r)
+{
+    const sf_scene *s = &c->scene;
+    char err[256] = "";
+    sf_sweep_point p;
+    int rc = sf_sweep_run_mlmc_boxes(s, s->samples, ML_PILOT, 0, NULL, &p, err, sizeof err);
+    if (rc) {
+        sf_note(r, "The sweep failed: %s\n", *err ? err : sf_strerror(rc));
+        sf_sweep_point_free(&p);
+        return rc;
+    }
+    ml_recompute(&p, r);
+    sf_plan fp, cp, dp;
+    sf_cof_plan *fplan = NULL, *dplan = NULL;
+    sf_cof *f = NULL, *g = NULL, *h = NULL, *ha = NULL;
+    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+    double q1[SF_SWEEP_NQ], qc[SF_SWEEP_NQ], q0[SF_SWEEP_NQ], q0a[SF_SWEEP_NQ];
+    rc = sf_mlmc_box_plans(s, &fp, &cp, &dp, err, sizeof err);
+    if (!rc)
+        rc = sf_cof_plan_build(s, &fp, &fplan, err, sizeof err);
+    if (!rc)
+        rc = sf_cof_plan_build(s, &dp, &dplan, err, sizeof err);
+    gsl_rng_set(rng, sf_mc_seed(s->seed, 0));
+    if (!rc && !(rc = sf_cof_plan_draw(fplan, rng, &f)))
+        rc = sf_cof_box_means(f, SF_MLMC_BOX, &g);
+    gsl_rng_set(rng, sf_mc_seed(sf_mc_seed(s->seed, SF_MLMC_LEVEL0_STREAM), 0));
+    if (!rc && !(rc = sf_cof_plan_draw(dplan, rng, &h)))
+        rc = sf_cof_plan_antithetic(dplan, h, &ha);
+    if (!rc)
+        rc = sf_sweep_solve(s, &fp, f, q1, NULL);
+    if (!rc)
+        rc = sf_sweep_solve(s, &cp, g, qc, NULL);
+    if (!rc)
+        rc = sf_sweep_solve(s, &cp, h, q0, NULL);
+    if (!rc)
+        rc = sf_sweep_solve(s, &cp, ha, q0a, NULL);
+    if (rc) {
+        sf_note(r, "The check's own runs failed: %s\n", *err ? err : sf_strerror(rc));
+    } else {
+        double worst;
+        size_t bad;
+        box_means_by_definition(f, g, SF_MLMC_BOX, s->mu_mean, &worst, &bad);
+        sf_check_le(r, "max over the coarse nodes of |box mean - the mean of the b x b fine boxes that tile its box| / "
+                       "mu_mean (sums of 16 values of order 1: round-off ~1e-15)", worst, 1e-12);
+        sf_check_le(r, "fine box centres of a coarse box that are not fine nodes, or lie off the fine strip",
+                    (double)bad, 0);
+        size_t M, N;
+        double X0, Y0, DX;
+        const sf_cof_plan_info *in = sf_cof_plan_get_info(dplan);
+        sf_cof_grid_view(g, &M, &N, &X0, &Y0, &DX, NULL, NULL);
+        double geo = (M != in->nx || N != in->ny) ? INFINITY
+                     : sf_max(sf_max(fabs(X0 - in->x0), fabs(Y0 - in->y0)) / in->dx,
+                              sf_max(fabs(DX - in->dx) / in->dx, fabs(sf_cof_box(g) - in->box) / in->box));
+        sf_check_le(r, "the box means' grid against level 0's own-draw grid (nodes, origin / spacing, spacing, box; "
+                       "relative: round-off ~1e-15)", geo, 1e-12);
+        size_t differ = 0, none = 0;
+        for (int q = 0; q < 3; q++) {
+            double want[3] = { q1[q], qc[q], 0.5 * (q0[q] + q0a[q]) };
+            double got[3] = { p.qoi[q], p.ml.coarse1[q], p.ml.coarse0[q] };
+            for (int k = 0; k < 3; k++) {
+                int both_none = isnan(got[k]) && isnan(want[k]);
+                none += both_none;
+                differ += !both_none && memcmp(&got[k], &want[k], sizeof want[k]) != 0;
+            }
+        }
+        sf_check_le(r, "level 1's first fine and coarse values and level 0's first pair mean (3 QoIs each) that differ "
+                       "from this check's runs on the fields of their streams (bits; the same operations)",
+                    (double)differ, 0);
+        if (none)
+            sf_note(r, "%zu of the 9 first values are formed by neither run (NaN in both), the same outcome.\n", none);
+        sf_note(r, "l/R = %g, %zu realisations' variance as the target (seed %lu): level 0 %zu antithetic pairs of "
+                   "coarse runs, level 1 %zu pairs; fine plan %zu cells per diameter (box %.4g m), coarse %zu (box "
+                   "%.4g m), rtol %g -> %g; the box means compared at %zu x %zu nodes.\n",
+                s->l / s->R, s->samples, s->seed, p.ml.n[0], p.ml.n[1], fp.num.cells, fp.cof.box, cp.num.cells,
+                dp.cof.box, fp.num.rtol, cp.num.rtol, M, N);
+    }
+    gsl_rng_free(rng);
+    sf_cof_free(f);
+    sf_cof_free(g);
+    sf_cof_free(h);
+    sf_cof_free(ha);
+    sf_cof_plan_free(fplan);
+    sf_cof_plan_free(dplan);
+    sf_sweep_point_free(&p);
     return rc;
 }
 
@@ -641,7 +784,8 @@ static int estimator_unbiased(const sf_case *c, sf_result *r, int est)
     size_t used = 0;
     int rc = SF_SUCCESS;
     double alpha = c->spec.alpha / (double)(3 * K);
-    const char *name = est == EST_MLMC ? "two levels" : "antithetic";
+    int ml = est != EST_ANTI;
+    const char *name = est == EST_MLMC ? "two levels" : est == EST_BOXES ? "boxes of boxes" : "antithetic";
     for (size_t k = 0; k < K && !rc; k++) {
         sf_scene s = *s0, sp;
         sf_sweep_point e, p;
@@ -652,8 +796,9 @@ static int estimator_unbiased(const sf_case *c, sf_result *r, int est)
         sp = s;
         sp.seed = sf_mc_seed(s.seed, 1) ^ 1;
         if (!rc)
-            rc = est == EST_MLMC ? sf_sweep_run_mlmc(&s, s0->samples, ML_PILOT, 0, NULL, &e, err, sizeof err)
-                                 : sf_sweep_run_antithetic(&s, s0->samples, ML_PILOT, 0, NULL, &e, err, sizeof err);
+            rc = est == EST_MLMC    ? sf_sweep_run_mlmc(&s, s0->samples, ML_PILOT, 0, NULL, &e, err, sizeof err)
+                 : est == EST_BOXES ? sf_sweep_run_mlmc_boxes(&s, s0->samples, ML_PILOT, 0, NULL, &e, err, sizeof err)
+                                    : sf_sweep_run_antithetic(&s, s0->samples, ML_PILOT, 0, NULL, &e, err, sizeof err);
         if (!rc)
             rc = sf_sweep_run(&sp, s0->samples, 0, NULL, 0, NULL, &p, err, sizeof err);
         if (rc) {
@@ -664,10 +809,10 @@ static int estimator_unbiased(const sf_case *c, sf_result *r, int est)
         }
         lr[k] = s.l / s.R;
         for (int q = 0; q < 3; q++) {
-            const sf_sweep_ml *ml = &e.ml.q[q];
+            const sf_sweep_ml *e_ml = &e.ml.q[q];
             const sf_sweep_anti *an = &e.anti.q[q];
-            double mean = est == EST_MLMC ? ml->mean : an->mean, se = est == EST_MLMC ? ml->se : an->se;
-            double df = est == EST_MLMC ? ml->df : (double)an->m - 1, pse = p.rstat[q].se;
+            double mean = ml ? e_ml->mean : an->mean, se = ml ? e_ml->se : an->se;
+            double df = ml ? e_ml->df : (double)an->m - 1, pse = p.rstat[q].se;
             double pdf = (double)p.rstat[q].n_used - 1, a = se * se, b = pse * pse;
             double den = (a > 0 ? a * a / df : 0) + (b > 0 ? b * b / pdf : 0);
             double t = (mean - p.rstat[q].mean) / sqrt(a + b), nu = den > 0 ? (a + b) * (a + b) / den : NAN;
@@ -675,13 +820,13 @@ static int estimator_unbiased(const sf_case *c, sf_result *r, int est)
             snprintf(what, sizeof what, "l/R = %g: %s ratio mean, %s %.5f = plain %.5f (Welch t test, %.0f df)",
                      lr[k], ratio_name[q], name, mean, p.rstat[q].mean, nu);
             sf_check_pvalue(r, what, 2 * gsl_cdf_tdist_Q(fabs(t), nu), alpha, p.rstat[q].n_used);
-            vrf[k * 3 + q] = est == EST_MLMC ? ml->vrf : an->vrf;
-            if (est == EST_MLMC)
+            vrf[k * 3 + q] = ml ? e_ml->vrf : an->vrf;
+            if (ml)
                 used += (size_t)snprintf(tab + used, sizeof tab - used,
                                          "| %g | %s | %.5f +- %.5f | %.5f +- %.5f | %zu / %zu | %.3g / %.3g | %.3g / "
                                          "%.3g | %.3g |\n", lr[k], ratio_name[q], p.rstat[q].mean, pse, mean, se,
-                                         e.ml.n[0], e.ml.n[1], ml->var[0], ml->var[1], e.ml.cost[0], e.ml.cost[1],
-                                         ml->vrf);
+                                         e.ml.n[0], e.ml.n[1], e_ml->var[0], e_ml->var[1], e.ml.cost[0],
+                                         e.ml.cost[1], e_ml->vrf);
             else
                 used += (size_t)snprintf(tab + used, sizeof tab - used,
                                          "| %g | %s | %.5f +- %.5f | %.5f +- %.5f | %zu | %.3f | %.3g / %.3g | %.3g "
@@ -691,15 +836,18 @@ static int estimator_unbiased(const sf_case *c, sf_result *r, int est)
         sf_sweep_point_free(&e);
         sf_sweep_point_free(&p);
     }
-    if (!rc && est == EST_MLMC) {
-        sf_note(r, "Plain Monte Carlo: %zu realisations per point on independent streams; two levels: plain's "
+    if (!rc && ml) {
+        sf_note(r, "Plain Monte Carlo: %zu realisations per point on independent streams; %s: plain's "
                    "variance at %zu as the target, a pilot of %d pairs (seed %lu). Ratio means (+- standard error), "
-                   "each level's N (n0 coarse / n1 pairs), variance (V0 of the coarse ratio, V1 of fine - coarse), "
+                   "each level's N (n0 %s / n1 pairs), variance (V0 of %s, V1 of fine - coarse), "
                    "work per sample [cell evaluations] and the variance reduction factor at equal work:\n\n"
-                   "| l/R | QoI | plain | two levels | n0 / n1 | V0 / V1 | C0 / C1 | reduction |\n"
+                   "| l/R | QoI | plain | %s | n0 / n1 | V0 / V1 | C0 / C1 | reduction |\n"
                    "|---|---|---|---|---|---|---|---|\n%s\n",
-                s0->samples, s0->samples, ML_PILOT, s0->seed, tab);
-        plot_vrf(r, "Variance reduction of the two-level estimator at equal work", K, lr, vrf);
+                s0->samples, name, s0->samples, ML_PILOT, s0->seed,
+                est == EST_BOXES ? "antithetic pairs of coarse runs" : "coarse realisations",
+                est == EST_BOXES ? "a pair's mean coarse ratio" : "the coarse ratio", name, tab);
+        plot_vrf(r, est == EST_BOXES ? "Variance reduction of two levels on boxes of boxes at equal work"
+                                     : "Variance reduction of the two-level estimator at equal work", K, lr, vrf);
     } else if (!rc) {
         sf_note(r, "Plain Monte Carlo: %zu realisations per point on independent streams; antithetic pairs: plain's "
                    "variance at %zu as the target, a pilot of %d pairs (seed %lu). Ratio means (+- standard error), "
@@ -717,6 +865,7 @@ static int estimator_unbiased(const sf_case *c, sf_result *r, int est)
 
 static int chk_mlmc_unbiased(const sf_case *c, sf_result *r) { return estimator_unbiased(c, r, EST_MLMC); }
 static int chk_anti_unbiased(const sf_case *c, sf_result *r) { return estimator_unbiased(c, r, EST_ANTI); }
+static int chk_boxes_unbiased(const sf_case *c, sf_result *r) { return estimator_unbiased(c, r, EST_BOXES); }
 
 const sf_check_def sf_checks_mcstop[] = {
     { "mc_mlmc_levels", chk_mlmc_levels,
@@ -724,6 +873,11 @@ const sf_check_def sf_checks_mcstop[] = {
       "are the coarse plan's on the level's field" },
     { "mc_mlmc_unbiased", chk_mlmc_unbiased,
       "two-level estimator: its ratio means equal plain Monte Carlo's on independent streams; per-level N, V, C" },
+    { "mc_mlmc_boxes", chk_mlmc_boxes,
+      "two levels on boxes of boxes: the estimate is its levels' means, the coarse field is the b x b box means on "
+      "level 0's own grid, the first values are the plans' runs on their streams' fields" },
+    { "mc_mlmc_boxes_unbiased", chk_boxes_unbiased,
+      "two levels on boxes of boxes: its ratio means equal plain Monte Carlo's on independent streams" },
     { "mc_anti_pairs", chk_anti_pairs,
       "antithetic pairs: the estimate is the pair means' mean, the G members are plain MC's streams, the "
       "antithetic field obeys ln a + ln b = 2 mu_g (cell averages: a + b = 2 mu_mean)" },
