@@ -23,7 +23,6 @@
  * mlmc-boxes-unbiased*.md, anti-unbiased*.md and stein-coverage.md at
  * fresh seeds. */
 #include "bench.h"
-#include "numplan.h"
 #include "scene.h"
 #include "sweep.h"
 
@@ -134,9 +133,8 @@ int bench_estimators(FILE *f, const char *dir)
         }
         sf_sweep_point bx;
         double tb = NAN, wb = NAN;
-        sf_plan pln;
         memset(&bx, 0, sizeof bx);
-        int cells = !rc && !sf_plan_make(&s, &pln, NULL, 0) && pln.num.cell_average;
+        int cells = !rc && sf_sweep_estimator_auto(&s) == SF_EST_MLMC_BOXES;   /* `--estimator auto`'s rule */
         if (cells) {
             t0 = cpu_now();
             rc = sf_sweep_run_mlmc_boxes(&s, NPLAIN, NPILOT_ML, 1, NULL, &bx, err, sizeof err);
@@ -152,7 +150,7 @@ int bench_estimators(FILE *f, const char *dir)
             sf_sweep_point_free(&bx);
             break;
         }
-        /* the rule: boxes of boxes on cell averages, antithetic pairs elsewhere */
+        /* `--estimator auto`: boxes of boxes on cell averages, antithetic pairs elsewhere */
         tr_all += cells ? tb : ta;
         tr_matched += cells ? tb * wb * wb : ta * wa * wa;
         /* the draw's share of a plain realisation (the work model) */
@@ -197,8 +195,8 @@ int bench_estimators(FILE *f, const char *dir)
                "its mean varies less than two independent values'; where rho > 0 it varies more, and the pilot "
                "asks for more pairs.\n", ta_all, ran, tp_all / ta_matched);
     double rr = tp_all / tr_all;
-    fprintf(f, "\nBy the plan's rule (boxes of boxes where the plan draws cell averages, antithetic pairs elsewhere; "
-               "fixed before this run): %.1f s of CPU, %.2fx less than plain (%.2fx scaled by the worst half-width "
+    fprintf(f, "\nBy the plan's rule (`--estimator auto`: boxes of boxes where the plan draws cell averages, "
+               "antithetic pairs elsewhere; fixed before this run): %.1f s of CPU, %.2fx less than plain (%.2fx scaled by the worst half-width "
                "ratio squared).\n", tr_all, rr, tp_all / tr_matched);
     (void)qn;
     bench_target("Fig. 11 grid at plain N = 100 half-widths: >= 5x less CPU than plain Monte Carlo (section "

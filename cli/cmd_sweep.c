@@ -23,7 +23,7 @@ static void usage(FILE *f)
     fputs("usage: slipfield sweep SCENE --param NAME --values A,B,C --realisations N --out FILE\n"
           "                       [--summary FILE] [--threads T] [--resume]\n"
           "                       [--target-se X [--pilot N0] | --control-variate |\n"
-          "                        --estimator mlmc|mlmc-boxes|antithetic [--pilot N0]]\n"
+          "                        --estimator mlmc|mlmc-boxes|antithetic|auto [--pilot N0]]\n"
           "Monte Carlo sweep: at each value of NAME, N realisations of the scene.\n"
           "  --param NAME      a numeric scene key, or l_over_R (l = value x R), or\n"
           "                    mu_mean (at the scene's CV: mu_std scales with it)\n"
@@ -89,6 +89,9 @@ static void usage(FILE *f)
           "                    ratio the estimate, its interval (Student over the pair\n"
           "                    means), rho = corr(Q(G), Q(-G)) and the variance\n"
           "                    reduction factor; the rows are the pairs' G members\n"
+          "  --estimator auto  per value, mlmc-boxes where the plan draws cell averages,\n"
+          "                    antithetic elsewhere (a rule from measurements: the\n"
+          "                    summary's last column, estimator, says which ran)\n"
           "  --threads T       OpenMP threads (default: all); results do not depend on it\n"
           "  --resume          continue from FILE.ckpt<k> checkpoints of an interrupted run\n"
           "                    (and remove the temporary files a killed run left)\n"
@@ -194,10 +197,11 @@ int sf_cmd_sweep(int argc, char **argv)
         fprintf(stderr, "slipfield sweep: --target-se takes a standard error > 0 (got %g)\n", target_se);
         return SF_EXIT_USAGE;
     }
-    int ml = 0, anti = 0, boxes = 0;
+    int ml = 0, anti = 0, boxes = 0, autoe = 0;
     if (estimator && !(ml = !strcmp(estimator, "mlmc")) && !(anti = !strcmp(estimator, "antithetic")) &&
-        !(boxes = ml = !strcmp(estimator, "mlmc-boxes")) && strcmp(estimator, "plain")) {
-        fprintf(stderr, "slipfield sweep: --estimator takes plain, mlmc, mlmc-boxes or antithetic (got '%s')\n",
+        !(boxes = ml = !strcmp(estimator, "mlmc-boxes")) && !(autoe = anti = !strcmp(estimator, "auto")) &&
+        strcmp(estimator, "plain")) {
+        fprintf(stderr, "slipfield sweep: --estimator takes plain, mlmc, mlmc-boxes, antithetic or auto (got '%s')\n",
                 estimator);
         return SF_EXIT_USAGE;
     }
@@ -207,7 +211,7 @@ int sf_cmd_sweep(int argc, char **argv)
         return SF_EXIT_USAGE;
     }
     if (pilot && !staged && !ml && !anti) {
-        fprintf(stderr, "slipfield sweep: --pilot needs --target-se or --estimator mlmc|mlmc-boxes|antithetic\n");
+        fprintf(stderr, "slipfield sweep: --pilot needs --target-se or --estimator mlmc|mlmc-boxes|antithetic|auto\n");
         return SF_EXIT_USAGE;
     }
     int paired = ml || anti;   /* the estimators sized from a pilot of pairs */
@@ -283,7 +287,8 @@ int sf_cmd_sweep(int argc, char **argv)
         snprintf(label, sizeof label, "%s = %g", param, v[k]);
         sf_sweep_point p;
         const char *ckp = strcmp(out_path, "-") ? ck : NULL;
-        rc = boxes    ? sf_sweep_run_mlmc_boxes(&s, n, pilot, (int)threads, label, &p, err, sizeof err)
+        int bx = boxes || (autoe && sf_sweep_estimator_auto(&s) == SF_EST_MLMC_BOXES);
+        rc = bx       ? sf_sweep_run_mlmc_boxes(&s, n, pilot, (int)threads, label, &p, err, sizeof err)
              : ml     ? sf_sweep_run_mlmc(&s, n, pilot, (int)threads, label, &p, err, sizeof err)
              : anti   ? sf_sweep_run_antithetic(&s, n, pilot, (int)threads, label, &p, err, sizeof err)
              : staged ? sf_sweep_run_target(&s, target_se, pilot, n, (int)threads, ckp, resume, label, &p, err, sizeof err)

@@ -115,12 +115,12 @@ expect 2 "in [t_skip, T] (pv_x = nan): raise T" "$bin" sweep sw.scene --param T 
 for a in "--target-se 0" "--target-se -0.1" "--target-se nan" "--target-se x"; do
     expect 2 "--target-se" "$bin" sweep sw.scene --param T --values 20 --realisations 5 $a --out sw.tsv
 done
-expect 2 "--pilot needs --target-se or --estimator mlmc|mlmc-boxes|antithetic" "$bin" sweep sw.scene --param T --values 20 --realisations 5 --pilot 3 --out sw.tsv
+expect 2 "--pilot needs --target-se or --estimator mlmc|mlmc-boxes|antithetic|auto" "$bin" sweep sw.scene --param T --values 20 --realisations 5 --pilot 3 --out sw.tsv
 expect 2 "--pilot takes a whole number from 2" "$bin" sweep sw.scene --param T --values 20 --realisations 5 --target-se 0.1 --pilot 1 --out sw.tsv
 expect 2 "the pilot needs 2 to 5" "$bin" sweep sw.scene --param T --values 20 --realisations 5 --target-se 0.1 --pilot 6 --out sw.tsv
 expect 2 "do not combine" "$bin" sweep sw.scene --param T --values 20 --realisations 5 --target-se 0.1 --control-variate --out sw.tsv
 expect 2 "--control-variate takes no value" "$bin" sweep sw.scene --param T --values 20 --realisations 5 --control-variate=1 --out sw.tsv
-expect 2 "--estimator takes plain, mlmc, mlmc-boxes or antithetic" "$bin" sweep sw.scene --param T --values 20 --realisations 5 --estimator mc --out sw.tsv
+expect 2 "--estimator takes plain, mlmc, mlmc-boxes, antithetic or auto" "$bin" sweep sw.scene --param T --values 20 --realisations 5 --estimator mc --out sw.tsv
 expect 2 "does not combine" "$bin" sweep sw.scene --param T --values 20 --realisations 5 --estimator mlmc --control-variate --out sw.tsv
 expect 2 "the pilot needs 2 to 5" "$bin" sweep sw.scene --param T --values 20 --realisations 5 --estimator mlmc --pilot 6 --out sw.tsv
 expect 2 "need a plan that draws cell averages" "$bin" sweep sw.scene --param T --values 20 --realisations 5 --estimator mlmc-boxes --out sw.tsv
@@ -135,6 +135,9 @@ expect 0 "" "$bin" sweep var.scene --param T --values 14 --realisations 6 --targ
 expect 0 "" "$bin" sweep var.scene --param T --values 14 --realisations 6 --estimator antithetic --pilot 3 --out an.tsv --summary an.sum
 [ "$(awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == "anti_n") c = i } NR == 2 { print ($c >= 3 && $c <= 6) }' an.sum)" = "1" ] \
     && ok || bad "antithetic sweep: anti_n: $(cat an.sum)"
+expect 0 "" "$bin" sweep var.scene --param T --values 14 --realisations 6 --estimator auto --pilot 3 --out au.tsv --summary au.sum
+[ "$(awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == "estimator") c = i } NR == 2 { print $c }' au.sum)" = "antithetic" ] \
+    && ok || bad "auto sweep on one variable: the estimator column: $(cat au.sum)"
 # run: no QoI is said; no --out nor --summary prints the summary
 printf 'cof = uniform\nT = 5\n' > t5.scene
 expect 0 "warning: no quantity of interest" "$bin" run t5.scene

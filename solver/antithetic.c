@@ -129,6 +129,7 @@ int sf_sweep_run_antithetic(const sf_scene *s, size_t n_plain, size_t n_pilot, i
                 !(out->anti.qoi_anti = sf_calloc(n * NQ, sizeof *out->anti.qoi_anti))))
         rc = SF_ENOMEM;
     if (!rc) {   /* the rows: the pairs' fields G, plain Monte Carlo's first n */
+        out->estimator = SF_EST_ANTITHETIC;
         out->n = out->anti.n = n;
         for (size_t i = 0; i < n; i++) {
             memcpy(out->qoi + i * NQ, pairs + i * A_OUT, NQ * sizeof *pairs);

@@ -330,7 +330,8 @@ static int run_levels(const sf_scene *s, size_t n_plain, size_t n_pilot, int thr
                 !(out->ratio = sf_calloc(n1 * NQ, sizeof *out->ratio)) ||
                 !(out->ml.coarse1 = sf_calloc(n1 * NQ, sizeof *out->ml.coarse1))))
         rc = SF_ENOMEM;
-    if (!rc) {   /* the rows: level 1's fine values, plain Monte Carlo's first n1 */
+    if (!rc) {   /* the rows: level 1's fine values, plain Monte Carlo's first n1 (same field) */
+        out->estimator = boxes ? SF_EST_MLMC_BOXES : SF_EST_MLMC;
         out->n = n1;
         out->ml.coarse0 = lev0;
         lev0 = NULL;

@@ -159,6 +159,7 @@ static int run(const sf_scene *s, size_t n, double target_se, size_t n_pilot, in
                const char *checkpoint, int resume, const char *label, sf_sweep_point *out, char *err, size_t errlen)
 {
     memset(out, 0, sizeof *out);
+    out->estimator = target_se > 0 ? SF_EST_TARGET : cv ? SF_EST_CV : SF_EST_PLAIN;
     /* the deterministic reference, same definitions */
     int rc = sf_sweep_det(s, out->det, err, errlen);
     if (rc)
@@ -405,6 +406,7 @@ void sf_sweep_summary_header(FILE *f)
         fprintf(f, "\t%s_anti_n_used\t%s_anti_ratio_mean[-]\t%s_anti_ratio_se[-]\t%s_anti_ratio_ci%d_lo[-]"
                    "\t%s_anti_ratio_ci%d_hi[-]\t%s_anti_rho[-]\t%s_anti_vrf[-]",
                 qname[q], qname[q], qname[q], qname[q], lv, qname[q], lv, qname[q], qname[q]);
+    fputs("\testimator", f);   /* which estimator made the point (sf_sweep_estimator_name) */
     fputc('\n', f);
 }
 
@@ -452,7 +454,20 @@ void sf_sweep_summary_row(FILE *f, const char *param, double value, const sf_swe
         else
             fputs("\t0\tnan\tnan\tnan\tnan\tnan\tnan", f);
     }
+    fprintf(f, "\t%s", sf_sweep_estimator_name(p->estimator));
     fputc('\n', f);
+}
+
+const char *sf_sweep_estimator_name(int est)
+{
+    static const char *const name[] = { "plain", "control-variate", "target-se", "mlmc", "mlmc-boxes", "antithetic" };
+    return est >= 0 && est < (int)(sizeof name / sizeof *name) ? name[est] : "unknown";
+}
+
+int sf_sweep_estimator_auto(const sf_scene *s)
+{
+    sf_plan pl;
+    return !sf_plan_make(s, &pl, NULL, 0) && pl.num.cell_average ? SF_EST_MLMC_BOXES : SF_EST_ANTITHETIC;
 }
 
 void sf_sweep_point_free(sf_sweep_point *p)

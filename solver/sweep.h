@@ -27,6 +27,17 @@ extern "C" {
 
 enum { SF_SWEEP_PVX = 0, SF_SWEEP_PVF = 1, SF_SWEEP_SF = 2, SF_SWEEP_NQ = 3 };
 
+/* The estimators of a sweep point (sf_sweep_point.estimator; the
+ * summary's last column, by sf_sweep_estimator_name). */
+enum { SF_EST_PLAIN = 0, SF_EST_CV, SF_EST_TARGET, SF_EST_MLMC, SF_EST_MLMC_BOXES, SF_EST_ANTITHETIC };
+const char *sf_sweep_estimator_name(int est);
+/* The estimator `sweep --estimator auto` takes for scene s, by a rule
+ * fixed from the coupling bench's measurements (docs/design.md sec. 8):
+ * two levels on boxes of boxes where s's plan draws cell averages
+ * (sf_sweep_run_mlmc_boxes), antithetic pairs elsewhere
+ * (sf_sweep_run_antithetic). */
+int sf_sweep_estimator_auto(const sf_scene *s);
+
 /* The level of every confidence interval a sweep reports. */
 #define SF_SWEEP_CI_LEVEL 0.95
 
@@ -96,6 +107,7 @@ typedef struct {
      * finite ratios, for two stages. */
     size_t n_pilot;
     int stop;
+    int estimator;              /* SF_EST_*: which estimator made the point */
     double rci_lo[SF_SWEEP_NQ], rci_hi[SF_SWEEP_NQ];
     /* The control variate (sf_sweep_run_cv; companion NULL otherwise):
      * companion[i] = C_i, realisation i's COF averaged over fixed belt

@@ -563,6 +563,7 @@ static void anti_estimator(void **state)
     assert_memory_equal(p.anti.qoi_anti, b.anti.qoi_anti, p.n * SF_SWEEP_NQ * sizeof *p.qoi);
     assert_memory_equal(p.anti.q, b.anti.q, sizeof p.anti.q);
     assert_true(p.anti.cost > p.anti.cost_fine && p.anti.work == (double)p.n * p.anti.cost);
+    assert_true(p.estimator == SF_EST_ANTITHETIC && q.estimator == SF_EST_PLAIN);
     for (int k = 0; k < SF_SWEEP_NQ; k++) {
         const sf_sweep_anti *e = &p.anti.q[k];
         assert_true(isfinite(e->mean) && e->se > 0 && e->ci_lo < e->mean && e->mean < e->ci_hi && e->vrf > 0);
@@ -631,11 +632,16 @@ static void boxes_estimator(void **state)
     char err[200];
     assert_int_equal(sf_mlmc_box_plans(&s, &fp, &cp, &dp, err, sizeof err), SF_EINVAL);
     assert_non_null(strstr(err, "cell averages"));
+    assert_int_equal(sf_sweep_estimator_auto(&s), SF_EST_ANTITHETIC);   /* point values: antithetic pairs */
+    assert_string_equal(sf_sweep_estimator_name(SF_EST_ANTITHETIC), "antithetic");
+    assert_string_equal(sf_sweep_estimator_name(-1), "unknown");
+    assert_string_equal(sf_sweep_estimator_name(SF_EST_ANTITHETIC + 1), "unknown");
     s.l = 0.015;   /* l/R = 0.03: the plan's cell averages, 59 cells -> 60 */
     s.T = 14;
     s.t_skip = 4;
     assert_int_equal(sf_mlmc_box_plans(&s, &fp, &cp, &dp, err, sizeof err), SF_SUCCESS);
     assert_true(fp.num.cells % SF_MLMC_BOX == 0 && cp.num.cells == fp.num.cells / SF_MLMC_BOX);
+    assert_int_equal(sf_sweep_estimator_auto(&s), SF_EST_MLMC_BOXES);
     assert_true(fabs(dp.cof.box - SF_MLMC_BOX * fp.cof.box) < 1e-15 && cp.num.rtol == SF_MLMC_RTOL);
     /* a point, on one and two threads */
     sf_sweep_point a, b;
@@ -646,6 +652,7 @@ static void boxes_estimator(void **state)
     assert_memory_equal(a.ml.coarse0, b.ml.coarse0, a.ml.n[0] * SF_SWEEP_NQ * sizeof *a.qoi);
     assert_memory_equal(a.ml.q, b.ml.q, sizeof a.ml.q);
     assert_true(a.ml.cost[0] < a.ml.cost_fine && isfinite(a.ml.q[0].mean) && a.ml.q[0].se > 0);
+    assert_int_equal(a.estimator, SF_EST_MLMC_BOXES);
     sf_sweep_point_free(&a);
     sf_sweep_point_free(&b);
     assert_int_equal(sf_sweep_run_mlmc_boxes(&s, 8, 1, 1, NULL, &a, err, sizeof err), SF_EINVAL);

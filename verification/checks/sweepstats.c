@@ -21,7 +21,8 @@
 #include <string.h>
 
 #define NQ SF_SWEEP_NQ
-#define MAXCOL 128   /* the summary has 97 columns (3 QoIs x 15, the design's, the control variate's and the two-level estimator's) */
+#define MAXCOL 160   /* the summary has 122 columns (3 QoIs x 15, the design's, the control variate's, the two-level
+                        estimator's, the antithetic pairs' and the estimator's name) */
 #define FS 3.0       /* u_num_mean's safety factor, as documented: 3 (|num_bias| + t se) */
 static const char *const qn[NQ] = { "pv_x", "pv_F", "stick_fraction" };
 
@@ -63,7 +64,7 @@ static int table_read(const char *text, table *t)
             row[k] = strtod(c, &end);
             if (k < 2)   /* param, value: the row's point, as printed */
                 snprintf(key + strlen(key), sizeof key - strlen(key), "%s%s", k ? "\t" : "", c);
-            else if (*end && strcmp(t->name[k], "stop"))   /* the summary's one text column */
+            else if (*end && strcmp(t->name[k], "stop") && strcmp(t->name[k], "estimator"))   /* its text columns */
                 rc = SF_EPARSE;
         }
         if (k != t->ncol || c)
