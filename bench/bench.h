@@ -49,6 +49,9 @@ int bench_estimators(FILE *f, const char *dir);
 enum { BENCH_FIG11_NPTS = 11 };
 extern const double bench_fig11_lr[BENCH_FIG11_NPTS];
 void bench_fig11_scene(sf_scene *s);
+/* A positive whole number from the environment variable `name` (e.g.
+ * SF_BENCH_SEED: a run on other fields), else dflt. */
+size_t bench_env_size(const char *name, size_t dflt);
 int bench_coupling(FILE *f, const char *dir);
 
 #endif

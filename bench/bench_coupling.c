@@ -106,14 +106,6 @@ static double grid_sd(const sf_cof *c)
     return c && !sf_cof_grid_view(c, &m, &n, NULL, NULL, NULL, NULL, &mu) ? gsl_stats_sd(mu, 1, m * n) : 0;
 }
 
-static size_t env_size(const char *name, size_t dflt)
-{
-    const char *e = getenv(name);
-    char *end;
-    unsigned long v = e ? strtoul(e, &end, 10) : 0;
-    return e && *e && !*end && v > 0 ? (size_t)v : dflt;
-}
-
 static const char *level_name(int j, char *buf, size_t len)
 {
     if (cpl[j].b)
@@ -234,8 +226,8 @@ int bench_coupling(FILE *f, const char *dir)
     (void)dir;
     sf_scene s0;
     bench_fig11_scene(&s0);
-    const size_t nf = env_size("SF_BENCH_FIELDS", 30), nt = 2 * nf;
-    s0.seed = (unsigned long)env_size("SF_BENCH_SEED", s0.seed);
+    const size_t nf = bench_env_size("SF_BENCH_FIELDS", 30), nt = 2 * nf;
+    s0.seed = (unsigned long)bench_env_size("SF_BENCH_SEED", s0.seed);
     char *tb = NULL, *tc = NULL;
     size_t lb = 0, lc = 0;
     FILE *fb = open_memstream(&tb, &lb), *fc = open_memstream(&tc, &lc);

@@ -43,6 +43,14 @@ static const char *const qn[SF_SWEEP_NQ] = { "PV_x", "PV_F", "T_sk" };
 
 const double bench_fig11_lr[BENCH_FIG11_NPTS] = { 0.01, 0.03, 0.1, 0.2, 0.5, 1, 2, 5, 10, 100, 1000 };
 
+size_t bench_env_size(const char *name, size_t dflt)
+{
+    const char *e = getenv(name);
+    char *end;
+    unsigned long v = e ? strtoul(e, &end, 10) : 0;
+    return e && *e && !*end && v > 0 ? (size_t)v : dflt;
+}
+
 void bench_fig11_scene(sf_scene *s)
 {
     sf_scene_default(s);   /* Table 1, the paper's T = 100 s */
@@ -57,24 +65,28 @@ int bench_estimators(FILE *f, const char *dir)
     const double *lr = bench_fig11_lr;
     sf_scene s0;
     bench_fig11_scene(&s0);
+    s0.seed = (unsigned long)bench_env_size("SF_BENCH_SEED", s0.seed);   /* other fields: a held-out run */
     fprintf(f, "## Estimators against plain Monte Carlo (Fig. 11 grid)\n\n"
-               "Table 1, T = 100 s, 11 l/R points; CPU time of one thread, both estimators in this run. Plain: "
+               "Table 1, T = 100 s, 11 l/R points (seed %lu; SF_BENCH_SEED=N for other fields); CPU time of one "
+               "thread, every estimator in this run. Plain: "
                "N = %d, its 95%% half-widths of the PV_x, PV_F and T_sk ratio means are the targets. Control "
                "variate (`sweep --control-variate`): a pilot of %d gives each ratio's variance reduction factor, "
                "then N = ceil(%d / min factor) (at least %d) realisations; no companion for a tiled field "
                "(plain there). Two levels (`sweep --estimator mlmc`): a pilot of %d pairs (fine and coarse plan "
                "on one field) sets n0 coarse realisations and n1 pairs for plain's variance at N = %d. "
                "Antithetic pairs (`sweep --estimator antithetic`): a pilot of %d pairs (the field and its "
-               "antithetic, -G) sets the pairs for plain's variance at N = %d. Boxes of boxes (`sweep --estimator "
-               "mlmc-boxes`, where the plan draws cell averages): the same pilot and target. "
+               "antithetic, -G) sets the pairs for plain's variance at N = %d. Two levels on a derived coarse field "
+               "where `sweep --estimator auto` takes one (mlmc-boxes where the plan draws cell averages, mlmc-sub, "
+               "every 2nd node, where it draws point values on the circulant strip at l/R < 0.5): the same pilot "
+               "and target. "
                "Half-widths reached: the estimator's over plain's, worst QoI.\n\n"
                "| l/R | plain N | plain CPU [s] | per realisation [s] | draw share | std PV_x / PV_F / T_sk | "
                "cv N | cv CPU [s] (pilot + run) | min factor | half-width cv/plain (worst) | CPU ratio cv | "
                "mlmc n0 / n1 | mlmc CPU [s] | half-width mlmc/plain (worst) | CPU ratio mlmc | "
                "anti pairs | rho PV_x / PV_F / T_sk | anti CPU [s] | half-width anti/plain (worst) | CPU ratio anti | "
-               "boxes n0 / n1 | boxes CPU [s] | half-width boxes/plain (worst) | CPU ratio boxes |\n"
+               "derived n0 / n1 | derived CPU [s] | half-width derived/plain (worst) | CPU ratio derived |\n"
                "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
-            NPLAIN, NPILOT, NPLAIN, NPILOT, NPILOT_ML, NPLAIN, NPILOT_ML, NPLAIN);
+            s0.seed, NPLAIN, NPILOT, NPLAIN, NPILOT, NPILOT_ML, NPLAIN, NPILOT_ML, NPLAIN);
     double tp_all = 0, tc_all = 0, tm_all = 0, tm_matched = 0, ta_all = 0, ta_matched = 0, tr_all = 0, tr_matched = 0;
     int rc = 0;
     for (int k = 0; k < NPTS && !rc; k++) {
@@ -134,10 +146,12 @@ int bench_estimators(FILE *f, const char *dir)
         sf_sweep_point bx;
         double tb = NAN, wb = NAN;
         memset(&bx, 0, sizeof bx);
-        int cells = !rc && sf_sweep_estimator_auto(&s) == SF_EST_MLMC_BOXES;   /* `--estimator auto`'s rule */
+        int ae = rc ? -1 : sf_sweep_estimator_auto(&s);   /* `--estimator auto`'s rule */
+        int cells = ae == SF_EST_MLMC_BOXES || ae == SF_EST_MLMC_SUB;   /* a derived coarse field */
         if (cells) {
             t0 = cpu_now();
-            rc = sf_sweep_run_mlmc_boxes(&s, NPLAIN, NPILOT_ML, 1, NULL, &bx, err, sizeof err);
+            rc = ae == SF_EST_MLMC_BOXES ? sf_sweep_run_mlmc_boxes(&s, NPLAIN, NPILOT_ML, 1, NULL, &bx, err, sizeof err)
+                                         : sf_sweep_run_mlmc_sub(&s, NPLAIN, NPILOT_ML, 1, NULL, &bx, err, sizeof err);
             tb = cpu_now() - t0;
             wb = 0;
             for (int q = 0; q < SF_SWEEP_NQ && !rc; q++)
@@ -150,9 +164,10 @@ int bench_estimators(FILE *f, const char *dir)
             sf_sweep_point_free(&bx);
             break;
         }
-        /* `--estimator auto`: boxes of boxes on cell averages, antithetic pairs elsewhere */
-        tr_all += cells ? tb : ta;
-        tr_matched += cells ? tb * wb * wb : ta * wa * wa;
+        /* `--estimator auto`'s choice (sf_sweep_estimator_auto) */
+        double tr = cells ? tb : ae == SF_EST_MLMC ? tm : ta, wr = cells ? wb : ae == SF_EST_MLMC ? wm : wa;
+        tr_all += tr;
+        tr_matched += tr * wr * wr;
         /* the draw's share of a plain realisation (the work model) */
         double share = (ml.ml.cost_fine - (ml.ml.cost[1] - ml.ml.cost[0])) / ml.ml.cost_fine;
         tp_all += tp;
@@ -167,7 +182,7 @@ int bench_estimators(FILE *f, const char *dir)
                 worst, tp / tc, ml.ml.n[0], ml.ml.n[1], tm, wm, tp / tm, an.anti.n, an.anti.q[0].rho,
                 an.anti.q[1].rho, an.anti.q[2].rho, ta, wa, tp / ta, bx.ml.n[0], bx.ml.n[1], tb, wb, tp / tb);
         fprintf(stderr, "bench: estimators: l/R = %g: plain %.2f s, cv %.2f s (N %zu), mlmc %.2f s (n0 %zu, n1 %zu), "
-                        "antithetic %.2f s (%zu pairs), boxes %.2f s\n",
+                        "antithetic %.2f s (%zu pairs), derived %.2f s\n",
                 lr[k], tp, tc, n, tm, ml.ml.n[0], ml.ml.n[1], ta, an.anti.n, tb);
         sf_sweep_point_free(&an);
         sf_sweep_point_free(&bx);
@@ -195,8 +210,9 @@ int bench_estimators(FILE *f, const char *dir)
                "its mean varies less than two independent values'; where rho > 0 it varies more, and the pilot "
                "asks for more pairs.\n", ta_all, ran, tp_all / ta_matched);
     double rr = tp_all / tr_all;
-    fprintf(f, "\nBy the plan's rule (`--estimator auto`: boxes of boxes where the plan draws cell averages, "
-               "antithetic pairs elsewhere; fixed before this run): %.1f s of CPU, %.2fx less than plain (%.2fx scaled by the worst half-width "
+    fprintf(f, "\nBy `--estimator auto`'s rule (boxes of boxes where the plan draws cell averages; on the circulant "
+               "strip every 2nd node at l/R < 0.5, two levels on the same field at 0.5 <= l/R < 5; antithetic pairs "
+               "on tiles and at l/R >= 5; chosen from the runs at the default seed): %.1f s of CPU, %.2fx less than plain (%.2fx scaled by the worst half-width "
                "ratio squared).\n", tr_all, rr, tp_all / tr_matched);
     (void)qn;
     bench_target("Fig. 11 grid at plain N = 100 half-widths: >= 5x less CPU than plain Monte Carlo (section "

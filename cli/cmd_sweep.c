@@ -23,7 +23,8 @@ static void usage(FILE *f)
     fputs("usage: slipfield sweep SCENE --param NAME --values A,B,C --realisations N --out FILE\n"
           "                       [--summary FILE] [--threads T] [--resume]\n"
           "                       [--target-se X [--pilot N0] | --control-variate |\n"
-          "                        --estimator mlmc|mlmc-boxes|antithetic|auto [--pilot N0]]\n"
+          "                        --estimator mlmc|mlmc-boxes|mlmc-sub|antithetic|auto\n"
+          "                        [--pilot N0]]\n"
           "Monte Carlo sweep: at each value of NAME, N realisations of the scene.\n"
           "  --param NAME      a numeric scene key, or l_over_R (l = value x R), or\n"
           "                    mu_mean (at the scene's CV: mu_std scales with it)\n"
@@ -80,6 +81,11 @@ static void usage(FILE *f)
           "                    field's boxes (the law of the coarse model, exactly);\n"
           "                    level 0 draws its own coarse fields, in antithetic pairs;\n"
           "                    the summary's columns as --estimator mlmc\n"
+          "  --estimator mlmc-sub  two levels where the plan draws point values on the\n"
+          "                    circulant strip: level 1 runs the coarse plan of mlmc on\n"
+          "                    the fine field at every 2nd node (the law of the field on\n"
+          "                    the coarser grid, exactly); level 0 draws its own on that\n"
+          "                    grid, in antithetic pairs; the rows are plain's first n1\n"
           "  --estimator antithetic  pairs of the drawn field G and its antithetic -G\n"
           "                    (negated before the lognormal map; -G has G's law): one\n"
           "                    draw, two runs, the pair mean unbiased; a pilot of N0\n"
@@ -89,9 +95,11 @@ static void usage(FILE *f)
           "                    ratio the estimate, its interval (Student over the pair\n"
           "                    means), rho = corr(Q(G), Q(-G)) and the variance\n"
           "                    reduction factor; the rows are the pairs' G members\n"
-          "  --estimator auto  per value, mlmc-boxes where the plan draws cell averages,\n"
-          "                    antithetic elsewhere (a rule from measurements: the\n"
-          "                    summary's last column, estimator, says which ran)\n"
+          "  --estimator auto  per value: mlmc-boxes where the plan draws cell averages;\n"
+          "                    on the circulant strip mlmc-sub at l/R < 0.5, mlmc at\n"
+          "                    0.5 <= l/R < 5; antithetic on tiles and at l/R >= 5 (a\n"
+          "                    rule from measurements; the summary's last column,\n"
+          "                    estimator, says which ran)\n"
           "  --threads T       OpenMP threads (default: all); results do not depend on it\n"
           "  --resume          continue from FILE.ckpt<k> checkpoints of an interrupted run\n"
           "                    (and remove the temporary files a killed run left)\n"
@@ -197,12 +205,12 @@ int sf_cmd_sweep(int argc, char **argv)
         fprintf(stderr, "slipfield sweep: --target-se takes a standard error > 0 (got %g)\n", target_se);
         return SF_EXIT_USAGE;
     }
-    int ml = 0, anti = 0, boxes = 0, autoe = 0;
+    int ml = 0, anti = 0, boxes = 0, sub = 0, autoe = 0;
     if (estimator && !(ml = !strcmp(estimator, "mlmc")) && !(anti = !strcmp(estimator, "antithetic")) &&
-        !(boxes = ml = !strcmp(estimator, "mlmc-boxes")) && !(autoe = anti = !strcmp(estimator, "auto")) &&
-        strcmp(estimator, "plain")) {
-        fprintf(stderr, "slipfield sweep: --estimator takes plain, mlmc, mlmc-boxes, antithetic or auto (got '%s')\n",
-                estimator);
+        !(boxes = ml = !strcmp(estimator, "mlmc-boxes")) && !(sub = ml = !strcmp(estimator, "mlmc-sub")) &&
+        !(autoe = anti = !strcmp(estimator, "auto")) && strcmp(estimator, "plain")) {
+        fprintf(stderr, "slipfield sweep: --estimator takes plain, mlmc, mlmc-boxes, mlmc-sub, antithetic or auto "
+                        "(got '%s')\n", estimator);
         return SF_EXIT_USAGE;
     }
     if ((ml || anti) && (staged || cv || resume)) {
@@ -211,7 +219,7 @@ int sf_cmd_sweep(int argc, char **argv)
         return SF_EXIT_USAGE;
     }
     if (pilot && !staged && !ml && !anti) {
-        fprintf(stderr, "slipfield sweep: --pilot needs --target-se or --estimator mlmc|mlmc-boxes|antithetic|auto\n");
+        fprintf(stderr, "slipfield sweep: --pilot needs --target-se or --estimator (not plain)\n");
         return SF_EXIT_USAGE;
     }
     int paired = ml || anti;   /* the estimators sized from a pilot of pairs */
@@ -287,9 +295,12 @@ int sf_cmd_sweep(int argc, char **argv)
         snprintf(label, sizeof label, "%s = %g", param, v[k]);
         sf_sweep_point p;
         const char *ckp = strcmp(out_path, "-") ? ck : NULL;
-        int bx = boxes || (autoe && sf_sweep_estimator_auto(&s) == SF_EST_MLMC_BOXES);
+        int ae = autoe ? sf_sweep_estimator_auto(&s) : -1;
+        int bx = boxes || ae == SF_EST_MLMC_BOXES, sb = sub || ae == SF_EST_MLMC_SUB;
+        int same = (ml && !boxes && !sub) || ae == SF_EST_MLMC;
         rc = bx       ? sf_sweep_run_mlmc_boxes(&s, n, pilot, (int)threads, label, &p, err, sizeof err)
-             : ml     ? sf_sweep_run_mlmc(&s, n, pilot, (int)threads, label, &p, err, sizeof err)
+             : sb     ? sf_sweep_run_mlmc_sub(&s, n, pilot, (int)threads, label, &p, err, sizeof err)
+             : same   ? sf_sweep_run_mlmc(&s, n, pilot, (int)threads, label, &p, err, sizeof err)
              : anti   ? sf_sweep_run_antithetic(&s, n, pilot, (int)threads, label, &p, err, sizeof err)
              : staged ? sf_sweep_run_target(&s, target_se, pilot, n, (int)threads, ckp, resume, label, &p, err, sizeof err)
              : cv   ? sf_sweep_run_cv(&s, n, (int)threads, ckp, resume, label, &p, err, sizeof err)

@@ -115,15 +115,16 @@ expect 2 "in [t_skip, T] (pv_x = nan): raise T" "$bin" sweep sw.scene --param T 
 for a in "--target-se 0" "--target-se -0.1" "--target-se nan" "--target-se x"; do
     expect 2 "--target-se" "$bin" sweep sw.scene --param T --values 20 --realisations 5 $a --out sw.tsv
 done
-expect 2 "--pilot needs --target-se or --estimator mlmc|mlmc-boxes|antithetic|auto" "$bin" sweep sw.scene --param T --values 20 --realisations 5 --pilot 3 --out sw.tsv
+expect 2 "--pilot needs --target-se or --estimator (not plain)" "$bin" sweep sw.scene --param T --values 20 --realisations 5 --pilot 3 --out sw.tsv
 expect 2 "--pilot takes a whole number from 2" "$bin" sweep sw.scene --param T --values 20 --realisations 5 --target-se 0.1 --pilot 1 --out sw.tsv
 expect 2 "the pilot needs 2 to 5" "$bin" sweep sw.scene --param T --values 20 --realisations 5 --target-se 0.1 --pilot 6 --out sw.tsv
 expect 2 "do not combine" "$bin" sweep sw.scene --param T --values 20 --realisations 5 --target-se 0.1 --control-variate --out sw.tsv
 expect 2 "--control-variate takes no value" "$bin" sweep sw.scene --param T --values 20 --realisations 5 --control-variate=1 --out sw.tsv
-expect 2 "--estimator takes plain, mlmc, mlmc-boxes, antithetic or auto" "$bin" sweep sw.scene --param T --values 20 --realisations 5 --estimator mc --out sw.tsv
+expect 2 "--estimator takes plain, mlmc, mlmc-boxes, mlmc-sub, antithetic or auto" "$bin" sweep sw.scene --param T --values 20 --realisations 5 --estimator mc --out sw.tsv
 expect 2 "does not combine" "$bin" sweep sw.scene --param T --values 20 --realisations 5 --estimator mlmc --control-variate --out sw.tsv
 expect 2 "the pilot needs 2 to 5" "$bin" sweep sw.scene --param T --values 20 --realisations 5 --estimator mlmc --pilot 6 --out sw.tsv
 expect 2 "need a plan that draws cell averages" "$bin" sweep sw.scene --param T --values 20 --realisations 5 --estimator mlmc-boxes --out sw.tsv
+expect 2 "need a plan that draws point values" "$bin" sweep sw.scene --param T --values 20 --realisations 5 --estimator mlmc-sub --out sw.tsv
 expect 2 "--estimator antithetic does not combine" "$bin" sweep sw.scene --param T --values 20 --realisations 5 --estimator antithetic --resume --out sw.tsv
 expect 2 "the pilot needs 2 to 5" "$bin" sweep sw.scene --param T --values 20 --realisations 5 --estimator antithetic --pilot 6 --out sw.tsv
 [ ! -e sw.tsv ] && ok || bad "a refused two-stage sweep left sw.tsv"

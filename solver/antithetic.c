@@ -109,7 +109,7 @@ int sf_sweep_run_antithetic(const sf_scene *s, size_t n_plain, size_t n_pilot, i
         return SF_ENOMEM;
     }
     double *a = buf, *b = a + n_plain, *h = b + n_plain, *mb = h + n_plain;
-    sf_mlmc_ws ctx = { { s, &fine, NULL, NULL, 0 }, NULL, 0, 0, NULL, NULL, 0 };
+    sf_mlmc_ws ctx = { { s, &fine, NULL, NULL, 0 }, NULL, 0, 0, 0, NULL, NULL, 0 };
     sf_mc_ops ops = { sf_mlmc_ws_alloc, sf_mlmc_ws_free, realise_pair };
     sf_mc_spec spec = { n_plain, A_OUT, s->seed, threads, NULL, 0, 0, label };
     rc = sf_mc_run_range(&spec, 0, n_pilot, &ops, &ctx, pairs, NULL, err, errlen);

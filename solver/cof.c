@@ -550,6 +550,38 @@ int sf_cof_box_means(const sf_cof *f, size_t b, sf_cof **out)
     return SF_SUCCESS;
 }
 
+int sf_cof_sub_grid(const sf_cof_plan_info *fine, size_t k, sf_cof_plan_info *coarse)
+{
+    if (fine->kind != SF_COF_FIELD || fine->box > 0 || fine->generator == SF_COFGEN_TILES || k < 2 ||
+        fine->nx < k + 1 || fine->ny < k + 1)
+        return SF_EINVAL;
+    sf_cof_plan_info c = *fine;
+    c.nx = (fine->nx - 1) / k + 1;
+    c.ny = (fine->ny - 1) / k + 1;
+    c.dx = (double)k * fine->dx;
+    c.dy = (double)k * fine->dy;
+    *coarse = c;
+    return SF_SUCCESS;
+}
+
+int sf_cof_subsample(const sf_cof *f, size_t k, sf_cof **out)
+{
+    *out = NULL;
+    if (f->kind != SF_COF_FIELD || f->box > 0 || f->tiles || k < 2 || f->m < k + 1 || f->n < k + 1)
+        return SF_EINVAL;
+    size_t mc = (f->m - 1) / k + 1, nc = (f->n - 1) / k + 1;
+    sf_cof *c;
+    int rc = grid_new(mc, nc, f->x0, f->y0, (double)k * f->dx, (double)k * f->dy, &c);
+    if (rc)
+        return rc;
+    for (size_t j = 0; j < nc; j++)
+        for (size_t i = 0; i < mc; i++)
+            c->grid[i + mc * j] = f->grid[k * i + f->m * k * j];
+    grid_done(c);
+    *out = c;
+    return SF_SUCCESS;
+}
+
 int sf_cof_from_scene(const sf_scene *s, gsl_rng *rng, sf_cof **out)
 {
     sf_cof_plan *p;

@@ -240,6 +240,16 @@ int sf_cof_plan_antithetic(const sf_cof_plan *p, const sf_cof *c, sf_cof **out);
  * c, on exactly that grid. */
 int sf_cof_box_grid(const sf_cof_plan_info *fine, size_t b, sf_cof_plan_info *coarse);
 int sf_cof_box_means(const sf_cof *c, size_t b, sf_cof **out);
+/* Every k-th node (point values on the circulant strip).  The field at
+ * every k-th node of the fine grid has exactly the law of the field drawn
+ * on the k-times coarser grid (the same covariance at the same points,
+ * before and after the pointwise marginal map).  sf_cof_sub_grid: that
+ * grid from a point-value strip `fine` (nodes 0, k, 2k, ... in x and y;
+ * the rest of *coarse copied); SF_EINVAL for cell averages, tiles, k < 2
+ * or fewer than 2 coarse nodes a side.  sf_cof_subsample: the coarse COF
+ * of a drawn point-value grid c, on exactly that grid. */
+int sf_cof_sub_grid(const sf_cof_plan_info *fine, size_t k, sf_cof_plan_info *coarse);
+int sf_cof_subsample(const sf_cof *c, size_t k, sf_cof **out);
 /* Convenience: plan, draw one realisation, free the plan. */
 int sf_cof_from_scene(const sf_scene *s, gsl_rng *rng, sf_cof **out);
 

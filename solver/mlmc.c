@@ -122,7 +122,7 @@ static int realise(ml_ws *m, gsl_rng *rng, int pair, double *out)
     if (rc)
         return rc;
     if (pair) {
-        rc = m->b ? sf_cof_box_means(cof, m->b, &box) : SF_SUCCESS;
+        rc = !m->b ? SF_SUCCESS : m->sub ? sf_cof_subsample(cof, m->b, &box) : sf_cof_box_means(cof, m->b, &box);
         if (!rc)
             rc = sf_sweep_solve(m->w.s, m->w.pl, cof, out, &out[P_WF]);
         if (!rc)
@@ -257,9 +257,11 @@ static double level0_work(const ml_ws *c, const double *pairs, size_t n)
     return c->cdraw_work + 2 * w / (double)n;
 }
 
-static int run_levels(const sf_scene *s, size_t n_plain, size_t n_pilot, int threads, const char *label, int boxes,
+enum { ML_SAME = 0, ML_BOXES, ML_SUB };
+static int run_levels(const sf_scene *s, size_t n_plain, size_t n_pilot, int threads, const char *label, int mode,
                       sf_sweep_point *out, char *err, size_t errlen)
 {
+    int boxes = mode != ML_SAME;   /* a derived coarse field: level 0 draws its own, in antithetic pairs */
     memset(out, 0, sizeof *out);
     if (n_pilot < 2 || n_plain < n_pilot)
         return sf_seterr(err, errlen, SF_EINVAL, "two-level sweep: 2 <= pilot (%zu) <= realisations (%zu)", n_pilot,
@@ -269,7 +271,8 @@ static int run_levels(const sf_scene *s, size_t n_plain, size_t n_pilot, int thr
         return rc;
     sf_plan fine, coarse, cdraw;
     if (boxes) {
-        if ((rc = sf_mlmc_box_plans(s, &fine, &coarse, &cdraw, err, errlen)))
+        if ((rc = mode == ML_SUB ? sf_mlmc_sub_plans(s, &fine, &coarse, &cdraw, err, errlen)
+                                 : sf_mlmc_box_plans(s, &fine, &coarse, &cdraw, err, errlen)))
             return rc;
     } else {
         if ((rc = sf_plan_make(s, &fine, err, errlen)))
@@ -280,7 +283,8 @@ static int run_levels(const sf_scene *s, size_t n_plain, size_t n_pilot, int thr
     double *pairs = sf_calloc(n_plain * P_OUT, sizeof *pairs), *lev0 = NULL;
     if (!pairs)
         return SF_ENOMEM;
-    ml_ws ctx = { { s, &fine, NULL, NULL, 0 }, &coarse, 0, boxes ? SF_MLMC_BOX : 0, boxes ? &cdraw : NULL, NULL, 0 };
+    ml_ws ctx = { { s, &fine, NULL, NULL, 0 }, &coarse, 0, mode == ML_SUB ? SF_MLMC_SUB : boxes ? SF_MLMC_BOX : 0,
+                  mode == ML_SUB, boxes ? &cdraw : NULL, NULL, 0 };
     if (boxes) {   /* the level-0 draw's work, for the sizes (a thread's copy measures its own) */
         sf_cof_plan *cp;
         if ((rc = sf_cof_plan_build(s, &cdraw, &cp, err, errlen))) {
@@ -331,7 +335,7 @@ static int run_levels(const sf_scene *s, size_t n_plain, size_t n_pilot, int thr
                 !(out->ml.coarse1 = sf_calloc(n1 * NQ, sizeof *out->ml.coarse1))))
         rc = SF_ENOMEM;
     if (!rc) {   /* the rows: level 1's fine values, plain Monte Carlo's first n1 (same field) */
-        out->estimator = boxes ? SF_EST_MLMC_BOXES : SF_EST_MLMC;
+        out->estimator = mode == ML_SUB ? SF_EST_MLMC_SUB : boxes ? SF_EST_MLMC_BOXES : SF_EST_MLMC;
         out->n = n1;
         out->ml.coarse0 = lev0;
         lev0 = NULL;
@@ -357,13 +361,36 @@ static int run_levels(const sf_scene *s, size_t n_plain, size_t n_pilot, int thr
 int sf_sweep_run_mlmc(const sf_scene *s, size_t n_plain, size_t n_pilot, int threads, const char *label,
                       sf_sweep_point *out, char *err, size_t errlen)
 {
-    return run_levels(s, n_plain, n_pilot, threads, label, 0, out, err, errlen);
+    return run_levels(s, n_plain, n_pilot, threads, label, ML_SAME, out, err, errlen);
 }
 
 int sf_sweep_run_mlmc_boxes(const sf_scene *s, size_t n_plain, size_t n_pilot, int threads, const char *label,
                             sf_sweep_point *out, char *err, size_t errlen)
 {
-    return run_levels(s, n_plain, n_pilot, threads, label, 1, out, err, errlen);
+    return run_levels(s, n_plain, n_pilot, threads, label, ML_BOXES, out, err, errlen);
+}
+
+int sf_sweep_run_mlmc_sub(const sf_scene *s, size_t n_plain, size_t n_pilot, int threads, const char *label,
+                          sf_sweep_point *out, char *err, size_t errlen)
+{
+    return run_levels(s, n_plain, n_pilot, threads, label, ML_SUB, out, err, errlen);
+}
+
+int sf_mlmc_sub_plans(const sf_scene *s, sf_plan *fine, sf_plan *coarse, sf_plan *cdraw, char *err, size_t errlen)
+{
+    int rc = sf_plan_make(s, fine, err, errlen);
+    if (rc)
+        return rc;
+    fine->history = 0;
+    *cdraw = *fine;
+    if (fine->cof.kind != SF_COF_FIELD || fine->num.cell_average || fine->cof.generator == SF_COFGEN_TILES ||
+        sf_cof_sub_grid(&fine->cof, SF_MLMC_SUB, &cdraw->cof))
+        return sf_seterr(err, errlen, SF_EINVAL, "two levels on every %d-th node need a plan that draws point values "
+                         "on the circulant strip (cof = field; not cell averages, not tiles: raise l or set "
+                         "cof_generator = circulant)", SF_MLMC_SUB);
+    sf_mlmc_coarse_plan(fine, coarse);
+    coarse->cof = cdraw->cof;
+    return SF_SUCCESS;
 }
 
 int sf_mlmc_box_plans(const sf_scene *s, sf_plan *fine, sf_plan *coarse, sf_plan *cdraw, char *err, size_t errlen)

@@ -67,6 +67,7 @@ typedef struct {
      * level 1's coarse field is the fine one's b x b box means, level 0
      * draws its own from cdraw (this thread's cplan) in antithetic pairs */
     size_t b;
+    int sub;                  /* 1: level 1's coarse field is every b-th node instead (sf_sweep_run_mlmc_sub) */
     const sf_plan *cdraw;
     struct sf_cof_plan *cplan;
     double cdraw_work;        /* a level-0 draw's work */
@@ -98,6 +99,20 @@ void sf_mlmc_ws_free(void *ws);
  * scene s (SF_EINVAL with the reason where s's plan is not cell
  * averages). */
 int sf_mlmc_box_plans(const sf_scene *s, sf_plan *fine, sf_plan *coarse, sf_plan *cdraw, char *err, size_t errlen);
+
+/* Two levels on every k-th node (cof.h: sf_cof_subsample), for a scene
+ * whose plan draws point values on the circulant strip: the fine plan is
+ * the scene's (level 1's fine values are plain Monte Carlo's first n1,
+ * bit for bit); level 1's coarse run (the coarse plan above) is on the
+ * fine field at every SF_MLMC_SUB-th node, level 0's on fields drawn on
+ * that coarser grid (the same law, exactly, up to each circulant
+ * embedding's own error), in antithetic pairs sized from a pilot of its
+ * own, as boxes of boxes.  Measured (the coupling bench): Var(Q_f - Q_c)
+ * / Var Q_f 0.015 at l/R = 0.2, 0.08-0.21 at 0.5-2 for k = 2. */
+#define SF_MLMC_SUB 2
+/* Its fine, coarse-run and level-0 draw plans (SF_EINVAL with the
+ * reason where s's plan draws cell averages, tiles or no field). */
+int sf_mlmc_sub_plans(const sf_scene *s, sf_plan *fine, sf_plan *coarse, sf_plan *cdraw, char *err, size_t errlen);
 
 #define SF_MLMC_N0_CAP 4                /* n0 <= 4 n_plain */
 #define SF_MLMC_LEVEL0_STREAM ((size_t)-1)

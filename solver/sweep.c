@@ -460,14 +460,21 @@ void sf_sweep_summary_row(FILE *f, const char *param, double value, const sf_swe
 
 const char *sf_sweep_estimator_name(int est)
 {
-    static const char *const name[] = { "plain", "control-variate", "target-se", "mlmc", "mlmc-boxes", "antithetic" };
+    static const char *const name[] = { "plain", "control-variate", "target-se", "mlmc", "mlmc-boxes", "antithetic",
+                                        "mlmc-sub" };
     return est >= 0 && est < (int)(sizeof name / sizeof *name) ? name[est] : "unknown";
 }
 
 int sf_sweep_estimator_auto(const sf_scene *s)
 {
     sf_plan pl;
-    return !sf_plan_make(s, &pl, NULL, 0) && pl.num.cell_average ? SF_EST_MLMC_BOXES : SF_EST_ANTITHETIC;
+    if (sf_plan_make(s, &pl, NULL, 0) || pl.cof.kind != SF_COF_FIELD)
+        return SF_EST_ANTITHETIC;
+    if (pl.num.cell_average)
+        return SF_EST_MLMC_BOXES;
+    if (pl.cof.generator == SF_COFGEN_TILES || s->l >= SF_SWEEP_AUTO_ANTI_LR * s->R)
+        return SF_EST_ANTITHETIC;
+    return s->l < SF_SWEEP_AUTO_SUB_LR * s->R ? SF_EST_MLMC_SUB : SF_EST_MLMC;
 }
 
 void sf_sweep_point_free(sf_sweep_point *p)

@@ -29,13 +29,21 @@ enum { SF_SWEEP_PVX = 0, SF_SWEEP_PVF = 1, SF_SWEEP_SF = 2, SF_SWEEP_NQ = 3 };
 
 /* The estimators of a sweep point (sf_sweep_point.estimator; the
  * summary's last column, by sf_sweep_estimator_name). */
-enum { SF_EST_PLAIN = 0, SF_EST_CV, SF_EST_TARGET, SF_EST_MLMC, SF_EST_MLMC_BOXES, SF_EST_ANTITHETIC };
+enum { SF_EST_PLAIN = 0, SF_EST_CV, SF_EST_TARGET, SF_EST_MLMC, SF_EST_MLMC_BOXES, SF_EST_ANTITHETIC, SF_EST_MLMC_SUB };
 const char *sf_sweep_estimator_name(int est);
 /* The estimator `sweep --estimator auto` takes for scene s, by a rule
- * fixed from the coupling bench's measurements (docs/design.md sec. 8):
- * two levels on boxes of boxes where s's plan draws cell averages
- * (sf_sweep_run_mlmc_boxes), antithetic pairs elsewhere
- * (sf_sweep_run_antithetic). */
+ * chosen from the estimators bench at its default seed and measured on
+ * other fields (docs/design.md sec. 8): two levels on boxes of boxes
+ * where s's plan draws cell averages (sf_sweep_run_mlmc_boxes); on the
+ * circulant strip of point values, two levels on every 2nd node at l/R <
+ * SF_SWEEP_AUTO_SUB_LR (sf_sweep_run_mlmc_sub: the draw is most of a
+ * realisation there) and on the same field below SF_SWEEP_AUTO_ANTI_LR
+ * (sf_sweep_run_mlmc); antithetic pairs elsewhere
+ * (sf_sweep_run_antithetic: tiles, and l/R >= 5, where the disc spans a
+ * fraction of a correlation length and the QoIs follow the sign of the
+ * field, rho = corr(Q(G), Q(-G)) -0.5 to -1). */
+#define SF_SWEEP_AUTO_SUB_LR 0.5
+#define SF_SWEEP_AUTO_ANTI_LR 5.0
 int sf_sweep_estimator_auto(const sf_scene *s);
 
 /* The level of every confidence interval a sweep reports. */
@@ -221,6 +229,11 @@ int sf_sweep_run_mlmc(const sf_scene *s, size_t n_plain, size_t n_pilot, int thr
  * plan draws cell averages (SF_EINVAL with the reason otherwise). */
 int sf_sweep_run_mlmc_boxes(const sf_scene *s, size_t n_plain, size_t n_pilot, int threads, const char *label,
                             sf_sweep_point *out, char *err, size_t errlen);
+
+/* The same on every k-th node (mlmc.h: SF_MLMC_SUB): for a scene whose
+ * plan draws point values on the circulant strip (SF_EINVAL otherwise). */
+int sf_sweep_run_mlmc_sub(const sf_scene *s, size_t n_plain, size_t n_pilot, int threads, const char *label,
+                          sf_sweep_point *out, char *err, size_t errlen);
 
 /* An antithetic sweep point (antithetic.h): the ratio means at the
  * variance plain Monte Carlo reaches with n_plain realisations, from

@@ -632,10 +632,10 @@ static void boxes_estimator(void **state)
     char err[200];
     assert_int_equal(sf_mlmc_box_plans(&s, &fp, &cp, &dp, err, sizeof err), SF_EINVAL);
     assert_non_null(strstr(err, "cell averages"));
-    assert_int_equal(sf_sweep_estimator_auto(&s), SF_EST_ANTITHETIC);   /* point values: antithetic pairs */
+    assert_int_equal(sf_sweep_estimator_auto(&s), SF_EST_MLMC_SUB);   /* point values on the strip, l/R 0.2 */
     assert_string_equal(sf_sweep_estimator_name(SF_EST_ANTITHETIC), "antithetic");
     assert_string_equal(sf_sweep_estimator_name(-1), "unknown");
-    assert_string_equal(sf_sweep_estimator_name(SF_EST_ANTITHETIC + 1), "unknown");
+    assert_string_equal(sf_sweep_estimator_name(SF_EST_MLMC_SUB + 1), "unknown");
     s.l = 0.015;   /* l/R = 0.03: the plan's cell averages, 59 cells -> 60 */
     s.T = 14;
     s.t_skip = 4;
@@ -657,6 +657,80 @@ static void boxes_estimator(void **state)
     sf_sweep_point_free(&b);
     assert_int_equal(sf_sweep_run_mlmc_boxes(&s, 8, 1, 1, NULL, &a, err, sizeof err), SF_EINVAL);
     sf_sweep_point_free(&a);
+}
+
+/* Two levels on every 2nd node: the grid and the subsample (cof.h), the
+ * plans, the rule of `--estimator auto`, and a point (the same bits on
+ * two threads; level 1's fine values are plain's). */
+static void sub_estimator(void **state)
+{
+    (void)state;
+    sf_cof_plan_info in = { .kind = SF_COF_FIELD, .nx = 9, .ny = 4, .x0 = 1, .y0 = 2, .dx = 0.5, .dy = 0.25 }, c;
+    assert_int_equal(sf_cof_sub_grid(&in, 2, &c), SF_SUCCESS);
+    assert_true(c.nx == 5 && c.ny == 2 && c.x0 == 1 && c.y0 == 2 && c.dx == 1 && c.dy == 0.5);
+    assert_int_equal(sf_cof_sub_grid(&in, 1, &c), SF_EINVAL);
+    assert_int_equal(sf_cof_sub_grid(&in, 4, &c), SF_EINVAL);   /* fewer than 2 coarse rows */
+    in.box = 0.1;
+    assert_int_equal(sf_cof_sub_grid(&in, 2, &c), SF_EINVAL);   /* cell averages */
+    in.box = 0;
+    in.generator = SF_COFGEN_TILES;
+    assert_int_equal(sf_cof_sub_grid(&in, 2, &c), SF_EINVAL);
+    double v[9 * 4];
+    for (size_t k = 0; k < 36; k++)
+        v[k] = (double)k;
+    sf_cof *f, *g;
+    assert_int_equal(sf_cof_alloc_grid(9, 4, 1, 2, 0.5, 0.25, v, &f), SF_SUCCESS);
+    assert_int_equal(sf_cof_subsample(f, 2, &g), SF_SUCCESS);
+    size_t m, n;
+    const double *u;
+    assert_int_equal(sf_cof_grid_view(g, &m, &n, NULL, NULL, NULL, NULL, &u), SF_SUCCESS);
+    assert_true(m == 5 && n == 2 && u[0] == 0 && u[1] == 2 && u[4] == 8 && u[5] == 18 && u[9] == 26);
+    sf_cof_free(g);
+    assert_int_equal(sf_cof_subsample(f, 4, &g), SF_EINVAL);
+    assert_int_equal(sf_cof_set_box(f, 0.1), SF_SUCCESS);
+    assert_int_equal(sf_cof_subsample(f, 2, &g), SF_EINVAL);   /* cell averages */
+    sf_cof_free(f);
+    /* the plans and the rule */
+    sf_scene s;
+    sf_scene_default(&s);
+    s.cof = SF_COF_FIELD;
+    s.T = 14;
+    s.t_skip = 4;
+    sf_plan fp, cp, dp;
+    char err[200];
+    assert_int_equal(sf_mlmc_sub_plans(&s, &fp, &cp, &dp, err, sizeof err), SF_SUCCESS);
+    assert_true(dp.cof.dx == 2 * fp.cof.dx && cp.cof.nx == dp.cof.nx && cp.num.rtol == SF_MLMC_RTOL);
+    s.l = 10 * s.R;
+    assert_int_equal(sf_sweep_estimator_auto(&s), SF_EST_ANTITHETIC);   /* l/R >= 5 */
+    s.l = s.R;
+    assert_int_equal(sf_sweep_estimator_auto(&s), SF_EST_MLMC);   /* 0.5 <= l/R < 5 */
+    s.l = 0.05 * s.R;
+    s.cof_generator = SF_COFGEN_TILES;
+    s.cof_model = SF_COFMODEL_POINT;
+    assert_int_equal(sf_mlmc_sub_plans(&s, &fp, &cp, &dp, err, sizeof err), SF_EINVAL);   /* tiles */
+    assert_int_equal(sf_sweep_estimator_auto(&s), SF_EST_ANTITHETIC);
+    s.cof = SF_COF_VARIABLE;
+    assert_int_equal(sf_mlmc_sub_plans(&s, &fp, &cp, &dp, err, sizeof err), SF_EINVAL);
+    assert_int_equal(sf_sweep_estimator_auto(&s), SF_EST_ANTITHETIC);
+    /* a point */
+    sf_scene_default(&s);
+    s.cof = SF_COF_FIELD;
+    s.l = s.R;
+    s.T = 14;
+    s.t_skip = 4;
+    sf_sweep_point a, b, p;
+    assert_int_equal(sf_sweep_run_mlmc_sub(&s, 8, 3, 1, NULL, &a, err, sizeof err), SF_SUCCESS);
+    assert_int_equal(sf_sweep_run_mlmc_sub(&s, 8, 3, 2, NULL, &b, err, sizeof err), SF_SUCCESS);
+    assert_int_equal(sf_sweep_run(&s, a.n, 1, NULL, 0, NULL, &p, err, sizeof err), SF_SUCCESS);
+    assert_true(a.estimator == SF_EST_MLMC_SUB && a.ml.n[0] == b.ml.n[0] && a.ml.n[1] == b.ml.n[1]);
+    assert_memory_equal(a.qoi, b.qoi, a.n * SF_SWEEP_NQ * sizeof *a.qoi);
+    assert_memory_equal(a.qoi, p.qoi, a.n * SF_SWEEP_NQ * sizeof *a.qoi);
+    assert_memory_equal(a.ml.coarse0, b.ml.coarse0, a.ml.n[0] * SF_SWEEP_NQ * sizeof *a.qoi);
+    assert_memory_equal(a.ml.q, b.ml.q, sizeof a.ml.q);
+    assert_string_equal(sf_sweep_estimator_name(a.estimator), "mlmc-sub");
+    sf_sweep_point_free(&a);
+    sf_sweep_point_free(&b);
+    sf_sweep_point_free(&p);
 }
 
 static void shortest_text(void **state)
@@ -689,6 +763,7 @@ int main(void)
         cmocka_unit_test(mlmc_estimator),
         cmocka_unit_test(anti_estimator),
         cmocka_unit_test(boxes_estimator),
+        cmocka_unit_test(sub_estimator),
     };
     return cmocka_run_group_tests_name("montecarlo", tests, NULL, NULL);
 }

@@ -342,7 +342,23 @@ static double finite_mean(const double *x, size_t n, size_t *m, double *var)
 }
 
 /* the estimators the checks below compare with plain Monte Carlo */
-enum { EST_MLMC, EST_ANTI, EST_BOXES };
+enum { EST_MLMC, EST_ANTI, EST_BOXES, EST_SUB };
+
+/* Estimator est's point at scene s: plain's variance at n_plain, the
+ * pilot ML_PILOT. */
+static int est_run(const sf_scene *s, int est, size_t n_plain, sf_sweep_point *p, char *err, size_t errlen)
+{
+    switch (est) {
+    case EST_MLMC:
+        return sf_sweep_run_mlmc(s, n_plain, ML_PILOT, 0, NULL, p, err, errlen);
+    case EST_BOXES:
+        return sf_sweep_run_mlmc_boxes(s, n_plain, ML_PILOT, 0, NULL, p, err, errlen);
+    case EST_SUB:
+        return sf_sweep_run_mlmc_sub(s, n_plain, ML_PILOT, 0, NULL, p, err, errlen);
+    default:
+        return sf_sweep_run_antithetic(s, n_plain, ML_PILOT, 0, NULL, p, err, errlen);
+    }
+}
 
 /* The estimator's point at scene s (its pilot ML_PILOT, plain's variance
  * at s->samples as the target) and plain Monte Carlo's of as many rows:
@@ -351,8 +367,7 @@ static int est_and_plain(const sf_scene *s, int est, sf_sweep_point *p, sf_sweep
 {
     char err[256] = "";
     memset(pl, 0, sizeof *pl);
-    int rc = est == EST_MLMC ? sf_sweep_run_mlmc(s, s->samples, ML_PILOT, 0, NULL, p, err, sizeof err)
-                             : sf_sweep_run_antithetic(s, s->samples, ML_PILOT, 0, NULL, p, err, sizeof err);
+    int rc = est_run(s, est, s->samples, p, err, sizeof err);
     if (!rc)
         rc = sf_sweep_run(s, p->n, 0, NULL, 0, NULL, pl, err, sizeof err);
     if (rc) {
@@ -488,16 +503,17 @@ static int chk_mlmc_levels(const sf_case *c, sf_result *r)
     return rc;
 }
 
-/* The box means of grid COF f over b x b of its boxes, computed here from
- * their definition: coarse node (X, Y) of grid g is the centre of a box
- * of side B = b box; the fine boxes that tile it have their centres at X
- * - B/2 + box (u + 1/2), u < b (and so in y), each of which must be a
- * fine node (|index - integer| <= 1e-9: the grids align); *worst: the
- * largest |g's value - the mean of those b^2 fine values|, relative to
- * the mean COF, and *misaligned the centres that are not fine nodes or
- * lie off the fine grid. */
-static void box_means_by_definition(const sf_cof *f, const sf_cof *g, size_t b, double mu_mean, double *worst,
-                                    size_t *misaligned)
+/* The derived coarse COF g of grid COF f against its definition,
+ * computed here from coordinates.  Box means (b > 1): coarse node (X, Y)
+ * is the centre of a box of side B = b box; the fine boxes that tile it
+ * have their centres at X - B/2 + box (u + 1/2), u < b (and so in y),
+ * and g's value is the mean of the b^2 fine values there.  A subsample
+ * (b = 1): the fine value at (X, Y) itself.  Each such point must be a
+ * fine node (|index - integer| <= 1e-9: the grids align).  *worst: the
+ * largest |difference| relative to the mean COF; *misaligned: the points
+ * that are not fine nodes or lie off the fine grid. */
+static void derived_by_definition(const sf_cof *f, const sf_cof *g, size_t b, double mu_mean, double *worst,
+                                  size_t *misaligned)
 {
     size_t m, n, M, N;
     double x0, y0, dx, dy, X0, Y0, DX, DY;
@@ -506,15 +522,14 @@ static void box_means_by_definition(const sf_cof *f, const sf_cof *g, size_t b, 
     *misaligned = 1;
     if (sf_cof_grid_view(f, &m, &n, &x0, &y0, &dx, &dy, &u) || sf_cof_grid_view(g, &M, &N, &X0, &Y0, &DX, &DY, &v))
         return;
-    double box = sf_cof_box(f), B = (double)b * box, w = 0;
+    double box = sf_cof_box(f), w = 0, lo = b > 1 ? 0.5 * box * (1 - (double)b) : 0;
     size_t bad = 0;
     for (size_t J = 0; J < N; J++)
         for (size_t I = 0; I < M; I++) {
             double X = X0 + (double)I * DX, Y = Y0 + (double)J * DY, sum = 0;
             for (size_t a = 0; a < b; a++)
                 for (size_t c = 0; c < b; c++) {
-                    double fi = (X - 0.5 * B + box * ((double)c + 0.5) - x0) / dx;
-                    double fj = (Y - 0.5 * B + box * ((double)a + 0.5) - y0) / dy;
+                    double fi = (X + lo + box * (double)c - x0) / dx, fj = (Y + lo + box * (double)a - y0) / dy;
                     long i = lround(fi), j = lround(fj);
                     if (fabs(fi - (double)i) > 1e-9 || fabs(fj - (double)j) > 1e-9 || i < 0 || j < 0 ||
                         i >= (long)m || j >= (long)n) {
@@ -529,38 +544,50 @@ static void box_means_by_definition(const sf_cof *f, const sf_cof *g, size_t b, 
     *misaligned = bad;
 }
 
-/* Exact, at one point (sf_sweep_run_mlmc_boxes): (1)-(2) the estimate
- * and its se from the level values (ml_recompute); (3) the box means of
- * stream 0's fine field against their definition (box_means_by_definition)
- * and their grid against level 0's own-draw grid (the law's support); (4)
- * level 1's first fine and coarse values and level 0's first value (the
- * mean of an antithetic pair of coarse runs on the level-0 stream's
- * draw) against this check's own runs, bit for bit. */
-static int chk_mlmc_boxes(const sf_case *c, sf_result *r)
+/* Exact, at one point of two levels on a derived coarse field
+ * (sf_sweep_run_mlmc_boxes, est EST_BOXES; sf_sweep_run_mlmc_sub,
+ * EST_SUB): (1)-(2) the estimate and its se from the level values
+ * (ml_recompute); (3) the derived field of stream 0's fine field against
+ * its definition (derived_by_definition) and
+ * its grid against level 0's own-draw grid (the law's support); (4) level
+ * 1's first fine and coarse values and level 0's first value (the mean
+ * of an antithetic pair of coarse runs on the level-0 stream's draw)
+ * against this check's own runs, bit for bit; every 2nd node: (5) level
+ * 1's fine values are plain Monte Carlo's first n1, bit for bit. */
+static int derived_levels(const sf_case *c, sf_result *r, int est)
 {
     const sf_scene *s = &c->scene;
     char err[256] = "";
-    sf_sweep_point p;
-    int rc = sf_sweep_run_mlmc_boxes(s, s->samples, ML_PILOT, 0, NULL, &p, err, sizeof err);
-    if (rc) {
+    sf_sweep_point p, pl;
+    int sub = est == EST_SUB, rc;
+    if (sub) {
+        if ((rc = est_and_plain(s, est, &p, &pl, r)))
+            return rc;
+    } else if ((rc = est_run(s, est, s->samples, &p, err, sizeof err))) {
         sf_note(r, "The sweep failed: %s\n", *err ? err : sf_strerror(rc));
         sf_sweep_point_free(&p);
         return rc;
     }
     ml_recompute(&p, r);
+    if (sub) {
+        sf_check_le(r, "level 1's fine values that differ from plain Monte Carlo's first n1 (bits)", rows_differ(&p, &pl),
+                    0);
+        sf_sweep_point_free(&pl);
+    }
+    size_t kb = sub ? SF_MLMC_SUB : SF_MLMC_BOX;
     sf_plan fp, cp, dp;
     sf_cof_plan *fplan = NULL, *dplan = NULL;
     sf_cof *f = NULL, *g = NULL, *h = NULL, *ha = NULL;
     gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
     double q1[SF_SWEEP_NQ], qc[SF_SWEEP_NQ], q0[SF_SWEEP_NQ], q0a[SF_SWEEP_NQ];
-    rc = sf_mlmc_box_plans(s, &fp, &cp, &dp, err, sizeof err);
+    rc = sub ? sf_mlmc_sub_plans(s, &fp, &cp, &dp, err, sizeof err) : sf_mlmc_box_plans(s, &fp, &cp, &dp, err, sizeof err);
     if (!rc)
         rc = sf_cof_plan_build(s, &fp, &fplan, err, sizeof err);
     if (!rc)
         rc = sf_cof_plan_build(s, &dp, &dplan, err, sizeof err);
     gsl_rng_set(rng, sf_mc_seed(s->seed, 0));
     if (!rc && !(rc = sf_cof_plan_draw(fplan, rng, &f)))
-        rc = sf_cof_box_means(f, SF_MLMC_BOX, &g);
+        rc = sub ? sf_cof_subsample(f, kb, &g) : sf_cof_box_means(f, kb, &g);
     gsl_rng_set(rng, sf_mc_seed(sf_mc_seed(s->seed, SF_MLMC_LEVEL0_STREAM), 0));
     if (!rc && !(rc = sf_cof_plan_draw(dplan, rng, &h)))
         rc = sf_cof_plan_antithetic(dplan, h, &ha);
@@ -577,20 +604,31 @@ static int chk_mlmc_boxes(const sf_case *c, sf_result *r)
     } else {
         double worst;
         size_t bad;
-        box_means_by_definition(f, g, SF_MLMC_BOX, s->mu_mean, &worst, &bad);
-        sf_check_le(r, "max over the coarse nodes of |box mean - the mean of the b x b fine boxes that tile its box| / "
-                       "mu_mean (sums of 16 values of order 1: round-off ~1e-15)", worst, 1e-12);
-        sf_check_le(r, "fine box centres of a coarse box that are not fine nodes, or lie off the fine strip",
-                    (double)bad, 0);
+        if (sub) {
+            derived_by_definition(f, g, 1, s->mu_mean, &worst, &bad);
+            sf_check_le(r, "max over the coarse nodes of |value - the fine value at its position| / mu_mean (copies: "
+                           "exact)", worst, 0);
+            sf_check_le(r, "coarse nodes that are not fine nodes, or lie off the fine strip", (double)bad, 0);
+        } else {
+            derived_by_definition(f, g, kb, s->mu_mean, &worst, &bad);
+            sf_check_le(r, "max over the coarse nodes of |box mean - the mean of the b x b fine boxes that tile its "
+                           "box| / mu_mean (sums of 16 values of order 1: round-off ~1e-15)", worst, 1e-12);
+            sf_check_le(r, "fine box centres of a coarse box that are not fine nodes, or lie off the fine strip",
+                        (double)bad, 0);
+        }
         size_t M, N;
         double X0, Y0, DX;
         const sf_cof_plan_info *in = sf_cof_plan_get_info(dplan);
         sf_cof_grid_view(g, &M, &N, &X0, &Y0, &DX, NULL, NULL);
         double geo = (M != in->nx || N != in->ny) ? INFINITY
                      : sf_max(sf_max(fabs(X0 - in->x0), fabs(Y0 - in->y0)) / in->dx,
-                              sf_max(fabs(DX - in->dx) / in->dx, fabs(sf_cof_box(g) - in->box) / in->box));
-        sf_check_le(r, "the box means' grid against level 0's own-draw grid (nodes, origin / spacing, spacing, box; "
+                              sf_max(fabs(DX - in->dx) / in->dx,
+                                     sub ? fabs(sf_cof_box(g) - in->box) : fabs(sf_cof_box(g) - in->box) / in->box));
+        sf_check_le(r, "the derived field's grid against level 0's own-draw grid (nodes, origin / spacing, spacing, box; "
                        "relative: round-off ~1e-15)", geo, 1e-12);
+        if (sf_cof_plan_truncated(dplan) || sf_cof_plan_truncated(fplan))
+            sf_note(r, "An embedding reached its padding cap (truncated): the two levels' laws differ by its "
+                       "clamping.\n");
         size_t differ = 0, none = 0;
         for (int q = 0; q < 3; q++) {
             double want[3] = { q1[q], qc[q], 0.5 * (q0[q] + q0a[q]) };
@@ -607,10 +645,11 @@ static int chk_mlmc_boxes(const sf_case *c, sf_result *r)
         if (none)
             sf_note(r, "%zu of the 9 first values are formed by neither run (NaN in both), the same outcome.\n", none);
         sf_note(r, "l/R = %g, %zu realisations' variance as the target (seed %lu): level 0 %zu antithetic pairs of "
-                   "coarse runs, level 1 %zu pairs; fine plan %zu cells per diameter (box %.4g m), coarse %zu (box "
-                   "%.4g m), rtol %g -> %g; the box means compared at %zu x %zu nodes.\n",
-                s->l / s->R, s->samples, s->seed, p.ml.n[0], p.ml.n[1], fp.num.cells, fp.cof.box, cp.num.cells,
-                dp.cof.box, fp.num.rtol, cp.num.rtol, M, N);
+                   "coarse runs, level 1 %zu pairs; fine plan %zu %s (spacing %.4g m), coarse %zu (spacing %.4g m), "
+                   "rtol %g -> %g; the derived field compared at %zu x %zu nodes.\n",
+                s->l / s->R, s->samples, s->seed, p.ml.n[0], p.ml.n[1], fp.num.cells,
+                fp.num.layout ? "cells per diameter" : "rings", fp.cof.dx, cp.num.cells, dp.cof.dx, fp.num.rtol,
+                cp.num.rtol, M, N);
     }
     gsl_rng_free(rng);
     sf_cof_free(f);
@@ -622,6 +661,9 @@ static int chk_mlmc_boxes(const sf_case *c, sf_result *r)
     sf_sweep_point_free(&p);
     return rc;
 }
+
+static int chk_mlmc_boxes(const sf_case *c, sf_result *r) { return derived_levels(c, r, EST_BOXES); }
+static int chk_mlmc_sub(const sf_case *c, sf_result *r) { return derived_levels(c, r, EST_SUB); }
 
 /* ---- antithetic pairs (sweep.h: sf_sweep_run_antithetic, antithetic.h) ---- */
 
@@ -785,7 +827,10 @@ static int estimator_unbiased(const sf_case *c, sf_result *r, int est)
     int rc = SF_SUCCESS;
     double alpha = c->spec.alpha / (double)(3 * K);
     int ml = est != EST_ANTI;
-    const char *name = est == EST_MLMC ? "two levels" : est == EST_BOXES ? "boxes of boxes" : "antithetic";
+    const char *name = est == EST_MLMC    ? "two levels"
+                       : est == EST_BOXES ? "boxes of boxes"
+                       : est == EST_SUB   ? "every 2nd node"
+                                          : "antithetic";
     for (size_t k = 0; k < K && !rc; k++) {
         sf_scene s = *s0, sp;
         sf_sweep_point e, p;
@@ -796,9 +841,7 @@ static int estimator_unbiased(const sf_case *c, sf_result *r, int est)
         sp = s;
         sp.seed = sf_mc_seed(s.seed, 1) ^ 1;
         if (!rc)
-            rc = est == EST_MLMC    ? sf_sweep_run_mlmc(&s, s0->samples, ML_PILOT, 0, NULL, &e, err, sizeof err)
-                 : est == EST_BOXES ? sf_sweep_run_mlmc_boxes(&s, s0->samples, ML_PILOT, 0, NULL, &e, err, sizeof err)
-                                    : sf_sweep_run_antithetic(&s, s0->samples, ML_PILOT, 0, NULL, &e, err, sizeof err);
+            rc = est_run(&s, est, s0->samples, &e, err, sizeof err);
         if (!rc)
             rc = sf_sweep_run(&sp, s0->samples, 0, NULL, 0, NULL, &p, err, sizeof err);
         if (rc) {
@@ -844,9 +887,10 @@ static int estimator_unbiased(const sf_case *c, sf_result *r, int est)
                    "| l/R | QoI | plain | %s | n0 / n1 | V0 / V1 | C0 / C1 | reduction |\n"
                    "|---|---|---|---|---|---|---|---|\n%s\n",
                 s0->samples, name, s0->samples, ML_PILOT, s0->seed,
-                est == EST_BOXES ? "antithetic pairs of coarse runs" : "coarse realisations",
-                est == EST_BOXES ? "a pair's mean coarse ratio" : "the coarse ratio", name, tab);
+                est != EST_MLMC ? "antithetic pairs of coarse runs" : "coarse realisations",
+                est != EST_MLMC ? "a pair's mean coarse ratio" : "the coarse ratio", name, tab);
         plot_vrf(r, est == EST_BOXES ? "Variance reduction of two levels on boxes of boxes at equal work"
+                    : est == EST_SUB ? "Variance reduction of two levels on every 2nd node at equal work"
                                      : "Variance reduction of the two-level estimator at equal work", K, lr, vrf);
     } else if (!rc) {
         sf_note(r, "Plain Monte Carlo: %zu realisations per point on independent streams; antithetic pairs: plain's "
@@ -866,6 +910,7 @@ static int estimator_unbiased(const sf_case *c, sf_result *r, int est)
 static int chk_mlmc_unbiased(const sf_case *c, sf_result *r) { return estimator_unbiased(c, r, EST_MLMC); }
 static int chk_anti_unbiased(const sf_case *c, sf_result *r) { return estimator_unbiased(c, r, EST_ANTI); }
 static int chk_boxes_unbiased(const sf_case *c, sf_result *r) { return estimator_unbiased(c, r, EST_BOXES); }
+static int chk_sub_unbiased(const sf_case *c, sf_result *r) { return estimator_unbiased(c, r, EST_SUB); }
 
 const sf_check_def sf_checks_mcstop[] = {
     { "mc_mlmc_levels", chk_mlmc_levels,
@@ -878,6 +923,11 @@ const sf_check_def sf_checks_mcstop[] = {
       "level 0's own grid, the first values are the plans' runs on their streams' fields" },
     { "mc_mlmc_boxes_unbiased", chk_boxes_unbiased,
       "two levels on boxes of boxes: its ratio means equal plain Monte Carlo's on independent streams" },
+    { "mc_mlmc_sub", chk_mlmc_sub,
+      "two levels on every 2nd node: the estimate is its levels' means, level 1 is plain MC's streams, the coarse "
+      "field is the fine one at every 2nd node on level 0's own grid, the first values are the plans' runs" },
+    { "mc_mlmc_sub_unbiased", chk_sub_unbiased,
+      "two levels on every 2nd node: its ratio means equal plain Monte Carlo's on independent streams" },
     { "mc_anti_pairs", chk_anti_pairs,
       "antithetic pairs: the estimate is the pair means' mean, the G members are plain MC's streams, the "
       "antithetic field obeys ln a + ln b = 2 mu_g (cell averages: a + b = 2 mu_mean)" },
