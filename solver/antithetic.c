@@ -67,12 +67,12 @@ static void pair_ratios(const double *v, size_t n, const double *det, int q, dou
     *m = k;
 }
 
-/* the variance of the 2 m members a[], b[] (each a realisation of Q) */
+/* the variance of the 2 m members a[], b[] (each a realisation of Q; m >= 1) */
 static double member_var(const double *a, const double *b, size_t m, double *buf)
 {
     memcpy(buf, a, m * sizeof *a);
     memcpy(buf + m, b, m * sizeof *b);
-    return m > 0 ? gsl_stats_variance(buf, 1, 2 * m) : NAN;
+    return gsl_stats_variance(buf, 1, 2 * m);
 }
 
 /* the mean work of a pair (pair = 1) or of a plain realisation, its G
@@ -118,8 +118,11 @@ int sf_sweep_run_antithetic(const sf_scene *s, size_t n_plain, size_t n_pilot, i
         double vp[NQ], vf[NQ];
         for (int q = 0; q < NQ; q++) {
             pair_ratios(pairs, n_pilot, out->det, q, a, b, h, &m);
-            vp[q] = m > 1 ? gsl_stats_variance(h, 1, m) : NAN;
-            vf[q] = m > 1 ? member_var(a, b, m, mb) : NAN;
+            vp[q] = vf[q] = NAN;   /* fewer than 2 pairs: this ratio sets no size */
+            if (m > 1) {
+                vp[q] = gsl_stats_variance(h, 1, m);
+                vf[q] = member_var(a, b, m, mb);
+            }
         }
         n = sf_anti_size(vp, vf, NQ, n_plain, n_pilot);
         rc = sf_mc_run_range(&spec, n_pilot, n, &ops, &ctx, pairs, NULL, err, errlen);
@@ -144,11 +147,14 @@ int sf_sweep_run_antithetic(const sf_scene *s, size_t n_plain, size_t n_pilot, i
         sf_sweep_anti *e = &out->anti.q[q];
         pair_ratios(pairs, n, out->det, q, a, b, h, &m);
         e->m = m;
-        e->mean = m ? gsl_stats_mean(h, 1, m) : NAN;
-        e->se = m > 1 ? sqrt(gsl_stats_variance_m(h, 1, m, e->mean) / (double)m) : NAN;
+        e->mean = e->se = e->rho = e->var_fine = e->ci_lo = e->ci_hi = e->vrf = NAN;
+        if (m < 2)   /* no spread: not estimated (a single pair's mean alone is not an interval) */
+            continue;
+        e->mean = gsl_stats_mean(h, 1, m);
+        e->se = sqrt(gsl_stats_variance_m(h, 1, m, e->mean) / (double)m);
         e->rho = m > 2 ? gsl_stats_correlation(a, 1, b, 1, m) : NAN;
-        e->var_fine = m > 1 ? member_var(a, b, m, mb) : NAN;
-        double t = m > 1 ? gsl_cdf_tdist_Pinv(0.5 * (1 + SF_SWEEP_CI_LEVEL), (double)(m - 1)) : NAN;
+        e->var_fine = member_var(a, b, m, mb);
+        double t = gsl_cdf_tdist_Pinv(0.5 * (1 + SF_SWEEP_CI_LEVEL), (double)(m - 1));
         e->ci_lo = e->mean - t * e->se;
         e->ci_hi = e->mean + t * e->se;
         e->vrf = e->var_fine * out->anti.cost_fine / (e->se * e->se * out->anti.work);

@@ -90,8 +90,9 @@ void sf_mlmc_ws_free(void *p)
     free(m);
 }
 
-/* level 0 of boxes of boxes: an antithetic pair of coarse runs on a field
- * drawn on the coarse grid; out: the pair's mean QoIs */
+/* level 0 on a derived coarse field (boxes of boxes, every k-th node): an
+ * antithetic pair of coarse runs on a field drawn on the coarse grid;
+ * out: the pair's mean QoIs */
 static int realise_boxes0(ml_ws *m, gsl_rng *rng, double *out)
 {
     sf_cof *c, *a = NULL;
@@ -111,8 +112,8 @@ static int realise_boxes0(ml_ws *m, gsl_rng *rng, double *out)
     return rc;
 }
 
-/* a pair on one field (level 1: the coarse run on the field itself or on
- * its box means), or the coarse run alone (level 0) */
+/* a pair on one field (level 1: the coarse run on the field itself, its
+ * box means or its every k-th node), or the coarse run alone (level 0) */
 static int realise(ml_ws *m, gsl_rng *rng, int pair, double *out)
 {
     if (!pair && m->cplan)
@@ -228,8 +229,8 @@ static int ml_stats(sf_sweep_point *p, const double *pairs, int boxes)
         e->var[0] = v0;
         e->var[1] = vd;
         /* Var Q_c from level 0's many values, plus the pairs' Var Q_f -
-           Var Q_c; boxes of boxes: level 0's values are pair means, and
-           the pairs' Var Q_f stands alone */
+           Var Q_c; on a derived field level 0's values are pair means,
+           and the pairs' Var Q_f stands alone */
         e->var_fine = boxes ? vf : v0 + (vf - vc);
         e->mean = sum[0] / (double)m0 + sum[1] / (double)m1;
         double a = v0 / (double)m0, b = vd / (double)m1;
@@ -246,7 +247,7 @@ static int ml_stats(sf_sweep_point *p, const double *pairs, int boxes)
 }
 
 /* level 0's work per sample: the coarse draw and run of a pair's field,
- * or (boxes of boxes) a coarse-grid draw and two coarse runs */
+ * or (a derived field) a coarse-grid draw and two coarse runs */
 static double level0_work(const ml_ws *c, const double *pairs, size_t n)
 {
     if (!c->cdraw)

@@ -733,6 +733,96 @@ static void sub_estimator(void **state)
     sf_sweep_point_free(&p);
 }
 
+/* The refusals of the derived fields and the antithetic (cof.h) and of
+ * the derived levels' plans (mlmc.h), branch by branch. */
+static void derived_refusals(void **state)
+{
+    (void)state;
+    sf_cof_plan_info in = { .kind = SF_COF_FIELD, .nx = 20, .ny = 17, .dx = 0.5, .dy = 0.5, .box = 1.5 }, c;
+    sf_cof_plan_info bad = in;
+    bad.kind = SF_COF_UNIFORM;
+    assert_int_equal(sf_cof_box_grid(&bad, 4, &c), SF_EINVAL);
+    assert_int_equal(sf_cof_sub_grid(&bad, 2, &c), SF_EINVAL);
+    bad = in;
+    bad.generator = SF_COFGEN_TILES;
+    assert_int_equal(sf_cof_box_grid(&bad, 4, &c), SF_EINVAL);
+    bad = in;
+    bad.dx = 0;
+    assert_int_equal(sf_cof_box_grid(&bad, 4, &c), SF_EINVAL);
+    bad = in;
+    bad.nx = 10;
+    assert_int_equal(sf_cof_box_grid(&bad, 4, &c), SF_EINVAL);
+    bad.box = 0;
+    bad.nx = 2;
+    assert_int_equal(sf_cof_sub_grid(&bad, 2, &c), SF_EINVAL);   /* fewer than k + 1 nodes in x */
+    sf_cof *u, *g, *a;
+    assert_int_equal(sf_cof_alloc_uniform(0.3, &u), SF_SUCCESS);
+    assert_int_equal(sf_cof_box_means(u, 4, &g), SF_EINVAL);
+    assert_int_equal(sf_cof_subsample(u, 2, &g), SF_EINVAL);
+    double v[4] = { 1, 2, 3, 4 };
+    sf_cof *f;
+    assert_int_equal(sf_cof_alloc_grid(2, 2, 0, 0, 1, 1, v, &f), SF_SUCCESS);
+    assert_int_equal(sf_cof_subsample(f, 1, &g), SF_EINVAL);   /* k < 2 */
+    assert_int_equal(sf_cof_subsample(f, 2, &g), SF_EINVAL);   /* fewer than k + 1 nodes */
+    assert_int_equal(sf_cof_set_box(f, 1), SF_SUCCESS);
+    assert_int_equal(sf_cof_box_means(f, 4, &g), SF_EINVAL);   /* too few nodes for 4 x 4 boxes */
+    /* a tiled window: no derived field, and its antithetic is refused by a strip plan */
+    sf_scene s;
+    sf_scene_default(&s);
+    s.cof = SF_COF_FIELD;
+    s.T = 14;
+    s.t_skip = 4;
+    s.l = 0.05 * s.R;
+    s.cof_model = SF_COFMODEL_POINT;
+    s.cof_generator = SF_COFGEN_TILES;
+    sf_cof_plan *tp, *sp;
+    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+    sf_cof *w;
+    assert_int_equal(sf_cof_plan_alloc(&s, &tp, NULL, 0), SF_SUCCESS);
+    assert_int_equal(sf_cof_plan_draw(tp, rng, &w), SF_SUCCESS);
+    assert_int_equal(sf_cof_subsample(w, 2, &g), SF_EINVAL);
+    assert_int_equal(sf_cof_box_means(w, 2, &g), SF_EINVAL);
+    s.l = s.R;
+    s.cof_generator = SF_COFGEN_CIRCULANT;
+    assert_int_equal(sf_cof_plan_alloc(&s, &sp, NULL, 0), SF_SUCCESS);
+    assert_int_equal(sf_cof_plan_antithetic(sp, w, &a), SF_EINVAL);   /* a window to a strip plan */
+    assert_int_equal(sf_cof_plan_antithetic(sp, NULL, &a), SF_EINVAL);
+    sf_cof *grid;
+    assert_int_equal(sf_cof_plan_draw(sp, rng, &grid), SF_SUCCESS);
+    assert_int_equal(sf_cof_plan_antithetic(tp, grid, &a), SF_EINVAL);   /* a strip to a tiles plan */
+    assert_int_equal(sf_cof_plan_antithetic(sp, u, &a), SF_EINVAL);   /* a uniform COF to a field plan */
+    sf_cof_free(grid);
+    sf_cof_free(w);
+    sf_cof_plan_free(tp);
+    sf_cof_plan_free(sp);
+    gsl_rng_free(rng);
+    sf_cof_free(f);
+    sf_cof_free(u);
+    /* the plans: a cell-average scene refuses every 2nd node, a tiled one both */
+    sf_plan fp, cp, dp;
+    char err[200];
+    s.l = 0.015;
+    s.cof_model = SF_COFMODEL_AUTO;
+    assert_int_equal(sf_mlmc_sub_plans(&s, &fp, &cp, &dp, err, sizeof err), SF_EINVAL);
+    s.l = 0.05 * s.R;
+    s.cof_model = SF_COFMODEL_POINT;
+    s.cof_generator = SF_COFGEN_TILES;
+    assert_int_equal(sf_mlmc_sub_plans(&s, &fp, &cp, &dp, err, sizeof err), SF_EINVAL);
+    assert_int_equal(sf_mlmc_box_plans(&s, &fp, &cp, &dp, err, sizeof err), SF_EINVAL);
+    s.T = -1;   /* no plan at all */
+    assert_int_not_equal(sf_mlmc_sub_plans(&s, &fp, &cp, &dp, err, sizeof err), SF_SUCCESS);
+    assert_int_not_equal(sf_mlmc_box_plans(&s, &fp, &cp, &dp, err, sizeof err), SF_SUCCESS);
+    sf_sweep_point p;
+    s.T = 14;
+    assert_int_equal(sf_sweep_run_mlmc_sub(&s, 4, 2, 1, NULL, &p, err, sizeof err), SF_EINVAL);
+    sf_sweep_point_free(&p);
+    s.cof_generator = SF_COFGEN_CIRCULANT;
+    s.l = s.R;
+    s.R = -1;   /* a scene no plan is made for */
+    assert_int_not_equal(sf_sweep_run_antithetic(&s, 4, 2, 1, NULL, &p, err, sizeof err), SF_SUCCESS);
+    sf_sweep_point_free(&p);
+}
+
 static void shortest_text(void **state)
 {
     (void)state;
@@ -764,6 +854,7 @@ int main(void)
         cmocka_unit_test(anti_estimator),
         cmocka_unit_test(boxes_estimator),
         cmocka_unit_test(sub_estimator),
+        cmocka_unit_test(derived_refusals),
     };
     return cmocka_run_group_tests_name("montecarlo", tests, NULL, NULL);
 }
