@@ -8,12 +8,14 @@
  * estimator is plain Monte Carlo: its time is the plain time).  CPU time
  * of this process (one thread), each estimator measured in this run; the
  * half-widths each reached are reported beside.  The two-level estimator
- * (sweep.h: sf_sweep_run_mlmc, mlmc.h) aims at plain's variance at N =
- * 100 from a pilot of 10 pairs; its CPU includes the pilot.  Per point
- * also where plain's CPU goes: CPU per realisation, the draw's share of
- * it (the work model of mlmc.h) and each ratio's std.  Antithetic pairs
- * (sweep.h: sf_sweep_run_antithetic, antithetic.h) aim at plain's
- * variance at N = 100 from a pilot of 10 pairs; CPU includes the pilot.
+ * (mlmc.h) is given plain's standard error of each ratio mean as its
+ * target (sweep.h: sf_sweep_run_estimator_se: the half-widths plain
+ * reaches, not the variance the estimator would guess for plain from its
+ * own level 1), from a pilot of 10 pairs and its stages, at most 100
+ * pairs; its CPU includes the pilot.  Per point also where plain's CPU
+ * goes: CPU per realisation, the draw's share of it (the work model of
+ * mlmc.h) and each ratio's std.  Antithetic pairs (antithetic.h): the
+ * same targets, pilot and cap; CPU includes the pilot.
  * Two levels on boxes of boxes (sweep.h: sf_sweep_run_mlmc_boxes,
  * mlmc.h) where the plan draws cell averages, the same target and pilot;
  * and the grid with an estimator chosen by that rule, fixed before this
@@ -72,10 +74,12 @@ int bench_estimators(FILE *f, const char *dir)
                "N = %d, its 95%% half-widths of the PV_x, PV_F and T_sk ratio means are the targets. Control "
                "variate (`sweep --control-variate`): a pilot of %d gives each ratio's variance reduction factor, "
                "then N = ceil(%d / min factor) (at least %d) realisations; no companion for a tiled field "
-               "(plain there). Two levels (`sweep --estimator mlmc`): a pilot of %d pairs (fine and coarse plan "
-               "on one field) sets n0 coarse realisations and n1 pairs for plain's variance at N = %d. "
-               "Antithetic pairs (`sweep --estimator antithetic`): a pilot of %d pairs (the field and its "
-               "antithetic, -G) sets the pairs for plain's variance at N = %d. Two levels on a derived coarse field "
+               "(plain there). The other estimators are given plain's standard error of each ratio mean as "
+               "their target (`sweep --estimator E --target-se X`, X per ratio): a pilot of %d pairs, then "
+               "stages that recompute the sizes from every sample so far and at most double a level, at most %d "
+               "pairs (level 0: 4x). Two levels (`sweep --estimator mlmc`): n0 coarse realisations and n1 pairs "
+               "(fine and coarse plan on one field). Antithetic pairs (`sweep --estimator antithetic`): the field "
+               "and its antithetic, -G. Two levels on a derived coarse field "
                "where `sweep --estimator auto` takes one (mlmc-boxes where the plan draws cell averages, mlmc-sub, "
                "every 2nd node, where it draws point values on the circulant strip at l/R < 0.5): the same pilot "
                "and target. "
@@ -86,7 +90,7 @@ int bench_estimators(FILE *f, const char *dir)
                "anti pairs | rho PV_x / PV_F / T_sk | anti CPU [s] | half-width anti/plain (worst) | CPU ratio anti | "
                "derived n0 / n1 | derived CPU [s] | half-width derived/plain (worst) | CPU ratio derived |\n"
                "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
-            s0.seed, NPLAIN, NPILOT, NPLAIN, NPILOT, NPILOT_ML, NPLAIN, NPILOT_ML, NPLAIN);
+            s0.seed, NPLAIN, NPILOT, NPLAIN, NPILOT, NPILOT_ML, NPLAIN);
     double tp_all = 0, tc_all = 0, tm_all = 0, tm_matched = 0, ta_all = 0, ta_matched = 0, tr_all = 0, tr_matched = 0;
     int rc = 0;
     for (int k = 0; k < NPTS && !rc; k++) {
@@ -124,11 +128,15 @@ int bench_estimators(FILE *f, const char *dir)
         } else if (!rc) {
             tc = tp + tpil;   /* the pilot found no companion: plain, plus the pilot spent */
         }
+        /* the estimators' targets: plain's standard errors, ratio by ratio */
+        double tse[SF_SWEEP_NQ];
+        for (int q = 0; q < SF_SWEEP_NQ; q++)
+            tse[q] = p.rstat[q].se;
         sf_sweep_point ml;
         double tm = 0, wm = 0;
         if (!rc) {
             t0 = cpu_now();
-            rc = sf_sweep_run_mlmc(&s, NPLAIN, NPILOT_ML, 1, NULL, &ml, err, sizeof err);
+            rc = sf_sweep_run_estimator_se(&s, SF_EST_MLMC, tse, NPILOT_ML, NPLAIN, 1, NULL, &ml, err, sizeof err);
             tm = cpu_now() - t0;
             for (int q = 0; q < SF_SWEEP_NQ && !rc; q++)
                 wm = fmax(wm, (ml.ml.q[q].ci_hi - ml.ml.q[q].ci_lo) / (p.rstat[q].ci_hi - p.rstat[q].ci_lo));
@@ -138,7 +146,7 @@ int bench_estimators(FILE *f, const char *dir)
         memset(&an, 0, sizeof an);
         if (!rc) {
             t0 = cpu_now();
-            rc = sf_sweep_run_antithetic(&s, NPLAIN, NPILOT_ML, 1, NULL, &an, err, sizeof err);
+            rc = sf_sweep_run_estimator_se(&s, SF_EST_ANTITHETIC, tse, NPILOT_ML, NPLAIN, 1, NULL, &an, err, sizeof err);
             ta = cpu_now() - t0;
             for (int q = 0; q < SF_SWEEP_NQ && !rc; q++)
                 wa = fmax(wa, (an.anti.q[q].ci_hi - an.anti.q[q].ci_lo) / (p.rstat[q].ci_hi - p.rstat[q].ci_lo));
@@ -150,8 +158,7 @@ int bench_estimators(FILE *f, const char *dir)
         int cells = ae == SF_EST_MLMC_BOXES || ae == SF_EST_MLMC_SUB;   /* a derived coarse field */
         if (cells) {
             t0 = cpu_now();
-            rc = ae == SF_EST_MLMC_BOXES ? sf_sweep_run_mlmc_boxes(&s, NPLAIN, NPILOT_ML, 1, NULL, &bx, err, sizeof err)
-                                         : sf_sweep_run_mlmc_sub(&s, NPLAIN, NPILOT_ML, 1, NULL, &bx, err, sizeof err);
+            rc = sf_sweep_run_estimator_se(&s, ae, tse, NPILOT_ML, NPLAIN, 1, NULL, &bx, err, sizeof err);
             tb = cpu_now() - t0;
             wb = 0;
             for (int q = 0; q < SF_SWEEP_NQ && !rc; q++)

@@ -65,14 +65,17 @@ static void usage(FILE *f)
           "                    the summary adds per QoI the regression estimator of the\n"
           "                    ratio mean (cv_ratio_mean, se, 95% interval at n - 2\n"
           "                    degrees of freedom) and its variance reduction factor\n"
-          "                    (cv_vrf); nan for a tiled field (no companion)\n"
-          "  --estimator mlmc  two levels on one field: a coarse plan (half the rings,\n"
+          "                    (cv_vrf); nan for a tiled field (no companion)\n",
+          f);
+    fputs("  --estimator mlmc  two levels on one field: a coarse plan (half the rings,\n"
           "                    rtol 1e-5) and the scene's; N (--realisations) sets the\n"
           "                    target, the variance of plain Monte Carlo with N; a pilot\n"
-          "                    of N0 pairs (--pilot, default min(10, N)) sets each\n"
-          "                    level's size; the summary adds ml_n0, ml_n1, each\n"
-          "                    level's work, and per ratio the estimate, its interval,\n"
-          "                    each level's variance and the variance reduction factor;\n"
+          "                    of N0 pairs (--pilot, default min(10, N)) starts the\n"
+          "                    sizes, recomputed from every sample so far in stages\n"
+          "                    that at most double a level; the summary adds ml_n0,\n"
+          "                    ml_n1, each level's work, and per ratio the estimate,\n"
+          "                    its interval, each level's variance and the variance\n"
+          "                    reduction factor;\n"
           "                    the rows are level 1's fine realisations\n"
           "  --estimator mlmc-boxes  two levels where the plan draws cell averages (small\n"
           "                    l/R): the fine plan's cells rounded up to a multiple of 4;\n"
@@ -89,17 +92,22 @@ static void usage(FILE *f)
           "  --estimator antithetic  pairs of the drawn field G and its antithetic -G\n"
           "                    (negated before the lognormal map; -G has G's law): one\n"
           "                    draw, two runs, the pair mean unbiased; a pilot of N0\n"
-          "                    pairs (--pilot, default min(10, N)) sets the pairs for\n"
-          "                    plain Monte Carlo's variance with N; the summary adds\n"
-          "                    anti_n, a pair's and a plain realisation's work, and per\n"
-          "                    ratio the estimate, its interval (Student over the pair\n"
-          "                    means), rho = corr(Q(G), Q(-G)) and the variance\n"
-          "                    reduction factor; the rows are the pairs' G members\n"
+          "                    pairs (--pilot, default min(10, N)) starts the pairs\n"
+          "                    for plain Monte Carlo's variance with N (in mlmc's\n"
+          "                    stages); the summary adds anti_n, a pair's and a plain\n"
+          "                    realisation's work, and per ratio the estimate, its\n"
+          "                    interval (Student over the pair means), rho =\n"
+          "                    corr(Q(G), Q(-G)) and the variance reduction factor;\n"
+          "                    the rows are the pairs' G members\n"
           "  --estimator auto  per value: mlmc-boxes where the plan draws cell averages;\n"
           "                    on the circulant strip mlmc-sub at l/R < 0.5, mlmc at\n"
           "                    0.5 <= l/R < 5; antithetic on tiles and at l/R >= 5 (a\n"
           "                    rule from measurements; the summary's last column,\n"
           "                    estimator, says which ran)\n"
+          "  --estimator E --target-se X  the estimator's sizes for a standard error X [-]\n"
+          "                    of every ratio mean instead of plain's at N (N then\n"
+          "                    the cap on level 1 or on the pairs); the summary's stop\n"
+          "                    says target, or cap where a level was held at its cap\n"
           "  --threads T       OpenMP threads (default: all); results do not depend on it\n"
           "  --resume          continue from FILE.ckpt<k> checkpoints of an interrupted run\n"
           "                    (and remove the temporary files a killed run left)\n"
@@ -213,9 +221,9 @@ int sf_cmd_sweep(int argc, char **argv)
                         "(got '%s')\n", estimator);
         return SF_EXIT_USAGE;
     }
-    if ((ml || anti) && (staged || cv || resume)) {
-        fprintf(stderr, "slipfield sweep: --estimator %s does not combine with --target-se, --control-variate "
-                        "or --resume\n", estimator);
+    if ((ml || anti) && (cv || resume)) {
+        fprintf(stderr, "slipfield sweep: --estimator %s does not combine with --control-variate or --resume\n",
+                estimator);
         return SF_EXIT_USAGE;
     }
     if (pilot && !staged && !ml && !anti) {
@@ -298,7 +306,11 @@ int sf_cmd_sweep(int argc, char **argv)
         int ae = autoe ? sf_sweep_estimator_auto(&s) : -1;
         int bx = boxes || ae == SF_EST_MLMC_BOXES, sb = sub || ae == SF_EST_MLMC_SUB;
         int same = (ml && !boxes && !sub) || ae == SF_EST_MLMC;
-        rc = bx       ? sf_sweep_run_mlmc_boxes(&s, n, pilot, (int)threads, label, &p, err, sizeof err)
+        int est = bx ? SF_EST_MLMC_BOXES : sb ? SF_EST_MLMC_SUB : same ? SF_EST_MLMC : SF_EST_ANTITHETIC;
+        const double tse[SF_SWEEP_NQ] = { target_se, target_se, target_se };
+        rc = staged && (ml || anti)
+                 ? sf_sweep_run_estimator_se(&s, est, tse, pilot, n, (int)threads, label, &p, err, sizeof err)
+             : bx     ? sf_sweep_run_mlmc_boxes(&s, n, pilot, (int)threads, label, &p, err, sizeof err)
              : sb     ? sf_sweep_run_mlmc_sub(&s, n, pilot, (int)threads, label, &p, err, sizeof err)
              : same   ? sf_sweep_run_mlmc(&s, n, pilot, (int)threads, label, &p, err, sizeof err)
              : anti   ? sf_sweep_run_antithetic(&s, n, pilot, (int)threads, label, &p, err, sizeof err)
@@ -324,9 +336,9 @@ int sf_cmd_sweep(int argc, char **argv)
                 fprintf(stderr, "slipfield sweep: %s = %g: %zu of %zu realisations from the checkpoint\n", param,
                         v[k], p.from_checkpoint, p.n);
             if (staged && p.stop == SF_MCSTOP_CAP)
-                fprintf(stderr, "slipfield sweep: %s = %g: the cap of %zu realisations is below what the pilot says "
+                fprintf(stderr, "slipfield sweep: %s = %g: the cap of %zu realisations is below what %s says "
                                 "--target-se %g needs: the interval is wider than the target\n",
-                        param, v[k], n, target_se);
+                        param, v[k], n, ml || anti ? "the estimator's sizing" : "the pilot", target_se);
             if (sum_path && sf_unum_sweep(&s, &p, (int)threads, err, sizeof err))
                 fprintf(stderr, "slipfield sweep: %s = %g: warning: no numerical error of the means (its companion "
                                 "failed: %s)\n", param, v[k], err);

@@ -139,6 +139,13 @@ expect 0 "" "$bin" sweep var.scene --param T --values 14 --realisations 6 --esti
 expect 0 "" "$bin" sweep var.scene --param T --values 14 --realisations 6 --estimator auto --pilot 3 --out au.tsv --summary au.sum
 [ "$(awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == "estimator") c = i } NR == 2 { print $c }' au.sum)" = "antithetic" ] \
     && ok || bad "auto sweep on one variable: the estimator column: $(cat au.sum)"
+# an estimator at a target standard error: met (stop target), or held at the cap (said)
+expect 0 "" "$bin" sweep var.scene --param T --values 14 --realisations 40 --estimator antithetic --pilot 3 --target-se 0.05 --out at.tsv --summary at.sum
+[ "$(awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == "stop") c = i } NR == 2 { print $c }' at.sum)" = "target" ] \
+    && ok || bad "antithetic sweep at a target: stop: $(cat at.sum)"
+expect 0 "is below what the estimator's sizing says --target-se 1e-09 needs" "$bin" sweep var.scene --param T --values 14 --realisations 6 --estimator antithetic --pilot 3 --target-se 1e-9 --out at.tsv --summary at.sum
+[ "$(awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == "stop") c = i } NR == 2 { print $3, $c }' at.sum)" = "6 cap" ] \
+    && ok || bad "antithetic sweep at the cap: $(cat at.sum)"
 # run: no QoI is said; no --out nor --summary prints the summary
 printf 'cof = uniform\nT = 5\n' > t5.scene
 expect 0 "warning: no quantity of interest" "$bin" run t5.scene

@@ -1,6 +1,7 @@
 #include "antithetic.h"
 #include "cof.h"
 #include "mlmc.h"
+#include "mcstop.h"
 #include "montecarlo.h"
 #include "sf_alloc.h"
 #include "sf_error.h"
@@ -18,16 +19,27 @@ enum { NQ = SF_SWEEP_NQ };
  * slides, in each run), each run's work */
 enum { A_ANTI = NQ, A_DRAW = 2 * NQ, A_NDRAW, A_W0, A_W1, A_OUT };
 
-size_t sf_anti_size(const double *vpair, const double *vf, int nq, size_t n_plain, size_t n_pilot)
+double sf_anti_want(const double *vpair, const double *target, int nq)
 {
     double m = 0;
-    for (int q = 0; q < nq; q++) {
-        double target = vf[q] / (double)n_plain;
-        if (!(target > 0) || !isfinite(target) || !(vpair[q] >= 0) || !isfinite(vpair[q]))
-            continue;
-        m = fmax(m, ceil(vpair[q] / target));
-    }
-    return !(m > (double)n_pilot) ? n_pilot : m >= (double)n_plain ? n_plain : (size_t)m;
+    for (int q = 0; q < nq; q++)
+        if (target[q] > 0 && isfinite(target[q]) && vpair[q] >= 0 && isfinite(vpair[q]))
+            m = fmax(m, ceil(vpair[q] / target[q]));
+    return m;
+}
+
+static size_t clampz(double m, size_t lo, size_t hi)
+{
+    return !(m > (double)lo) ? lo : m >= (double)hi ? hi : (size_t)m;
+}
+
+size_t sf_anti_size(const double *vpair, const double *vf, int nq, size_t n_plain, size_t n_pilot)
+{
+    double target[SF_SWEEP_NQ];
+    int k = nq < NQ ? nq : NQ;
+    for (int q = 0; q < k; q++)
+        target[q] = vf[q] / (double)n_plain;
+    return clampz(sf_anti_want(vpair, target, k), n_pilot, n_plain);
 }
 
 static int realise_pair(void *ws, size_t i, gsl_rng *rng, double *out)
@@ -91,6 +103,12 @@ static double mean_work(const double *v, size_t n, int pair)
 int sf_sweep_run_antithetic(const sf_scene *s, size_t n_plain, size_t n_pilot, int threads, const char *label,
                             sf_sweep_point *out, char *err, size_t errlen)
 {
+    return sf_anti_run(s, n_plain, n_pilot, NULL, threads, label, out, err, errlen);
+}
+
+int sf_anti_run(const sf_scene *s, size_t n_plain, size_t n_pilot, const double *tse, int threads, const char *label,
+                sf_sweep_point *out, char *err, size_t errlen)
+{
     memset(out, 0, sizeof *out);
     if (n_pilot < 2 || n_plain < n_pilot)
         return sf_seterr(err, errlen, SF_EINVAL, "antithetic sweep: 2 <= pilot (%zu) <= realisations (%zu)", n_pilot,
@@ -113,19 +131,31 @@ int sf_sweep_run_antithetic(const sf_scene *s, size_t n_plain, size_t n_pilot, i
     sf_mc_ops ops = { sf_mlmc_ws_alloc, sf_mlmc_ws_free, realise_pair };
     sf_mc_spec spec = { n_plain, A_OUT, s->seed, threads, NULL, 0, 0, label };
     rc = sf_mc_run_range(&spec, 0, n_pilot, &ops, &ctx, pairs, NULL, err, errlen);
-    size_t n = 0, m;
-    if (!rc) {
+    size_t n = n_pilot, m;
+    int capped = 0;
+    while (!rc) {   /* the size in stages, each from every pair so far (mlmc.h: sf_mlmc_stage) */
         double vp[NQ], vf[NQ];
         for (int q = 0; q < NQ; q++) {
-            pair_ratios(pairs, n_pilot, out->det, q, a, b, h, &m);
+            pair_ratios(pairs, n, out->det, q, a, b, h, &m);
             vp[q] = vf[q] = NAN;   /* fewer than 2 pairs: this ratio sets no size */
-            if (m > 1) {
-                vp[q] = gsl_stats_variance(h, 1, m);
+            if (m > 1) {   /* per pair drawn, vp n / m: the size then bounds vp / m, the estimate's */
+                vp[q] = gsl_stats_variance(h, 1, m) * (double)n / (double)m;
                 vf[q] = member_var(a, b, m, mb);
             }
         }
-        n = sf_anti_size(vp, vf, NQ, n_plain, n_pilot);
-        rc = sf_mc_run_range(&spec, n_pilot, n, &ops, &ctx, pairs, NULL, err, errlen);
+        double target[NQ];
+        for (int q = 0; q < NQ; q++)
+            target[q] = tse ? tse[q] * tse[q] : vf[q] / (double)n_plain;
+        double want = sf_anti_want(vp, target, NQ);
+        for (int q = 0; tse && q < NQ; q++)   /* a target whose spread is not known yet: more, to the cap */
+            if (target[q] > 0 && isfinite(target[q]) && !isfinite(vp[q]))
+                want = INFINITY;
+        capped = want > (double)n_plain;
+        size_t g = sf_mlmc_stage(n, clampz(want, n_pilot, n_plain));
+        if (g == n)
+            break;
+        rc = sf_mc_run_range(&spec, n, g, &ops, &ctx, pairs, NULL, err, errlen);
+        n = g;
     }
     if (!rc && (!(out->qoi = sf_calloc(n * NQ, sizeof *out->qoi)) ||
                 !(out->ratio = sf_calloc(n * NQ, sizeof *out->ratio)) ||
@@ -133,6 +163,7 @@ int sf_sweep_run_antithetic(const sf_scene *s, size_t n_plain, size_t n_pilot, i
         rc = SF_ENOMEM;
     if (!rc) {   /* the rows: the pairs' fields G, plain Monte Carlo's first n */
         out->estimator = SF_EST_ANTITHETIC;
+        out->stop = !tse ? SF_MCSTOP_FIXED : capped ? SF_MCSTOP_CAP : SF_MCSTOP_TARGET;
         out->n = out->anti.n = n;
         for (size_t i = 0; i < n; i++) {
             memcpy(out->qoi + i * NQ, pairs + i * A_OUT, NQ * sizeof *pairs);

@@ -20,7 +20,9 @@
  * Carlo's variance at n_plain, Var Q / n_plain, and
  *   n = ceil(max over the ratios of Var(pair mean) / target),
  * n_pilot <= n <= n_plain.  The pilot pairs are the first n (as the
- * two-level estimator's, mlmc.h, whose coverage check this one shares).
+ * two-level estimator's, mlmc.h, whose coverage check this one shares),
+ * and n is reached in that estimator's stages (sf_mlmc_stage: recomputed
+ * from every pair so far, at most doubled a stage).
  *
  * A pair with a member that forms no QoI (no complete cycle in the
  * window: NaN) is left out of that ratio's estimate and counted (the
@@ -35,11 +37,23 @@ extern "C" {
 #endif
 
 #include <stddef.h>
+#include "sweep.h"
 
 /* The pairs from the pilot's per-ratio variances vpair[q] (of the pair
  * means) and vf[q] (of a member): the rule above; a ratio whose
  * variances are not finite and positive sets no size. */
 size_t sf_anti_size(const double *vpair, const double *vf, int nq, size_t n_plain, size_t n_pilot);
+
+/* The pairs the variances vpair[q] ask for at target variances
+ * target[q] of the ratio means (a ratio whose target or variance is not
+ * finite, or target not > 0, asks for none): max ceil(vpair / target),
+ * unclamped. */
+double sf_anti_want(const double *vpair, const double *target, int nq);
+
+/* sf_sweep_run_antithetic (tse NULL) and its target standard errors
+ * tse[q] (sweep.h: sf_sweep_run_estimator_se; n_plain the cap). */
+int sf_anti_run(const sf_scene *s, size_t n_plain, size_t n_pilot, const double *tse, int threads, const char *label,
+                sf_sweep_point *out, char *err, size_t errlen);
 
 #ifdef __cplusplus
 }

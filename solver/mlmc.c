@@ -1,5 +1,6 @@
 #include "mlmc.h"
 #include "cof.h"
+#include "mcstop.h"
 #include "montecarlo.h"
 #include "sf_alloc.h"
 #include "sf_error.h"
@@ -37,18 +38,32 @@ static size_t clampz(double x, size_t lo, size_t hi)
     return !(x > (double)lo) ? lo : x >= (double)hi ? hi : (size_t)x;
 }
 
+size_t sf_mlmc_stage(size_t n, size_t want)
+{
+    return want <= n ? n : want / 2 >= n ? 2 * n : want;
+}
+
+void sf_mlmc_want(const double *v0, const double *v1, const double *target, int nq, double c0, double c1,
+                  double *m0, double *m1)
+{
+    *m0 = *m1 = 0;
+    for (int q = 0; q < nq; q++) {
+        if (!(target[q] > 0) || !isfinite(target[q]) || !(v0[q] >= 0) || !(v1[q] >= 0) || !isfinite(v0[q] + v1[q]))
+            continue;
+        double sum = sqrt(v0[q] * c0) + sqrt(v1[q] * c1);
+        *m0 = fmax(*m0, ceil(sqrt(v0[q] / c0) * sum / target[q]));
+        *m1 = fmax(*m1, ceil(sqrt(v1[q] / c1) * sum / target[q]));
+    }
+}
+
 void sf_mlmc_sizes(const double *v0, const double *v1, const double *vf, int nq, double c0, double c1,
                    size_t n_plain, size_t n_pilot, size_t *n0, size_t *n1)
 {
-    double m0 = 0, m1 = 0;
-    for (int q = 0; q < nq; q++) {
-        double target = vf[q] / (double)n_plain;
-        if (!(target > 0) || !isfinite(target) || !(v0[q] >= 0) || !(v1[q] >= 0) || !isfinite(v0[q] + v1[q]))
-            continue;
-        double sum = sqrt(v0[q] * c0) + sqrt(v1[q] * c1);
-        m0 = fmax(m0, ceil(sqrt(v0[q] / c0) * sum / target));
-        m1 = fmax(m1, ceil(sqrt(v1[q] / c1) * sum / target));
-    }
+    double target[SF_SWEEP_NQ], m0, m1;
+    int k = nq < SF_SWEEP_NQ ? nq : SF_SWEEP_NQ;
+    for (int q = 0; q < k; q++)
+        target[q] = vf[q] / (double)n_plain;
+    sf_mlmc_want(v0, v1, target, k, c0, c1, &m0, &m1);
     *n0 = clampz(m0, n_pilot, SF_MLMC_N0_CAP * n_plain);
     *n1 = clampz(m1, n_pilot, n_plain);
 }
@@ -177,12 +192,13 @@ static int pair_vars(const double *v, size_t n, const double *det, int q, double
 
 /* the variance of ratio q (value / det) over level 0's first n samples
  * (NQ values each) that are finite (x: room for n); NAN below 2 */
-static double finite_var(const double *v, size_t n, int q, double det, double *x)
+static double finite_var(const double *v, size_t n, int q, double det, double *x, size_t *m)
 {
     size_t k = 0;
     for (size_t i = 0; i < n; i++)
         if (isfinite(v[i * NQ + q] / det))
             x[k++] = v[i * NQ + q] / det;
+    *m = k;
     return k > 1 ? gsl_stats_variance(x, 1, k) : NAN;
 }
 
@@ -259,8 +275,10 @@ static double level0_work(const ml_ws *c, const double *pairs, size_t n)
 }
 
 enum { ML_SAME = 0, ML_BOXES, ML_SUB };
-static int run_levels(const sf_scene *s, size_t n_plain, size_t n_pilot, int threads, const char *label, int mode,
-                      sf_sweep_point *out, char *err, size_t errlen)
+/* tse: NULL for plain's variance at n_plain, else each ratio mean's
+ * standard error target (n_plain then the cap) */
+static int run_levels(const sf_scene *s, size_t n_plain, size_t n_pilot, const double *tse, int threads,
+                      const char *label, int mode, sf_sweep_point *out, char *err, size_t errlen)
 {
     int boxes = mode != ML_SAME;   /* a derived coarse field: level 0 draws its own, in antithetic pairs */
     memset(out, 0, sizeof *out);
@@ -299,44 +317,57 @@ static int run_levels(const sf_scene *s, size_t n_plain, size_t n_pilot, int thr
               ops0 = { sf_mlmc_ws_alloc, sf_mlmc_ws_free, realise_coarse };
     sf_mc_spec spec1 = { n_plain, P_OUT, s->seed, threads, NULL, 0, 0, label };
     rc = sf_mc_run_range(&spec1, 0, n_pilot, &ops1, &ctx, pairs, NULL, err, errlen);
-    double v0[NQ], v1[NQ], vf[NQ];
-    size_t m;
-    for (int q = 0; q < NQ && !rc; q++)
-        rc = pair_vars(pairs, n_pilot, out->det, q, &v0[q], &v1[q], &vf[q], &m);
-    size_t n0 = 0, n1 = 0, cap0 = SF_MLMC_N0_CAP * n_plain;
-    sf_mc_spec spec0 = { boxes ? cap0 : 0, NQ, sf_mc_seed(s->seed, SF_MLMC_LEVEL0_STREAM), threads, NULL, 0, 0, label };
-    if (!rc && boxes) {   /* level 0's own pilot: its antithetic pairs' variance, reused as its first samples */
-        if (!(lev0 = sf_calloc(cap0 * NQ, sizeof *lev0)))
-            rc = SF_ENOMEM;
-        if (!rc)
-            rc = sf_mc_run_range(&spec0, 0, n_pilot, &ops0, &ctx, lev0, NULL, err, errlen);
-        double *x = rc ? NULL : sf_malloc(n_pilot * sizeof *x);
-        if (!rc && !x)
-            rc = SF_ENOMEM;
-        for (int q = 0; q < NQ && !rc; q++)
-            v0[q] = finite_var(lev0, n_pilot, q, out->det[q], x);
-        free(x);
+    size_t n0 = n_pilot, n1 = n_pilot, cap0 = SF_MLMC_N0_CAP * n_plain;
+    int capped = 0;
+    /* level 0's own pilot, its first samples (derived fields: antithetic pairs) */
+    sf_mc_spec spec0 = { cap0, NQ, sf_mc_seed(s->seed, SF_MLMC_LEVEL0_STREAM), threads, NULL, 0, 0, label };
+    if (!rc && !(lev0 = sf_calloc(cap0 * NQ, sizeof *lev0)))
+        rc = SF_ENOMEM;
+    if (!rc)
+        rc = sf_mc_run_range(&spec0, 0, n_pilot, &ops0, &ctx, lev0, NULL, err, errlen);
+    double *x = rc ? NULL : sf_malloc(cap0 * sizeof *x);
+    if (!rc && !x)
+        rc = SF_ENOMEM;
+    /* the sizes in stages, each from every sample so far (sf_mlmc_stage) */
+    while (!rc) {
+        /* each level's variance per sample drawn, V_l n_l / m_l (m_l of
+           them usable): the sizes then bound sum V_l / m_l, the estimate's */
+        double v0[NQ], v1[NQ], vf[NQ], vc;
+        size_t m, m0;
+        for (int q = 0; q < NQ && !rc; q++) {
+            rc = pair_vars(pairs, n1, out->det, q, &vc, &v1[q], &vf[q], &m);
+            v1[q] *= m > 1 ? (double)n1 / (double)m : NAN;
+            v0[q] = finite_var(lev0, n0, q, out->det[q], x, &m0);
+            v0[q] *= m0 > 1 ? (double)n0 / (double)m0 : NAN;
+        }
+        if (rc)
+            break;
+        double target[NQ], w0, w1;
+        for (int q = 0; q < NQ; q++)
+            target[q] = tse ? tse[q] * tse[q] : vf[q] / (double)n_plain;
+        sf_mlmc_want(v0, v1, target, NQ, level0_work(&ctx, pairs, n1), mean_work(pairs, n1, 1, 1), &w0, &w1);
+        for (int q = 0; tse && q < NQ; q++)   /* a target whose spread is not known yet: more, to the cap */
+            if (target[q] > 0 && isfinite(target[q]) && !isfinite(v0[q] + v1[q]))
+                w0 = w1 = INFINITY;
+        capped = w0 > (double)cap0 || w1 > (double)n_plain;
+        size_t g1 = sf_mlmc_stage(n1, clampz(w1, n_pilot, n_plain)), g0 = sf_mlmc_stage(n0, clampz(w0, n_pilot, cap0));
+        if (g1 == n1 && g0 == n0)
+            break;
+        if (g1 > n1)
+            rc = sf_mc_run_range(&spec1, n1, g1, &ops1, &ctx, pairs, NULL, err, errlen);
+        if (!rc && g0 > n0)
+            rc = sf_mc_run_range(&spec0, n0, g0, &ops0, &ctx, lev0, NULL, err, errlen);
+        n1 = g1;
+        n0 = g0;
     }
-    if (!rc) {
-        sf_mlmc_sizes(v0, v1, vf, NQ, level0_work(&ctx, pairs, n_pilot), mean_work(pairs, n_pilot, 1, 1), n_plain,
-                      n_pilot, &n0, &n1);
-        rc = sf_mc_run_range(&spec1, n_pilot, n1, &ops1, &ctx, pairs, NULL, err, errlen);
-    }
-    if (!rc && boxes) {
-        rc = sf_mc_run_range(&spec0, n_pilot, n0, &ops0, &ctx, lev0, NULL, err, errlen);
-    } else if (!rc) {
-        spec0.n = n0;
-        if (!(lev0 = sf_calloc(n0 * NQ, sizeof *lev0)))
-            rc = SF_ENOMEM;
-        if (!rc)
-            rc = sf_mc_run(&spec0, &ops0, &ctx, lev0, NULL, err, errlen);
-    }
+    free(x);
     if (!rc && (!(out->qoi = sf_calloc(n1 * NQ, sizeof *out->qoi)) ||
                 !(out->ratio = sf_calloc(n1 * NQ, sizeof *out->ratio)) ||
                 !(out->ml.coarse1 = sf_calloc(n1 * NQ, sizeof *out->ml.coarse1))))
         rc = SF_ENOMEM;
     if (!rc) {   /* the rows: level 1's fine values, plain Monte Carlo's first n1 (same field) */
         out->estimator = mode == ML_SUB ? SF_EST_MLMC_SUB : boxes ? SF_EST_MLMC_BOXES : SF_EST_MLMC;
+        out->stop = !tse ? SF_MCSTOP_FIXED : capped ? SF_MCSTOP_CAP : SF_MCSTOP_TARGET;
         out->n = n1;
         out->ml.coarse0 = lev0;
         lev0 = NULL;
@@ -362,19 +393,26 @@ static int run_levels(const sf_scene *s, size_t n_plain, size_t n_pilot, int thr
 int sf_sweep_run_mlmc(const sf_scene *s, size_t n_plain, size_t n_pilot, int threads, const char *label,
                       sf_sweep_point *out, char *err, size_t errlen)
 {
-    return run_levels(s, n_plain, n_pilot, threads, label, ML_SAME, out, err, errlen);
+    return run_levels(s, n_plain, n_pilot, NULL, threads, label, ML_SAME, out, err, errlen);
 }
 
 int sf_sweep_run_mlmc_boxes(const sf_scene *s, size_t n_plain, size_t n_pilot, int threads, const char *label,
                             sf_sweep_point *out, char *err, size_t errlen)
 {
-    return run_levels(s, n_plain, n_pilot, threads, label, ML_BOXES, out, err, errlen);
+    return run_levels(s, n_plain, n_pilot, NULL, threads, label, ML_BOXES, out, err, errlen);
+}
+
+int sf_mlmc_run_se(const sf_scene *s, int est, const double *tse, size_t n_pilot, size_t n_max, int threads,
+                   const char *label, sf_sweep_point *out, char *err, size_t errlen)
+{
+    int mode = est == SF_EST_MLMC_BOXES ? ML_BOXES : est == SF_EST_MLMC_SUB ? ML_SUB : ML_SAME;
+    return run_levels(s, n_max, n_pilot, tse, threads, label, mode, out, err, errlen);
 }
 
 int sf_sweep_run_mlmc_sub(const sf_scene *s, size_t n_plain, size_t n_pilot, int threads, const char *label,
                           sf_sweep_point *out, char *err, size_t errlen)
 {
-    return run_levels(s, n_plain, n_pilot, threads, label, ML_SUB, out, err, errlen);
+    return run_levels(s, n_plain, n_pilot, NULL, threads, label, ML_SUB, out, err, errlen);
 }
 
 int sf_mlmc_sub_plans(const sf_scene *s, sf_plan *fine, sf_plan *coarse, sf_plan *cdraw, char *err, size_t errlen)

@@ -14,13 +14,25 @@
  * small.
  *
  * Sample sizes (Giles' allocation, N_l ~ sqrt(V_l / C_l)): the first
- * n_pilot pairs give, per ratio, V_0 = Var Q_c, V_1 = Var(Q_f - Q_c) and
- * Var Q_f, and the costs C_0, C_1; the target variance of each ratio
- * mean is Var Q_f / n_plain (plain Monte Carlo's at n_plain), and
+ * n_pilot pairs give, per ratio, V_1 = Var(Q_f - Q_c) and Var Q_f and the
+ * costs C_0, C_1, level 0's first n_pilot samples V_0 (Var Q_c, or on a
+ * derived field the variance of its pairs' means); the target variance
+ * of each ratio mean is Var Q_f / n_plain (plain Monte Carlo's at
+ * n_plain; sweep.h: sf_sweep_run_estimator_se takes a standard error
+ * instead), and
  *   N_l = ceil( sqrt(V_l / C_l) (sqrt(V_0 C_0) + sqrt(V_1 C_1)) / target ),
  * the largest over the ratios, n_pilot <= n1 <= n_plain and
- * n_pilot <= n0 <= SF_MLMC_N0_CAP n_plain.  The pilot pairs are level 1's
- * first (as in Giles' algorithm).
+ * n_pilot <= n0 <= SF_MLMC_N0_CAP n_plain, with each V_l taken per
+ * sample drawn (V_l n_l / m_l where m_l are usable), so that the sizes
+ * bound the estimate's own sum V_l / m_l.  The pilots are the levels'
+ * first samples (as in Giles' algorithm).  The sizes are reached in
+ * stages, as in Giles' algorithm too (sf_mlmc_stage): each stage
+ * recomputes them from every sample so far and at most doubles a level,
+ * so a pilot's noisy
+ * variance (10 pairs of a heavy-tailed ratio) neither commits the whole
+ * run to 4x plain's samples nor stops it at the pilot; the stages stop
+ * when no level asks for more.  Every decision is a function of the
+ * values in index order: the same bits for any thread count.
  *
  * Costs are a work model, not a clock, so that the sizes (and every byte)
  * do not depend on the machine or the thread count: a run's wrench
@@ -48,6 +60,16 @@ extern "C" {
  * stick phase found in one run and missed in the other: ratio > 1). */
 #define SF_MLMC_RTOL 1e-5
 void sf_mlmc_coarse_plan(const sf_plan *fine, sf_plan *coarse);
+
+/* The two levels (est: SF_EST_MLMC, SF_EST_MLMC_BOXES or SF_EST_MLMC_SUB)
+ * at standard-error targets tse[q] (sweep.h: sf_sweep_run_estimator_se,
+ * which checks them). */
+int sf_mlmc_run_se(const sf_scene *s, int est, const double *tse, size_t n_pilot, size_t n_max, int threads,
+                   const char *label, sf_sweep_point *out, char *err, size_t errlen);
+
+/* A stage's size for a level of n samples whose estimate from them asks
+ * for want: want, at most 2 n, never below n. */
+size_t sf_mlmc_stage(size_t n, size_t want);
 
 /* The work model (above), in cell evaluations. */
 #define SF_MLMC_DRAW_WORK_POINT 140.0   /* a circulant or tiled lognormal strip point */
@@ -117,9 +139,16 @@ int sf_mlmc_sub_plans(const sf_scene *s, sf_plan *fine, sf_plan *coarse, sf_plan
 #define SF_MLMC_N0_CAP 4                /* n0 <= 4 n_plain */
 #define SF_MLMC_LEVEL0_STREAM ((size_t)-1)
 
+/* The sizes Giles' rule asks for at target variances target[q] of the
+ * ratio means (above), unclamped; a ratio whose target or variances are
+ * not finite, or target not > 0, asks for none (0). */
+void sf_mlmc_want(const double *v0, const double *v1, const double *target, int nq, double c0, double c1,
+                  double *m0, double *m1);
+
 /* The sample sizes from the pilot's per-ratio variances v0[q], v1[q],
- * vf[q] and the costs c0, c1 (the rule above); a ratio whose variance is
- * not finite and positive sets no size. */
+ * vf[q] (nq <= SF_SWEEP_NQ) and the costs c0, c1 (the rule above, at
+ * target vf[q] / n_plain); a ratio whose variance is not finite and
+ * positive sets no size. */
 void sf_mlmc_sizes(const double *v0, const double *v1, const double *vf, int nq, double c0, double c1,
                    size_t n_plain, size_t n_pilot, size_t *n0, size_t *n1);
 

@@ -241,6 +241,20 @@ int sf_sweep_run_mlmc_sub(const sf_scene *s, size_t n_plain, size_t n_pilot, int
 int sf_sweep_run_antithetic(const sf_scene *s, size_t n_plain, size_t n_pilot, int threads, const char *label,
                             sf_sweep_point *out, char *err, size_t errlen);
 
+/* An estimator's sweep point at standard errors target_se[q] [-] of the
+ * ratio means (q as the QoIs; NaN: no target for that ratio) instead of
+ * plain's variance: est is SF_EST_MLMC, SF_EST_MLMC_BOXES,
+ * SF_EST_MLMC_SUB or SF_EST_ANTITHETIC, sized as that estimator is (a
+ * pilot of n_pilot pairs, then stages), n_max the cap on level 1's pairs
+ * (level 0: SF_MLMC_N0_CAP n_max); a ratio with a target whose variance
+ * cannot be estimated yet (fewer than 2 usable samples) asks for the
+ * caps.  out->stop: SF_MCSTOP_TARGET when no level's size was held at
+ * its cap, SF_MCSTOP_CAP otherwise.  SF_EINVAL
+ * for a target not finite and > 0, none at all, or another estimator. */
+int sf_sweep_run_estimator_se(const sf_scene *s, int est, const double target_se[SF_SWEEP_NQ], size_t n_pilot,
+                              size_t n_max, int threads, const char *label, sf_sweep_point *out, char *err,
+                              size_t errlen);
+
 /* One run of scene s on plan pl and a drawn cof: its QoIs into out and,
  * when work is not NULL, its work [cell evaluations] (wrench evaluations
  * x quadrature cells). */

@@ -393,6 +393,22 @@ static void cv_estimator(void **state)
     sf_sweep_point_free(&b);
 }
 
+/* Where the stages stopped (mlmc.h: sf_mlmc_stage), no level asks for
+ * more: the sizes recomputed from the point's final variances and costs
+ * are within its counts (derived levels: level 0's variance is its own). */
+static void assert_stages_done(const sf_sweep_point *a, size_t n_plain, size_t n_pilot)
+{
+    double v0[SF_SWEEP_NQ], v1[SF_SWEEP_NQ], vf[SF_SWEEP_NQ];
+    for (int q = 0; q < SF_SWEEP_NQ; q++) {
+        v0[q] = a->ml.q[q].var[0];
+        v1[q] = a->ml.q[q].var[1];
+        vf[q] = a->ml.q[q].var_fine;
+    }
+    size_t t0, t1;
+    sf_mlmc_sizes(v0, v1, vf, SF_SWEEP_NQ, a->ml.cost[0], a->ml.cost[1], n_plain, n_pilot, &t0, &t1);
+    assert_true(t0 <= a->ml.n[0] && t1 <= a->ml.n[1]);
+}
+
 /* The two-level estimator: Giles' sizes, the coarse plan, and a point
  * (the same bits on two threads; level 1's fine values are plain Monte
  * Carlo's; its summary columns). */
@@ -413,6 +429,13 @@ static void mlmc_estimator(void **state)
     w1[0] = 100;
     sf_mlmc_sizes(w0, w1, wf, 1, 1, 1, 100, 10, &n0, &n1);   /* level 0 over its cap */
     assert_true(n0 == 400 && n1 == 100);
+    /* stages: at most doubled, never shrunk, the want itself once within 2x */
+    assert_int_equal(sf_mlmc_stage(10, 48), 20);
+    assert_int_equal(sf_mlmc_stage(10, 20), 20);
+    assert_int_equal(sf_mlmc_stage(10, 19), 19);
+    assert_int_equal(sf_mlmc_stage(10, 21), 20);
+    assert_int_equal(sf_mlmc_stage(10, 10), 10);
+    assert_int_equal(sf_mlmc_stage(10, 3), 10);
     /* the coarse plan: half the rings (at least 2), rtol raised; cell
        averages keep their cells (the field's boxes) */
     sf_plan f = { 0 }, c;
@@ -554,16 +577,22 @@ static void anti_estimator(void **state)
     sf_sweep_point p, b, q;
     assert_int_equal(sf_sweep_run_antithetic(&s, 8, 1, 1, NULL, &p, err, sizeof err), SF_EINVAL);
     assert_int_equal(sf_sweep_run_antithetic(&s, 3, 4, 1, NULL, &p, err, sizeof err), SF_EINVAL);
-    assert_int_equal(sf_sweep_run_antithetic(&s, 8, 3, 1, NULL, &p, err, sizeof err), SF_SUCCESS);
-    assert_int_equal(sf_sweep_run_antithetic(&s, 8, 3, 2, NULL, &b, err, sizeof err), SF_SUCCESS);
+    assert_int_equal(sf_sweep_run_antithetic(&s, 40, 3, 1, NULL, &p, err, sizeof err), SF_SUCCESS);
+    assert_int_equal(sf_sweep_run_antithetic(&s, 40, 3, 2, NULL, &b, err, sizeof err), SF_SUCCESS);
     assert_int_equal(sf_sweep_run(&s, p.n, 1, NULL, 0, NULL, &q, err, sizeof err), SF_SUCCESS);
-    assert_true(p.anti.n == p.n && p.n >= 3 && p.n <= 8);
+    assert_true(p.anti.n == p.n && p.n >= 3 && p.n <= 40);
     assert_memory_equal(p.qoi, b.qoi, p.n * SF_SWEEP_NQ * sizeof *p.qoi);
     assert_memory_equal(p.qoi, q.qoi, p.n * SF_SWEEP_NQ * sizeof *p.qoi);
     assert_memory_equal(p.anti.qoi_anti, b.anti.qoi_anti, p.n * SF_SWEEP_NQ * sizeof *p.qoi);
     assert_memory_equal(p.anti.q, b.anti.q, sizeof p.anti.q);
     assert_true(p.anti.cost > p.anti.cost_fine && p.anti.work == (double)p.n * p.anti.cost);
     assert_true(p.estimator == SF_EST_ANTITHETIC && q.estimator == SF_EST_PLAIN);
+    double sp[SF_SWEEP_NQ], sq[SF_SWEEP_NQ];   /* the stages stopped: the size from the final pairs is within n */
+    for (int k = 0; k < SF_SWEEP_NQ; k++) {
+        sp[k] = p.anti.q[k].se * p.anti.q[k].se * (double)p.anti.q[k].m;
+        sq[k] = p.anti.q[k].var_fine;
+    }
+    assert_true(sf_anti_size(sp, sq, SF_SWEEP_NQ, 40, 3) <= p.n);
     for (int k = 0; k < SF_SWEEP_NQ; k++) {
         const sf_sweep_anti *e = &p.anti.q[k];
         assert_true(isfinite(e->mean) && e->se > 0 && e->ci_lo < e->mean && e->mean < e->ci_hi && e->vrf > 0);
@@ -645,14 +674,15 @@ static void boxes_estimator(void **state)
     assert_true(fabs(dp.cof.box - SF_MLMC_BOX * fp.cof.box) < 1e-15 && cp.num.rtol == SF_MLMC_RTOL);
     /* a point, on one and two threads */
     sf_sweep_point a, b;
-    assert_int_equal(sf_sweep_run_mlmc_boxes(&s, 8, 3, 1, NULL, &a, err, sizeof err), SF_SUCCESS);
-    assert_int_equal(sf_sweep_run_mlmc_boxes(&s, 8, 3, 2, NULL, &b, err, sizeof err), SF_SUCCESS);
+    assert_int_equal(sf_sweep_run_mlmc_boxes(&s, 40, 3, 1, NULL, &a, err, sizeof err), SF_SUCCESS);
+    assert_int_equal(sf_sweep_run_mlmc_boxes(&s, 40, 3, 2, NULL, &b, err, sizeof err), SF_SUCCESS);
     assert_true(a.ml.n[0] >= 3 && a.ml.n[1] >= 3 && a.ml.n[0] == b.ml.n[0] && a.ml.n[1] == b.ml.n[1]);
     assert_memory_equal(a.qoi, b.qoi, a.n * SF_SWEEP_NQ * sizeof *a.qoi);
     assert_memory_equal(a.ml.coarse0, b.ml.coarse0, a.ml.n[0] * SF_SWEEP_NQ * sizeof *a.qoi);
     assert_memory_equal(a.ml.q, b.ml.q, sizeof a.ml.q);
     assert_true(a.ml.cost[0] < a.ml.cost_fine && isfinite(a.ml.q[0].mean) && a.ml.q[0].se > 0);
     assert_int_equal(a.estimator, SF_EST_MLMC_BOXES);
+    assert_stages_done(&a, 40, 3);
     sf_sweep_point_free(&a);
     sf_sweep_point_free(&b);
     assert_int_equal(sf_sweep_run_mlmc_boxes(&s, 8, 1, 1, NULL, &a, err, sizeof err), SF_EINVAL);
@@ -719,8 +749,8 @@ static void sub_estimator(void **state)
     s.T = 14;
     s.t_skip = 4;
     sf_sweep_point a, b, p;
-    assert_int_equal(sf_sweep_run_mlmc_sub(&s, 8, 3, 1, NULL, &a, err, sizeof err), SF_SUCCESS);
-    assert_int_equal(sf_sweep_run_mlmc_sub(&s, 8, 3, 2, NULL, &b, err, sizeof err), SF_SUCCESS);
+    assert_int_equal(sf_sweep_run_mlmc_sub(&s, 40, 3, 1, NULL, &a, err, sizeof err), SF_SUCCESS);
+    assert_int_equal(sf_sweep_run_mlmc_sub(&s, 40, 3, 2, NULL, &b, err, sizeof err), SF_SUCCESS);
     assert_int_equal(sf_sweep_run(&s, a.n, 1, NULL, 0, NULL, &p, err, sizeof err), SF_SUCCESS);
     assert_true(a.estimator == SF_EST_MLMC_SUB && a.ml.n[0] == b.ml.n[0] && a.ml.n[1] == b.ml.n[1]);
     assert_memory_equal(a.qoi, b.qoi, a.n * SF_SWEEP_NQ * sizeof *a.qoi);
@@ -728,9 +758,58 @@ static void sub_estimator(void **state)
     assert_memory_equal(a.ml.coarse0, b.ml.coarse0, a.ml.n[0] * SF_SWEEP_NQ * sizeof *a.qoi);
     assert_memory_equal(a.ml.q, b.ml.q, sizeof a.ml.q);
     assert_string_equal(sf_sweep_estimator_name(a.estimator), "mlmc-sub");
+    assert_stages_done(&a, 40, 3);
     sf_sweep_point_free(&a);
     sf_sweep_point_free(&b);
     sf_sweep_point_free(&p);
+}
+
+/* The estimators at a target standard error (sf_sweep_run_estimator_se):
+ * refusals; a point that meets its targets says so, and its standard
+ * errors are within them (the sizes' rule: the final variances over the
+ * final sizes); a tighter target takes more; one beyond the cap says
+ * cap. */
+static void estimator_targets(void **state)
+{
+    (void)state;
+    sf_scene s;
+    sf_scene_default(&s);
+    s.cof = SF_COF_FIELD;
+    s.l = s.R;
+    s.T = 14;
+    s.t_skip = 4;
+    char err[200];
+    sf_sweep_point a, b;
+    double none[SF_SWEEP_NQ] = { NAN, NAN, NAN }, neg[SF_SWEEP_NQ] = { 0.01, -1, NAN };
+    double tse[SF_SWEEP_NQ] = { 0.1, 0.1, 0.1 }, tight[SF_SWEEP_NQ] = { 0.06, 0.06, 0.06 };
+    assert_int_equal(sf_sweep_run_estimator_se(&s, SF_EST_ANTITHETIC, none, 3, 40, 1, NULL, &a, err, sizeof err),
+                     SF_EINVAL);
+    assert_non_null(strstr(err, "no ratio has a target"));
+    assert_int_equal(sf_sweep_run_estimator_se(&s, SF_EST_MLMC, NULL, 3, 40, 1, NULL, &a, err, sizeof err), SF_EINVAL);
+    assert_int_equal(sf_sweep_run_estimator_se(&s, SF_EST_ANTITHETIC, neg, 3, 40, 1, NULL, &a, err, sizeof err),
+                     SF_EINVAL);
+    assert_non_null(strstr(err, "finite and > 0"));
+    assert_int_equal(sf_sweep_run_estimator_se(&s, SF_EST_CV, tse, 3, 40, 1, NULL, &a, err, sizeof err), SF_EINVAL);
+    assert_non_null(strstr(err, "control-variate"));
+    assert_int_equal(sf_sweep_run_estimator_se(&s, SF_EST_ANTITHETIC, tse, 3, 60, 1, NULL, &a, err, sizeof err),
+                     SF_SUCCESS);
+    assert_int_equal(sf_sweep_run_estimator_se(&s, SF_EST_ANTITHETIC, tight, 3, 60, 2, NULL, &b, err, sizeof err),
+                     SF_SUCCESS);
+    assert_true(a.stop == SF_MCSTOP_TARGET && b.stop == SF_MCSTOP_TARGET && b.n > a.n);
+    for (int q = 0; q < SF_SWEEP_NQ; q++)
+        assert_true(a.anti.q[q].se <= tse[q] && b.anti.q[q].se <= tight[q]);
+    sf_sweep_point_free(&a);
+    sf_sweep_point_free(&b);
+    assert_int_equal(sf_sweep_run_estimator_se(&s, SF_EST_MLMC_SUB, tse, 3, 60, 1, NULL, &a, err, sizeof err),
+                     SF_SUCCESS);
+    assert_true(a.stop == SF_MCSTOP_TARGET && a.estimator == SF_EST_MLMC_SUB);
+    for (int q = 0; q < SF_SWEEP_NQ; q++)
+        assert_true(a.ml.q[q].se <= tse[q]);
+    sf_sweep_point_free(&a);
+    assert_int_equal(sf_sweep_run_estimator_se(&s, SF_EST_MLMC, tight, 3, 4, 1, NULL, &a, err, sizeof err),
+                     SF_SUCCESS);
+    assert_true(a.stop == SF_MCSTOP_CAP && a.estimator == SF_EST_MLMC && a.ml.n[1] <= 4);
+    sf_sweep_point_free(&a);
 }
 
 /* The refusals of the derived fields and the antithetic (cof.h) and of
@@ -855,6 +934,7 @@ int main(void)
         cmocka_unit_test(boxes_estimator),
         cmocka_unit_test(sub_estimator),
         cmocka_unit_test(derived_refusals),
+        cmocka_unit_test(estimator_targets),
     };
     return cmocka_run_group_tests_name("montecarlo", tests, NULL, NULL);
 }

@@ -815,6 +815,31 @@ static int chk_anti_pairs(const sf_case *c, sf_result *r)
  * degrees of freedom (the estimator's own: two levels' df, the pairs'
  * m - 1), two-sided p-value at alpha / (3 K); each estimator's sizes and
  * work, and the variance reduction factor, reported. */
+/* Point k of case c's sweep: the scene s and plain Monte Carlo's scene
+ * sp on independent streams (seed sf_mc_seed(seed, 1) xor 1). */
+static int point_scenes(const sf_case *c, size_t k, sf_scene *s, sf_scene *sp, char *err, size_t errlen)
+{
+    *s = c->scene;
+    int rc = sf_sweep_set(s, c->spec.sweep_param, c->spec.sweep.v[k], err, errlen);
+    *sp = *s;
+    sp->seed = sf_mc_seed(s->seed, 1) ^ 1;
+    return rc;
+}
+
+/* Welch's t of an estimator's ratio mean (its se, df) against plain's
+ * (pl), two-sided, at alpha: one row. */
+static void welch_row(sf_result *r, double lr, int q, const char *name, double mean, double se, double df,
+                      const sf_sweep_stat *pl, double alpha)
+{
+    double pdf = (double)pl->n_used - 1, a = se * se, b = pl->se * pl->se;
+    double den = (a > 0 ? a * a / df : 0) + (b > 0 ? b * b / pdf : 0);
+    double t = (mean - pl->mean) / sqrt(a + b), nu = den > 0 ? (a + b) * (a + b) / den : NAN;
+    char what[200];
+    snprintf(what, sizeof what, "l/R = %g: %s ratio mean, %s %.5f = plain %.5f (Welch t test, %.0f df)", lr,
+             ratio_name[q], name, mean, pl->mean, nu);
+    sf_check_pvalue(r, what, 2 * gsl_cdf_tdist_Q(fabs(t), nu), alpha, pl->n_used);
+}
+
 static int estimator_unbiased(const sf_case *c, sf_result *r, int est)
 {
     const sf_scene *s0 = &c->scene;
@@ -832,14 +857,10 @@ static int estimator_unbiased(const sf_case *c, sf_result *r, int est)
                        : est == EST_SUB   ? "every 2nd node"
                                           : "antithetic";
     for (size_t k = 0; k < K && !rc; k++) {
-        sf_scene s = *s0, sp;
-        sf_sweep_point e, p;
+        sf_scene s, sp;
+        sf_sweep_point e = { 0 }, p = { 0 };
         char err[256] = "";
-        memset(&p, 0, sizeof p);
-        memset(&e, 0, sizeof e);
-        rc = sf_sweep_set(&s, c->spec.sweep_param, c->spec.sweep.v[k], err, sizeof err);
-        sp = s;
-        sp.seed = sf_mc_seed(s.seed, 1) ^ 1;
+        rc = point_scenes(c, k, &s, &sp, err, sizeof err);
         if (!rc)
             rc = est_run(&s, est, s0->samples, &e, err, sizeof err);
         if (!rc)
@@ -856,13 +877,7 @@ static int estimator_unbiased(const sf_case *c, sf_result *r, int est)
             const sf_sweep_anti *an = &e.anti.q[q];
             double mean = ml ? e_ml->mean : an->mean, se = ml ? e_ml->se : an->se;
             double df = ml ? e_ml->df : (double)an->m - 1, pse = p.rstat[q].se;
-            double pdf = (double)p.rstat[q].n_used - 1, a = se * se, b = pse * pse;
-            double den = (a > 0 ? a * a / df : 0) + (b > 0 ? b * b / pdf : 0);
-            double t = (mean - p.rstat[q].mean) / sqrt(a + b), nu = den > 0 ? (a + b) * (a + b) / den : NAN;
-            char what[200];
-            snprintf(what, sizeof what, "l/R = %g: %s ratio mean, %s %.5f = plain %.5f (Welch t test, %.0f df)",
-                     lr[k], ratio_name[q], name, mean, p.rstat[q].mean, nu);
-            sf_check_pvalue(r, what, 2 * gsl_cdf_tdist_Q(fabs(t), nu), alpha, p.rstat[q].n_used);
+            welch_row(r, lr[k], q, name, mean, se, df, &p.rstat[q], alpha);
             vrf[k * 3 + q] = ml ? e_ml->vrf : an->vrf;
             if (ml)
                 used += (size_t)snprintf(tab + used, sizeof tab - used,
@@ -907,6 +922,88 @@ static int estimator_unbiased(const sf_case *c, sf_result *r, int est)
     return rc;
 }
 
+/* The estimators at a target standard error (sweep.h:
+ * sf_sweep_run_estimator_se), per point with `--estimator auto`'s
+ * choice: plain Monte Carlo's standard errors at s->samples realisations
+ * on independent streams are the targets, the cap 4 x samples.  (1) The
+ * point stopped at its targets, not its cap; (2) exact: each ratio's
+ * standard error is within its target (the sizes' rule bounds sum V_l /
+ * m_l by the target once every level holds what the final variances ask
+ * for: a property of the values, to round-off); (3) Welch's t of the
+ * estimate against plain's mean, alpha over the 3 K tests. */
+static int chk_estimator_target(const sf_case *c, sf_result *r)
+{
+    const sf_scene *s0 = &c->scene;
+    size_t K = c->spec.sweep.n;
+    if (!K || !*c->spec.sweep_param)
+        return SF_EINVAL;
+    double alpha = c->spec.alpha / (double)(3 * K);
+    double *lrs = check_alloc(K * sizeof *lrs), *ratio = check_alloc(3 * K * sizeof *ratio);
+    char tab[4000];
+    size_t used = 0;
+    int rc = SF_SUCCESS;
+    for (size_t k = 0; k < K && !rc; k++) {
+        sf_scene s, sp;
+        sf_sweep_point e = { 0 }, p = { 0 };
+        char err[256] = "";
+        rc = point_scenes(c, k, &s, &sp, err, sizeof err);
+        int est = rc ? -1 : sf_sweep_estimator_auto(&s);
+        if (!rc)
+            rc = sf_sweep_run(&sp, s0->samples, 0, NULL, 0, NULL, &p, err, sizeof err);
+        double tse[SF_SWEEP_NQ];
+        for (int q = 0; q < SF_SWEEP_NQ && !rc; q++)
+            tse[q] = p.rstat[q].se;
+        if (!rc)
+            rc = sf_sweep_run_estimator_se(&s, est, tse, ML_PILOT, 4 * s0->samples, 0, NULL, &e, err, sizeof err);
+        if (rc) {
+            sf_note(r, "**Sweep failed at %s = %g:** %s\n", c->spec.sweep_param, c->spec.sweep.v[k], err);
+            sf_sweep_point_free(&e);
+            sf_sweep_point_free(&p);
+            break;
+        }
+        double lr = lrs[k] = s.l / s.R;
+        const char *name = sf_sweep_estimator_name(est);
+        char what[200], found[120];
+        snprintf(what, sizeof what, "l/R = %g (%s): stopped at its targets, not its cap", lr, name);
+        snprintf(found, sizeof found, "stop = %s", sf_mcstop_reason(e.stop));
+        sf_check_true(r, what, e.stop == SF_MCSTOP_TARGET, found);
+        int anti = est == SF_EST_ANTITHETIC;
+        for (int q = 0; q < 3; q++) {
+            const sf_sweep_ml *m = &e.ml.q[q];
+            const sf_sweep_anti *an = &e.anti.q[q];
+            double mean = anti ? an->mean : m->mean, se = anti ? an->se : m->se;
+            double df = anti ? (double)an->m - 1 : m->df, pse = p.rstat[q].se;
+            snprintf(what, sizeof what, "l/R = %g: %s ratio, the estimate's se / its target (plain's se) - 1",
+                     lr, ratio_name[q]);
+            sf_check_le(r, what, se / tse[q] - 1, 1e-12);
+            ratio[q * K + k] = se / tse[q];
+            welch_row(r, lr, q, name, mean, se, df, &p.rstat[q], alpha);
+            used += (size_t)snprintf(tab + used, sizeof tab - used, "| %g | %s | %s | %.5f +- %.5f | %.5f +- %.5f | "
+                                     "%zu / %zu |\n", lr, name, ratio_name[q], p.rstat[q].mean, pse, mean, se,
+                                     anti ? e.anti.n : e.ml.n[0], anti ? e.anti.n : e.ml.n[1]);
+        }
+        sf_sweep_point_free(&e);
+        sf_sweep_point_free(&p);
+    }
+    if (!rc)
+        sf_note(r, "Plain Monte Carlo: %zu realisations per point on independent streams, its standard errors the "
+                   "estimator's targets (a pilot of %d, the cap %zu; seed %lu). Ratio means (+- standard error) and "
+                   "the sizes (two levels: n0 / n1; antithetic: pairs):\n\n"
+                   "| l/R | estimator | QoI | plain | estimator | sizes |\n|---|---|---|---|---|---|\n%s\n",
+                s0->samples, ML_PILOT, 4 * s0->samples, s0->seed, tab);
+    if (!rc) {
+        sf_plot *pl = sf_result_plot(r, "se", "Estimators at plain Monte Carlo's standard errors", "l/R [-]",
+                                     "standard error / its target [-]");
+        sf_plot_log(pl, 1, 0);
+        for (int q = 0; q < 3; q++)
+            sf_plot_series(pl, ratio_name[q], SF_STYLE_LINESPOINTS, K, lrs, ratio + q * K);
+        sf_plot_hline(pl, "target", 1);
+    }
+    free(lrs);
+    free(ratio);
+    return rc;
+}
+
 static int chk_mlmc_unbiased(const sf_case *c, sf_result *r) { return estimator_unbiased(c, r, EST_MLMC); }
 static int chk_anti_unbiased(const sf_case *c, sf_result *r) { return estimator_unbiased(c, r, EST_ANTI); }
 static int chk_boxes_unbiased(const sf_case *c, sf_result *r) { return estimator_unbiased(c, r, EST_BOXES); }
@@ -933,6 +1030,9 @@ const sf_check_def sf_checks_mcstop[] = {
       "antithetic field obeys ln a + ln b = 2 mu_g (cell averages: a + b = 2 mu_mean)" },
     { "mc_anti_unbiased", chk_anti_unbiased,
       "antithetic pairs: its ratio means equal plain Monte Carlo's on independent streams; pairs, rho, reduction" },
+    { "mc_estimator_target", chk_estimator_target,
+      "estimators at a target standard error: they stop at it, their se is within it, their means equal plain "
+      "Monte Carlo's on independent streams" },
     { "mc_cv_unbiased", chk_cv_unbiased,
       "control variate: the companion's mean is mu_mean, the estimator is the regression one, its reduction" },
     { "mc_stein_coverage", chk_stein_coverage,
