@@ -810,6 +810,39 @@ static void estimator_targets(void **state)
                      SF_SUCCESS);
     assert_true(a.stop == SF_MCSTOP_CAP && a.estimator == SF_EST_MLMC && a.ml.n[1] <= 4);
     sf_sweep_point_free(&a);
+    double inf[SF_SWEEP_NQ] = { INFINITY, 0.1, 0.1 };
+    assert_int_equal(sf_sweep_run_estimator_se(&s, SF_EST_MLMC, inf, 3, 40, 1, NULL, &a, err, sizeof err), SF_EINVAL);
+    /* the sizes' rule: a ratio with a target not finite and > 0, or a
+       variance not finite and >= 0, asks for none */
+    double t5[5] = { 0, INFINITY, 0.01, 0.01, 0.01 }, v05[5] = { 1, 1, -1, 1, INFINITY }, v15[5] = { 1, 1, 1, -1, 1 };
+    double m0, m1;
+    sf_mlmc_want(v05, v15, t5, 5, 1, 1, &m0, &m1);
+    assert_true(m0 == 0 && m1 == 0);
+    sf_mlmc_want(v15, v15, t5 + 2, 1, 1, 1, &m0, &m1);   /* V0 = V1 = 1, C = 1, target 0.01 */
+    assert_true(m0 == 200 && m1 == 200);
+    double vp4[4] = { 1, 1, -1, INFINITY };
+    assert_true(sf_anti_want(vp4, t5, 4) == 0 && sf_anti_want(vp4, t5 + 2, 1) == 100);
+    /* one variable per realisation, T = 14 s: some pairs form no PV_x; a
+       ratio whose spread is not known asks for the cap */
+    s.cof = SF_COF_VARIABLE;
+    assert_int_equal(sf_sweep_run_estimator_se(&s, SF_EST_ANTITHETIC, tse, 3, 3, 1, NULL, &a, err, sizeof err),
+                     SF_SUCCESS);
+    assert_true(a.stop == SF_MCSTOP_CAP && a.n == 3);
+    sf_sweep_point_free(&a);
+    assert_int_equal(sf_sweep_run_estimator_se(&s, SF_EST_ANTITHETIC, tse, 3, 40, 1, NULL, &a, err, sizeof err),
+                     SF_SUCCESS);
+    assert_true(a.n > 3);
+    sf_sweep_point_free(&a);
+    assert_int_equal(sf_sweep_run_estimator_se(&s, SF_EST_MLMC, tse, 3, 3, 1, NULL, &a, err, sizeof err), SF_SUCCESS);
+    assert_true(a.ml.n[1] == 3);
+    sf_sweep_point_free(&a);
+    /* boxes of boxes at a target (l/R = 0.03: the plan's cell averages) */
+    s.cof = SF_COF_FIELD;
+    s.l = 0.015;
+    assert_int_equal(sf_sweep_run_estimator_se(&s, SF_EST_MLMC_BOXES, tse, 3, 8, 1, NULL, &a, err, sizeof err),
+                     SF_SUCCESS);
+    assert_true(a.estimator == SF_EST_MLMC_BOXES && a.stop != SF_MCSTOP_FIXED);
+    sf_sweep_point_free(&a);
 }
 
 /* The refusals of the derived fields and the antithetic (cof.h) and of
