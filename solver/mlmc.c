@@ -335,7 +335,8 @@ static int run_levels(const sf_scene *s, size_t n_plain, size_t n_pilot, const d
         double v0[NQ], v1[NQ], vf[NQ], vc;
         size_t m, m0;
         for (int q = 0; q < NQ && !rc; q++) {
-            rc = pair_vars(pairs, n1, out->det, q, &vc, &v1[q], &vf[q], &m);
+            if ((rc = pair_vars(pairs, n1, out->det, q, &vc, &v1[q], &vf[q], &m)))
+                break;   /* m is not set */
             v1[q] *= m > 1 ? (double)n1 / (double)m : NAN;
             v0[q] = finite_var(lev0, n0, q, out->det[q], x, &m0);
             v0[q] *= m0 > 1 ? (double)n0 / (double)m0 : NAN;
