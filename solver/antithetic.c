@@ -15,8 +15,9 @@
 
 enum { NQ = SF_SWEEP_NQ };
 /* a pair's values: QoIs of G, QoIs of -G, a draw's work, the draws a
- * pair makes (1, or 2 for a tiled window: it makes its columns as it
- * slides, in each run), each run's work */
+ * pair makes (1; a tiled window: 1 plus the share of its columns the
+ * partner made afresh, those off the first window's path), each run's
+ * work */
 enum { A_ANTI = NQ, A_DRAW = 2 * NQ, A_NDRAW, A_W0, A_W1, A_OUT };
 
 double sf_anti_want(const double *vpair, const double *target, int nq)
@@ -47,6 +48,7 @@ static int realise_pair(void *ws, size_t i, gsl_rng *rng, double *out)
     (void)i;
     sf_mlmc_ws *m = ws;
     sf_cof *cof, *anti = NULL;
+    sf_cof_plan_keep_columns(m->w.plan, 1);   /* a tiled pair: one draw, not two */
     int rc = sf_cof_plan_draw(m->w.plan, rng, &cof);
     if (rc)
         return rc;
@@ -56,7 +58,9 @@ static int realise_pair(void *ws, size_t i, gsl_rng *rng, double *out)
     if (!rc)
         rc = sf_sweep_solve(m->w.s, m->w.pl, anti, out + A_ANTI, &out[A_W1]);
     out[A_DRAW] = m->draw;
-    out[A_NDRAW] = sf_cof_window_margin(cof) > 0 ? 2 : 1;
+    /* a tiled window's columns: the partner's made afresh, over the first's */
+    size_t made = sf_cof_columns_made(cof);
+    out[A_NDRAW] = anti && sf_cof_window_margin(cof) > 0 && made ? 1 + (double)sf_cof_columns_made(anti) / (double)made : 1;
     sf_cof_free(cof);
     sf_cof_free(anti);
     return rc;

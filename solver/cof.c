@@ -15,6 +15,21 @@
 #include <string.h>
 #include <gsl/gsl_randist.h>
 
+/* A tiled field's Gaussian columns kept for its antithetic partner
+ * (sf_cof_plan_antithetic): the lattice columns [lo, lo + ncol), n values
+ * each (column-major), have[k] set once made.  Shared by the two windows
+ * of a pair (refs), so the partner's window copies the columns the first
+ * one made instead of making them again: the same bits, one draw.  At
+ * most COLS_MAX_VALUES values: beyond, columns are made as without it. */
+#define COLS_MAX_VALUES ((size_t)1 << 22)
+typedef struct {
+    long lo;
+    size_t ncol, n;
+    double *g;
+    unsigned char *have;
+    int refs;
+} col_store;
+
 struct sf_cof {
     sf_cof_kind kind;
     double mu;                 /* uniform / variable value */
@@ -37,7 +52,68 @@ struct sf_cof {
     unsigned long slides;
     size_t columns_made;
     double box;                /* > 0: the values are cell averages over boxes of this side [m] (cellavg.h) */
+    col_store *cols;           /* a tiled pair's shared columns (NULL: none kept) */
 };
+
+static void cols_release(col_store *st)
+{
+    if (st && --st->refs == 0) {
+        free(st->g);
+        free(st->have);
+        free(st);
+    }
+}
+
+/* 1 when every lattice column of [i, i + cnt) is kept */
+static int cols_have(const col_store *st, long i, size_t cnt)
+{
+    if (!st || i < st->lo || i - st->lo + (long)cnt > (long)st->ncol)
+        return 0;
+    for (size_t k = 0; k < cnt; k++)
+        if (!st->have[(size_t)(i - st->lo) + k])
+            return 0;
+    return 1;
+}
+
+/* Keep lattice columns [i, i + cnt) of the Gaussian values g (grid
+ * layout: row j at g + ld j): the range grows to hold them, up to
+ * COLS_MAX_VALUES; a failed growth keeps nothing more (not an error:
+ * the partner makes its columns). */
+static void cols_put(col_store *st, long i, size_t cnt, const double *g, size_t ld)
+{
+    long lo = st->ncol ? (i < st->lo ? i : st->lo) : i;
+    long hi = st->ncol ? (i + (long)cnt > st->lo + (long)st->ncol ? i + (long)cnt : st->lo + (long)st->ncol)
+                       : i + (long)cnt;
+    size_t nc = (size_t)(hi - lo);
+    if (nc > COLS_MAX_VALUES / st->n)
+        return;
+    if (nc != st->ncol) {
+        double *ng = sf_malloc(nc * st->n * sizeof *ng);
+        unsigned char *nh = sf_calloc(nc, 1);
+        if (!ng || !nh) {
+            free(ng);
+            free(nh);
+            return;
+        }
+        if (st->ncol) {
+            size_t off = (size_t)(st->lo - lo);
+            memcpy(ng + off * st->n, st->g, st->ncol * st->n * sizeof *ng);
+            memcpy(nh + off, st->have, st->ncol);
+        }
+        free(st->g);
+        free(st->have);
+        st->g = ng;
+        st->have = nh;
+        st->lo = lo;
+        st->ncol = nc;
+    }
+    for (size_t k = 0; k < cnt; k++) {
+        double *col = st->g + ((size_t)(i - st->lo) + k) * st->n;
+        for (size_t j = 0; j < st->n; j++)
+            col[j] = g[k + ld * j];
+        st->have[(size_t)(i - st->lo) + k] = 1;
+    }
+}
 
 static sf_cof *cof_new(sf_cof_kind kind)
 {
@@ -115,6 +191,7 @@ void sf_cof_free(sf_cof *c)
         return;
     free(c->grid);
     sf_tiles_free(c->tiles);
+    cols_release(c->cols);
     free(c);
 }
 
@@ -138,15 +215,26 @@ size_t sf_cof_columns_made(const sf_cof *c) { return c->columns_made; }
  * Gaussian values, then the Nataf map pointwise. */
 static int window_make(sf_cof *c, long i, size_t c0, size_t cnt)
 {
-    int rc = sf_tiles_fill(c->tiles, i, cnt, c->grid + c0, c->m);
-    if (rc)
-        return rc;
+    if (cols_have(c->cols, i, cnt)) {   /* made by the pair's other window */
+        const col_store *st = c->cols;
+        for (size_t k = 0; k < cnt; k++) {
+            const double *col = st->g + ((size_t)(i - st->lo) + k) * st->n;
+            for (size_t j = 0; j < c->n; j++)
+                c->grid[c0 + k + c->m * j] = col[j];
+        }
+    } else {
+        int rc = sf_tiles_fill(c->tiles, i, cnt, c->grid + c0, c->m);
+        if (rc)
+            return rc;
+        if (c->cols)
+            cols_put(c->cols, i, cnt, c->grid + c0, c->m);
+        c->columns_made += cnt;
+    }
     for (size_t j = 0; j < c->n; j++) {
         double *g = c->grid + c0 + c->m * j;
         for (size_t k = 0; k < cnt; k++)
             g[k] = sf_lognormal_map(&c->ln, c->sign * g[k]);
     }
-    c->columns_made += cnt;
     return SF_SUCCESS;
 }
 
@@ -265,7 +353,10 @@ struct sf_cof_plan {
     sf_cellavg ca;             /* cell averages: the box-averaged covariance */
     sf_field *cfield;          /* cell averages: its Gaussian field (circulant embedding) */
     int truncated;             /* the embedding reached pad_cap (SF_ETRUNC): sf_cof_plan_truncated */
+    int keep_cols;             /* tiles: each window keeps its columns for an antithetic partner */
 };
+
+void sf_cof_plan_keep_columns(sf_cof_plan *p, int on) { p->keep_cols = !!on; }
 
 void sf_cof_strip_bounds(const sf_scene *s, double *B0, double *W0) { sf_plan_strip_bounds(s, B0, W0); }
 double sf_cof_strip_points(const sf_scene *s, double h) { return sf_plan_strip_points(s, h); }
@@ -369,7 +460,9 @@ struct sf_field *sf_cof_plan_cell_field(const sf_cof_plan *p) { return p->cfield
 
 /* A tiled realisation of key `key` (sign -1: of -G, the antithetic);
  * the window starts over the disc at the origin. */
-static int window_of_key(const sf_cof_plan *p, uint64_t key, double sign, sf_cof **out)
+/* cols: the store to share (the pair's first window's), or NULL: a new
+ * one when the plan keeps columns, else none */
+static int window_of_key(const sf_cof_plan *p, uint64_t key, double sign, col_store *cols, sf_cof **out)
 {
     const sf_cof_plan_info *in = &p->info;
     sf_cof *c = cof_new(SF_COF_FIELD);
@@ -389,6 +482,12 @@ static int window_of_key(const sf_cof_plan *p, uint64_t key, double sign, sf_cof
     int rc = sf_tiles_alloc(&ts, &c->tiles);
     if (!rc && !(c->grid = sf_malloc(c->m * c->n * sizeof *c->grid)))
         rc = SF_ENOMEM;
+    if (!rc && !cols && p->keep_cols && (cols = sf_calloc(1, sizeof *cols)))
+        cols->n = c->n;   /* no store (out of memory): columns made as without one */
+    if (!rc && cols) {
+        c->cols = cols;
+        cols->refs++;
+    }
     if (!rc) {
         sf_tiles_set_key(c->tiles, key);
         rc = sf_cof_follow(c, -p->R - in->margin, p->R + in->margin);
@@ -409,7 +508,7 @@ static int draw_window(const sf_cof_plan *p, gsl_rng *rng, sf_cof **out)
         return SF_EINVAL;
     uint64_t key = (uint64_t)gsl_rng_get(rng) << 32;
     key ^= (uint64_t)gsl_rng_get(rng);
-    return window_of_key(p, key, 1, out);
+    return window_of_key(p, key, 1, NULL, out);
 }
 
 int sf_cof_plan_draw(sf_cof_plan *p, gsl_rng *rng, sf_cof **out)
@@ -475,7 +574,7 @@ int sf_cof_plan_antithetic(const sf_cof_plan *p, const sf_cof *c, sf_cof **out)
     }
     case SF_COF_FIELD: {
         if (c->tiles)   /* the same key, the Gaussian values negated */
-            return window_of_key(p, c->key, -c->sign, out);
+            return window_of_key(p, c->key, -c->sign, c->cols, out);
         sf_cof *a;
         int rc = grid_new(c->m, c->n, c->x0, c->y0, c->dx, c->dy, &a);
         if (rc)

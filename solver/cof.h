@@ -166,7 +166,8 @@ double sf_cof_window_margin(const sf_cof *c);
 /* The largest mu_s held (uniform: mu_s). */
 double sf_cof_max(const sf_cof *c);
 /* Grid points held (0 for a uniform COF); slides so far; lattice columns
- * made (the first fill included). */
+ * made (the first fill included; not those copied from an antithetic
+ * partner's kept columns, sf_cof_plan_keep_columns). */
 size_t sf_cof_points_held(const sf_cof *c);
 unsigned long sf_cof_slides(const sf_cof *c);
 /* sf_cof_grid_view() (above) gives a window's values too: valid until
@@ -222,10 +223,16 @@ int sf_cof_plan_draw(sf_cof_plan *p, gsl_rng *rng, sf_cof **out);
  * lognormal strip: exp(2 mu_g) / mu at each node; cell averages:
  * 2 mubar - mu; tiles: the same key, -G; one variable: exp(2 mu_g) / mu;
  * uniform: itself).  -G has G's law, so the antithetic is a realisation
- * of the same model, drawn at no cost of the generator (tiles make their
- * columns again as the window slides).  SF_EINVAL for a COF of another
- * kind or generator than p's. */
+ * of the same model, drawn at no cost of the generator (tiles: the
+ * partner window copies the Gaussian columns c made, and has made, when
+ * p keeps columns, and makes the others again as it slides).  SF_EINVAL
+ * for a COF of another kind or generator than p's. */
 int sf_cof_plan_antithetic(const sf_cof_plan *p, const sf_cof *c, sf_cof **out);
+
+/* Tiles: each window p draws from now on keeps the Gaussian columns it
+ * makes (at most 2^22 values) for its antithetic partner, which shares
+ * them (on: 1; off: 0).  The values are the same bits either way. */
+void sf_cof_plan_keep_columns(sf_cof_plan *p, int on);
 /* Boxes of boxes (cell averages only, cellavg.h).  The average of the
  * field over a box of side b h is the mean of the b^2 averages over the
  * boxes of side h that tile it, and the covariance is linear in the

@@ -141,6 +141,57 @@ static void plan_refusals(void **state)
     gsl_rng_free(rng);
 }
 
+/* An antithetic pair of tiled windows shares the columns the first made
+ * (sf_cof_plan_keep_columns): the partner follows a path the first went
+ * along and then beyond; its values are the same bits as a partner that
+ * made every column itself, and it made only the columns off the first's
+ * path. */
+static void window_kept_columns(void **state)
+{
+    (void)state;
+    sf_scene s;
+    sf_test_tiled_scene(&s);
+    sf_cof_plan *p;
+    assert_int_equal(sf_cof_plan_alloc(&s, &p, NULL, 0), SF_SUCCESS);
+    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+    sf_cof *g[2], *a[2];
+    for (int keep = 0; keep < 2; keep++) {
+        gsl_rng_set(rng, 7);
+        sf_cof_plan_keep_columns(p, keep);
+        assert_int_equal(sf_cof_plan_draw(p, rng, &g[keep]), SF_SUCCESS);
+        assert_int_equal(sf_cof_plan_antithetic(p, g[keep], &a[keep]), SF_SUCCESS);
+    }
+    double x0, dx, span;
+    size_t m;
+    assert_int_equal(sf_cof_grid_view(g[1], &m, NULL, &x0, NULL, &dx, NULL, NULL), SF_SUCCESS);
+    span = dx * (double)(m - 1);
+    for (int keep = 0; keep < 2; keep++)   /* the first window's path: 3 widths towards +x */
+        for (int k = 1; k <= 12; k++)
+            assert_int_equal(sf_cof_follow(g[keep], x0 + 0.25 * k * span, x0 + 0.25 * k * span + 0.5 * span),
+                             SF_SUCCESS);
+    size_t made_g = sf_cof_columns_made(g[1]);
+    for (int k = 1; k <= 16; k++)   /* the partner's: the same, then a width beyond */
+        for (int keep = 0; keep < 2; keep++) {
+            assert_int_equal(sf_cof_follow(a[keep], x0 + 0.25 * k * span, x0 + 0.25 * k * span + 0.5 * span),
+                             SF_SUCCESS);
+            size_t mm, nn;
+            const double *u, *v;
+            assert_int_equal(sf_cof_grid_view(a[0], &mm, &nn, NULL, NULL, NULL, NULL, &u), SF_SUCCESS);
+            assert_int_equal(sf_cof_grid_view(a[1], NULL, NULL, NULL, NULL, NULL, NULL, &v), SF_SUCCESS);
+            if (keep)
+                assert_memory_equal(u, v, mm * nn * sizeof *u);
+        }
+    size_t made_a = sf_cof_columns_made(a[1]);
+    assert_true(made_a > 0 && made_a < made_g && made_a < sf_cof_columns_made(a[0]));
+    for (int keep = 0; keep < 2; keep++) {
+        sf_cof_free(g[keep]);   /* the partner keeps the shared columns alive */
+        assert_int_equal(sf_cof_follow(a[keep], x0, x0 + 0.5 * span), SF_SUCCESS);
+        sf_cof_free(a[keep]);
+    }
+    sf_cof_plan_free(p);
+    gsl_rng_free(rng);
+}
+
 /* The tiled window slides by part of its width in either direction: the
  * columns both positions hold are moved, only the new ones are made, and
  * a lattice node keeps its value. */
@@ -148,10 +199,7 @@ static void window_partial_slides(void **state)
 {
     (void)state;
     sf_scene s;
-    sf_scene_default(&s);
-    s.l = 0.05;
-    s.strip_halfwidth = 0.05;
-    s.cof_generator = SF_COFGEN_TILES;
+    sf_test_tiled_scene(&s);
     sf_cof_plan *p;
     assert_int_equal(sf_cof_plan_alloc(&s, &p, NULL, 0), SF_SUCCESS);
     gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
@@ -720,10 +768,7 @@ static void rk4_window_cap(void **state)
 {
     (void)state;
     sf_scene s;
-    sf_scene_default(&s);
-    s.l = 0.05;
-    s.strip_halfwidth = 0.05;
-    s.cof_generator = SF_COFGEN_TILES;
+    sf_test_tiled_scene(&s);
     s.dof = SF_DOF_3;
     s.integrator = SF_INTEG_RK4;
     s.dt = 0.5;
@@ -943,6 +988,7 @@ int main(void)
         cmocka_unit_test(draw_without_rng),
         cmocka_unit_test(plan_refusals),
         cmocka_unit_test(window_partial_slides),
+        cmocka_unit_test(window_kept_columns),
         cmocka_unit_test(field_refusals),
         cmocka_unit_test(field_args),
         cmocka_unit_test(field_padding),

@@ -119,10 +119,7 @@ static void window_follow(void **state)
 {
     (void)state;
     sf_scene s;
-    sf_scene_default(&s);
-    s.l = 0.05;
-    s.strip_halfwidth = 0.05;
-    s.cof_generator = SF_COFGEN_TILES;
+    sf_test_tiled_scene(&s);
     sf_cof_plan *p;
     sf_cof *c;
     char err[256] = "";

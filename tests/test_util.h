@@ -13,6 +13,7 @@
 #include <stdint.h>
 #include <cmocka.h>
 #include "sf_error.h"   /* every test main calls sf_init() first */
+#include "scene.h"
 
 #define assert_close(a, b, tol) do {                                         \
         double a_ = (a), b_ = (b), t_ = (tol);                               \
@@ -22,5 +23,15 @@
             fail();                                                          \
         }                                                                    \
     } while (0)
+
+/* Table 1 on the tiled window at l/R = 0.1 (l = 0.05 m, a strip 0.05 m
+ * wide): the smallest tiled scene the window tests use */
+static inline void sf_test_tiled_scene(sf_scene *s)
+{
+    sf_scene_default(s);
+    s->l = 0.05;
+    s->strip_halfwidth = 0.05;
+    s->cof_generator = SF_COFGEN_TILES;
+}
 
 #endif
