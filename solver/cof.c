@@ -77,23 +77,23 @@ static int cols_have(const col_store *st, long i, size_t cnt)
 
 /* Keep lattice columns [i, i + cnt) of the Gaussian values g (grid
  * layout: row j at g + ld j): the range grows to hold them, up to
- * COLS_MAX_VALUES; a failed growth keeps nothing more (not an error:
- * the partner makes its columns). */
-static void cols_put(col_store *st, long i, size_t cnt, const double *g, size_t ld)
+ * COLS_MAX_VALUES (beyond, they are not kept: the partner makes its
+ * own); SF_ENOMEM when the growth fails. */
+static int cols_put(col_store *st, long i, size_t cnt, const double *g, size_t ld)
 {
     long lo = st->ncol ? (i < st->lo ? i : st->lo) : i;
     long hi = st->ncol ? (i + (long)cnt > st->lo + (long)st->ncol ? i + (long)cnt : st->lo + (long)st->ncol)
                        : i + (long)cnt;
     size_t nc = (size_t)(hi - lo);
     if (nc > COLS_MAX_VALUES / st->n)
-        return;
+        return SF_SUCCESS;
     if (nc != st->ncol) {
         double *ng = sf_malloc(nc * st->n * sizeof *ng);
         unsigned char *nh = sf_calloc(nc, 1);
         if (!ng || !nh) {
             free(ng);
             free(nh);
-            return;
+            return SF_ENOMEM;
         }
         if (st->ncol) {
             size_t off = (size_t)(st->lo - lo);
@@ -113,6 +113,7 @@ static void cols_put(col_store *st, long i, size_t cnt, const double *g, size_t 
             col[j] = g[k + ld * j];
         st->have[(size_t)(i - st->lo) + k] = 1;
     }
+    return SF_SUCCESS;
 }
 
 static sf_cof *cof_new(sf_cof_kind kind)
@@ -226,8 +227,8 @@ static int window_make(sf_cof *c, long i, size_t c0, size_t cnt)
         int rc = sf_tiles_fill(c->tiles, i, cnt, c->grid + c0, c->m);
         if (rc)
             return rc;
-        if (c->cols)
-            cols_put(c->cols, i, cnt, c->grid + c0, c->m);
+        if (c->cols && (rc = cols_put(c->cols, i, cnt, c->grid + c0, c->m)))
+            return rc;
         c->columns_made += cnt;
     }
     for (size_t j = 0; j < c->n; j++) {
@@ -482,8 +483,12 @@ static int window_of_key(const sf_cof_plan *p, uint64_t key, double sign, col_st
     int rc = sf_tiles_alloc(&ts, &c->tiles);
     if (!rc && !(c->grid = sf_malloc(c->m * c->n * sizeof *c->grid)))
         rc = SF_ENOMEM;
-    if (!rc && !cols && p->keep_cols && (cols = sf_calloc(1, sizeof *cols)))
-        cols->n = c->n;   /* no store (out of memory): columns made as without one */
+    if (!rc && !cols && p->keep_cols) {
+        if ((cols = sf_calloc(1, sizeof *cols)))
+            cols->n = c->n;
+        else
+            rc = SF_ENOMEM;
+    }
     if (!rc && cols) {
         c->cols = cols;
         cols->refs++;

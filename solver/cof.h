@@ -230,8 +230,10 @@ int sf_cof_plan_draw(sf_cof_plan *p, gsl_rng *rng, sf_cof **out);
 int sf_cof_plan_antithetic(const sf_cof_plan *p, const sf_cof *c, sf_cof **out);
 
 /* Tiles: each window p draws from now on keeps the Gaussian columns it
- * makes (at most 2^22 values) for its antithetic partner, which shares
- * them (on: 1; off: 0).  The values are the same bits either way. */
+ * makes for its antithetic partner, which shares them (on: 1; off: 0):
+ * at most 2^22 values, columns beyond are made again by the partner.
+ * The values are the same bits either way; a draw or a follow that
+ * cannot grow the store fails with SF_ENOMEM. */
 void sf_cof_plan_keep_columns(sf_cof_plan *p, int on);
 /* Boxes of boxes (cell averages only, cellavg.h).  The average of the
  * field over a box of side b h is the mean of the b^2 averages over the

@@ -248,6 +248,34 @@ static int window_slide(void *ctx)
     return rc;
 }
 
+/* An antithetic pair of windows that share kept columns
+ * (sf_cof_plan_keep_columns): the store's allocation and each growth
+ * fail with SF_ENOMEM, and the partner's values are then -G's */
+static int window_pair_kept(void *ctx)
+{
+    sf_cof_plan *p;
+    int rc = sf_cof_plan_alloc(ctx, &p, NULL, 0);
+    if (rc)
+        return rc;
+    sf_cof_plan_keep_columns(p, 1);
+    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+    sf_cof *g = NULL, *a = NULL;
+    rc = sf_cof_plan_draw(p, rng, &g);
+    gsl_rng_free(rng);
+    if (!rc)
+        rc = sf_cof_follow(g, 20, 21);   /* far: the store grows */
+    if (!rc)
+        rc = sf_cof_plan_antithetic(p, g, &a);
+    for (int k = 0; !rc && k < 2; k++)   /* the partner copies, then makes */
+        rc = sf_cof_follow(a, 20 + 15 * k, 21 + 15 * k);
+    if (!rc && !(sf_cof_columns_made(a) > 0 && sf_cof_columns_made(a) < sf_cof_columns_made(g)))
+        rc = SF_EINVAL;
+    sf_cof_free(g);
+    sf_cof_free(a);
+    sf_cof_plan_free(p);
+    return rc;
+}
+
 static void cof_more(void **state)
 {
     (void)state;
@@ -258,6 +286,7 @@ static void cof_more(void **state)
     s.cof_generator = SF_COFGEN_TILES;
     s.T = 400;   /* a strip of 80 m: the window follows */
     walk("tiled window slides", window_slide, &s, SF_SUCCESS, 0);
+    walk("tiled antithetic pair, kept columns", window_pair_kept, &s, SF_SUCCESS, 0);
 }
 
 /* ---- fields, tiles */

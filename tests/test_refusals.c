@@ -183,6 +183,29 @@ static void window_kept_columns(void **state)
         }
     size_t made_a = sf_cof_columns_made(a[1]);
     assert_true(made_a > 0 && made_a < made_g && made_a < sf_cof_columns_made(a[0]));
+    /* jumps: the first window's jump to 50 m leaves a hole in the store,
+     * where the partner makes its columns (25 m); a return into the hole
+     * fills it, and the partner copies (37 m); a jump to 200 m would hold
+     * more than 2^22 values: not kept, the partner makes them */
+    size_t rows;
+    assert_int_equal(sf_cof_grid_view(g[1], NULL, &rows, NULL, NULL, NULL, NULL, NULL), SF_SUCCESS);
+    assert_true((double)rows * 200 / dx > 4194304.0 && (double)rows * 50 / dx < 4194304.0);
+    const double jump[] = { 50, 25, 37, 37, 200, 200 };
+    const int mover[] = { 0, 1, 0, 1, 0, 1 }, makes[] = { 0, 1, 0, 0, 0, 1 };
+    for (int step = 0; step < 6; step++) {
+        double x = x0 + jump[step];
+        size_t before = sf_cof_columns_made(mover[step] ? a[1] : g[1]);
+        for (int keep = 0; keep < 2; keep++)
+            assert_int_equal(sf_cof_follow(mover[step] ? a[keep] : g[keep], x, x + 0.5 * span), SF_SUCCESS);
+        if (!mover[step])
+            continue;
+        size_t mm, nn;
+        const double *u, *v;
+        assert_int_equal(sf_cof_grid_view(a[0], &mm, &nn, NULL, NULL, NULL, NULL, &u), SF_SUCCESS);
+        assert_int_equal(sf_cof_grid_view(a[1], NULL, NULL, NULL, NULL, NULL, NULL, &v), SF_SUCCESS);
+        assert_memory_equal(u, v, mm * nn * sizeof *u);
+        assert_int_equal(sf_cof_columns_made(a[1]) > before, makes[step]);
+    }
     for (int keep = 0; keep < 2; keep++) {
         sf_cof_free(g[keep]);   /* the partner keeps the shared columns alive */
         assert_int_equal(sf_cof_follow(a[keep], x0, x0 + 0.5 * span), SF_SUCCESS);
