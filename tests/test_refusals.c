@@ -141,6 +141,15 @@ static void plan_refusals(void **state)
     gsl_rng_free(rng);
 }
 
+/* A plan of sf_test_tiled_scene and a generator for its draws */
+static gsl_rng *tiled_plan(sf_cof_plan **p)
+{
+    sf_scene s;
+    sf_test_tiled_scene(&s);
+    assert_int_equal(sf_cof_plan_alloc(&s, p, NULL, 0), SF_SUCCESS);
+    return gsl_rng_alloc(gsl_rng_mt19937);
+}
+
 /* An antithetic pair of tiled windows shares the columns the first made
  * (sf_cof_plan_keep_columns): the partner follows a path the first went
  * along and then beyond; its values are the same bits as a partner that
@@ -149,11 +158,8 @@ static void plan_refusals(void **state)
 static void window_kept_columns(void **state)
 {
     (void)state;
-    sf_scene s;
-    sf_test_tiled_scene(&s);
     sf_cof_plan *p;
-    assert_int_equal(sf_cof_plan_alloc(&s, &p, NULL, 0), SF_SUCCESS);
-    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+    gsl_rng *rng = tiled_plan(&p);
     sf_cof *g[2], *a[2];
     for (int keep = 0; keep < 2; keep++) {
         gsl_rng_set(rng, 7);
@@ -221,11 +227,8 @@ static void window_kept_columns(void **state)
 static void window_partial_slides(void **state)
 {
     (void)state;
-    sf_scene s;
-    sf_test_tiled_scene(&s);
     sf_cof_plan *p;
-    assert_int_equal(sf_cof_plan_alloc(&s, &p, NULL, 0), SF_SUCCESS);
-    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+    gsl_rng *rng = tiled_plan(&p);
     sf_cof *c;
     assert_int_equal(sf_cof_plan_draw(p, rng, &c), SF_SUCCESS);
     size_t m, n;
