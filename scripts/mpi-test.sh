@@ -24,4 +24,22 @@ for sc in s:1,10,1000000 c:0.01,0.03; do
         cmp "$tmp/$name-serial-sum.tsv" "$tmp/$name-mpi$np-sum.tsv"
     done
 done
-echo "mpi-test: mpirun -np 2 and -np 3 give the serial bytes (lognormal strip, one variable, cell averages)"
+# the paired estimators sized in stages and at a target (each stage's
+# decision is a function of the values in index order, whichever rank
+# computed them): auto's rule picks two levels on every 2nd node at 0.3,
+# two levels on one field at 1 and antithetic pairs at 10
+for est in "auto --target-se 0.02" "antithetic" "mlmc"; do
+    tag=$(echo "$est" | cut -d' ' -f1)
+    # shellcheck disable=SC2086
+    "$serial" sweep "$tmp/s.scene" --param l_over_R --values 0.3,1,10 --realisations 24 --pilot 4 \
+        --estimator $est --out "$tmp/e-$tag-serial.tsv" --summary "$tmp/e-$tag-serial-sum.tsv" 2> /dev/null
+    for np in 2 3; do
+        # shellcheck disable=SC2086
+        OMP_NUM_THREADS=1 $R -np $np "$mpi" sweep "$tmp/s.scene" --param l_over_R --values 0.3,1,10 \
+            --realisations 24 --pilot 4 --estimator $est --out "$tmp/e-$tag-mpi$np.tsv" \
+            --summary "$tmp/e-$tag-mpi$np-sum.tsv" 2> /dev/null
+        cmp "$tmp/e-$tag-serial.tsv" "$tmp/e-$tag-mpi$np.tsv"
+        cmp "$tmp/e-$tag-serial-sum.tsv" "$tmp/e-$tag-mpi$np-sum.tsv"
+    done
+done
+echo "mpi-test: mpirun -np 2 and -np 3 give the serial bytes (lognormal strip, one variable, cell averages; the estimators auto at a target, antithetic, mlmc)"
