@@ -109,6 +109,23 @@ static void ks_tests_are_nan_with_a_nan_sample(void **state)
  * and otherwise is Student's t on the squares: e^2 = 1, 4, 9 has mean
  * 14/3 and se 7/3, so against b = 2 t = (2/3) / (7/3) = 2/7 and
  * p = Q_t(t, 2); zero spread decides by the mean alone. */
+/* The Mann-Whitney U test against scipy.stats.mannwhitneyu (asymptotic,
+ * continuity-corrected, tie-corrected; two tied groups here): both
+ * directions, and NaN for a NaN value or a sample of one */
+static void mwu_test_matches_scipy(void **state)
+{
+    (void)state;
+    const double a[] = { 0.31, 0.12, 0.5, 0.5, 0.77, 0.05, 0.9, 0.64, 0.33, 0.41, 0.28 };
+    const double b[] = { 0.1, 0.2, 0.5, 0.02, 0.15, 0.3, 0.07, 0.22, 0.18, 0.11, 0.25, 0.09 };
+    assert_close(sf_mwu_greater_p(a, 11, b, 12), 0.005283879110680374, 1e-12);
+    assert_close(sf_mwu_greater_p(b, 12, a, 11), 0.9955813221165568, 1e-12);
+    const double c[] = { 1, NAN };
+    assert_true(isnan(sf_mwu_greater_p(a, 11, c, 2)));
+    assert_true(isnan(sf_mwu_greater_p(a, 1, b, 12)));
+    const double e[] = { 2, 2 }, f[] = { 2, 2, 2 };   /* all tied: no spread to rank */
+    assert_true(sf_mwu_greater_p(e, 2, f, 3) == 1);
+}
+
 static void rms_test_refuses_nonfinite(void **state)
 {
     (void)state;
@@ -215,6 +232,7 @@ int main(void)
         cmocka_unit_test(nan_in_plot_or_data_fails),
         cmocka_unit_test(helpers_propagate_nan),
         cmocka_unit_test(ks_tests_are_nan_with_a_nan_sample),
+        cmocka_unit_test(mwu_test_matches_scipy),
         cmocka_unit_test(rms_test_refuses_nonfinite),
         cmocka_unit_test(field_nan_fails),
         cmocka_unit_test(lognormal_nan_fails),

@@ -1,6 +1,7 @@
 #include "stats.h"
 
 #include <math.h>
+#include <stdlib.h>
 #include <gsl/gsl_cdf.h>
 #include <gsl/gsl_sort.h>
 
@@ -69,6 +70,50 @@ double sf_ks2_test(double *a, size_t na, double *b, size_t nb, double *D)
     }
     if (D) *D = d;
     return sf_ks_pvalue((double)na * (double)nb / (double)(na + nb), d);
+}
+
+typedef struct {
+    double v;
+    int from_a;
+} mwu_item;
+
+static int mwu_cmp(const void *x, const void *y)
+{
+    double u = ((const mwu_item *)x)->v, w = ((const mwu_item *)y)->v;
+    return (u > w) - (u < w);
+}
+
+double sf_mwu_greater_p(const double *a, size_t na, const double *b, size_t nb)
+{
+    if (na < 2 || nb < 2 || any_nan(a, na) || any_nan(b, nb))
+        return NAN;
+    size_t n = na + nb;
+    mwu_item *it = malloc(n * sizeof *it);
+    if (!it)
+        return NAN;
+    for (size_t i = 0; i < na; i++)
+        it[i] = (mwu_item){ a[i], 1 };
+    for (size_t j = 0; j < nb; j++)
+        it[na + j] = (mwu_item){ b[j], 0 };
+    qsort(it, n, sizeof *it, mwu_cmp);
+    double ra = 0, ties = 0;   /* a's rank sum (mid-ranks), sum of t^3 - t over tied groups */
+    for (size_t i = 0; i < n;) {
+        size_t j = i;
+        while (j < n && it[j].v == it[i].v)
+            j++;
+        double mid = 0.5 * (double)(i + 1 + j), t = (double)(j - i);
+        for (size_t k = i; k < j; k++)
+            ra += it[k].from_a ? mid : 0;
+        ties += t * t * t - t;
+        i = j;
+    }
+    free(it);
+    double fa = (double)na, fb = (double)nb, fn = (double)n;
+    double u = ra - fa * (fa + 1) / 2;
+    double var = fa * fb / 12 * ((fn + 1) - ties / (fn * (fn - 1)));
+    if (!(var > 0))
+        return u > fa * fb / 2 ? 0 : 1;
+    return gsl_cdf_ugaussian_Q((u - fa * fb / 2 - 0.5) / sqrt(var));
 }
 
 double sf_z_pvalue(double z)

@@ -18,6 +18,16 @@ double sf_ks_test(double *x, size_t n, sf_cdf_fn cdf, void *params, double *D);
 /* Two-sample KS test; sorts both arrays in place. */
 double sf_ks2_test(double *a, size_t na, double *b, size_t nb, double *D);
 
+/* One-sided Mann-Whitney U (Wilcoxon rank-sum) test that a's values tend
+ * to exceed b's: U = the pairs (a_i, b_j) with a_i > b_j (a tie counts
+ * 1/2), p = Q((U - na nb / 2 - 1/2) / sd), sd with the tie correction;
+ * the normal approximation, good to about 1e-3 in p for na, nb >= 10.
+ * A few extreme values move U by at most their count times the other
+ * sample's size, so the test keeps its power under heavy tails.  NaN if a
+ * value is not finite or a sample has fewer than 2.  Sorts neither
+ * array (allocates their pooled ranks). */
+double sf_mwu_greater_p(const double *a, size_t na, const double *b, size_t nb);
+
 /* Two-sided normal p-value of a z statistic. */
 double sf_z_pvalue(double z);
 
