@@ -124,6 +124,8 @@ int sf_anti_run(const sf_scene *s, size_t n_plain, size_t n_pilot, const double 
     if ((rc = sf_plan_make(s, &fine, err, errlen)))
         return rc;
     fine.history = 0;
+    out->plan = fine;   /* the rows' (the G members'), for u_num's companion (sweep.h) */
+    out->planned = 1;
     double *pairs = sf_calloc(n_plain * A_OUT, sizeof *pairs), *buf = sf_malloc(5 * n_plain * sizeof *buf);
     if (!pairs || !buf) {
         free(pairs);

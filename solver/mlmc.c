@@ -299,6 +299,8 @@ static int run_levels(const sf_scene *s, size_t n_plain, size_t n_pilot, const d
         fine.history = 0;
         sf_mlmc_coarse_plan(&fine, &coarse);
     }
+    out->plan = fine;   /* the rows' (level 1's fine runs'), for u_num's companion (sweep.h) */
+    out->planned = 1;
     double *pairs = sf_calloc(n_plain * P_OUT, sizeof *pairs), *lev0 = NULL;
     if (!pairs)
         return SF_ENOMEM;

@@ -173,6 +173,8 @@ static int run(const sf_scene *s, size_t n, double target_se, size_t n_pilot, in
     if ((rc = sf_plan_make(s, &pl, err, errlen)))
         return rc;
     pl.history = 0;   /* a sweep keeps only the QoIs */
+    out->plan = pl;   /* the rows' plan, for u_num's companion (sweep.h) */
+    out->planned = 1;
     sf_sweep_ws ctx = { s, &pl, NULL, NULL, cv };
     size_t nout = SF_SWEEP_NQ + (cv != 0);
     double *vals = out->qoi;   /* n x nout: the QoIs, and C when cv */

@@ -106,6 +106,15 @@ typedef struct {
      * it. */
     size_t num_m;
     double *num_qc, *num_rho, *num_apriori;
+    /* The plan the rows were solved on (numplan.h), which the estimator
+     * that made them records: the scene's (sf_plan_make), or mlmc-boxes'
+     * own fine plan (mlmc.h: sf_mlmc_box_plans: its cells rounded up to a
+     * multiple of 4, a wider strip).  Row i is the run on this plan of the
+     * COF its COF plan draws from stream sf_mc_seed(seed, i); u_num's
+     * companion solves that realisation (unum.h).  planned = 0: none
+     * recorded (a point made by hand), the scene's plan is taken. */
+    int planned;
+    sf_plan plan;
     /* The design: a fixed N (n_pilot 0, stop SF_MCSTOP_FIXED), or two
      * stages (mcstop.h: the first n_pilot realisations decide N; stop
      * says whether every target was met or N hit the cap).  [rci_lo,

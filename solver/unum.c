@@ -116,35 +116,31 @@ int sf_unum_sweep_stats(const double *e, size_t stride, size_t m, double apriori
 }
 
 /* the companion of one realisation of a sweep point (ws: the sweep's
- * workspace, its data the sweep's values, n x SF_SWEEP_NQ): its QoIs
- * (out[0..2]), its rho (out[3]) and the plan's a-priori relative
- * cell-average error (out[4], 0 for the point model) */
+ * workspace on the rows' plan, its data the sweep's values, n x
+ * SF_SWEEP_NQ): its QoIs (out[0..2]), its rho (out[3]) and the plan's
+ * a-priori relative cell-average error (out[4], 0 for the point model) */
 enum { UNUM_RHO = SF_UNUM_NQ, UNUM_APRIORI, UNUM_NOUT };
 static int unum_realise(void *p, size_t i, gsl_rng *rng, double *out)
 {
     sf_sweep_ws *w = p;
     const double *qoi = w->data;
     sf_cof *cof;
+    /* row i's field: the rows' COF plan on row i's stream (the same bits) */
     int rc = sf_cof_plan_draw(w->plan, rng, &cof);
     if (rc)
         return rc;
-    sf_osc *o = NULL;
-    rc = sf_osc_alloc(w->s, cof, &o, NULL, 0);   /* for its plan: the run itself is the sweep's */
-    if (!rc) {
-        sf_numplan np = *sf_osc_get_plan(o);
-        sf_osc_result r;
-        memset(&r, 0, sizeof r);
-        r.pv_x = qoi[i * SF_SWEEP_NQ + SF_SWEEP_PVX];
-        r.pv_F = qoi[i * SF_SWEEP_NQ + SF_SWEEP_PVF];
-        r.stick_fraction = qoi[i * SF_SWEEP_NQ + SF_SWEEP_SF];
-        sf_unum u;
-        rc = sf_unum_estimate(w->s, cof, &np, &r, &u, NULL, 0);
-        for (int k = 0; !rc && k < SF_UNUM_NQ; k++)
-            out[k] = u.qc[k];
-        out[UNUM_RHO] = u.rho;
-        out[UNUM_APRIORI] = u.cell_average ? np.err_quad : 0;
-    }
-    sf_osc_free(o);
+    const sf_numplan *np = &w->pl->num;   /* the row's numerical plan, which the companion coarsens */
+    sf_osc_result r;
+    memset(&r, 0, sizeof r);
+    r.pv_x = qoi[i * SF_SWEEP_NQ + SF_SWEEP_PVX];
+    r.pv_F = qoi[i * SF_SWEEP_NQ + SF_SWEEP_PVF];
+    r.stick_fraction = qoi[i * SF_SWEEP_NQ + SF_SWEEP_SF];
+    sf_unum u;
+    rc = sf_unum_estimate(w->s, cof, np, &r, &u, NULL, 0);
+    for (int k = 0; !rc && k < SF_UNUM_NQ; k++)
+        out[k] = u.qc[k];
+    out[UNUM_RHO] = u.rho;
+    out[UNUM_APRIORI] = u.cell_average ? np->err_quad : 0;
     sf_cof_free(cof);
     return rc;
 }
@@ -190,9 +186,14 @@ int sf_unum_sweep(const sf_scene *s, sf_sweep_point *p, int threads, char *err, 
     double *e = sf_calloc(m * UNUM_NOUT, sizeof *e);
     if (!e)
         return SF_ENOMEM;
+    /* the plan the rows were solved on: an estimator's own may differ from
+       the scene's (mlmc-boxes': other cells, a wider strip, so another
+       field from the same stream) */
     sf_plan pl;
-    int rc = sf_plan_make(s, &pl, err, errlen);
-    if (rc) {
+    int rc = SF_SUCCESS;
+    if (p->planned)
+        pl = p->plan;
+    else if ((rc = sf_plan_make(s, &pl, err, errlen))) {
         free(e);
         return rc;
     }

@@ -71,8 +71,11 @@ void sf_unum_write(const sf_unum *u, FILE *f);
 
 /* The numerical error of a sweep point's means (sf_sweep_num, sweep.h).
  * The companion above runs on the first sf_unum_sweep_subset(n)
- * realisations (their streams are those of the sweep, so the same fields;
- * realisations are exchangeable, so the first ones are a random subset):
+ * realisations, each the row's own: the COF the rows' plan (p->plan,
+ * recorded by the estimator that made them: mlmc-boxes' is not the
+ * scene's) draws from the row's stream, the same bits, and that plan's
+ * numerical settings coarsened as above (realisations are exchangeable,
+ * so the first ones are a random subset):
  * ceil(n / 4), at least 2 (all of them when n < 2).  Each gives the signed
  * Richardson estimate of its own error, e_i = (Q_c,i - Q_i) / (rho - 1);
  * the mean's numerical error is their mean (the random part of the errors
@@ -85,7 +88,8 @@ void sf_unum_write(const sf_unum *u, FILE *f);
 size_t sf_unum_sweep_subset(size_t n);
 
 /* Run the companions of the sweep point p of scene s (p->qoi, p->n,
- * p->stat from sf_sweep_run), keep them (p->num_m, num_qc, num_rho,
+ * p->stat and p->plan from sf_sweep_run or an estimator's run; a point
+ * with no plan recorded, p->planned = 0, takes s's), keep them (p->num_m, num_qc, num_rho,
  * num_apriori: sweep.h) and fill p->num from them (sf_unum_sweep_num).
  * SF_SUCCESS, or the first companion's error code with the reason in err
  * (p->num is then left zero and no companion kept: not estimated). */

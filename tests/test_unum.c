@@ -4,6 +4,8 @@
  * and the summary lines. */
 #include "test_util.h"
 #include "cof.h"
+#include "mlmc.h"
+#include "montecarlo.h"
 #include "numplan.h"
 #include "oscillator.h"
 #include "sf_error.h"
@@ -296,6 +298,7 @@ static void sweep_estimate(void **state)
     free(buf);
     s.dof = SF_DOF_1;   /* the 1-D model refuses a quadrature plan's companion: unestimated */
     s.cof = SF_COF_FIELD;
+    p.planned = 0;   /* (the rows' own plan would draw their uniform COF: the scene's is taken) */
     assert_int_equal(sf_unum_sweep(&s, &p, 1, err, sizeof err), SF_EINVAL);
     assert_true(p.num[0].n_sub == 0 && *err && !p.num_qc && !p.num_m);
     assert_int_equal(sf_unum_sweep_num(&p), SF_SUCCESS);   /* nothing kept: not estimated */
@@ -312,6 +315,82 @@ static void sweep_estimate(void **state)
     sf_cof_free(cof);
 }
 
+/* row i of point p (scene s) against its realisation made here as `run
+ * --summary` makes one: the COF the rows' plan draws from stream
+ * sf_mc_seed(seed, i), run on that plan (row i to the bit), and its
+ * companion (sf_unum_estimate on that plan): the sweep's to the bit */
+static void rows_own_companions(const sf_scene *s, const sf_sweep_point *p)
+{
+    assert_true(p->planned && p->num_m >= 2);
+    sf_cof_plan *cp = NULL;
+    assert_int_equal(sf_cof_plan_build(s, &p->plan, &cp, NULL, 0), SF_SUCCESS);
+    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+    assert_non_null(rng);
+    for (size_t i = 0; i < p->num_m; i++) {
+        sf_cof *cof = NULL;
+        gsl_rng_set(rng, sf_mc_seed(s->seed, i));
+        assert_int_equal(sf_cof_plan_draw(cp, rng, &cof), SF_SUCCESS);
+        double q[SF_SWEEP_NQ];
+        assert_int_equal(sf_sweep_solve(s, &p->plan, cof, q, NULL), SF_SUCCESS);
+        assert_memory_equal(q, p->qoi + i * SF_SWEEP_NQ, sizeof q);
+        sf_osc_result r;
+        memset(&r, 0, sizeof r);
+        r.pv_x = q[SF_SWEEP_PVX];
+        r.pv_F = q[SF_SWEEP_PVF];
+        r.stick_fraction = q[SF_SWEEP_SF];
+        sf_unum u;
+        assert_int_equal(sf_unum_estimate(s, cof, &p->plan.num, &r, &u, NULL, 0), SF_SUCCESS);
+        assert_memory_equal(u.qc, p->num_qc + i * SF_SWEEP_NQ, sizeof u.qc);
+        assert_true(u.rho == p->num_rho[i]);
+        sf_cof_free(cof);
+    }
+    gsl_rng_free(rng);
+    sf_cof_plan_free(cp);
+}
+
+/* each estimator records the plan its rows were solved on and the
+ * companions solve the rows' own realisations: mlmc-boxes' plan is not
+ * the scene's (cells a multiple of 4, a finer strip 8 nodes wider each side:
+ * the same stream draws another field there); a point with no plan
+ * recorded takes the scene's, which may refuse */
+static void sweep_own_realisation(void **state)
+{
+    (void)state;
+    sf_scene s;
+    sf_scene_default(&s);
+    s.cof = SF_COF_FIELD;
+    s.l = 0.03 * s.R;   /* cell averages */
+    s.T = 30;
+    s.t_skip = 10;
+    char err[256] = "";
+    sf_plan sp;
+    assert_int_equal(sf_plan_make(&s, &sp, err, sizeof err), SF_SUCCESS);
+    assert_true(sp.num.cell_average && sp.num.cells % 4 != 0);   /* so boxes round the cells */
+    sf_sweep_point p, b;
+    assert_int_equal(sf_sweep_run(&s, 4, 1, NULL, 0, NULL, &p, err, sizeof err), SF_SUCCESS);
+    assert_int_equal(sf_unum_sweep(&s, &p, 1, err, sizeof err), SF_SUCCESS);
+    assert_true(p.plan.num.cells == sp.num.cells && p.plan.cof.nx == sp.cof.nx);
+    rows_own_companions(&s, &p);
+    assert_int_equal(sf_sweep_run_mlmc_boxes(&s, 4, 2, 1, NULL, &b, err, sizeof err), SF_SUCCESS);
+    assert_int_equal(sf_unum_sweep(&s, &b, 2, err, sizeof err), SF_SUCCESS);
+    assert_true(b.plan.num.cells % 4 == 0 && b.plan.num.cells > sp.num.cells);
+    assert_true(b.plan.cof.nx > sp.cof.nx + 2 * SF_MLMC_BOX_PAD && b.plan.cof.box < sp.cof.box);
+    assert_true(b.num_apriori[0] == b.plan.num.err_quad && b.plan.num.err_quad != sp.num.err_quad);
+    rows_own_companions(&s, &b);
+    /* no plan recorded: the scene's, the same companions as plain's own */
+    double qc[2 * SF_SWEEP_NQ];
+    memcpy(qc, p.num_qc, sizeof qc);
+    p.planned = 0;
+    assert_int_equal(sf_unum_sweep(&s, &p, 1, err, sizeof err), SF_SUCCESS);
+    assert_memory_equal(qc, p.num_qc, sizeof qc);
+    s.qoi_tol = 0;   /* ... and a scene that cannot be planned: unestimated, with the reason */
+    *err = 0;
+    assert_int_equal(sf_unum_sweep(&s, &p, 1, err, sizeof err), SF_EINVAL);
+    assert_true(*err && !p.num_m && p.num[0].n_sub == 0);
+    sf_sweep_point_free(&p);
+    sf_sweep_point_free(&b);
+}
+
 int main(void)
 {
     sf_init();
@@ -323,6 +402,7 @@ int main(void)
         cmocka_unit_test(sweep_subset),
         cmocka_unit_test(sweep_stats),
         cmocka_unit_test(sweep_estimate),
+        cmocka_unit_test(sweep_own_realisation),
     };
     return cmocka_run_group_tests_name("unum", tests, NULL, NULL);
 }
