@@ -7,9 +7,16 @@
  * gsl_cdf_tdist_Pinv), not with the solver's aggregation.  The validation
  * cases gate on the same statistics through sf_sweep_point: those are
  * compared too.  So is the numerical error of each mean (unum.h): from
- * the companions' QoIs and rho the per-realisation table carries. */
+ * the companions' QoIs and rho the per-realisation table carries.
+ *
+ * What the table cannot show, whose realisation a companion solved, is
+ * the second check's (mc_unum_own_field, at the end). */
 #include "checks.h"
 #include "common.h"
+#include "cof.h"
+#include "mlmc.h"
+#include "montecarlo.h"
+#include "numplan.h"
 #include "sweep.h"
 #include "unum.h"
 #include "sf_error.h"
@@ -491,8 +498,278 @@ static int chk_sweep_aggregation(const sf_case *c, sf_result *r)
     return rc ? SF_EFAIL : SF_SUCCESS;
 }
 
+/* ---- u_num's companions solve their rows' own realisations.
+ *
+ * For each estimator at each point of the case's sweep, the rows that
+ * have a companion (realisations 0 .. num_m - 1) are made again here as
+ * `run --summary` makes one realisation: the COF drawn from stream
+ * sf_mc_seed(seed, i) (check_draw) by the COF plan of the plan the
+ * estimator's rows are documented to run on (sweep.h, mlmc.h: the
+ * scene's, sf_plan_make; mlmc-boxes' fine plan, sf_mlmc_box_plans), the
+ * run on that plan, and sf_unum_estimate's companion of that run.  The
+ * row's QoIs and the sweep's companion (its QoIs, rho, a-priori part)
+ * must be these to the bit: the same operations on the same inputs.
+ * Nothing here reads the plan a point records (sf_sweep_point.plan). */
+enum { UE_PLAIN, UE_CV, UE_ANTI, UE_MLMC, UE_SUB, UE_BOXES, UE_AUTO, UE_N };
+static const char *const ue_name[UE_N] = { "plain", "control-variate", "antithetic", "mlmc", "mlmc-sub",
+                                           "mlmc-boxes", "auto" };
+#define UE_PILOT 4   /* the paired estimators' pilot: --pilot 4 */
+
+/* the SF_EST_* that estimator e of the list runs at scene s (auto: its rule, as `sweep --estimator auto`) */
+static int ue_est(const sf_scene *s, int e)
+{
+    static const int est[UE_N] = { SF_EST_PLAIN, SF_EST_CV, SF_EST_ANTITHETIC, SF_EST_MLMC, SF_EST_MLMC_SUB,
+                                   SF_EST_MLMC_BOXES, -1 };
+    return e == UE_AUTO ? sf_sweep_estimator_auto(s) : est[e];
+}
+
+/* whether the scene's plan sp admits estimator est (boxes: cell averages;
+ * every 2nd node: point values on the circulant strip) */
+static int ue_admits(const sf_plan *sp, int est)
+{
+    int field = sp->cof.kind == SF_COF_FIELD;
+    if (est == SF_EST_MLMC_BOXES)
+        return field && sp->num.cell_average;
+    if (est == SF_EST_MLMC_SUB)
+        return field && !sp->num.cell_average && sp->cof.generator != SF_COFGEN_TILES;
+    return 1;
+}
+
+/* estimator est's point at scene s: n realisations (the paired ones:
+ * plain's variance at n, the pilot UE_PILOT), as `slipfield sweep` runs
+ * it, on one thread: the bits are those of any thread count
+ * (montecarlo.h), and each thread builds its own COF plan, most of the
+ * work of so small a point */
+static int ue_run(const sf_scene *s, int est, size_t n, sf_sweep_point *p, char *err, size_t errlen)
+{
+    switch (est) {
+    case SF_EST_CV: return sf_sweep_run_cv(s, n, 1, NULL, 0, NULL, p, err, errlen);
+    case SF_EST_ANTITHETIC: return sf_sweep_run_antithetic(s, n, UE_PILOT, 1, NULL, p, err, errlen);
+    case SF_EST_MLMC: return sf_sweep_run_mlmc(s, n, UE_PILOT, 1, NULL, p, err, errlen);
+    case SF_EST_MLMC_SUB: return sf_sweep_run_mlmc_sub(s, n, UE_PILOT, 1, NULL, p, err, errlen);
+    case SF_EST_MLMC_BOXES: return sf_sweep_run_mlmc_boxes(s, n, UE_PILOT, 1, NULL, p, err, errlen);
+    default: return sf_sweep_run(s, n, 1, NULL, 0, NULL, p, err, errlen);
+    }
+}
+
+/* the plan estimator est's rows run on, as documented (not as recorded) */
+static int ue_rows_plan(const sf_scene *s, int est, sf_plan *pl, char *err, size_t errlen)
+{
+    sf_plan coarse, cdraw;
+    if (est == SF_EST_MLMC_BOXES)
+        return sf_mlmc_box_plans(s, pl, &coarse, &cdraw, err, errlen);
+    int rc = sf_plan_make(s, pl, err, errlen);
+    pl->history = 0;
+    return rc;
+}
+
+/* FNV-1a of a gridded COF: its geometry and values (0: not a grid) */
+static unsigned long ue_field_hash(const sf_cof *cof)
+{
+    size_t m, n;
+    double g[4];
+    const double *mu;
+    if (sf_cof_grid_view(cof, &m, &n, &g[0], &g[1], &g[2], &g[3], &mu))
+        return 0;
+    unsigned long h = sf_mc_hash(&m, sizeof m, 0);
+    h = sf_mc_hash(&n, sizeof n, h);
+    h = sf_mc_hash(g, sizeof g, h);
+    return sf_mc_hash(mu, m * n * sizeof *mu, h);
+}
+
+/* a and b the same bits (NaN: the same outcome, no QoI formed) */
+static int ue_same(double a, double b)
+{
+    return (isnan(a) && isnan(b)) || !memcmp(&a, &b, sizeof a);
+}
+
+typedef struct {
+    size_t rows, row_bits, comp, comp_bits, hash_differ, boxes_other_field;
+    double *xq, *yq;   /* the plot: companion PV_x against its row's (finite ones) */
+    size_t nplot, cap;
+} ue_tally;
+
+/* point p of estimator est at scene s against the rows made here; one
+ * line of the table.  SF_SUCCESS, or the failure noted. */
+static int ue_compare(FILE *tab, const sf_scene *s, double lr, const char *name, int est, const sf_sweep_point *p,
+                      ue_tally *t)
+{
+    char err[256] = "";
+    sf_plan rp, sp;
+    sf_cof_plan *cp = NULL, *scp = NULL;
+    int rc = ue_rows_plan(s, est, &rp, err, sizeof err);
+    int own = est == SF_EST_MLMC_BOXES;   /* the rows' plan is not the scene's */
+    if (!rc && own)
+        rc = sf_plan_make(s, &sp, err, sizeof err);
+    if (!rc)
+        rc = sf_cof_plan_build(s, &rp, &cp, err, sizeof err);
+    if (!rc && own)
+        rc = sf_cof_plan_build(s, &sp, &scp, err, sizeof err);
+    size_t rows_bad = 0, comp_bad = 0;
+    unsigned long h0 = 0, hs = 0;
+    for (size_t i = 0; !rc && i < p->num_m; i++) {
+        sf_cof *cof = NULL, *scof = NULL;
+        double q[NQ];
+        sf_unum u;
+        rc = check_draw(cp, s->seed, i, &cof);
+        if (!rc)
+            rc = sf_sweep_solve(s, &rp, cof, q, NULL);
+        if (!rc) {
+            sf_osc_result res;
+            memset(&res, 0, sizeof res);
+            res.pv_x = q[SF_SWEEP_PVX];
+            res.pv_F = q[SF_SWEEP_PVF];
+            res.stick_fraction = q[SF_SWEEP_SF];
+            rc = sf_unum_estimate(s, cof, &rp.num, &res, &u, err, sizeof err);
+        }
+        if (!rc && (!own || (rc = check_draw(scp, s->seed, i, &scof)) == SF_SUCCESS)) {
+            unsigned long h = ue_field_hash(cof), hsc = own ? ue_field_hash(scof) : h;
+            if (!i) {
+                h0 = h;
+                hs = hsc;
+            }
+            t->hash_differ += h != hsc;
+        }
+        if (!rc) {
+            int bad = 0, cbad = 0;
+            for (int k = 0; k < NQ; k++) {
+                bad += !ue_same(q[k], p->qoi[i * NQ + k]);
+                cbad += !ue_same(u.qc[k], p->num_qc[i * NQ + k]);
+            }
+            cbad += !ue_same(u.rho, p->num_rho[i]);
+            cbad += !ue_same(u.cell_average ? rp.num.err_quad : 0, p->num_apriori[i]);
+            rows_bad += bad > 0;
+            comp_bad += cbad > 0;
+            t->row_bits += (size_t)bad;
+            t->comp_bits += (size_t)cbad;
+            double a = p->qoi[i * NQ + SF_SWEEP_PVX], b = p->num_qc[i * NQ + SF_SWEEP_PVX];
+            if (isfinite(a) && isfinite(b) && t->nplot < t->cap) {
+                t->xq[t->nplot] = a;
+                t->yq[t->nplot++] = b;
+            }
+        }
+        sf_cof_free(cof);
+        sf_cof_free(scof);
+    }
+    sf_cof_plan_free(cp);
+    sf_cof_plan_free(scp);
+    if (rc) {
+        fprintf(tab, "| %g | %s | the reconstruction failed: %s |||||||\n", lr, name, *err ? err : sf_strerror(rc));
+        return rc;
+    }
+    t->rows += p->n;
+    t->comp += p->num_m;
+    if (est == SF_EST_MLMC_BOXES)
+        t->boxes_other_field += h0 != hs;
+    char other[40] = "(the scene's plan)";
+    if (own)
+        snprintf(other, sizeof other, "%016lx%s", hs, h0 == hs ? " (the same)" : "");
+    fprintf(tab, "| %g | %s | %zu | %zu | %zu, %zu x %zu | %016lx | %s | %zu | %zu |\n", lr, name, p->n, p->num_m,
+            rp.num.cells, rp.cof.nx, rp.cof.ny, h0, other, rows_bad, comp_bad);
+    return SF_SUCCESS;
+}
+
+static int chk_unum_own_field(const sf_case *c, sf_result *r)
+{
+    size_t K = c->spec.sweep.n;
+    if (!K || !*c->spec.sweep_param || c->scene.samples < UE_PILOT)
+        return SF_EINVAL;
+    ue_tally t = { 0 };
+    t.cap = K * UE_N * sf_unum_sweep_subset(c->scene.samples);   /* a point has at most samples rows */
+    t.xq = check_alloc(t.cap * sizeof *t.xq);
+    t.yq = check_alloc(t.cap * sizeof *t.yq);
+    int rc = SF_SUCCESS, seen[UE_N] = { 0 };
+    char err[256] = "";
+    char *text = NULL;   /* the table, one note */
+    size_t len = 0;
+    FILE *tab = open_memstream(&text, &len);
+    if (!tab) {
+        free(t.xq);
+        free(t.yq);
+        return SF_ENOMEM;
+    }
+    fprintf(tab, "| %s | estimator | rows | companions | rows' plan: cells, strip | row 0's field (FNV-1a) | the "
+                 "scene's plan, same stream | rows not reproduced | companions not reproduced |\n"
+                 "|---|---|---|---|---|---|---|---|---|\n", c->spec.sweep_param);
+    for (size_t k = 0; k < K && !rc; k++) {
+        sf_scene s = c->scene;
+        sf_plan sp;
+        if ((rc = sf_sweep_set(&s, c->spec.sweep_param, c->spec.sweep.v[k], err, sizeof err)) ||
+            (rc = sf_plan_make(&s, &sp, err, sizeof err))) {
+            sf_note(r, "**%s = %g cannot be planned:** %s\n", c->spec.sweep_param, c->spec.sweep.v[k], err);
+            break;
+        }
+        int done[UE_N] = { 0 };   /* the estimators of the list compared at this point */
+        for (int e = 0; e < UE_N && !rc; e++) {
+            int est = ue_est(&s, e);
+            char name[64];
+            snprintf(name, sizeof name, e == UE_AUTO ? "auto (%s)" : "%s",
+                     e == UE_AUTO ? sf_sweep_estimator_name(est) : ue_name[e]);
+            if (!ue_admits(&sp, est)) {
+                fprintf(tab, "| %g | %s | its plan's model does not admit it |||||||\n", c->spec.sweep.v[k], name);
+                continue;
+            }
+            int twin = -1;   /* auto runs one of the above: the same call, its point compared above */
+            for (int f = 0; e == UE_AUTO && f < UE_AUTO; f++)
+                if (done[f] && ue_est(&s, f) == est)
+                    twin = f;
+            if (twin >= 0) {
+                fprintf(tab, "| %g | %s | the %s point above (sf_sweep_estimator_auto's choice) |||||||\n",
+                        c->spec.sweep.v[k], name, ue_name[twin]);
+                seen[e] += seen[twin] > 0;
+                continue;
+            }
+            sf_sweep_point p;
+            memset(&p, 0, sizeof p);
+            *err = 0;
+            rc = ue_run(&s, est, s.samples, &p, err, sizeof err);
+            if (!rc)   /* the numerical error of the means, as `sweep --summary` makes it */
+                rc = sf_unum_sweep(&s, &p, 1, err, sizeof err);
+            if (rc)
+                fprintf(tab, "| %g | %s | the sweep failed: %s |||||||\n", c->spec.sweep.v[k], name,
+                        *err ? err : sf_strerror(rc));
+            else if (!(rc = ue_compare(tab, &s, c->spec.sweep.v[k], name, est, &p, &t))) {
+                seen[e] += p.num_m >= 2;
+                done[e] = 1;
+            }
+            sf_sweep_point_free(&p);
+        }
+    }
+    fclose(tab);
+    sf_note(r, "%s", text);
+    free(text);
+    size_t kinds = 0;
+    for (int e = 0; e < UE_N; e++)
+        kinds += seen[e] > 0;
+    if (!rc) {
+        sf_check_le(r, "row QoIs unlike this check's run of stream i on the rows' documented plan (bits)",
+                    (double)t.row_bits, 0);
+        sf_check_le(r, "companion QoIs, rho, a-priori parts unlike run --summary's companion of that run (bits)",
+                    (double)t.comp_bits, 0);
+        sf_check_ge(r, "estimators checked on 2 companions or more (plain, control-variate, antithetic, mlmc, "
+                       "mlmc-sub, mlmc-boxes, auto)", (double)kinds, UE_N);
+        sf_check_ge(r, "companions compared", (double)t.comp, 2.0 * UE_N);
+        sf_check_true(r, "mlmc-boxes' row 0 on another field than the scene's plan draws from its stream (told apart)",
+                      t.boxes_other_field > 0,
+                      t.boxes_other_field ? "another field" : "the same field, or no mlmc-boxes point");
+        sf_note(r, "\n%zu rows, %zu of them with a companion; %zu of those fields differ from the scene's plan's "
+                   "on the same stream (mlmc-boxes': its cells rounded up to a multiple of %d, a finer strip %d "
+                   "nodes wider each side). Row 0's field is hashed with its grid's geometry (sf_cof_grid_view).\n",
+                t.rows, t.comp, t.hash_differ, SF_MLMC_BOX, SF_MLMC_BOX_PAD);
+        sf_plot *pl = sf_result_plot(r, "companions", "u_num's companion against its row: PV_x, every estimator",
+                                     "row PV_x [m]", "companion PV_x [m]");
+        sf_plot_series(pl, "companions", SF_STYLE_POINTS, t.nplot, t.xq, t.yq);
+        sf_plot_series(pl, "y = x", SF_STYLE_LINES, t.nplot, t.xq, t.xq);
+    }
+    free(t.xq);
+    free(t.yq);
+    return rc ? SF_EFAIL : SF_SUCCESS;
+}
+
 const sf_check_def sf_checks_sweepstats[] = {
     { "mc_sweep_aggregation", chk_sweep_aggregation,
       "sweep summary: every statistic recomputed from the per-realisation table" },
+    { "mc_unum_own_field", chk_unum_own_field,
+      "sweep u_num: every estimator's companion solves its row's own realisation (bits)" },
     { NULL, NULL, NULL }
 };
