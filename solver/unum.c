@@ -116,14 +116,15 @@ int sf_unum_sweep_stats(const double *e, size_t stride, size_t m, double apriori
 }
 
 /* the companion of one realisation of a sweep point (ws: the sweep's
- * workspace on the rows' plan, its data the sweep's values, n x
- * SF_SWEEP_NQ): its QoIs (out[0..2]), its rho (out[3]) and the plan's
- * a-priori relative cell-average error (out[4], 0 for the point model) */
+ * workspace on the rows' plan, its data the point): its QoIs (out[0..2]),
+ * its rho (out[3]) and the plan's a-priori relative cell-average error
+ * (out[4], 0 for the point model) */
 enum { UNUM_RHO = SF_UNUM_NQ, UNUM_APRIORI, UNUM_NOUT };
 static int unum_realise(void *p, size_t i, gsl_rng *rng, double *out)
 {
     sf_sweep_ws *w = p;
-    const double *qoi = w->data;
+    const sf_sweep_point *pt = w->data;
+    const double *qoi = pt->qoi;
     sf_cof *cof;
     /* row i's field: the rows' COF plan on row i's stream (the same bits) */
     int rc = sf_cof_plan_draw(w->plan, rng, &cof);
@@ -198,7 +199,7 @@ int sf_unum_sweep(const sf_scene *s, sf_sweep_point *p, int threads, char *err, 
         return rc;
     }
     pl.history = 0;
-    sf_sweep_ws ctx = { s, &pl, p->qoi, NULL, 0 };
+    sf_sweep_ws ctx = { s, &pl, p, NULL, 0 };
     sf_mc_spec spec = { m, UNUM_NOUT, s->seed, threads, NULL, 0, 0, "u_num" };
     sf_mc_ops ops = { sf_sweep_ws_alloc, sf_sweep_ws_free, unum_realise };
     if (err && errlen)
