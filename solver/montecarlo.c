@@ -252,7 +252,7 @@ static void record(mc_loop *L, size_t i, int r)
     } else if (L->lines && !L->estimated && L->finished < L->upto) {
         size_t k = L->finished - L->started, todo = L->upto - L->started;
         double dt = now_s() - L->t0;
-        if (10 * k >= todo || dt >= 30) {
+        if ((10 * k >= todo) | (dt >= 30)) {
             L->estimated = 1;
             fprintf(stderr, "%s: the first %zu of %zu runs took %.2g s: about %.2g s more\n", s->label, k, todo, dt,
                     dt / (double)k * (double)(L->upto - L->finished));
@@ -338,7 +338,7 @@ int sf_mc_run_range(const sf_mc_spec *s0, size_t first, size_t upto, const sf_mc
         before += done[i];
     mc_loop L = { s, first, upto, out, done, theirs, ck, first + before, 0, SF_SUCCESS, s->label && isatty(2),
                   first + before, now_s(), 0, 0 };
-    L.lines = s->label && stage_lines && !L.tty;
+    L.lines = s->label && stage_lines;   /* used off a terminal only (the tty arms come first) */
     realise_all(&L, ops, ctx);
     rc = L.rc;
     if (L.tty)
