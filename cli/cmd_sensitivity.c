@@ -133,10 +133,15 @@ static void cost_line(size_t n, const sf_sens_ranges *R, double T)
     double c = run_cost_max(R->lo[SF_SENS_LOGLR]);
     char t[32];
     fmt_time(t, sizeof t, (double)runs * c * T / 100);
+    char why[160];
+    if (c > 1)
+        snprintf(why, sizeof why, "at T = 100 s a run at l/R = 0.01 takes 0.5 s at v_b = 0.2, mu_mean = 0.5 and up "
+                                  "to %g s with a fast belt or a low mean COF", c);
+    else
+        snprintf(why, sizeof why, "at T = 100 s a run takes at most %g s for l/R >= %g", c, c > 0.1 ? 0.1 : 1.0);
     fprintf(stderr, "slipfield sensitivity: %d blocks x %zu rows = %zu runs at T = %g s, l/R down to %.3g: up to "
-                    "%s of CPU by the rule of thumb (%g s a run at T = 100 s%s; see --help); the first runs' "
-                    "time will give the estimate\n", SF_SENS_D + 2, n, runs, T, pow(10, R->lo[SF_SENS_LOGLR]), t, c,
-            c > 1 ? ", at l/R = 0.01 with a fast belt or a low mean COF: 0.5 s at v_b = 0.2, mu_mean = 0.5" : "");
+                    "%s of CPU by the rule of thumb (%s; see --help); the first runs' time will give the "
+                    "estimate\n", SF_SENS_D + 2, n, runs, T, pow(10, R->lo[SF_SENS_LOGLR]), t, why);
 }
 
 /* One line when any index is outside [-NOISE_LO, 1 + NOISE_LO] or its
