@@ -194,6 +194,40 @@ expect 0 "" "$bin" sensitivity sa.scene --rows 2 $narrow --threads 2 --out sa2.t
 cmp -s sa1.tsv sa2.tsv && cmp -s se1.tsv se2.tsv && [ "$(wc -l < sa1.tsv)" -eq 16 ] && [ "$(wc -l < se1.tsv)" -eq 15 ] \
     && ok || bad "sensitivity: 1 and 2 threads differ, or rows missing ($(wc -l < sa1.tsv), $(wc -l < se1.tsv))"
 
+# ---- sensitivity guards its user: stderr off a terminal ------------------------
+# err_has / err_lacks FRAGMENT WHAT: the last expect's stderr
+err_has()   { grep -qF -- "$1" "$tmp/err" && ok || bad "$2: no '$1' in: $(head -c 600 "$tmp/err")"; }
+err_lacks() { grep -qF -- "$1" "$tmp/err" && bad "$2: '$1' in: $(head -c 600 "$tmp/err")" || ok; }
+# 2 rows: below the threshold, the cost line, the stages, the indices flagged
+expect 0 "warning: 2 rows given, below 64" "$bin" sensitivity sa.scene --rows 2 $narrow --threads 1 --out sg.tsv
+err_has "slipfield sensitivity: 7 blocks x 2 rows = 14 runs at T = 20 s" "cost line"
+err_has "of CPU by the rule of thumb" "cost line"
+err_has "slipfield sensitivity: the first 2 of 14 runs took" "stage: the first runs' time"
+err_has "slipfield sensitivity: 14 runs done in" "stage: runs done"
+err_has "slipfield sensitivity: bootstrap done (20 resamples)" "stage: bootstrap done"
+err_has "indices outside [-0.05, 1.05] or with an interval wider than 1" "indices out of range at 2 rows"
+[ "$(grep -c 'runs took\|runs done\|bootstrap done' "$tmp/err")" -eq 3 ] && ok || bad "not one line per stage: $(cat "$tmp/err")"
+# the scene sets none of l, v_b, mu_mean, mu_std: no key warning
+err_lacks "is ignored" "a key the scene does not set"
+# 64 rows (cheap runs: l/R near 10): no row warning
+expect 0 "7 blocks x 64 rows = 448 runs" "$bin" sensitivity sa.scene --rows 64 --log-lr 1,1.1 --cv 0.15,0.25 --vb 0.2,0.25 \
+    --mu 0.45,0.55 --bootstrap 20 --threads 1 --out sg.tsv
+err_lacks "rows given" "64 rows"; err_lacks "rows used" "64 rows"
+err_has "slipfield sensitivity: 448 runs done in" "stage: runs done at 64 rows"
+# a key the scene sets is reported, with the option that replaces it; the others not
+cp sa.scene sl.scene; printf 'l = 0.2\nmu_mean = 0.5\n' >> sl.scene
+expect 0 "warning: key 'l' is ignored: the study draws it from its range (--log-lr)" \
+    "$bin" sensitivity sl.scene --rows 2 $narrow --threads 1 --out sg.tsv
+err_has "key 'mu_mean' is ignored: the study draws it from its range (--mu)" "a set key"
+err_lacks "key 'v_b'" "a key the scene does not set"
+err_lacks "key 'mu_std'" "a key the scene does not set"
+# on a terminal (util-linux script): the live count, no stage lines
+if script --version 2>/dev/null | grep -q util-linux; then
+    script -qec "'$bin' sensitivity sa.scene --rows 2 $narrow --threads 1 --out sg.tsv" /dev/null > "$tmp/err" 2>&1 < /dev/null
+    err_has "slipfield sensitivity: 14/14 realisations" "terminal: live count"
+    err_lacks "runs done" "terminal: a stage line"
+fi
+
 # ---- help -------------------------------------------------------------------
 for c in verify field run sweep sensitivity surface wrench; do
     expect 0 "" "$bin" help $c

@@ -201,6 +201,13 @@ static void rank_spec(sf_mc_spec *s, int rank, int size, char *ckpath, size_t le
         s->label = NULL;
 }
 
+static int stage_lines;
+
+void sf_mc_stage_lines(int on)
+{
+    stage_lines = on;
+}
+
 /* The realisation loop's shared state. */
 typedef struct {
     const sf_mc_spec *s;
@@ -212,6 +219,7 @@ typedef struct {
     int failed, rc, tty;
     size_t started;                       /* finished when the loop began (resumed) */
     double t0;                            /* its monotonic start time [s] */
+    int lines, estimated;                 /* stage lines (off a terminal); the estimate printed */
 } mc_loop;
 
 static double now_s(void)
@@ -241,6 +249,14 @@ static void record(mc_loop *L, size_t i, int r)
         double dt = now_s() - L->t0, eta = dt / (double)(L->finished - L->started) * (double)(L->upto - L->finished);
         fprintf(stderr, "\r%s: %zu/%zu realisations, ETA %02d:%02d:%02d  ", s->label, L->finished, L->upto,
                 (int)(eta / 3600), (int)fmod(eta / 60, 60), (int)fmod(eta, 60));
+    } else if (L->lines && !L->estimated && L->finished < L->upto) {
+        size_t k = L->finished - L->started, todo = L->upto - L->started;
+        double dt = now_s() - L->t0;
+        if ((10 * k >= todo) | (dt >= 30)) {
+            L->estimated = 1;
+            fprintf(stderr, "%s: the first %zu of %zu runs took %.2g s: about %.2g s more\n", s->label, k, todo, dt,
+                    dt / (double)k * (double)(L->upto - L->finished));
+        }
     }
 }
 
@@ -321,11 +337,14 @@ int sf_mc_run_range(const sf_mc_spec *s0, size_t first, size_t upto, const sf_mc
     for (size_t i = first; i < upto; i++)
         before += done[i];
     mc_loop L = { s, first, upto, out, done, theirs, ck, first + before, 0, SF_SUCCESS, s->label && isatty(2),
-                  first + before, now_s() };
+                  first + before, now_s(), 0, 0 };
+    L.lines = s->label && stage_lines;   /* used off a terminal only (the tty arms come first) */
     realise_all(&L, ops, ctx);
     rc = L.rc;
     if (L.tty)
         fputc('\n', stderr);
+    else if (L.lines && !rc)
+        fprintf(stderr, "%s: %zu runs done in %.1f s\n", s->label, L.finished - L.started, now_s() - L.t0);
     if (ck && fclose(ck) && !rc) {
         rc = sf_seterr(err, errlen, SF_EIO, "%s: cannot write the checkpoint", s->checkpoint);
     }

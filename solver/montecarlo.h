@@ -29,7 +29,7 @@ typedef struct {
     const char *checkpoint;   /* NULL: no checkpoint */
     int resume;               /* 1: reuse a matching checkpoint */
     unsigned long key;        /* identity of the work (e.g. a scene hash) */
-    const char *label;        /* progress label (stderr, only on a TTY) */
+    const char *label;        /* progress label (stderr, only on a TTY; see sf_mc_stage_lines) */
 } sf_mc_spec;
 
 typedef struct {
@@ -47,6 +47,13 @@ unsigned long sf_mc_seed(unsigned long seed, size_t i);
  * to rank i mod size and gathers every value on every rank: the bytes are
  * those of the serial run. */
 int sf_mc_rank(int *size);
+
+/* on = 1: a labelled run whose stderr is not a terminal (no live count
+ * there) prints on stderr one line with the time its first runs took and
+ * an estimate of the rest (after a tenth of them or 30 s), and one when
+ * they are done.  Process-wide, default 0 (the other commands' stderr
+ * stays as it was); set it before the runs. */
+void sf_mc_stage_lines(int on);
 
 /* FNV-1a over bytes, chained through h (start with 0). */
 unsigned long sf_mc_hash(const void *p, size_t n, unsigned long h);

@@ -73,6 +73,54 @@ static void thread_count_invariance(void **state)
     free(b);
 }
 
+/* sf_mc_stage_lines: off a terminal, a labelled run prints the time of
+ * its first tenth and a line when done; nothing unlabelled, switched off,
+ * or for the done line of a run that failed. */
+static void stage_lines(void **state)
+{
+    (void)state;
+    char path[] = "/tmp/sf-mc-stage-XXXXXX";
+    int fd = mkstemp(path);
+    assert_true(fd >= 0);
+    size_t n = 20;
+    double *out = malloc(2 * n * sizeof *out);
+    sf_mc_ops ops = { NULL, NULL, realise }, bad = { NULL, NULL, fail_at_7 };
+    sf_mc_spec s = { n, 2, 42, 1, NULL, 0, 0, "lab" };
+    fflush(stderr);
+    int saved = dup(2);
+    assert_true(saved >= 0 && dup2(fd, 2) == 2);
+    int r1 = sf_mc_run(&s, &ops, NULL, out, NULL, NULL, 0);   /* off: nothing */
+    sf_mc_stage_lines(1);
+    s.label = NULL;
+    int r2 = sf_mc_run(&s, &ops, NULL, out, NULL, NULL, 0);   /* unlabelled: nothing */
+    s.label = "lab";
+    int r3 = sf_mc_run(&s, &ops, NULL, out, NULL, NULL, 0);
+    int r4 = sf_mc_run(&s, &bad, NULL, out, NULL, NULL, 0);   /* the first line only */
+    sf_mc_stage_lines(0);
+    fflush(stderr);
+    dup2(saved, 2);
+    close(saved);
+    assert_int_equal(r1, SF_SUCCESS);
+    assert_int_equal(r2, SF_SUCCESS);
+    assert_int_equal(r3, SF_SUCCESS);
+    assert_int_equal(r4, SF_EFAIL);
+    char text[1000] = { 0 };
+    assert_true(lseek(fd, 0, SEEK_SET) == 0);
+    ssize_t len = read(fd, text, sizeof text - 1);
+    close(fd);
+    unlink(path);
+    assert_true(len > 0);
+    const char *a = strstr(text, "lab: the first 2 of 20 runs took ");
+    assert_non_null(a);
+    const char *b = strstr(a + 1, "lab: 20 runs done in ");
+    assert_non_null(b);
+    const char *c = strstr(b + 1, "lab: the first 2 of 20 runs took ");
+    assert_non_null(c);
+    assert_null(strstr(c + 1, "runs done"));
+    assert_ptr_equal(a, text);   /* nothing before: not from the runs switched off or unlabelled */
+    free(out);
+}
+
 static void checkpoint_resume(void **state)
 {
     (void)state;
@@ -955,6 +1003,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(seeds),
         cmocka_unit_test(thread_count_invariance),
+        cmocka_unit_test(stage_lines),
         cmocka_unit_test(checkpoint_resume),
         cmocka_unit_test(summary_counts_finite_values),
         cmocka_unit_test(shortest_text),
