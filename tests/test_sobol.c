@@ -501,6 +501,11 @@ static void study_threads(void **state)
         for (int q = 0; q < SF_SWEEP_NQ; q++)
             assert_true(S1->y[j * 2 * SF_SWEEP_NQ + q] > 0);
     }
+    /* the study's A and B blocks as given data, the call sobol.h shows */
+    sf_sobol_rank_result rr;
+    assert_int_equal(sf_sobol_rank_s1(2 * 3, SF_SENS_NPAR, S1->x, SF_SENS_NPAR, S1->y + 1, 2 * SF_SWEEP_NQ, 20, 0.9,
+                                      1, &rr), SF_SUCCESS);
+    assert_true(rr.n_used == 6 && rr.groups == 2 && fabs(rr.idx[SF_SENS_LOGLR].s1) <= 1);
     char *a = text_of(sf_sens_write_indices, S1), *b = text_of(sf_sens_write_evals, S1);
     assert_non_null(strstr(a, "qoi\tinput\tS1\tS1_ci90_lo"));
     assert_non_null(strstr(a, "stick_fraction_ratio\tfield\t"));
