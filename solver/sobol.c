@@ -6,6 +6,9 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#include <gsl/gsl_cdf.h>
+#include <gsl/gsl_math.h>
+#include <gsl/gsl_randist.h>
 #include <gsl/gsl_sort.h>
 #include <gsl/gsl_statistics_double.h>
 
@@ -170,5 +173,163 @@ done:
     free(pick);
     free(buf);
     free(bs);
+    return rc;
+}
+
+/* ---- the rank-based estimator */
+
+static int cmp_size(const void *a, const void *b)
+{
+    size_t u = *(const size_t *)a, v = *(const size_t *)b;
+    return (u > v) - (u < v);
+}
+
+/* ord[0..m): the rows 0..m-1 by increasing xs, ties by row.  gsl_sort_index
+ * (a heapsort) leaves the order of equal keys unspecified: each run of
+ * equal keys is sorted by row afterwards. */
+static void rank_order(const double *xs, size_t m, size_t *ord)
+{
+    gsl_sort_index(ord, xs, 1, m);
+    for (size_t a = 0, b; a < m; a = b) {
+        for (b = a + 1; b < m && xs[ord[b]] == xs[ord[a]]; b++)
+            ;
+        if (b - a > 1)
+            qsort(ord + a, b - a, sizeof *ord, cmp_size);
+    }
+}
+
+/* Per group g of a split: the running state of the walk along the
+ * global order (first and last centred y seen, sum of neighbour
+ * products, rows), the group's mean, sum of squares and range.  A group
+ * of equal y is told by its range, not by its sum of squares: the
+ * rounding of the group's mean leaves that at 1e-33, not 0. */
+typedef struct {
+    double mean, var, lo, hi, first, last, prod;
+    size_t cnt;
+} rank_group;
+
+int sf_sobol_rank_s1(size_t n, size_t d, const double *x, size_t xstride, const double *y, size_t ystride,
+                     size_t nsplit, double level, unsigned long seed, sf_sobol_rank_result *res)
+{
+    memset(res, 0, sizeof *res);
+    res->nsplit = nsplit;
+    res->level = level;
+    if (!(level > 0 && level < 1) || d == 0 || d > SF_SOBOL_MAXD || xstride < d || n < 3)
+        return SF_EINVAL;
+    size_t m = 0;
+    for (size_t j = 0; j < n; j++) {
+        int ok = isfinite(y[j * ystride]);
+        for (size_t i = 0; i < d; i++)
+            ok = ok && isfinite(x[j * xstride + i]);
+        m += ok;
+    }
+    res->n_used = m;
+    res->n_excluded = n - m;
+    if (m < 3)
+        return SF_EINVAL;
+    size_t K = (size_t)cbrt((double)m);
+    K = K < 2 ? 2 : K;
+    K = K > m / 2 ? 0 : K;   /* groups of 2 rows at least; 0: no split */
+    res->groups = K;
+    /* rows[0..m): the used rows; yc their centred y; xs one input's column;
+     * ord the order; lab a split's group of each used row */
+    size_t *rows = sf_malloc(m * sizeof *rows), *ord = sf_malloc(m * sizeof *ord), *lab = sf_malloc(m * sizeof *lab);
+    double *yc = sf_malloc(m * sizeof *yc), *xs = sf_malloc(m * sizeof *xs), *th = sf_malloc((K ? K : 1) * sizeof *th);
+    rank_group *G = sf_malloc((K ? K : 1) * sizeof *G);
+    gsl_rng *rng = SF_FALLIBLE(gsl_rng_alloc(gsl_rng_mt19937));
+    int rc = SF_ENOMEM;
+    if (!rows || !ord || !lab || !yc || !xs || !th || !G || !rng)
+        goto done;
+    for (size_t j = 0, k = 0; j < n; j++) {
+        int ok = isfinite(y[j * ystride]);
+        for (size_t i = 0; i < d; i++)
+            ok = ok && isfinite(x[j * xstride + i]);
+        if (ok)
+            rows[k++] = j;
+    }
+    double mean = 0, var = 0;
+    for (size_t k = 0; k < m; k++)
+        mean += y[rows[k] * ystride];
+    mean /= (double)m;
+    for (size_t k = 0; k < m; k++) {
+        yc[k] = y[rows[k] * ystride] - mean;
+        var += yc[k] * yc[k];
+    }
+    var /= (double)m;
+    res->mean = mean;
+    res->var = var;
+    rc = SF_EFAIL;
+    if (!(var > 0))
+        goto done;
+    double z = gsl_cdf_ugaussian_Qinv(0.5 * (1 - level));
+    for (size_t i = 0; i < d; i++) {
+        for (size_t k = 0; k < m; k++)
+            xs[k] = x[rows[k] * xstride + i];
+        rank_order(xs, m, ord);
+        double c = yc[ord[m - 1]] * yc[ord[0]];   /* the wrapped pair */
+        for (size_t k = 0; k + 1 < m; k++)
+            c += yc[ord[k]] * yc[ord[k + 1]];
+        sf_sobol_rank_index *o = &res->idx[i];
+        o->s1 = c / (double)m / var;
+        /* the splits: the same stream, so the same splits, for every input */
+        gsl_rng_set(rng, seed);
+        for (size_t k = 0; k < m; k++)
+            lab[k] = K ? k % K : 0;
+        double v = 0;
+        size_t used = 0;
+        for (size_t r = 0; K && r < nsplit; r++) {
+            gsl_ran_shuffle(rng, lab, m, sizeof *lab);
+            memset(G, 0, K * sizeof *G);
+            for (size_t g = 0; g < K; g++) {
+                G[g].lo = INFINITY;
+                G[g].hi = -INFINITY;
+            }
+            for (size_t k = 0; k < m; k++) {
+                rank_group *q = &G[lab[k]];
+                q->mean += yc[k];
+                q->lo = fmin(q->lo, yc[k]);
+                q->hi = fmax(q->hi, yc[k]);
+                q->cnt++;
+            }
+            for (size_t g = 0; g < K; g++)
+                G[g].mean /= (double)G[g].cnt;
+            for (size_t k = 0; k < m; k++)
+                G[lab[k]].var += gsl_pow_2(yc[k] - G[lab[k]].mean);
+            for (size_t g = 0; g < K; g++)
+                G[g].cnt = 0;
+            /* each group's rows in the global order are its own order */
+            for (size_t k = 0; k < m; k++) {
+                rank_group *q = &G[lab[ord[k]]];
+                double u = yc[ord[k]] - q->mean;
+                if (q->cnt++)
+                    q->prod += q->last * u;
+                else
+                    q->first = u;
+                q->last = u;
+            }
+            size_t kk = 0;
+            for (size_t g = 0; g < K; g++)
+                if (G[g].hi > G[g].lo)   /* a group of equal y has no index */
+                    th[kk++] = (G[g].prod + G[g].last * G[g].first) / G[g].var;
+            if (kk < 2)
+                continue;
+            v += gsl_stats_variance(th, 1, kk) / (double)K;
+            used++;
+        }
+        res->nsplit_used = used;
+        o->se = used ? sqrt(v / (double)used) : NAN;
+        o->lo = o->s1 - z * o->se;
+        o->hi = o->s1 + z * o->se;
+    }
+    rc = SF_SUCCESS;
+done:
+    gsl_rng_free(rng);
+    free(rows);
+    free(ord);
+    free(lab);
+    free(yc);
+    free(xs);
+    free(th);
+    free(G);
     return rc;
 }

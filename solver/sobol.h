@@ -83,6 +83,89 @@ typedef struct {
 int sf_sobol_estimate(const sf_sobol_design *D, const double *y, size_t stride, size_t nboot, double level,
                       unsigned long seed, sf_sobol_result *res, double *boot);
 
+/* ---- Given data: the rank-based first-order index
+ *
+ * From n plain Monte Carlo rows (x_j, y_j), x_j in R^d with independent
+ * entries, no pick-freeze design: for each input i sort the rows by x_i
+ * (ties by row index: an order that does not look at y, so tied rows stay
+ * exchangeable), let N(j) be the row after j in that order, the last
+ * wrapping to the first, and
+ *
+ *   S_i = ( (1/n) sum_j y_j y_N(j) - ybar^2 ) / ( (1/n) sum_j y_j^2 - ybar^2 )
+ *
+ * (Gamboa, Gremaud, Klein & Lagnoux 2022, "Global sensitivity analysis: a
+ * novel generation of mighty estimators based on rank statistics",
+ * Bernoulli 28(4), 2345-2374, sec. 3; Chatterjee 2021's construction with
+ * y's values for its ranks).  The wrap makes N a permutation, so the
+ * numerator is exactly (1/n) sum_j (y_j - ybar)(y_N(j) - ybar): computed
+ * so, centred, it loses nothing to a large mean.  Consistent, one sort per
+ * input, bias O(1/n) (ybar^2's Var(y)/n, the wrapped pair).
+ *
+ * Intervals: not the bootstrap.  A resample with replacement repeats
+ * rows, and a repeated row is its own neighbour: about 1 - 1/e of the
+ * pairs become y_j^2, which drags every resampled index towards 1 (the
+ * n-out-of-n bootstrap of Chatterjee's coefficient is inconsistent: Lin &
+ * Han 2024, Biometrika 111; Dalitz et al. 2024 measure its coverage near
+ * 0, arXiv:2312.15496).  The paper's CLT variance (and its 2023 erratum)
+ * needs conditional moments of y that would have to be estimated too.  So the standard error comes from random
+ * splits, a subsampling method without replacement (no repeated rows):
+ * the rows are dealt at random into K groups of about b = n/K rows, the
+ * estimator is computed in each group (ranks within the group: the
+ * global order restricted to it), and since sqrt(b) (S_b - S) and
+ * sqrt(n) (S_n - S) have the same normal limit, Var(S_n) = Var(S_b) b/n
+ * = s^2 / K with s^2 the variance of the K group estimates.  K =
+ * floor(cbrt(n)) (at least 2, groups of at least 2 rows): b and K both
+ * grow with n.  s^2 / K is averaged over nsplit independent splits (one
+ * split's s^2 has only K - 1 degrees of freedom), and the interval is
+ * S_n -/+ z se, z the normal quantile at the level.  The splits are drawn
+ * from MT19937 seeded from seed, the same splits for every input:
+ * reproducible bit for bit.
+ *
+ * A row with a non-finite y or a non-finite x_i (any i < d) is excluded
+ * (counted, never used).
+ */
+
+typedef struct {
+    double s1;          /* the estimate */
+    double lo, hi;      /* s1 -/+ z se at the level asked (NAN: no se) */
+    double se;          /* standard error from the random splits (NAN: none) */
+} sf_sobol_rank_index;
+
+typedef struct {
+    size_t n_used, n_excluded;   /* rows */
+    double mean, var;            /* of y over the used rows (var: the estimator's 1/n divisor) */
+    size_t groups;               /* K, the groups of a split (0: too few rows for a se) */
+    size_t nsplit, nsplit_used;  /* splits asked for, and those with 2 or more groups of V > 0 (the se's) */
+    double level;
+    sf_sobol_rank_index idx[SF_SOBOL_MAXD];
+} sf_sobol_rank_result;
+
+/* The rank-based first-order indices of y on the d inputs of n rows:
+ * x[j xstride + i] is input i of row j (xstride >= d: the d inputs may be
+ * the leading columns of a wider matrix), y[j ystride] its output.
+ * nsplit random splits for the se (0: no se or interval, NAN), level in
+ * (0, 1).  With fewer than 4 usable rows no split has two groups: groups
+ * = 0, NAN se.
+ * SF_EINVAL for d = 0 or d > SF_SOBOL_MAXD, xstride < d, a bad level, n <
+ * 3 or fewer than 3 usable rows (res->n_used, n_excluded say how many);
+ * SF_EFAIL when y is constant over the used rows (no index); SF_ENOMEM.
+ *
+ * The sensitivity study's runs as given data (sensitivity.h: S->x is
+ * nevals x SF_SENS_NPAR parameters, S->y nevals x 2 SF_SWEEP_NQ outputs,
+ * evaluation e = k n + j): blocks A and B (evaluations 0 .. 2n - 1) are
+ * 2n independent draws of the parameters, so the indices of output q on
+ * the SF_SENS_NPAR parameter columns are
+ *
+ *   sf_sobol_rank_s1(2 * n, SF_SENS_NPAR, S->x, SF_SENS_NPAR,
+ *                    S->y + q, 2 * SF_SWEEP_NQ, 200, 0.95, seed, &res);
+ *
+ * (the A_B^(i) blocks repeat A's columns but for one: not independent
+ * rows, leave them out).  Column i alone: x = S->x + i, d = 1, xstride =
+ * SF_SENS_NPAR.  The field input has no column: its first-order index is
+ * not given-data. */
+int sf_sobol_rank_s1(size_t n, size_t d, const double *x, size_t xstride, const double *y, size_t ystride,
+                     size_t nsplit, double level, unsigned long seed, sf_sobol_rank_result *res);
+
 #ifdef __cplusplus
 }
 #endif

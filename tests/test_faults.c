@@ -839,6 +839,21 @@ static int sobol_estimate(void *ctx)
     return sf_sobol_estimate(D, y, 1, 5, 0.9, 1, &r, NULL);
 }
 
+static int sobol_rank(void *ctx)
+{
+    (void)ctx;
+    double x[24], y[12];
+    for (int j = 0; j < 24; j++)
+        x[j] = sin(3 * j);
+    for (int j = 0; j < 12; j++)
+        y[j] = x[2 * j] + cos(j);
+    sf_sobol_rank_result r;
+    int rc = sf_sobol_rank_s1(12, 2, x, 2, y, 1, 5, 0.9, 1, &r);
+    if (!rc)
+        assert_true(isfinite(r.idx[1].se));
+    return rc;
+}
+
 static int sens(void *ctx)
 {
     sf_sens_ranges r;
@@ -863,6 +878,7 @@ static void sobol(void **state)
     assert_int_equal(sf_sobol_design_alloc(4, 2, g, &D), SF_SUCCESS);
     gsl_rng_free(g);
     assert_int_equal(walk("sf_sobol_estimate", sobol_estimate, D, SF_SUCCESS, 0), 5);
+    assert_int_equal(walk("sf_sobol_rank_s1", sobol_rank, NULL, SF_SUCCESS, 0), 8);
     sf_sobol_design_free(D);
     sf_scene s;
     sf_scene_default(&s);
