@@ -88,6 +88,7 @@ static int evaluate(void *p, size_t e, gsl_rng *unused, double *out)
     sf_sobol_point(w->D, e, u);
     sf_scene s;
     sf_sens_scene(w->base, w->r, u, &s, w->x + e * SF_SENS_NPAR);
+    s.cof_generator = SF_COFGEN_BELT_NOISE;   /* the field input: one white noise for every parameter */
     gsl_rng_set(w->rng, sf_mc_seed(s.seed, sf_sobol_source_row(w->D, e, SF_SENS_FIELD)));
     double det[SF_SWEEP_NQ], q[SF_SWEEP_NQ];
     sf_cof_plan *plan;
