@@ -531,14 +531,53 @@ static int window_of_key(const sf_cof_plan *p, uint64_t key, double sign, col_st
     return SF_SUCCESS;
 }
 
-/* A tiled realisation: its key is 64 bits from rng (two 32-bit draws). */
+/* A tiled realisation's key: 64 bits from rng (two 32-bit draws). */
+static uint64_t draw_key(gsl_rng *rng)
+{
+    uint64_t key = (uint64_t)gsl_rng_get(rng) << 32;
+    return key ^ (uint64_t)gsl_rng_get(rng);
+}
+
 static int draw_window(const sf_cof_plan *p, gsl_rng *rng, sf_cof **out)
 {
     if (!rng)
         return SF_EINVAL;
-    uint64_t key = (uint64_t)gsl_rng_get(rng) << 32;
-    key ^= (uint64_t)gsl_rng_get(rng);
-    return window_of_key(p, key, 1, NULL, out);
+    return window_of_key(p, draw_key(rng), 1, NULL, out);
+}
+
+int sf_cof_plan_point(const sf_cof_plan *p, gsl_rng *rng, double xb, double yb, double *mu)
+{
+    const sf_cof_plan_info *in = &p->info;
+    if (!rng || !in->belt_noise || !isfinite(xb) || !isfinite(yb) || !(fabs(xb / in->dx) < 1e15) ||
+        !(fabs(yb / in->dy) < 1e15))
+        return SF_EINVAL;
+    double h = in->dx;
+    long i0 = (long)floor(xb / h - 0.5), j0 = (long)floor(yb / h - 0.5);   /* the cell centres around (xb, yb) */
+    sf_cof c = { .kind = SF_COF_FIELD, .m = 2, .n = 2, .dx = h, .dy = h, .x0 = ((double)i0 + 0.5) * h,
+                 .y0 = ((double)j0 + 0.5) * h, .ln = p->ln };
+    sf_cof_plan_info one = *in;
+    one.ny = 2;
+    one.y0 = c.y0;
+    sf_tiles_spec ts = { 2, h, h, p->l, 0, 0 };
+    double g[4];
+    int rc = sf_tiles_alloc(&ts, &c.tiles);
+    if (!rc)
+        rc = belt_noise(&c, &one);
+    if (!rc) {
+        uint64_t key = draw_key(rng);
+        sf_tiles_set_key(c.tiles, key);
+        sf_noise_set_key(c.noise, key);
+        rc = sf_tiles_fill(c.tiles, i0, 2, g, 2);
+    }
+    sf_tiles_free(c.tiles);
+    sf_noise_free(c.noise);
+    if (rc)
+        return rc;
+    for (int k = 0; k < 4; k++)
+        g[k] = sf_lognormal_map(&p->ln, g[k]);
+    sf_cof_view v = { g, 2, 2, c.x0, c.y0, 1 / h, 1 / h };   /* sf_cof_get_view's, of this 2 x 2 grid */
+    *mu = sf_cof_view_at(&v, sf_cof_view_gx(&v, xb), sf_cof_view_gy(&v, yb));
+    return SF_SUCCESS;
 }
 
 int sf_cof_plan_draw(sf_cof_plan *p, gsl_rng *rng, sf_cof **out)
