@@ -6,6 +6,7 @@
 #include "lognormal.h"
 #include "sf_alloc.h"
 #include "sf_error.h"
+#include "noise.h"
 #include "tiles.h"
 
 #include <limits.h>
@@ -42,6 +43,8 @@ struct sf_cof {
      * lattice column i_lo + c, x0 = i_lo dx; the values are a function of
      * (key, lattice point) alone, so the window is a cache of the field */
     sf_tiles *tiles;
+    sf_noise *noise;           /* belt noise (NULL: the tiles' own): column i at x = (i + 1/2) dx */
+    double x_off;              /* lattice column i lies at x = (i + x_off) dx: 0, or 1/2 on belt noise */
     sf_lognormal ln;
     uint64_t key;              /* the realisation's key (sf_tiles_set_key) */
     double sign;               /* +1; -1 for the antithetic window: the Nataf map of -G */
@@ -192,6 +195,7 @@ void sf_cof_free(sf_cof *c)
         return;
     free(c->grid);
     sf_tiles_free(c->tiles);
+    sf_noise_free(c->noise);
     cols_release(c->cols);
     free(c);
 }
@@ -265,7 +269,7 @@ static int window_slide(sf_cof *c, long lo)
     }
     c->filled = 1;
     c->i_lo = lo;
-    c->x0 = (double)lo * c->dx;
+    c->x0 = ((double)lo + c->x_off) * c->dx;
     double mx = c->grid[0];
     for (size_t i = 1; i < m * c->n; i++)
         mx = c->grid[i] > mx ? c->grid[i] : mx;
@@ -286,8 +290,8 @@ int sf_cof_follow(const sf_cof *cc, double xlo, double xhi)
         return SF_SUCCESS;
     if (!(fabs(xhi / h) < 1e15))
         return SF_EINVAL;
-    long hi = (long)ceil(xhi / h) + (long)c->slack_r, lo = hi - (long)(c->m - 1);
-    if ((double)lo * h > xlo)
+    long hi = (long)ceil(xhi / h - c->x_off) + (long)c->slack_r, lo = hi - (long)(c->m - 1);
+    if (((double)lo + c->x_off) * h > xlo)
         return SF_ETOOBIG;   /* wider than the window */
     return window_slide(c, lo);
 }
@@ -459,6 +463,23 @@ int sf_cof_plan_truncated(const sf_cof_plan *p) { return p->truncated; }
 double sf_cof_plan_cell_std(const sf_cof_plan *p) { return p->cfield ? sqrt(sf_cellavg_var(&p->ca)) : 0; }
 struct sf_field *sf_cof_plan_cell_field(const sf_cof_plan *p) { return p->cfield; }
 
+static const double *noise_column(void *z, long i) { return sf_noise_column(z, i); }
+
+/* The window's tiles draw from the white noise of the belt (noise.h):
+ * window row 0 is the noise's row j0, y0 = (j0 + 1/2) dy; the tiles read
+ * Ky rows beyond each side. */
+static int belt_noise(sf_cof *c, const sf_cof_plan_info *in)
+{
+    size_t ky, nr = sf_tiles_noise_rows(c->tiles, &ky);
+    long j0 = lround(in->y0 / in->dy - 0.5);
+    int rc = sf_noise_alloc(in->noise_level, j0 - (long)ky, nr, &c->noise);
+    if (rc)
+        return rc;
+    sf_tiles_set_noise(c->tiles, noise_column, c->noise);
+    c->x_off = 0.5;
+    return SF_SUCCESS;
+}
+
 /* A tiled realisation of key `key` (sign -1: of -G, the antithetic);
  * the window starts over the disc at the origin. */
 /* cols: the store to share (the pair's first window's), or NULL: a new
@@ -481,6 +502,8 @@ static int window_of_key(const sf_cof_plan *p, uint64_t key, double sign, col_st
     c->slack_r = (size_t)ceil(in->margin / in->dx);
     sf_tiles_spec ts = { in->ny, in->dx, in->dy, p->l, 0, 0 };
     int rc = sf_tiles_alloc(&ts, &c->tiles);
+    if (!rc && in->belt_noise)
+        rc = belt_noise(c, in);
     if (!rc && !(c->grid = sf_malloc(c->m * c->n * sizeof *c->grid)))
         rc = SF_ENOMEM;
     if (!rc && !cols && p->keep_cols) {
@@ -495,6 +518,8 @@ static int window_of_key(const sf_cof_plan *p, uint64_t key, double sign, col_st
     }
     if (!rc) {
         sf_tiles_set_key(c->tiles, key);
+        if (c->noise)
+            sf_noise_set_key(c->noise, key);
         rc = sf_cof_follow(c, -p->R - in->margin, p->R + in->margin);
         c->slides = 0;   /* the first fill is not a slide */
     }
@@ -506,14 +531,53 @@ static int window_of_key(const sf_cof_plan *p, uint64_t key, double sign, col_st
     return SF_SUCCESS;
 }
 
-/* A tiled realisation: its key is 64 bits from rng (two 32-bit draws). */
+/* A tiled realisation's key: 64 bits from rng (two 32-bit draws). */
+static uint64_t draw_key(gsl_rng *rng)
+{
+    uint64_t key = (uint64_t)gsl_rng_get(rng) << 32;
+    return key ^ (uint64_t)gsl_rng_get(rng);
+}
+
 static int draw_window(const sf_cof_plan *p, gsl_rng *rng, sf_cof **out)
 {
     if (!rng)
         return SF_EINVAL;
-    uint64_t key = (uint64_t)gsl_rng_get(rng) << 32;
-    key ^= (uint64_t)gsl_rng_get(rng);
-    return window_of_key(p, key, 1, NULL, out);
+    return window_of_key(p, draw_key(rng), 1, NULL, out);
+}
+
+int sf_cof_plan_point(const sf_cof_plan *p, gsl_rng *rng, double xb, double yb, double *mu)
+{
+    const sf_cof_plan_info *in = &p->info;
+    if (!rng || !in->belt_noise || !isfinite(xb) || !isfinite(yb) || !(fabs(xb / in->dx) < 1e15) ||
+        !(fabs(yb / in->dy) < 1e15))
+        return SF_EINVAL;
+    double h = in->dx;
+    long i0 = (long)floor(xb / h - 0.5), j0 = (long)floor(yb / h - 0.5);   /* the cell centres around (xb, yb) */
+    sf_cof c = { .kind = SF_COF_FIELD, .m = 2, .n = 2, .dx = h, .dy = h, .x0 = ((double)i0 + 0.5) * h,
+                 .y0 = ((double)j0 + 0.5) * h, .ln = p->ln };
+    sf_cof_plan_info one = *in;
+    one.ny = 2;
+    one.y0 = c.y0;
+    sf_tiles_spec ts = { 2, h, h, p->l, 0, 0 };
+    double g[4];
+    int rc = sf_tiles_alloc(&ts, &c.tiles);
+    if (!rc)
+        rc = belt_noise(&c, &one);
+    if (!rc) {
+        uint64_t key = draw_key(rng);
+        sf_tiles_set_key(c.tiles, key);
+        sf_noise_set_key(c.noise, key);
+        rc = sf_tiles_fill(c.tiles, i0, 2, g, 2);
+    }
+    sf_tiles_free(c.tiles);
+    sf_noise_free(c.noise);
+    if (rc)
+        return rc;
+    for (int k = 0; k < 4; k++)
+        g[k] = sf_lognormal_map(&p->ln, g[k]);
+    sf_cof_view v = { g, 2, 2, c.x0, c.y0, 1 / h, 1 / h };   /* sf_cof_get_view's, of this 2 x 2 grid */
+    *mu = sf_cof_view_at(&v, sf_cof_view_gx(&v, xb), sf_cof_view_gy(&v, yb));
+    return SF_SUCCESS;
 }
 
 int sf_cof_plan_draw(sf_cof_plan *p, gsl_rng *rng, sf_cof **out)

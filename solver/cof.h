@@ -218,6 +218,16 @@ struct sf_field *sf_cof_plan_cell_field(const sf_cof_plan *p);
  * belt is made as sf_cof_follow() asks for it (the oscillator does). */
 int sf_cof_plan_draw(sf_cof_plan *p, gsl_rng *rng, sf_cof **out);
 
+/* cof_generator = belt_noise: the COF that sf_cof_plan_draw(p, rng)
+ * would draw, at the one belt point (xb, yb), without its window (the
+ * four lattice nodes around the point, interpolated bilinearly as the
+ * window does: the same node values, the weights to the last bits).  A
+ * functional of the field at a point costs a few thousand noise cells
+ * instead of a window over the disc.  Takes the key from rng as the draw
+ * does.  SF_EINVAL for another generator or a point off the lattice's
+ * range. */
+int sf_cof_plan_point(const sf_cof_plan *p, gsl_rng *rng, double xb, double yb, double *mu);
+
 /* The antithetic of COF c, which plan p drew: the same realisation with
  * its Gaussian values negated, G -> -G, before the marginal map (the
  * lognormal strip: exp(2 mu_g) / mu at each node; cell averages:

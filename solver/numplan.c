@@ -2,8 +2,10 @@
 #include "sf_error.h"
 #include "cellavg.h"
 #include "lognormal.h"
+#include "noise.h"
 
 #include <math.h>
+#include <gsl/gsl_math.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -354,7 +356,8 @@ int sf_numplan_cell_average(const sf_scene *s, size_t *cells, double *box)
     else if (s->cof_model == SF_COFMODEL_POINT)
         on = 0;
     else {
-        on = s->shortcuts && s->mu_std > 0 && !s->precorrect && s->cells == 0 && s->l / s->R < SF_PLAN_CELLAVG_LR;
+        on = s->shortcuts && s->mu_std > 0 && !s->precorrect && s->cells == 0 && s->l / s->R < SF_PLAN_CELLAVG_LR &&
+             s->cof_generator != SF_COFGEN_BELT_NOISE;
         if (on)
             on = (n = cell_average_cells(s, 0.75 * s->qoi_tol)) > 0;
         /* memory: the effective strip is one circulant over [0, T]; above
@@ -561,18 +564,29 @@ int sf_plan_cof(const sf_scene *s, sf_plan *p, char *err, size_t errlen)
     if (p->cof.kind != SF_COF_FIELD)
         return SF_SUCCESS;
     double h = s->l / 8, B0, W0;
+    int belt = s->cof_generator == SF_COFGEN_BELT_NOISE;
+    if (belt && sf_noise_level(s->l, &p->cof.noise_level, &h))
+        return sf_seterr(err, errlen, SF_EINVAL, "cof_generator = belt_noise: l = %g m is outside the noise's "
+                         "levels (at most %.4g m)", s->l, 8 * M_SQRT2 * SF_NOISE_H0);
     sf_plan_strip_bounds(s, &B0, &W0);
     double E = hypot(s->v_b * s->T + 2 * B0, 2 * W0);   /* the strip the disc can visit */
     double B = B0 + 2 * h, W = W0 + 2 * h, len = s->v_b * s->T + 2 * B;
     p->cof.strip_diag = E;
-    if (s->shortcuts && ((E / s->l) * (E / s->l) <= SF_COF_SHORTCUT_E2 || s->mu_std == 0)) {
+    /* belt noise: no one-variable shortcut (it would draw the value from
+     * the stream, not from the noise), nor cell averages (their own
+     * generator): the same field at every l */
+    if (s->shortcuts && ((!belt && (E / s->l) * (E / s->l) <= SF_COF_SHORTCUT_E2) || s->mu_std == 0)) {
         p->cof.kind = SF_COF_VARIABLE;
         p->cof.shortcut = 1;
         return SF_SUCCESS;
     }
     double box;
-    if (sf_numplan_cell_average(s, NULL, &box))
+    if (sf_numplan_cell_average(s, NULL, &box)) {
+        if (belt)
+            return sf_seterr(err, errlen, SF_EINVAL, "cof_model = cell_average needs cof_generator = auto or "
+                             "circulant (the cell averages have their own generator; belt_noise gives point values)");
         return plan_cell_average(p, s, box, B0, W0, err, errlen);
+    }
     p->cof_model = SF_PLAN_MODEL_POINT;
     double nx = ceil(len / h) + 1, ny = ceil(2 * W / h) + 1;
     p->cof.strip_points = nx * ny;
@@ -580,6 +594,13 @@ int sf_plan_cof(const sf_scene *s, sf_plan *p, char *err, size_t errlen)
     if (gen == SF_COFGEN_AUTO)
         gen = nx * ny > (double)SF_COF_AUTO_POINTS && !(s->precorrect && s->mu_std > 0) ? SF_COFGEN_TILES
                                                                                       : SF_COFGEN_CIRCULANT;
+    if (belt) {   /* cells centred on the noise's: y = (j + 1/2) h, j = -J-1 .. J, (J + 1/2) h >= W */
+        double J = ceil(W / h - 0.5);
+        ny = 2 * J + 2;
+        W = (J + 0.5) * h;
+        gen = SF_COFGEN_TILES;
+        p->cof.belt_noise = 1;
+    }
     p->cof.generator = gen;
     if (gen == SF_COFGEN_TILES) {
         if (s->precorrect && s->mu_std > 0)
@@ -591,8 +612,12 @@ int sf_plan_cof(const sf_scene *s, sf_plan *p, char *err, size_t errlen)
          * slack R towards -x (where the belt carries the disc) so
          * that a slide is due once per R of travel, and M towards +x */
         double M = fmax(s->R / 4, 2 * h);
-        double mx = ceil((3 * s->R + 3 * M) / h) + 1;
-        if ((rc = grid_cap(mx * ny, h, "the tiled window", "l/8 = ", "raise l or set strip_halfwidth", err, errlen)))
+        /* belt noise: two columns more, so that the slack, the rounding
+         * of the window's end and the half-cell offset of its lattice fit
+         * when h is large against R (l/R above about 5) */
+        double mx = ceil((3 * s->R + 3 * M) / h) + 1 + (belt ? 2 : 0);
+        if ((rc = grid_cap(mx * ny, h, "the tiled window", belt ? "" : "l/8 = ", "raise l or set strip_halfwidth",
+                           err, errlen)))
             return rc;
         set_grid(&p->cof, mx, ny, h, -s->v_b * s->T - B, W, B);
         p->cof.margin = M;
@@ -644,6 +669,11 @@ static void explain_cof(const sf_plan *p, const sf_scene *s, FILE *f)
                    "realisation (cellavg.h)\n",
                 s->cof_model == SF_COFMODEL_CELL ? "cell_average" : "auto: the plan's choice", in->box, in->box / s->l,
                 p->cell_std, in->nx, in->ny, in->dx, in->x0, -in->y0);
+    else if (in->belt_noise)
+        fprintf(f, "COF: lognormal field from the white noise of the belt (cof_generator = belt_noise; noise.h): "
+                   "noise level %d, cells of %.4g m (l/%.3g), convolved as the tiles do in a window of %zu x %zu "
+                   "points, |y| <= %.4g m, that follows the disc; the same noise for every l, v_b and COF marginal\n",
+                in->noise_level, in->dx, s->l / in->dx, in->nx, in->ny, -in->y0);
     else if (in->generator == SF_COFGEN_TILES)
         fprintf(f, "COF: lognormal field generated on demand from tiles of white noise (cof_generator = %s%s): a "
                    "window of %zu x %zu points, spacing %.4g m (l/8), |y| <= %.4g m, that follows the disc along the "

@@ -67,6 +67,9 @@ typedef struct {
     int generator;           /* SF_COFGEN_CIRCULANT or SF_COFGEN_TILES (field scenes) */
     double margin;           /* tiles: M [m]; nx x ny is then the window, x0 the strip's start */
     double box;              /* > 0: cof_model = cell_average, the cells' side [m] (cellavg.h) */
+    int belt_noise;          /* 1: cof_generator = belt_noise (generator TILES on noise.h's white noise, lattice
+                                x = (i + 1/2) dx, y = (j + 1/2) dy, dx = dy its cells' side) */
+    int noise_level;         /* belt_noise: the noise's level (noise.h) */
 } sf_cof_plan_info;
 
 /* The strip's bounds B0 and W0 [m] before the grid's margin (above:

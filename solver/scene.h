@@ -32,7 +32,7 @@ typedef struct {
 
 enum { SF_INTEG_ADAPTIVE = 0, SF_INTEG_RK4 = 1, SF_INTEG_RK8PD = 2, SF_INTEG_RKCK = 3 };
 enum { SF_DOF_1 = 0, SF_DOF_3 = 1 };   /* values of the `dof` key ("1", "3") */
-enum { SF_COFGEN_AUTO = 0, SF_COFGEN_CIRCULANT = 1, SF_COFGEN_TILES = 2 };   /* `cof_generator` */
+enum { SF_COFGEN_AUTO = 0, SF_COFGEN_CIRCULANT = 1, SF_COFGEN_TILES = 2, SF_COFGEN_BELT_NOISE = 3 };   /* `cof_generator` */
 /* auto takes the tiles above 2^SF_COF_AUTO_LOG2 strip points (numplan.h:
  * SF_COF_AUTO_POINTS, and why); the key's help says the number */
 #define SF_COF_AUTO_LOG2 20

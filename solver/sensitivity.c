@@ -78,17 +78,24 @@ static void ws_free(void *p)
     free(w);
 }
 
-/* Evaluation e: its scene, its field (the stream of the row its field
- * column comes from), the run and the deterministic reference. */
+void sf_sens_point(const sf_scene *base, const sf_sens_ranges *r, const sf_sobol_design *D, size_t e, sf_scene *s,
+                   double *x, gsl_rng *field_rng)
+{
+    double u[SF_SENS_D];
+    sf_sobol_point(D, e, u);
+    sf_sens_scene(base, r, u, s, x);
+    s->cof_generator = SF_COFGEN_BELT_NOISE;   /* the field input: one white noise for every parameter */
+    gsl_rng_set(field_rng, sf_mc_seed(base->seed, sf_sobol_source_row(D, e, SF_SENS_FIELD)));
+}
+
+/* Evaluation e: its scene and field, the run and the deterministic
+ * reference. */
 static int evaluate(void *p, size_t e, gsl_rng *unused, double *out)
 {
     (void)unused;
     ctx_t *w = p;
-    double u[SF_SENS_D];
-    sf_sobol_point(w->D, e, u);
     sf_scene s;
-    sf_sens_scene(w->base, w->r, u, &s, w->x + e * SF_SENS_NPAR);
-    gsl_rng_set(w->rng, sf_mc_seed(s.seed, sf_sobol_source_row(w->D, e, SF_SENS_FIELD)));
+    sf_sens_point(w->base, w->r, w->D, e, &s, w->x + e * SF_SENS_NPAR, w->rng);
     double det[SF_SWEEP_NQ], q[SF_SWEEP_NQ];
     sf_cof_plan *plan;
     int rc = sf_sweep_det(&s, det, NULL, 0);

@@ -3,16 +3,25 @@
  *
  * Inputs, independent and uniform on their ranges: log10 l/R, the COF's
  * CV (mu_std = CV mu_mean), the belt speed v_b [m/s], the mean COF
- * mu_mean; and the random field itself as a fifth input.  The field is
- * keyed by the design's row (sf_sobol_source_row): evaluation e draws its
- * field from the stream sf_mc_seed(seed, r), r the row its field column
- * comes from, so A_B^(i) for a parameter i sees A's field (as A's other
- * inputs) and A_B^(field) sees B's.  The map from stream to field depends
- * on the parameters (the plan's grid does), which is no matter: f(x, r)
- * is a fixed function of independent inputs and the decomposition holds.
- * Every index is then of the same variance, the field's included: S_field
- * is what the field alone explains, 1 - sum S_i what the field and the
- * interactions do.
+ * mu_mean; and the random field itself as a fifth input.
+ *
+ * The field input is a white noise fixed in belt coordinates (noise.h,
+ * cof_generator = belt_noise), keyed by the design's row
+ * (sf_sobol_source_row): evaluation e builds its field from the noise of
+ * row r at its own parameters, G = k_l * W, H = exp(mu_g + sigma_g G).
+ * A_B^(i) of a parameter keeps A's noise, A_B^(field) takes B's.  So a
+ * parameter's small change moves the field by as little (the correlation
+ * of two evaluations' fields at a belt point -> 1 as the change -> 0; v_b,
+ * the CV and the mean COF leave G as it is), and an input held to a
+ * narrow range gets a total index near 0.  The decomposition holds for
+ * any fixed f(x, W) of independent inputs, but what the indices mean
+ * depends on what W is: with a field redrawn whenever the grid that
+ * carries it moves (a stream laid on a grid of spacing l/8), every
+ * parameter's total index would hold the share of the field it redraws.
+ * First-order indices do not depend on the choice (E[f | x_i] integrates
+ * the field out); total indices of l/R do: with this W they hold the
+ * interaction of l with the field, the change of the field's pattern when
+ * its scale changes (docs/design.md sec. 7.8).
  *
  * QoIs: the ratios of PV_x, PV_F and the stick fraction to the
  * deterministic reference at the same parameters (sf_sweep_det: uniform
@@ -55,6 +64,13 @@ int sf_sens_ranges_check(const sf_sens_ranges *r, char *err, size_t errlen);
 /* The scene of unit-cube point u (its first SF_SENS_NPAR entries), and
  * the parameters x[SF_SENS_NPAR] it sets (log10 l/R, CV, v_b, mu_mean). */
 void sf_sens_scene(const sf_scene *base, const sf_sens_ranges *r, const double *u, sf_scene *s, double *x);
+
+/* Evaluation e of design D over r from scene base: its scene *s (the
+ * parameters of point e, the field generator belt_noise), the parameters
+ * x[SF_SENS_NPAR], and field_rng set to the stream its field is drawn
+ * from (the noise of the row its field column comes from). */
+void sf_sens_point(const sf_scene *base, const sf_sens_ranges *r, const sf_sobol_design *D, size_t e, sf_scene *s,
+                   double *x, gsl_rng *field_rng);
 
 typedef struct {
     sf_sobol_design *D;      /* n rows, SF_SENS_D inputs */

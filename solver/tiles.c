@@ -56,6 +56,8 @@ struct sf_tiles {
     int slot_ok[NSLOT];
     double *ybuf, *acc;
     size_t ycap;
+    sf_tiles_noise_fn noise;   /* NULL: the tiles' own noise */
+    void *noise_ctx;
 };
 
 /* Normalised kernel of length l/sqrt(2) sampled at spacing h, truncated
@@ -156,9 +158,23 @@ double sf_tiles_covariance(const sf_tiles *t, long p, long q)
     return t->cx[ap] * t->cy[aq];
 }
 
+void sf_tiles_set_noise(sf_tiles *t, sf_tiles_noise_fn fn, void *ctx)
+{
+    t->noise = fn;
+    t->noise_ctx = ctx;
+}
+
+size_t sf_tiles_noise_rows(const sf_tiles *t, size_t *ky)
+{
+    *ky = t->ky;
+    return t->nr;
+}
+
 /* The noise of lattice column i: nr normals (row r is lattice row r - Ky). */
 static const double *noise_column(sf_tiles *t, long i)
 {
+    if (t->noise)
+        return t->noise(t->noise_ctx, i);
     long tw = (long)t->tw, tile = i >= 0 ? i / tw : -((-i + tw - 1) / tw);
     size_t off = (size_t)(i - tile * tw);
     int s = -1;

@@ -65,6 +65,14 @@ void sf_tiles_set_key(sf_tiles *t, uint64_t key);
  * operations in the same order wherever the range starts. */
 int sf_tiles_fill(sf_tiles *t, long i0, size_t m, double *out, size_t ld);
 
+/* Another source of the noise (noise.h's belt noise): fn(ctx, i) returns
+ * lattice column i's nr standard normals, nr = sf_tiles_noise_rows (row r
+ * is lattice row r - Ky), valid until its next call; NULL: the tiles'
+ * own.  The convolution, its weights and its covariance are unchanged. */
+typedef const double *(*sf_tiles_noise_fn)(void *ctx, long i);
+void sf_tiles_set_noise(sf_tiles *t, sf_tiles_noise_fn fn, void *ctx);
+size_t sf_tiles_noise_rows(const sf_tiles *t, size_t *ky);
+
 /* The produced covariance at lattice lag (p, q): Cx(p) Cy(q), exact. */
 double sf_tiles_covariance(const sf_tiles *t, long p, long q);
 
