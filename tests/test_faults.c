@@ -28,6 +28,7 @@
 #include "surface.h"
 #include "sweep.h"
 #include "mcstop.h"
+#include "noise.h"
 #include "tiles.h"
 #include "unum.h"
 
@@ -287,6 +288,107 @@ static void cof_more(void **state)
     s.T = 400;   /* a strip of 80 m: the window follows */
     walk("tiled window slides", window_slide, &s, SF_SUCCESS, 0);
     walk("tiled antithetic pair, kept columns", window_pair_kept, &s, SF_SUCCESS, 0);
+}
+
+/* ---- the belt noise (noise.h, cof_generator = belt_noise) */
+
+typedef struct {
+    double ref[12];
+    int have_ref;
+} noise_ctx;
+
+/* its allocations: the struct, the rng, 3 block columns per level */
+static int noise_alloc(void *ctx)
+{
+    noise_ctx *c = ctx;
+    sf_noise *z = (sf_noise *)1;
+    int rc = sf_noise_alloc(3, -2, 12, &z);
+    if (rc) {
+        assert_null(z);
+        return rc;
+    }
+    sf_noise_set_key(z, 42);
+    double v[12];
+    memcpy(v, sf_noise_column(z, -65), sizeof v);
+    if (c->have_ref)
+        assert_memory_equal(v, c->ref, sizeof v);
+    memcpy(c->ref, v, sizeof v);
+    c->have_ref = 1;
+    sf_noise_free(z);
+    return rc;
+}
+
+/* sf_cof_plan_point: a plan, then the point's own tiles and noise */
+static int belt_point(void *ctx)
+{
+    plan_ctx *c = ctx;
+    sf_cof_plan *p;
+    int rc = sf_cof_plan_alloc(&c->s, &p, NULL, 0);
+    if (rc)
+        return rc;
+    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+    gsl_rng_set(rng, 7);
+    double mu = -1;
+    rc = sf_cof_plan_point(p, rng, -0.3, 0.01, &mu);
+    gsl_rng_free(rng);
+    sf_cof_plan_free(p);
+    if (rc) {
+        assert_true(mu == -1);
+        return rc;
+    }
+    if (c->have_ref)
+        assert_memory_equal(&mu, c->ref, sizeof mu);
+    c->ref[0] = mu;
+    c->have_ref = 1;
+    return rc;
+}
+
+/* a belt-noise window, its antithetic partner, both slid far */
+static int belt_pair(void *ctx)
+{
+    sf_cof_plan *p;
+    int rc = sf_cof_plan_alloc(ctx, &p, NULL, 0);
+    if (rc)
+        return rc;
+    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+    sf_cof *g = NULL, *a = (sf_cof *)1;
+    rc = sf_cof_plan_draw(p, rng, &g);
+    gsl_rng_free(rng);
+    if (!rc) {
+        rc = sf_cof_plan_antithetic(p, g, &a);
+        if (rc)
+            assert_null(a);
+    } else {
+        assert_null(g);
+        a = NULL;
+    }
+    for (int k = 0; !rc && k < 2; k++)
+        rc = sf_cof_follow(k ? a : g, -20, -19);   /* far: the whole window made again */
+    sf_cof_free(g);
+    sf_cof_free(a);
+    sf_cof_plan_free(p);
+    return rc;
+}
+
+static void belt_noise(void **state)
+{
+    (void)state;
+    noise_ctx n = { .have_ref = 0 };
+    assert_int_equal(noise_alloc(&n), SF_SUCCESS);
+    assert_int_equal(walk("sf_noise_alloc", noise_alloc, &n, SF_SUCCESS, 0), 2 + 3 * (3 + 1));
+    plan_ctx c = { 0 };
+    scene_small(&c.s);
+    c.s.cof_generator = SF_COFGEN_BELT_NOISE;
+    assert_int_equal(plan_and_draw(&c), SF_SUCCESS);
+    /* the plan, the window, its tiles, the noise (2 + 3 (L + 1) at l =
+     * 0.25 m: level 15), the grid, the tiles' column buffer */
+    assert_true(walk("plan + draw (belt-noise window)", plan_and_draw, &c, SF_SUCCESS, 0) > 2 + 3 * 16);
+    memset(&c, 0, sizeof c);
+    scene_small(&c.s);
+    c.s.cof_generator = SF_COFGEN_BELT_NOISE;
+    assert_int_equal(belt_point(&c), SF_SUCCESS);
+    assert_true(walk("plan + sf_cof_plan_point (belt noise)", belt_point, &c, SF_SUCCESS, 0) > 2 + 3 * 16);
+    walk("belt-noise window + antithetic, slid", belt_pair, &c.s, SF_SUCCESS, 0);
 }
 
 /* ---- fields, tiles */
@@ -948,6 +1050,7 @@ int main(void)
         cmocka_unit_test(cof_allocs),
         cmocka_unit_test(cof_plans),
         cmocka_unit_test(cof_more),
+        cmocka_unit_test(belt_noise),
         cmocka_unit_test(fields),
         cmocka_unit_test(contacts),
         cmocka_unit_test(oscillator),
