@@ -9,6 +9,7 @@
 #include <string.h>
 
 #define NOUT (2 * SF_SWEEP_NQ)
+#define RANK_SPLITS 200   /* random splits of the given-data estimator's standard error (sobol.h) */
 
 static const char *const iname[SF_SENS_D] = { "log10_l_over_R", "cv", "v_b", "mu_mean", "field" };
 static const char *const qname[SF_SWEEP_NQ] = { "pv_x_ratio", "pv_F_ratio", "stick_fraction_ratio" };
@@ -161,6 +162,12 @@ int sf_sens_run(const sf_scene *base, const sf_sens_ranges *r, size_t n, size_t 
                       "finite", qname[q]);
             goto fail;
         }
+    for (int q = 0; q < SF_SWEEP_NQ; q++)   /* the same rows as given data: 2n of them, A's then B's */
+        if ((rc = sf_sobol_rank_s1(2 * n, SF_SENS_NPAR, S->x, SF_SENS_NPAR, S->y + q, NOUT, RANK_SPLITS, level,
+                                   sf_mc_seed(base->seed, 2 * n + SF_SWEEP_NQ + (size_t)q), &S->rank[q]))) {
+            sf_seterr(err, errlen, rc, "%s: no given-data indices (fewer than 3 finite rows)", qname[q]);
+            goto fail;
+        }
     *out = S;
     return SF_SUCCESS;
 fail:
@@ -184,14 +191,18 @@ void sf_sens_write_indices(FILE *f, const sf_sens *S)
 {
     int lv = (int)lround(100 * S->res[0].level);
     fprintf(f, "qoi\tinput\tS1\tS1_ci%d_lo\tS1_ci%d_hi\tS1_se\tST\tST_ci%d_lo\tST_ci%d_hi\tST_se\tn_rows\t"
-               "n_excluded\tnboot\tvariance\n", lv, lv, lv, lv);
+               "n_excluded\tnboot\tvariance\tS1_rank\tS1_rank_ci%d_lo\tS1_rank_ci%d_hi\tS1_rank_se\n", lv, lv, lv,
+            lv, lv, lv);
     for (int q = 0; q < SF_SWEEP_NQ; q++) {
         const sf_sobol_result *r = &S->res[q];
         for (int i = 0; i < SF_SENS_D; i++) {
             const sf_sobol_index *x = &r->idx[i];
-            fprintf(f, "%s\t%s\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%zu\t%zu\t%zu\t%.17g\n",
+            const sf_sobol_rank_index *g = i < SF_SENS_NPAR ? &S->rank[q].idx[i] : NULL;
+            fprintf(f, "%s\t%s\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%zu\t%zu\t%zu\t%.17g\t"
+                       "%.17g\t%.17g\t%.17g\t%.17g\n",
                     qname[q], iname[i], x->s1, x->s1_lo, x->s1_hi, x->s1_se, x->st, x->st_lo, x->st_hi, x->st_se,
-                    r->n_used, r->n_excluded, r->nboot, r->var);
+                    r->n_used, r->n_excluded, r->nboot, r->var, g ? g->s1 : NAN, g ? g->lo : NAN, g ? g->hi : NAN,
+                    g ? g->se : NAN);
         }
     }
 }

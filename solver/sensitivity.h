@@ -77,6 +77,10 @@ typedef struct {
     double *x;               /* nevals x SF_SENS_NPAR: the parameters of each evaluation */
     double *y;               /* nevals x 2 SF_SWEEP_NQ: the ratios, then the QoIs in their units */
     sf_sobol_result res[SF_SWEEP_NQ];   /* of the ratios */
+    /* first-order indices of the ratios on the parameters from given data
+     * (sf_sobol_rank_s1 over blocks A and B, 2n independent rows: no
+     * pick-freeze, so no coupling of the field enters them) */
+    sf_sobol_rank_result rank[SF_SWEEP_NQ];
     double *boot[SF_SWEEP_NQ];          /* their bootstrap resamples (sf_sobol_estimate's boot) */
 } sf_sens;
 
@@ -89,7 +93,9 @@ int sf_sens_run(const sf_scene *base, const sf_sens_ranges *r, size_t n, size_t 
                 int threads, const char *label, sf_sens **out, char *err, size_t errlen);
 void sf_sens_free(sf_sens *S);
 
-/* The indices as TSV: a header, then one row per QoI and input. */
+/* The indices as TSV: a header, then one row per QoI and input; the
+ * given-data first-order index and its interval in the S1_rank columns
+ * (NaN for the field, which has no column of values). */
 void sf_sens_write_indices(FILE *f, const sf_sens *S);
 /* The evaluations as TSV: block, row, the parameters, the ratios, the QoIs. */
 void sf_sens_write_evals(FILE *f, const sf_sens *S);

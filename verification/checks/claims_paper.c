@@ -338,7 +338,8 @@ const claim_spec claims_fig3[] = {
  * the gap is positive. */
 const claim_spec claims_sobol[] = {
     { "sobol-lr-dominant-x", "Abstract: the correlation length is dominantly responsible for the stochastic "
-      "behaviours; read: the total Sobol' index of log10 l/R in the PV_x ratio exceeds that of CV, v_b and the mean COF",
+      "behaviours; read: in the PV_x ratio, log10 l/R's first-order Sobol' index exceeds that of the CV, v_b and the "
+      "mean COF, and so does its total index (the field a white noise fixed on the belt)",
       K_MEAN, Q_PVX, NULL, NULL, 0, 0, +1, '-', '-',
       "Over the paper's ranges (log10 l/R in [-2, 3], v_b in [0.1, 0.6] m/s, mean COF in [0.2, 1]) and CV in [0.1, "
       "0.3]; the field itself is a fifth input.", NULL },
