@@ -222,7 +222,7 @@ int sf_cof_plan_draw(sf_cof_plan *p, gsl_rng *rng, sf_cof **out);
  * would draw, at the one belt point (xb, yb), without its window (the
  * four lattice nodes around the point, interpolated bilinearly as the
  * window does: the same node values, the weights to the last bits).  A
- * functional of the field at a point costs a few thousand noise cells
+ * functional of the field at a point costs about 10^4 noise cells
  * instead of a window over the disc.  Takes the key from rng as the draw
  * does.  SF_EINVAL for another generator or a point off the lattice's
  * range. */
