@@ -199,6 +199,10 @@ c=$(col 'pv_x[m]' 3 evs.tsv) d=$(col 'pv_x[m]' 3 ev1.tsv)
 [ "$(col 'pv_x_ratio[-]' 1 evr.out)" = "$(col pv_x_ratio 3 evs.tsv)" ] && grep -q '^realisation = 2$' evr.sum \
     && ok || bad "realisation 2: evaluate's ratio is not the sweep's, or run's summary does not name it"
 expect 2 "--realisation takes a whole number from 0 to 9999999" "$bin" run ev.scene --realisation -1
+# a seed column: the field run draws at that seed (realisation 2's stream seed: realisation 2's field)
+printf 'seed\n%s\n' "$(sed -n 's/^stream_seed = //p' evr.sum)" > evseed.tsv
+expect 0 "" "$bin" evaluate ev.scene --design evseed.tsv --out evseed.out
+[ "$(col 'pv_x[m]' 1 evseed.out)" = "$a" ] && ok || bad "seed column: $(cat evseed.out), realisation 2: $a"
 # bad input: exit 2 with file:line:column before any run, no output
 printf 'l\tfoo\n0.5\t1\n' > evb.tsv
 expect 2 "evb.tsv:1:3: unknown column 'foo'" "$bin" evaluate ev.scene --design evb.tsv --out evb.out
