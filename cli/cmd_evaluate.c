@@ -490,8 +490,8 @@ static int read_design(design *d, const sf_scene *s0)
         if (!n)
             rc = SF_EXIT_INTERNAL;
         else if (n != d->ncol) {
-            fprintf(stderr, "slipfield evaluate: %s:%d: %zu cells, the header has %zu columns\n", d->path, lineno, n,
-                    d->ncol);
+            fprintf(stderr, "slipfield evaluate: %s:%d: %zu cell%s, the header has %zu column%s\n", d->path, lineno, n,
+                    n == 1 ? "" : "s", d->ncol, d->ncol == 1 ? "" : "s");
             rc = SF_EXIT_USAGE;
         } else
             rc = read_row(d, s0, r, d->nrows - 1, r->cell, pos);

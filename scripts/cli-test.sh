@@ -213,7 +213,7 @@ expect 2 "evb.tsv:2:5: key 'mu_std': expected a finite number, got 'abc'" "$bin"
 printf 'realisation\tseed\n1\t2\n' > evb.tsv
 expect 2 "evb.tsv:1: columns 'seed' and 'realisation' both choose" "$bin" evaluate ev.scene --design evb.tsv --out evb.out
 printf 'l\tmu_std\n0.5\n' > evb.tsv
-expect 2 "evb.tsv:2: 1 cells, the header has 2 columns" "$bin" evaluate ev.scene --design evb.tsv --out evb.out
+expect 2 "evb.tsv:2: 1 cell, the header has 2 columns" "$bin" evaluate ev.scene --design evb.tsv --out evb.out
 expect 2 "is the design" "$bin" evaluate ev.scene --design evb.tsv --out evb.tsv
 [ ! -e evb.out ] && [ "$(cat evb.tsv)" = "$(printf 'l\tmu_std\n0.5')" ] && ok || bad "a refused design left evb.out or changed the design"
 # a row that fails fails alone: its status says why, the others are filled, exit 1
