@@ -27,6 +27,14 @@ static int is_user(const char *users, const char *cmd)
     return 0;
 }
 
+const char *sf_cli_key_ignored(const char *cmd, const char *key)
+{
+    for (size_t k = 0; k < sizeof key_users / sizeof key_users[0]; k++)
+        if (!strcmp(key_users[k].key, key))
+            return is_user(key_users[k].users, cmd) ? NULL : key_users[k].users;
+    return NULL;
+}
+
 int sf_cli_load_scene(const char *cmd, const char *path, sf_scene *s)
 {
     char err[512];

@@ -13,6 +13,11 @@
  * (samples, u, v, w, ntheta, npsi outside their commands) are reported on
  * stderr. */
 int sf_cli_load_scene(const char *cmd, const char *path, sf_scene *s);
+/* The commands that read scene key `key` when cmd is not one of them
+ * (samples: field sweep; u, v, w: wrench; ntheta, npsi: surface); NULL
+ * when cmd reads it (every other key is read by every command that runs
+ * the scene). */
+const char *sf_cli_key_ignored(const char *cmd, const char *key);
 /* A command option opt given and the scene sets key, its default: say the
  * key is ignored. */
 void sf_cli_key_overridden(const char *cmd, const char *path, const sf_scene *s, const char *key, const char *opt);
@@ -64,6 +69,7 @@ int sf_cmd_surface(int argc, char **argv);
 int sf_cmd_wrench(int argc, char **argv);
 int sf_cmd_run(int argc, char **argv);
 int sf_cmd_sweep(int argc, char **argv);
+int sf_cmd_evaluate(int argc, char **argv);
 int sf_cmd_sensitivity(int argc, char **argv);
 
 #endif

@@ -1,8 +1,11 @@
-/* slipfield run SCENE [--out FILE] [--summary FILE] [--explain]: one
- * realisation of the scene (COF drawn from `seed`), the time history as
- * TSV and the quantities of interest as `key = value` lines. */
+/* slipfield run SCENE [--out FILE] [--summary FILE] [--explain]
+ *                     [--realisation I]: one realisation of the scene (COF
+ * drawn from `seed`, or realisation I of a sweep of the scene: stream
+ * sf_mc_stream(seed, I)), the time history as TSV and the quantities of
+ * interest as `key = value` lines. */
 #include "cli.h"
 #include "cof.h"
+#include "montecarlo.h"
 #include "oscillator.h"
 #include "sf_error.h"
 #include "unum.h"
@@ -14,6 +17,7 @@
 static void usage(FILE *f)
 {
     fputs("usage: slipfield run SCENE [--out FILE] [--summary FILE] [--explain]\n"
+          "                           [--realisation I]\n"
           "Integrate the stick-slip oscillator over [0, T] for one COF realisation.\n"
           "  --out FILE      time history, TSV with header:\n"
           "                  t x y phi vx vy omega Fx Fy T state\n"
@@ -26,11 +30,17 @@ static void usage(FILE *f)
           "                  realisation, 0.04-0.45x the run's CPU); '-' for stdout\n"
           "                  (the default when neither --out nor --summary is given)\n"
           "  --explain       print what the plan computes and what it skips, then exit\n"
+          "  --realisation I the field of realisation I (0 to 9999999) of `slipfield\n"
+          "                  sweep` at this scene (its row I at a swept value: the same\n"
+          "                  stream sf_mc_seed(seed, I), the same field bits), instead\n"
+          "                  of the field the generator seeded with `seed` draws\n"
           "A run without --out keeps no history. A quantity that the run cannot form\n"
           "(no complete cycle after t_skip: raise T) is nan in the summary, and said\n"
           "on stderr.\n",
           f);
 }
+
+#define NO_REALISATION ((size_t)-1)
 
 static void row_out(void *ctx, const sf_osc_row *r)
 {
@@ -38,7 +48,7 @@ static void row_out(void *ctx, const sf_osc_row *r)
             r->phi, r->vx, r->vy, r->w, r->Fx, r->Fy, r->T, r->stick ? "stick" : "slip");
 }
 
-static void summary(FILE *f, const sf_scene *s, const sf_osc_result *r)
+static void summary(FILE *f, const sf_scene *s, const sf_osc_result *r, size_t realisation)
 {
     fprintf(f, "# slipfield run summary, from rest at the origin unless the scene says otherwise; window [t_skip, T]\n"
                "# qoi_def = %s: %s\n", s->qoi_def == SF_QOI_PAPER ? "paper" : "cycles",
@@ -61,18 +71,22 @@ static void summary(FILE *f, const sf_scene *s, const sf_osc_result *r)
     fprintf(f, "steps = %lu\nrejected_steps = %lu\nbisection_steps = %lu\nwrench_evaluations = %lu\n", r->steps,
             r->rejected, r->event_trials, r->wrench_evals);
     fprintf(f, "t_skip = %.17g\nT = %.17g\nseed = %lu\n", s->t_skip, s->T, s->seed);
+    if (realisation != NO_REALISATION)   /* the sweep's stream of it */
+        fprintf(f, "realisation = %zu\nstream_seed = %lu\n", realisation, sf_mc_seed(s->seed, realisation));
 }
 
 int sf_cmd_run(int argc, char **argv)
 {
     const char *path, *out_path = NULL, *sum_path = NULL;
     int explain = 0;
+    size_t realisation = NO_REALISATION;
     const sf_opt opts[] = {
         { "--out", SF_OPT_STRING, &out_path, 0, 0, NULL },
         { "--summary", SF_OPT_STRING, &sum_path, 0, 0, NULL },
         { "--explain", SF_OPT_FLAG, &explain, 0, 0, NULL },
+        { "--realisation", SF_OPT_SIZE, &realisation, 0, 9999999, NULL },
     };
-    int rc = sf_cli_parse("run", argc, argv, opts, 3, &path, usage);
+    int rc = sf_cli_parse("run", argc, argv, opts, sizeof opts / sizeof opts[0], &path, usage);
     if (rc)
         return rc == SF_CLI_HELP ? SF_EXIT_OK : rc;
     if (!out_path && !sum_path)
@@ -98,7 +112,10 @@ int sf_cmd_run(int argc, char **argv)
         sf_plan_explain(&pl, &s, stdout);
     }
     gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
-    gsl_rng_set(rng, s.seed);
+    if (realisation == NO_REALISATION)
+        gsl_rng_set(rng, s.seed);
+    else
+        sf_mc_stream(rng, s.seed, realisation);   /* as sf_mc_run seeds the sweep's realisation */
     sf_cof *cof = NULL;
     rc = sf_cof_plan_draw(plan, rng, &cof);
     gsl_rng_free(rng);
@@ -134,7 +151,7 @@ int sf_cmd_run(int argc, char **argv)
     if (rc)
         fprintf(stderr, "slipfield run: %s: %s\n", path, *err ? err : sf_strerror(rc));
     else if (sum_path) {
-        summary(sum.f, &s, &res);
+        summary(sum.f, &s, &res, realisation);
         sf_unum u;   /* the numerical error of each QoI: a coarser companion solve (unum.h) */
         if ((rc = sf_unum_estimate(&s, cof, sf_osc_get_plan(o), &res, &u, err, sizeof err)))
             fprintf(stderr, "slipfield run: %s: the error estimate's companion solve: %s\n", path,

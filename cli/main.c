@@ -28,6 +28,7 @@ static const command commands[] = {
     { "field", sf_cmd_field, "sample lognormal COF random fields to TSV" },
     { "run", sf_cmd_run, "integrate the stick-slip oscillator: history TSV and QoI summary" },
     { "sweep", sf_cmd_sweep, "Monte Carlo sweep over a parameter: QoI ratios to the deterministic model" },
+    { "evaluate", sf_cmd_evaluate, "the model at each row of a design (TSV): QoIs, ratios, u_num" },
     { "sensitivity", sf_cmd_sensitivity, "Sobol' indices of the QoI ratios over l/R, CV, v_b and the mean COF" },
     { "surface", sf_cmd_surface, "the static limit surface (Eq. 11) to TSV" },
     { "wrench", sf_cmd_wrench, "the friction force and torque at one motion (Eqs. 7-8)" },

@@ -176,6 +176,53 @@ rm -f cut.tsv.ckpt0   # (a different sweep follows: its checkpoint would not mat
 expect 0 "left by an interrupted run" $sweep --realisations 3 --resume --values 2
 [ -z "$(ls | grep 'cut\.tsv\.tmp')" ] && ok || bad "--resume left: $(ls | grep 'cut\.tsv\.tmp')"
 
+# ---- evaluate: an external design in, a row of results per design row out -------
+printf 'cof = field\nT = 20\nt_skip = 10\nl = 0.5\n' > ev.scene
+col() { awk -F'\t' -v n="$1" -v r="$2" 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == n) c = i } NR == r + 1 && c { print $c }' "$3"; }
+printf 'l_over_R\tmu_std\n1\t0.1\n0.6\t0.05\n1\t0.1\n' > ev.tsv
+expect 0 "" "$bin" evaluate ev.scene --design ev.tsv --out ev1.tsv --threads 1
+expect 0 "" "$bin" evaluate ev.scene --design ev.tsv --out ev2.tsv --threads 2
+cmp -s ev1.tsv ev2.tsv && [ "$(wc -l < ev1.tsv)" -eq 4 ] && [ "$(cut -f12 ev1.tsv | grep -c "^ok$")" -eq 3 ] \
+    && [ "$(head -1 ev1.tsv | cut -f1-6)" = "l_over_R	mu_std	pv_x[m]	pv_x_ratio[-]	u_pv_x[m]	pv_F[N]" ] \
+    && ok || bad "evaluate: 1 and 2 threads differ, or rows or columns missing: $(cat ev1.tsv)"
+# realisation 2: evaluate's row, run --realisation 2 (with and without a history) and the sweep's row 2, bit for bit
+printf 'realisation\tl\n2\t0.5\n' > evr.tsv
+expect 0 "" "$bin" evaluate ev.scene --design evr.tsv --out evr.out
+expect 0 "" "$bin" run ev.scene --realisation 2 --summary evr.sum
+expect 0 "" "$bin" run ev.scene --realisation 2 --out evr.hist --summary evrh.sum
+expect 0 "" "$bin" sweep ev.scene --param l --values 0.5 --realisations 3 --out evs.tsv
+a=$(col 'pv_x[m]' 1 evr.out) b=$(sed -n 's/^pv_x = //p' evr.sum) h=$(sed -n 's/^pv_x = //p' evrh.sum)
+c=$(col 'pv_x[m]' 3 evs.tsv) d=$(col 'pv_x[m]' 3 ev1.tsv)
+[ "$(col realisation 3 evs.tsv)" = 2 ] && [ -n "$a" ] && [ "$a" != nan ] && [ "$a" = "$b" ] && [ "$a" = "$h" ] \
+    && [ "$a" = "$c" ] && [ "$a" = "$d" ] && [ -s evr.hist ] && ok \
+    || bad "realisation 2: evaluate $a, run $b, run --out $h, sweep row 2 $c, default design row 2 $d"
+[ "$(col 'pv_x_ratio[-]' 1 evr.out)" = "$(col pv_x_ratio 3 evs.tsv)" ] && grep -q '^realisation = 2$' evr.sum \
+    && ok || bad "realisation 2: evaluate's ratio is not the sweep's, or run's summary does not name it"
+expect 2 "--realisation takes a whole number from 0 to 9999999" "$bin" run ev.scene --realisation -1
+# a seed column: the field run draws at that seed (realisation 2's stream seed: realisation 2's field)
+printf 'seed\n%s\n' "$(sed -n 's/^stream_seed = //p' evr.sum)" > evseed.tsv
+expect 0 "" "$bin" evaluate ev.scene --design evseed.tsv --out evseed.out
+[ "$(col 'pv_x[m]' 1 evseed.out)" = "$a" ] && ok || bad "seed column: $(cat evseed.out), realisation 2: $a"
+# bad input: exit 2 with file:line:column before any run, no output
+printf 'l\tfoo\n0.5\t1\n' > evb.tsv
+expect 2 "evb.tsv:1:3: unknown column 'foo'" "$bin" evaluate ev.scene --design evb.tsv --out evb.out
+printf 'l\tmu_std\n0.5\t0.1\n0.5\t-1\n' > evb.tsv
+expect 2 "evb.tsv:3:5: key 'mu_std': must be >= 0 (got -1)" "$bin" evaluate ev.scene --design evb.tsv --out evb.out
+printf 'l\tmu_std\n0.5\tabc\n' > evb.tsv
+expect 2 "evb.tsv:2:5: key 'mu_std': expected a finite number, got 'abc'" "$bin" evaluate ev.scene --design evb.tsv --out evb.out
+printf 'realisation\tseed\n1\t2\n' > evb.tsv
+expect 2 "evb.tsv:1: columns 'seed' and 'realisation' both choose" "$bin" evaluate ev.scene --design evb.tsv --out evb.out
+printf 'l\tmu_std\n0.5\n' > evb.tsv
+expect 2 "evb.tsv:2: 1 cell, the header has 2 columns" "$bin" evaluate ev.scene --design evb.tsv --out evb.out
+expect 2 "is the design" "$bin" evaluate ev.scene --design evb.tsv --out evb.tsv
+[ ! -e evb.out ] && [ "$(cat evb.tsv)" = "$(printf 'l\tmu_std\n0.5')" ] && ok || bad "a refused design left evb.out or changed the design"
+# a row that fails fails alone: its status says why, the others are filled, exit 1
+printf 'T\trealisation\n20\t0\n5\t1\n20\t2\n' > evf.tsv
+expect 1 "evf.tsv:3: row 1 failed: T = 5 s is not above t_skip = 10 s" "$bin" evaluate ev.scene --design evf.tsv --out evf.out
+[ "$(col status 1 evf.out)" = ok ] && [ "$(col status 3 evf.out)" = ok ] && [ "$(col status 2 evf.out)" != ok ] \
+    && [ "$(col 'pv_x[m]' 3 evf.out)" = "$a" ] && [ "$(col 'pv_x[m]' 1 evf.out)" != nan ] \
+    && ok || bad "evaluate with a failing row: $(cat evf.out)"
+
 # ---- sensitivity: refusals leave nothing; bytes do not depend on the threads ---
 printf 'cof = field\nT = 20\nt_skip = 2\ncells = 6\nrtol = 1e-6\nstrip_halfwidth = 0.05\n' > sa.scene
 narrow="--log-lr -0.3,-0.2 --cv 0.15,0.25 --vb 0.2,0.25 --mu 0.45,0.55 --bootstrap 20"
@@ -229,13 +276,14 @@ if script --version 2>/dev/null | grep -q util-linux; then
 fi
 
 # ---- help -------------------------------------------------------------------
-for c in verify field run sweep sensitivity surface wrench; do
+for c in verify field run sweep evaluate sensitivity surface wrench; do
     expect 0 "" "$bin" help $c
     grep -q "^usage: slipfield $c" "$tmp/out" && ok || bad "help $c: $(head -1 "$tmp/out")"
 done
 expect 2 "no help on 'foo'" "$bin" help foo
 expect 0 "" "$bin" --help
 grep -q -- "--version" "$tmp/out" && ok || bad "--help does not list --version"
+grep -q "^  evaluate " "$tmp/out" && ok || bad "--help does not list evaluate"
 expect 0 "" "$bin" help scene
 grep -q "^Case-only keys" "$tmp/out" && grep -q "^check " "$tmp/out" && ok || bad "help scene does not mark the case-only keys"
 

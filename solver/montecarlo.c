@@ -29,6 +29,11 @@ unsigned long sf_mc_seed(unsigned long seed, size_t i)
     return (unsigned long)splitmix64(splitmix64((uint64_t)seed) ^ (uint64_t)i);
 }
 
+void sf_mc_stream(gsl_rng *rng, unsigned long seed, size_t i)
+{
+    gsl_rng_set(rng, sf_mc_seed(seed, i));
+}
+
 unsigned long sf_mc_hash(const void *p, size_t n, unsigned long h)
 {
     uint64_t x = h ? h : 0xcbf29ce484222325ULL;
@@ -287,7 +292,7 @@ static void realise_all(mc_loop *L, const sf_mc_ops *ops, void *ctx)
             stop = L->failed;
             if (L->done[i] || L->theirs[i] || stop || !ready)
                 continue;
-            gsl_rng_set(rng, sf_mc_seed(s->seed, i));
+            sf_mc_stream(rng, s->seed, i);
             int r = ops->realise(ws, i, rng, L->out + i * s->nout);
 #pragma omp critical(sf_mc)
             record(L, i, r);

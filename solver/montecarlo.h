@@ -42,6 +42,13 @@ typedef struct {
 
 unsigned long sf_mc_seed(unsigned long seed, size_t i);
 
+/* Set rng to realisation i's stream of seed: gsl_rng_set(rng,
+ * sf_mc_seed(seed, i)), rng an MT19937 (gsl_rng_mt19937).  The one
+ * seeding of realisation i: sf_mc_run seeds realisation i with it before
+ * its realise call, and whatever re-runs one realisation of a sweep
+ * (slipfield run --realisation, slipfield evaluate) seeds it with this. */
+void sf_mc_stream(gsl_rng *rng, unsigned long seed, size_t i);
+
 /* This process's MPI rank (0 without MPI) and *size (may be NULL).  In an
  * MPI build (make MPI=1, run under mpirun) sf_mc_run gives realisation i
  * to rank i mod size and gathers every value on every rank: the bytes are

@@ -52,6 +52,35 @@ static void seeds(void **state)
     assert_true(sf_mc_seed(1, 5) != sf_mc_seed(1, 6));
     assert_true(sf_mc_seed(1, 5) != sf_mc_seed(2, 5));
     assert_true(sf_mc_hash("a", 1, 0) != sf_mc_hash("b", 1, 0));
+    /* sf_mc_stream: MT19937 at sf_mc_seed(seed, i), whatever it held before */
+    gsl_rng *a = gsl_rng_alloc(gsl_rng_mt19937), *b = gsl_rng_alloc(gsl_rng_mt19937);
+    gsl_rng_set(a, sf_mc_seed(1, 5));
+    gsl_rng_get(b);
+    sf_mc_stream(b, 1, 5);
+    for (int k = 0; k < 10; k++)
+        assert_int_equal(gsl_rng_get(a), gsl_rng_get(b));
+    gsl_rng_free(a);
+    gsl_rng_free(b);
+}
+
+/* The stream sf_mc_run gives realisation i is sf_mc_stream(seed, i): a
+ * realisation re-run alone (slipfield run --realisation) has its bits. */
+static void stream_of_realisation(void **state)
+{
+    (void)state;
+    size_t n = 9;
+    double *a = malloc(2 * n * sizeof *a), one[2];
+    sf_mc_ops ops = { NULL, NULL, realise };
+    sf_mc_spec s = { n, 2, 42, 2, NULL, 0, 0, NULL };
+    assert_int_equal(sf_mc_run(&s, &ops, NULL, a, NULL, NULL, 0), SF_SUCCESS);
+    gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
+    for (size_t i = 0; i < n; i++) {
+        sf_mc_stream(r, 42, i);
+        realise(NULL, i, r, one);
+        assert_memory_equal(one, a + 2 * i, sizeof one);
+    }
+    gsl_rng_free(r);
+    free(a);
 }
 
 static void thread_count_invariance(void **state)
@@ -1003,6 +1032,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(seeds),
         cmocka_unit_test(thread_count_invariance),
+        cmocka_unit_test(stream_of_realisation),
         cmocka_unit_test(stage_lines),
         cmocka_unit_test(checkpoint_resume),
         cmocka_unit_test(summary_counts_finite_values),
