@@ -13,6 +13,7 @@
 #include "field.h"         /* Gaussian fields by circulant embedding */
 #include "lnfield.h"       /* lognormal COF fields */
 #include "tiles.h"         /* fields generated on demand in tiles */
+#include "noise.h"         /* white noise fixed in belt coordinates */
 #include "cellavg.h"       /* the cell-averaged COF field */
 #include "cof.h"           /* the COF seen by the disc */
 #include "contact.h"       /* the friction wrench, Eqs. 7-8 */
