@@ -1,5 +1,6 @@
 /* slipfield sweep SCENE --param NAME --values A,B,C --realisations N
- *                 --out FILE [--summary FILE] [--threads T] [--resume]
+ *                 --out FILE [--summary FILE [--summary-format wide|long]]
+ *                 [--diagnostics FILE] [--threads T] [--resume]
  *                 [--target-se X [--pilot N0]]
  * Monte Carlo over realisations at each parameter value; ratios to the
  * deterministic model at the same parameters. */
@@ -21,7 +22,8 @@
 static void usage(FILE *f)
 {
     fputs("usage: slipfield sweep SCENE --param NAME --values A,B,C --realisations N --out FILE\n"
-          "                       [--summary FILE] [--threads T] [--resume]\n"
+          "                       [--summary FILE [--summary-format wide|long]]\n"
+          "                       [--diagnostics FILE] [--threads T] [--resume]\n"
           "                       [--target-se X [--pilot N0] | --control-variate |\n"
           "                        --estimator mlmc|mlmc-boxes|mlmc-sub|antithetic|auto\n"
           "                        [--pilot N0]]\n"
@@ -31,25 +33,43 @@ static void usage(FILE *f)
           "  --out FILE        TSV: param value realisation, the ratios pv_x_ratio pv_F_ratio\n"
           "                    stick_fraction_ratio to the deterministic model (uniform COF\n"
           "                    at mu_mean, same T, t_skip and stepper), then pv_x [m],\n"
-          "                    pv_F [N], stick_fraction [-]; with --summary, the companion\n"
-          "                    solve of u_num (below) of realisations 0 .. ceil(N/4) - 1:\n"
-          "                    its pv_x_coarse [m], pv_F_coarse [N], stick_fraction_coarse\n"
-          "                    [-], its assumed error ratio unum_rho and the plan's\n"
-          "                    a-priori relative error unum_apriori (nan for the others)\n"
-          "  --summary FILE    TSV, one row per value: n, and per QoI the realisations\n"
-          "                    used and excluded (a non-finite value is excluded, never\n"
-          "                    averaged), mean, std (n - 1), standard error of the mean,\n"
-          "                    95% confidence interval (Student t), the deterministic\n"
-          "                    value, and the ratio's mean, std and standard error;\n"
-          "                    the numerical error of the mean: a coarser companion solve\n"
-          "                    (as run --summary's u_num) of the first ceil(N/4)\n"
-          "                    realisations (at least 2), their signed error estimates'\n"
-          "                    mean (num_bias), its standard error and u_num_mean =\n"
-          "                    3 (|num_bias| + t se) (up to ~1/3 more CPU);\n"
-          "                    then why the point stopped (stop: fixed, target or cap),\n"
-          "                    the pilot's size (n_pilot, 0 for a fixed N) and per QoI\n"
-          "                    the ratio mean's 95% interval the design guarantees\n"
-          "                    (Student t for a fixed N, Stein's for two stages)\n",
+          "                    pv_F [N], stick_fraction [-]; with --summary or\n"
+          "                    --diagnostics, the companion solve of u_num (below) of\n"
+          "                    realisations 0 .. ceil(N/4) - 1: its pv_x_coarse [m],\n"
+          "                    pv_F_coarse [N], stick_fraction_coarse [-], its assumed\n"
+          "                    error ratio unum_rho and the plan's a-priori relative\n"
+          "                    error unum_apriori (nan for the others)\n"
+          "  --summary FILE    TSV, one row per value: param, value, then per ratio q of\n"
+          "                    pv_x_ratio, pv_F_ratio, stick_fraction_ratio the answer of\n"
+          "                    the estimator that ran: q_estimate[-] (plain, target-se:\n"
+          "                    the ratio mean; control-variate: the regression estimate;\n"
+          "                    mlmc*: the two-level estimate; antithetic: the pairs'),\n"
+          "                    q_se[-], its 95% interval q_ci95_lo[-] q_ci95_hi[-] (Student\n"
+          "                    t; Stein's for --target-se: the interval the two stages\n"
+          "                    guarantee), q_u_num[-], the numerical error of the mean\n"
+          "                    in ratio units (u_num_mean / det, below); then n (the\n"
+          "                    field draws averaged: realisations; mlmc*: ml_n0 + ml_n1;\n"
+          "                    antithetic: the pairs), work (cell evaluations; only for\n"
+          "                    the estimators that record it: mlmc*, antithetic, auto),\n"
+          "                    estimator and stop (fixed, target or cap)\n"
+          "  --summary-format long  the summary as one row per value and ratio: param\n"
+          "                    value qoi estimate se ci_lo ci_hi u_num n estimator stop\n"
+          "                    unit (\"-\": the unit of estimate .. u_num); wide (default):\n"
+          "                    as above\n"
+          "  --diagnostics FILE  TSV, one row per value, every statistic: n, and per QoI\n"
+          "                    the realisations used and excluded (a non-finite value is\n"
+          "                    excluded, never averaged), mean, std (n - 1), standard\n"
+          "                    error of the mean, 95% confidence interval (Student t),\n"
+          "                    the deterministic value, and the ratio's mean, std and\n"
+          "                    standard error; the numerical error of the mean: a\n"
+          "                    coarser companion solve (as run --summary's u_num) of the\n"
+          "                    first ceil(N/4) realisations (at least 2), their signed\n"
+          "                    error estimates' mean (num_bias), its standard error and\n"
+          "                    u_num_mean = 3 (|num_bias| + t se) (up to ~1/3 more CPU,\n"
+          "                    also for --summary); then stop, the pilot's size (n_pilot,\n"
+          "                    0 for a fixed N) and per QoI the ratio mean's 95% interval\n"
+          "                    the design guarantees; then each estimator's columns (nan\n"
+          "                    without it) and estimator\n",
           f);
     fputs("  --realisations N  realisations per value (default: the scene's samples, if\n"
           "                    it sets the key)\n"
@@ -62,17 +82,18 @@ static void usage(FILE *f)
           "                    min(20, N)); only with --target-se\n"
           "  --control-variate each realisation also gives its COF averaged over fixed\n"
           "                    points on the disc's nominal path (known mean: mu_mean);\n"
-          "                    the summary adds per QoI the regression estimator of the\n"
+          "                    the diagnostics add per QoI the regression estimator of the\n"
           "                    ratio mean (cv_ratio_mean, se, 95% interval at n - 2\n"
           "                    degrees of freedom) and its variance reduction factor\n"
-          "                    (cv_vrf); nan for a tiled field (no companion)\n",
+          "                    (cv_vrf); nan for a tiled field (no companion: the\n"
+          "                    summary gives plain Monte Carlo's estimate there)\n",
           f);
     fputs("  --estimator mlmc  two levels on one field: a coarse plan (half the rings,\n"
           "                    rtol 1e-5) and the scene's; N (--realisations) sets the\n"
           "                    target, the variance of plain Monte Carlo with N; a pilot\n"
           "                    of N0 pairs (--pilot, default min(10, N)) starts the\n"
           "                    sizes, recomputed from every sample so far in stages\n"
-          "                    that at most double a level; the summary adds ml_n0,\n"
+          "                    that at most double a level; the diagnostics add ml_n0,\n"
           "                    ml_n1, each level's work, and per ratio the estimate,\n"
           "                    its interval, each level's variance and the variance\n"
           "                    reduction factor; the rows are level 1's fine\n"
@@ -83,7 +104,7 @@ static void usage(FILE *f)
           "                    diameter, rtol 1e-5) on the means of 4 x 4 of the fine\n"
           "                    field's boxes (the law of the coarse model, exactly);\n"
           "                    level 0 draws its own coarse fields, in antithetic pairs;\n"
-          "                    the summary's columns as --estimator mlmc\n"
+          "                    the diagnostics' columns as --estimator mlmc\n"
           "  --estimator mlmc-sub  two levels where the plan draws point values on the\n"
           "                    circulant strip: level 1 runs the coarse plan of mlmc on\n"
           "                    the fine field at every 2nd node (the law of the field on\n"
@@ -94,7 +115,7 @@ static void usage(FILE *f)
           "                    draw, two runs, the pair mean unbiased; a pilot of N0\n"
           "                    pairs (--pilot, default min(10, N)) starts the pairs\n"
           "                    for plain Monte Carlo's variance with N (in mlmc's\n"
-          "                    stages); the summary adds anti_n, a pair's and a plain\n"
+          "                    stages); the diagnostics add anti_n, a pair's and a plain\n"
           "                    realisation's work, and per ratio the estimate, its\n"
           "                    interval (Student over the pair means), rho =\n"
           "                    corr(Q(G), Q(-G)) and the variance reduction factor;\n"
@@ -102,8 +123,8 @@ static void usage(FILE *f)
           "  --estimator auto  per value: mlmc-boxes where the plan draws cell averages;\n"
           "                    on the circulant strip mlmc-sub at l/R < 0.5, mlmc at\n"
           "                    0.5 <= l/R < 5; antithetic on tiles and at l/R >= 5 (a\n"
-          "                    rule from measurements; the summary's last column,\n"
-          "                    estimator, says which ran)\n"
+          "                    rule from measurements; the summary's estimator column\n"
+          "                    says which ran)\n"
           "  --estimator E --target-se X  the estimator's sizes for a standard error X [-]\n"
           "                    of every ratio mean instead of plain's at N (N then\n"
           "                    the cap on level 1 or on the pairs); the summary's stop\n"
@@ -167,6 +188,7 @@ static void remove_stale_tmp(const char *out)
 int sf_cmd_sweep(int argc, char **argv)
 {
     const char *path, *param = NULL, *values = NULL, *out_path = NULL, *sum_path = NULL, *estimator = NULL;
+    const char *diag_path = NULL, *sum_format = NULL;
     size_t n = 0, threads = 0, pilot = 0;
     double target_se = NAN;
     int resume = 0, cv = 0;
@@ -177,6 +199,8 @@ int sf_cmd_sweep(int argc, char **argv)
         { "--realisations", SF_OPT_SIZE, &n, 1, 10000000, NULL },
         { "--out", SF_OPT_STRING, &out_path, 0, 0, NULL },
         { "--summary", SF_OPT_STRING, &sum_path, 0, 0, NULL },
+        { "--summary-format", SF_OPT_STRING, &sum_format, 0, 0, NULL },
+        { "--diagnostics", SF_OPT_STRING, &diag_path, 0, 0, NULL },
         { "--threads", SF_OPT_SIZE, &threads, 1, 1024, NULL },
         { "--resume", SF_OPT_FLAG, &resume, 0, 0, NULL },
         { "--target-se", SF_OPT_DOUBLE, &target_se, 0, 0, NULL },
@@ -195,6 +219,15 @@ int sf_cmd_sweep(int argc, char **argv)
     if (parse_values(values, v, SF_LIST_MAX, &nv)) {
         fprintf(stderr, "slipfield sweep: --values: expected up to %d comma-separated finite numbers, got '%s'\n",
                 SF_LIST_MAX, values);
+        return SF_EXIT_USAGE;
+    }
+    int sum_long = sum_format && !strcmp(sum_format, "long");
+    if (sum_format && !sum_long && strcmp(sum_format, "wide")) {
+        fprintf(stderr, "slipfield sweep: --summary-format takes wide or long (got '%s')\n", sum_format);
+        return SF_EXIT_USAGE;
+    }
+    if (sum_format && !sum_path) {
+        fprintf(stderr, "slipfield sweep: --summary-format needs --summary\n");
         return SF_EXIT_USAGE;
     }
     sf_scene s0;
@@ -260,14 +293,14 @@ int sf_cmd_sweep(int argc, char **argv)
     sf_cli_interrupt_hint(strcmp(out_path, "-") ? ": rerun with --resume" : "");
     /* under MPI every rank computes, rank 0 writes */
     int writer = sf_mc_rank(NULL) == 0;
-    sf_out out = { 0 }, sum = { 0 };
+    sf_out out = { 0 }, sum = { 0 }, diag = { 0 };
     FILE *null = NULL;
     if (!writer) {
         null = fopen("/dev/null", "w");
         if (!null)
             return SF_EXIT_INTERNAL;
-        out.f = sum.f = null;
-        out.is_stdout = sum.is_stdout = 1;
+        out.f = sum.f = diag.f = null;
+        out.is_stdout = sum.is_stdout = diag.is_stdout = 1;
     } else {
         if ((rc = sf_cli_open("sweep", out_path, path, &out)))
             return rc;
@@ -275,10 +308,22 @@ int sf_cmd_sweep(int argc, char **argv)
             sf_cli_close("sweep", &out, 0);
             return rc;
         }
+        if (diag_path && (rc = sf_cli_open("sweep", diag_path, path, &diag))) {
+            sf_cli_close("sweep", &out, 0);
+            if (sum_path)
+                sf_cli_close("sweep", &sum, 0);
+            return rc;
+        }
     }
+    /* the summary's work column: every point's estimator records its work */
+    int work = paired;
     sf_sweep_write_header(out.f);
-    if (sum_path)
-        sf_sweep_summary_header(sum.f);
+    if (sum_path && sum_long)
+        sf_sweep_summary_long_header(sum.f);
+    else if (sum_path)
+        sf_sweep_summary_header(sum.f, work);
+    if (diag_path)
+        sf_sweep_diagnostics_header(diag.f);
     int ok = 1, fail = SF_SUCCESS;
     for (size_t k = 0; k < nv && ok; k++) {
         sf_scene s = s0;
@@ -291,7 +336,8 @@ int sf_cmd_sweep(int argc, char **argv)
             const sf_cof_plan_info *in = sf_cof_plan_get_info(cp);
             if (cv && in->kind == SF_COF_FIELD && in->generator == SF_COFGEN_TILES)
                 fprintf(stderr, "slipfield sweep: %s: warning: the field is a tiled window that follows the disc "
-                                "(%s): no control-variate companion, its columns are nan; cof_generator = circulant "
+                                "(%s): no control-variate companion: the summary gives plain Monte Carlo's estimate "
+                                "(estimator plain), the diagnostics' cv columns are nan; cof_generator = circulant "
                                 "draws the whole strip\n",
                         where, s.cof_generator == SF_COFGEN_TILES ? "cof_generator = tiles"
                                                                   : "cof_generator = auto, the strip above 2^"
@@ -330,7 +376,7 @@ int sf_cmd_sweep(int argc, char **argv)
             for (int q = 0; anti && q < SF_SWEEP_NQ; q++)
                 if (p.anti.q[q].m < p.anti.n)
                     fprintf(stderr, "slipfield sweep: %s = %g: warning: %zu of %zu antithetic pairs have a member that "
-                                    "formed no %s (nan): left out of that ratio's estimate (the summary's %s_anti_n_used)\n",
+                                    "formed no %s (nan): left out of that ratio's estimate (the diagnostics' %s_anti_n_used)\n",
                             param, v[k], p.anti.n - p.anti.q[q].m, p.anti.n, qname_cli[q], qname_cli[q]);
             if (p.from_checkpoint)
                 fprintf(stderr, "slipfield sweep: %s = %g: %zu of %zu realisations from the checkpoint\n", param,
@@ -339,12 +385,16 @@ int sf_cmd_sweep(int argc, char **argv)
                 fprintf(stderr, "slipfield sweep: %s = %g: the cap of %zu realisations is below what %s says "
                                 "--target-se %g needs: the interval is wider than the target\n",
                         param, v[k], n, ml || anti ? "the estimator's sizing" : "the pilot", target_se);
-            if (sum_path && sf_unum_sweep(&s, &p, (int)threads, err, sizeof err))
+            if ((sum_path || diag_path) && sf_unum_sweep(&s, &p, (int)threads, err, sizeof err))
                 fprintf(stderr, "slipfield sweep: %s = %g: warning: no numerical error of the means (its companion "
                                 "failed: %s)\n", param, v[k], err);
             sf_sweep_write_rows(out.f, param, v[k], &p);   /* with the companions u_num_mean is made of */
-            if (sum_path)
-                sf_sweep_summary_row(sum.f, param, v[k], &p);
+            if (sum_path && sum_long)
+                sf_sweep_summary_long_rows(sum.f, param, v[k], &p);
+            else if (sum_path)
+                sf_sweep_summary_row(sum.f, param, v[k], &p, work);
+            if (diag_path)
+                sf_sweep_diagnostics_row(diag.f, param, v[k], &p);
         }
         sf_sweep_point_free(&p);
     }
@@ -354,6 +404,8 @@ int sf_cmd_sweep(int argc, char **argv)
     }
     int st = sf_cli_close("sweep", &out, ok);
     if (sum_path && sf_cli_close("sweep", &sum, ok) && ok)
+        st = SF_EXIT_USAGE;
+    if (diag_path && sf_cli_close("sweep", &diag, ok) && ok)
         st = SF_EXIT_USAGE;
     if (ok && !st && strcmp(out_path, "-"))   /* complete: the checkpoints are no longer needed */
         for (size_t k = 0; k < nv; k++) {

@@ -22,7 +22,7 @@ fam_desc() {
         limits) echo "exact limits of the stochastic model: one random variable (large l/R) and homogenisation (small l/R)";;
         validation) echo "the paper's findings as validation cases, each compared with its statement (Figs. 10-13)";;
         stress) echo "numerical stress: extreme parameters give finite, bounded results or a clear refusal";;
-        montecarlo) echo "the Monte Carlo layer: every statistic a sweep summary prints recomputed from its per-realisation table";;
+        montecarlo) echo "the Monte Carlo layer: every statistic and estimate a sweep summary and its diagnostics print recomputed from the per-realisation table";;
         *) echo "";;
     esac
 }

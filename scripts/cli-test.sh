@@ -130,12 +130,12 @@ expect 2 "the pilot needs 2 to 5" "$bin" sweep sw.scene --param T --values 20 --
 [ ! -e sw.tsv ] && ok || bad "a refused two-stage sweep left sw.tsv"
 printf 'cof = variable\nT = 14\nt_skip = 4\n' > var.scene
 expect 0 "" "$bin" sweep var.scene --param T --values 14 --realisations 6 --target-se 1e-9 --pilot 3 --out st.tsv --summary st.sum
-[ "$(awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == "stop") c = i } NR == 2 { print $3, $c }' st.sum)" = "6 cap" ] \
+[ "$(awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; i++) { if ($i == "stop") c = i; if ($i == "n") n = i } } NR == 2 { print $n, $c }' st.sum)" = "6 cap" ] \
     && ok || bad "two-stage sweep at the cap: $(cat st.sum)"
 # antithetic pairs: one variable per realisation, the pairs in the summary
-expect 0 "" "$bin" sweep var.scene --param T --values 14 --realisations 6 --estimator antithetic --pilot 3 --out an.tsv --summary an.sum
-[ "$(awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == "anti_n") c = i } NR == 2 { print ($c >= 3 && $c <= 6) }' an.sum)" = "1" ] \
-    && ok || bad "antithetic sweep: anti_n: $(cat an.sum)"
+expect 0 "" "$bin" sweep var.scene --param T --values 14 --realisations 6 --estimator antithetic --pilot 3 --out an.tsv --diagnostics an.diag
+[ "$(awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == "anti_n") c = i } NR == 2 { print ($c >= 3 && $c <= 6) }' an.diag)" = "1" ] \
+    && ok || bad "antithetic sweep: anti_n: $(cat an.diag)"
 expect 0 "" "$bin" sweep var.scene --param T --values 14 --realisations 6 --estimator auto --pilot 3 --out au.tsv --summary au.sum
 [ "$(awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == "estimator") c = i } NR == 2 { print $c }' au.sum)" = "antithetic" ] \
     && ok || bad "auto sweep on one variable: the estimator column: $(cat au.sum)"
@@ -144,8 +144,63 @@ expect 0 "" "$bin" sweep var.scene --param T --values 14 --realisations 40 --est
 [ "$(awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == "stop") c = i } NR == 2 { print $c }' at.sum)" = "target" ] \
     && ok || bad "antithetic sweep at a target: stop: $(cat at.sum)"
 expect 0 "is below what the estimator's sizing says --target-se 1e-09 needs" "$bin" sweep var.scene --param T --values 14 --realisations 6 --estimator antithetic --pilot 3 --target-se 1e-9 --out at.tsv --summary at.sum
-[ "$(awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == "stop") c = i } NR == 2 { print $3, $c }' at.sum)" = "6 cap" ] \
+[ "$(awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; i++) { if ($i == "stop") c = i; if ($i == "n") n = i } } NR == 2 { print $n, $c }' at.sum)" = "6 cap" ] \
     && ok || bad "antithetic sweep at the cap: $(cat at.sum)"
+# the summary: one answer per ratio and point, whatever the estimator; the diagnostics beside it
+printf 'cof = field\nT = 20\nt_skip = 10\n' > sum.scene
+expect 0 "" "$bin" sweep sum.scene --param l_over_R --values 0.5,2 --realisations 8 --threads 1 --out pl.tsv \
+    --summary pl.sum --diagnostics pl.diag
+# (a column none of whose rows holds a number)
+nancols() { awk -F'\t' 'NR == 1 { nf = NF; for (i = 1; i <= NF; i++) h[i] = $i; next }
+    { for (i = 1; i <= NF; i++) if ($i !~ /^-?nan$/) seen[i] = 1 }
+    END { for (i = 1; i <= nf; i++) if (!seen[i]) printf "%s ", h[i] }' "$1"; }
+[ "$(wc -l < pl.sum)" -eq 3 ] && [ -z "$(nancols pl.sum)" ] && ok || bad "a plain sweep's summary: all-nan columns: $(nancols pl.sum)"
+[ "$(head -1 pl.sum)" = "$(printf 'param\tvalue')$(for q in pv_x pv_F stick_fraction; do
+    printf '\t%s_ratio_estimate[-]\t%s_ratio_se[-]\t%s_ratio_ci95_lo[-]\t%s_ratio_ci95_hi[-]\t%s_ratio_u_num[-]' $q $q $q $q $q
+    done)$(printf '\tn\testimator\tstop')" ] && ok || bad "a plain sweep's summary header: $(head -1 pl.sum)"
+# plain: the estimate is the diagnostics' ratio mean, its interval the Student one
+[ "$(awk -F'\t' 'NR == FNR && FNR == 1 { for (i = 1; i <= NF; i++) if ($i == "pv_F_ratio_estimate[-]") e = i; next }
+    NR == FNR { v[FNR] = $e; next } FNR == 1 { for (i = 1; i <= NF; i++) if ($i == "pv_F_ratio_mean[-]") m = i; next }
+    { print (v[FNR] == $m) }' pl.sum pl.diag | tr -d '\n')" = "11" ] && ok || bad "plain: estimate is not the ratio mean"
+# the diagnostics: the former summary's header, exactly
+old=$(printf 'param\tvalue\tn')
+for qu in pv_x:m pv_F:N stick_fraction:-; do q=${qu%:*} u=${qu#*:}
+    old=$old$(printf '\t%s_n_used\t%s_n_excluded\t%s_mean[%s]\t%s_std[%s]\t%s_se[%s]\t%s_ci95_lo[%s]\t%s_ci95_hi[%s]\t%s_det[%s]\t%s_ratio_mean[-]\t%s_ratio_std[-]\t%s_ratio_se[-]\t%s_num_n\t%s_num_bias[%s]\t%s_num_bias_se[%s]\t%s_u_num_mean[%s]' \
+        $q $q $q $u $q $u $q $u $q $u $q $u $q $u $q $q $q $q $q $u $q $u $q $u); done
+old=$old$(printf '\tstop\tn_pilot')
+for q in pv_x pv_F stick_fraction; do old=$old$(printf '\t%s_ratio_ci95_lo[-]\t%s_ratio_ci95_hi[-]' $q $q); done
+for q in pv_x pv_F stick_fraction; do
+    old=$old$(printf '\t%s_cv_ratio_mean[-]\t%s_cv_ratio_se[-]\t%s_cv_ratio_ci95_lo[-]\t%s_cv_ratio_ci95_hi[-]\t%s_cv_vrf[-]' $q $q $q $q $q); done
+old=$old$(printf '\tml_n0\tml_n1\tml_cost0\tml_cost1\tml_cost_plain')
+for q in pv_x pv_F stick_fraction; do
+    old=$old$(printf '\t%s_ml_ratio_mean[-]\t%s_ml_ratio_se[-]\t%s_ml_ratio_ci95_lo[-]\t%s_ml_ratio_ci95_hi[-]\t%s_ml_var0[-]\t%s_ml_var1[-]\t%s_ml_vrf[-]' $q $q $q $q $q $q $q); done
+old=$old$(printf '\tanti_n\tanti_cost\tanti_cost_plain')
+for q in pv_x pv_F stick_fraction; do
+    old=$old$(printf '\t%s_anti_n_used\t%s_anti_ratio_mean[-]\t%s_anti_ratio_se[-]\t%s_anti_ratio_ci95_lo[-]\t%s_anti_ratio_ci95_hi[-]\t%s_anti_rho[-]\t%s_anti_vrf[-]' $q $q $q $q $q $q $q); done
+old=$old$(printf '\testimator')
+[ "$(head -1 pl.diag)" = "$old" ] && [ "$(head -1 pl.diag | awk -F'\t' '{ print NF }')" -eq 122 ] && [ "$(wc -l < pl.diag)" -eq 3 ] \
+    && ok || bad "--diagnostics: not the former summary's header: $(head -1 pl.diag)"
+# auto: at l/R = 2 (circulant strip) two levels run; their estimate is the summary's, with n and work
+expect 0 "" "$bin" sweep sum.scene --param l_over_R --values 0.5,2 --realisations 8 --estimator auto --threads 1 \
+    --out au2.tsv --summary au2.sum --diagnostics au2.diag
+[ "$(awk -F'\t' 'NR == FNR && FNR == 1 { for (i = 1; i <= NF; i++) { if ($i == "pv_x_ratio_estimate[-]") e = i; if ($i == "estimator") s = i }; next }
+    NR == FNR { v[FNR] = $e; est[FNR] = $s; next } FNR == 1 { for (i = 1; i <= NF; i++) if ($i == "pv_x_ml_ratio_mean[-]") m = i; next }
+    { print est[FNR], (v[FNR] == $m && $m != "nan") }' au2.sum au2.diag | sed -n 2p)" = "mlmc 1" ] \
+    && ok || bad "auto at l/R = 2: the summary's estimate is not the two-level one: $(cat au2.sum)"
+[ -z "$(nancols au2.sum)" ] && [ "$(awk -F'\t' 'NR == 1 { print $18, $19 }' au2.sum)" = "n work" ] \
+    && ok || bad "auto: summary columns: $(head -1 au2.sum) (all nan: $(nancols au2.sum))"
+# long: 3 rows per point, the wide form's numbers
+expect 0 "" "$bin" sweep sum.scene --param l_over_R --values 0.5,2 --realisations 8 --estimator auto --threads 1 \
+    --out au2.tsv --summary au2.long --summary-format long
+[ "$(head -1 au2.long)" = "$(printf 'param\tvalue\tqoi\testimate\tse\tci_lo\tci_hi\tu_num\tn\testimator\tstop\tunit')" ] \
+    && [ "$(wc -l < au2.long)" -eq 7 ] && ok || bad "long summary: $(cat au2.long)"
+[ "$(awk -F'\t' 'NR > 1 { for (q = 0; q < 3; q++) print $1, $2, $(3 + 5 * q), $(4 + 5 * q), $(5 + 5 * q), $(6 + 5 * q), $(7 + 5 * q), $18, $20, $21 }' au2.sum)" \
+    = "$(awk -F'\t' 'NR > 1 { print $1, $2, $4, $5, $6, $7, $8, $9, $10, $11 }' au2.long)" ] \
+    && ok || bad "long summary: not the wide one's numbers"
+expect 2 "--summary-format takes wide or long (got 'tall')" "$bin" sweep sum.scene --param l_over_R --values 2 \
+    --realisations 8 --out x.tsv --summary x.sum --summary-format tall
+expect 2 "--summary-format needs --summary" "$bin" sweep sum.scene --param l_over_R --values 2 --realisations 8 \
+    --out x.tsv --summary-format long
 # run: no QoI is said; no --out nor --summary prints the summary
 printf 'cof = uniform\nT = 5\n' > t5.scene
 expect 0 "warning: no quantity of interest" "$bin" run t5.scene

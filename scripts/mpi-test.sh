@@ -1,7 +1,8 @@
 #!/bin/sh
 # The MPI build gives the serial bytes: a sweep run by the serial binary and
 # by `mpirun -np 2` (and -np 3, more ranks than cores) must produce
-# identical TSV files.
+# identical TSV files (the per-realisation table, the summary, the
+# diagnostics).
 set -eu
 serial=$1
 mpi=$2
@@ -16,12 +17,14 @@ R="mpirun --oversubscribe"
 for sc in s:1,10,1000000 c:0.01,0.03; do
     name=${sc%%:*}; values=${sc#*:}
     "$serial" sweep "$tmp/$name.scene" --param l_over_R --values "$values" --realisations 7 \
-        --out "$tmp/$name-serial.tsv" --summary "$tmp/$name-serial-sum.tsv"
+        --out "$tmp/$name-serial.tsv" --summary "$tmp/$name-serial-sum.tsv" --diagnostics "$tmp/$name-serial-diag.tsv"
     for np in 2 3; do
         OMP_NUM_THREADS=1 $R -np $np "$mpi" sweep "$tmp/$name.scene" --param l_over_R --values "$values" \
-            --realisations 7 --out "$tmp/$name-mpi$np.tsv" --summary "$tmp/$name-mpi$np-sum.tsv"
+            --realisations 7 --out "$tmp/$name-mpi$np.tsv" --summary "$tmp/$name-mpi$np-sum.tsv" \
+            --diagnostics "$tmp/$name-mpi$np-diag.tsv"
         cmp "$tmp/$name-serial.tsv" "$tmp/$name-mpi$np.tsv"
         cmp "$tmp/$name-serial-sum.tsv" "$tmp/$name-mpi$np-sum.tsv"
+        cmp "$tmp/$name-serial-diag.tsv" "$tmp/$name-mpi$np-diag.tsv"
     done
 done
 # the paired estimators sized in stages and at a target (each stage's
@@ -32,14 +35,16 @@ for est in "auto --target-se 0.02" "antithetic" "mlmc"; do
     tag=$(echo "$est" | cut -d' ' -f1)
     # shellcheck disable=SC2086
     "$serial" sweep "$tmp/s.scene" --param l_over_R --values 0.3,1,10 --realisations 24 --pilot 4 \
-        --estimator $est --out "$tmp/e-$tag-serial.tsv" --summary "$tmp/e-$tag-serial-sum.tsv" 2> /dev/null
+        --estimator $est --out "$tmp/e-$tag-serial.tsv" --summary "$tmp/e-$tag-serial-sum.tsv" \
+        --diagnostics "$tmp/e-$tag-serial-diag.tsv" 2> /dev/null
     for np in 2 3; do
         # shellcheck disable=SC2086
         OMP_NUM_THREADS=1 $R -np $np "$mpi" sweep "$tmp/s.scene" --param l_over_R --values 0.3,1,10 \
             --realisations 24 --pilot 4 --estimator $est --out "$tmp/e-$tag-mpi$np.tsv" \
-            --summary "$tmp/e-$tag-mpi$np-sum.tsv" 2> /dev/null
+            --summary "$tmp/e-$tag-mpi$np-sum.tsv" --diagnostics "$tmp/e-$tag-mpi$np-diag.tsv" 2> /dev/null
         cmp "$tmp/e-$tag-serial.tsv" "$tmp/e-$tag-mpi$np.tsv"
         cmp "$tmp/e-$tag-serial-sum.tsv" "$tmp/e-$tag-mpi$np-sum.tsv"
+        cmp "$tmp/e-$tag-serial-diag.tsv" "$tmp/e-$tag-mpi$np-diag.tsv"
     done
 done
 echo "mpi-test: mpirun -np 2 and -np 3 give the serial bytes (lognormal strip, one variable, cell averages; the estimators auto at a target, antithetic, mlmc)"

@@ -373,7 +373,7 @@ void sf_sweep_write_rows(FILE *f, const char *param, double value, const sf_swee
     }
 }
 
-void sf_sweep_summary_header(FILE *f)
+void sf_sweep_diagnostics_header(FILE *f)
 {
     int lv = (int)lround(100 * SF_SWEEP_CI_LEVEL);
     fputs("param\tvalue\tn", f);
@@ -412,7 +412,7 @@ void sf_sweep_summary_header(FILE *f)
     fputc('\n', f);
 }
 
-void sf_sweep_summary_row(FILE *f, const char *param, double value, const sf_sweep_point *p)
+void sf_sweep_diagnostics_row(FILE *f, const char *param, double value, const sf_sweep_point *p)
 {
     char v[32];
     sf_sweep_fmt(v, sizeof v, value);
@@ -458,6 +458,114 @@ void sf_sweep_summary_row(FILE *f, const char *param, double value, const sf_swe
     }
     fprintf(f, "\t%s", sf_sweep_estimator_name(p->estimator));
     fputc('\n', f);
+}
+
+int sf_sweep_estimator_work(int est)
+{
+    return est == SF_EST_MLMC || est == SF_EST_MLMC_BOXES || est == SF_EST_MLMC_SUB || est == SF_EST_ANTITHETIC;
+}
+
+/* a companion was formed for some realisation (none for a window of tiles) */
+static int cv_formed(const sf_sweep_point *p)
+{
+    for (size_t i = 0; p->companion && i < p->n; i++)
+        if (isfinite(p->companion[i]))
+            return 1;
+    return 0;
+}
+
+int sf_sweep_estimate(const sf_sweep_point *p, int q, sf_sweep_answer *a)
+{
+    *a = (sf_sweep_answer){ p->estimator, NAN, NAN, NAN, NAN, NAN, p->n, NAN, p->stop };
+    if (q < 0 || q >= SF_SWEEP_NQ)
+        return SF_EINVAL;
+    if (p->num[q].n_sub > 0)
+        a->u_num = p->num[q].u_mean / p->det[q];
+    switch (p->estimator) {
+    case SF_EST_CV:
+        if (cv_formed(p)) {
+            a->estimate = p->cv[q].mean;
+            a->se = p->cv[q].se;
+            a->ci_lo = p->cv[q].ci_lo;
+            a->ci_hi = p->cv[q].ci_hi;
+            return SF_SUCCESS;
+        }
+        a->estimator = SF_EST_PLAIN;   /* no companion: plain Monte Carlo's */
+        /* fall through */
+    case SF_EST_PLAIN:
+    case SF_EST_TARGET:   /* the interval the design guarantees (Stein's for two stages) */
+        a->estimate = p->rstat[q].mean;
+        a->se = p->rstat[q].se;
+        a->ci_lo = p->rci_lo[q];
+        a->ci_hi = p->rci_hi[q];
+        return SF_SUCCESS;
+    case SF_EST_MLMC:
+    case SF_EST_MLMC_BOXES:
+    case SF_EST_MLMC_SUB:
+        a->estimate = p->ml.q[q].mean;
+        a->se = p->ml.q[q].se;
+        a->ci_lo = p->ml.q[q].ci_lo;
+        a->ci_hi = p->ml.q[q].ci_hi;
+        a->n = p->ml.n[0] + p->ml.n[1];
+        a->work = p->ml.work;
+        return SF_SUCCESS;
+    case SF_EST_ANTITHETIC:
+        a->estimate = p->anti.q[q].mean;
+        a->se = p->anti.q[q].se;
+        a->ci_lo = p->anti.q[q].ci_lo;
+        a->ci_hi = p->anti.q[q].ci_hi;
+        a->n = p->anti.n;
+        a->work = p->anti.work;
+        return SF_SUCCESS;
+    default:
+        return SF_EINVAL;
+    }
+}
+
+void sf_sweep_summary_header(FILE *f, int work)
+{
+    int lv = (int)lround(100 * SF_SWEEP_CI_LEVEL);
+    fputs("param\tvalue", f);
+    for (int q = 0; q < SF_SWEEP_NQ; q++) {
+        const char *a = qname[q];
+        fprintf(f, "\t%s_ratio_estimate[-]\t%s_ratio_se[-]\t%s_ratio_ci%d_lo[-]\t%s_ratio_ci%d_hi[-]\t%s_ratio_u_num[-]",
+                a, a, a, lv, a, lv, a);
+    }
+    fputs(work ? "\tn\twork\testimator\tstop\n" : "\tn\testimator\tstop\n", f);
+}
+
+void sf_sweep_summary_row(FILE *f, const char *param, double value, const sf_sweep_point *p, int work)
+{
+    char v[32];
+    sf_sweep_fmt(v, sizeof v, value);
+    fprintf(f, "%s\t%s", param, v);
+    sf_sweep_answer a;
+    for (int q = 0; q < SF_SWEEP_NQ; q++) {
+        sf_sweep_estimate(p, q, &a);
+        fprintf(f, "\t%.17g\t%.17g\t%.17g\t%.17g\t%.3g", a.estimate, a.se, a.ci_lo, a.ci_hi, a.u_num);
+    }
+    fprintf(f, "\t%zu", a.n);
+    if (work)
+        fprintf(f, "\t%.6g", a.work);
+    fprintf(f, "\t%s\t%s\n", sf_sweep_estimator_name(a.estimator), sf_mcstop_reason(a.stop));
+}
+
+void sf_sweep_summary_long_header(FILE *f)
+{
+    fputs("param\tvalue\tqoi\testimate\tse\tci_lo\tci_hi\tu_num\tn\testimator\tstop\tunit\n", f);
+}
+
+void sf_sweep_summary_long_rows(FILE *f, const char *param, double value, const sf_sweep_point *p)
+{
+    char v[32];
+    sf_sweep_fmt(v, sizeof v, value);
+    for (int q = 0; q < SF_SWEEP_NQ; q++) {
+        sf_sweep_answer a;
+        sf_sweep_estimate(p, q, &a);
+        fprintf(f, "%s\t%s\t%s_ratio\t%.17g\t%.17g\t%.17g\t%.17g\t%.3g\t%zu\t%s\t%s\t-\n", param, v, qname[q],
+                a.estimate, a.se, a.ci_lo, a.ci_hi, a.u_num, a.n, sf_sweep_estimator_name(a.estimator),
+                sf_mcstop_reason(a.stop));
+    }
 }
 
 const char *sf_sweep_estimator_name(int est)

@@ -28,7 +28,8 @@ extern "C" {
 enum { SF_SWEEP_PVX = 0, SF_SWEEP_PVF = 1, SF_SWEEP_SF = 2, SF_SWEEP_NQ = 3 };
 
 /* The estimators of a sweep point (sf_sweep_point.estimator; the
- * summary's last column, by sf_sweep_estimator_name). */
+ * summary's and the diagnostics' estimator column, by
+ * sf_sweep_estimator_name). */
 enum { SF_EST_PLAIN = 0, SF_EST_CV, SF_EST_TARGET, SF_EST_MLMC, SF_EST_MLMC_BOXES, SF_EST_ANTITHETIC, SF_EST_MLMC_SUB };
 const char *sf_sweep_estimator_name(int est);
 /* The estimator `sweep --estimator auto` takes for scene s, by a rule
@@ -68,7 +69,7 @@ typedef struct {
  * mean of the n_used finite e_i, bias_se its standard error, u_mean =
  * Fs (|bias| + t bias_se) (+ the a-priori cell-average part), t the
  * Student quantile at (1 + SF_SWEEP_CI_LEVEL) / 2.  n_sub = 0: not
- * estimated (the summary writes nan). */
+ * estimated (the summary and the diagnostics write nan). */
 typedef struct {
     size_t n_sub, n_used;
     double bias, bias_se, u_mean;
@@ -289,16 +290,61 @@ int sf_sweep_point_stats(sf_sweep_point *p);
  * 0.10000000000000001). */
 void sf_sweep_fmt(char *buf, size_t len, double x);
 
-/* The sweep's two tables (TSV, a header line, then the rows of each
- * point): per realisation, and the summary per point.  `slipfield sweep`
- * writes them with --out and --summary.  A realisation's row ends with
+/* The answer of a sweep point for one ratio (sf_sweep_estimate): the
+ * estimate of the ratio mean [-] that the estimator which ran makes, its
+ * standard error and interval at SF_SWEEP_CI_LEVEL, whatever the
+ * estimator:
+ *   plain:           rstat[q]'s mean and se, [rci_lo, rci_hi] (Student);
+ *   target-se:       the same mean and se, and the interval the two-stage
+ *                    design guarantees ([rci_lo, rci_hi]: Stein's);
+ *   control-variate: cv[q] (the regression estimate); where no companion
+ *                    was formed (a window of tiles: every companion[i]
+ *                    NaN) plain's, and estimator SF_EST_PLAIN;
+ *   mlmc, mlmc-boxes, mlmc-sub: ml.q[q] (the two-level estimate);
+ *   antithetic:      anti.q[q] (the pairs' estimate).
+ * u_num: the numerical error of the mean in ratio units, num[q].u_mean /
+ * det[q] (NaN: not estimated).  n: the field draws the estimate
+ * averages: the realisations (plain, target-se, control-variate), level
+ * 0's samples + level 1's pairs (ml.n[0] + ml.n[1]), the pairs (anti.n).
+ * work: the estimator's work [cell evaluations] (ml.work, anti.work);
+ * NaN for the estimators that do not record it (sf_sweep_estimator_work).
+ * stop: p->stop (mcstop.h). */
+typedef struct {
+    int estimator;              /* SF_EST_*: the estimator whose estimate this is */
+    double estimate, se, ci_lo, ci_hi, u_num;
+    size_t n;
+    double work;
+    int stop;
+} sf_sweep_answer;
+/* SF_EINVAL (a NaN answer) for q not a QoI or an unknown estimator. */
+int sf_sweep_estimate(const sf_sweep_point *p, int q, sf_sweep_answer *a);
+/* 1 when estimator est records its work (the summary's work column):
+ * mlmc, mlmc-boxes, mlmc-sub, antithetic. */
+int sf_sweep_estimator_work(int est);
+
+/* The sweep's tables (TSV, a header line, then the rows of each point):
+ * per realisation (--out), the summary per point (--summary) and the
+ * diagnostics per point (--diagnostics).  A realisation's row ends with
  * its companion's QoIs (pv_x_coarse[m], pv_F_coarse[N],
  * stick_fraction_coarse[-]), rho (unum_rho[-]) and the a-priori relative
- * error (unum_apriori[-]): nan where the realisation had no companion. */
+ * error (unum_apriori[-]): nan where the realisation had no companion.
+ *
+ * The summary (wide): param, value, per ratio q of pv_x_ratio, pv_F_ratio,
+ * stick_fraction_ratio the answer above, q_estimate[-], q_se[-],
+ * q_ci95_lo[-], q_ci95_hi[-], q_u_num[-], then n, work (only with work
+ * != 0: every point of the sweep then has it, or nan), estimator, stop.
+ * Long: one row per point and ratio, param value qoi estimate se ci_lo
+ * ci_hi u_num n estimator stop unit (unit: of estimate .. u_num, "-").
+ * The diagnostics: every statistic of the point, the columns of each
+ * estimator (nan without it). */
 void sf_sweep_write_header(FILE *f);
 void sf_sweep_write_rows(FILE *f, const char *param, double value, const sf_sweep_point *p);
-void sf_sweep_summary_header(FILE *f);
-void sf_sweep_summary_row(FILE *f, const char *param, double value, const sf_sweep_point *p);
+void sf_sweep_summary_header(FILE *f, int work);
+void sf_sweep_summary_row(FILE *f, const char *param, double value, const sf_sweep_point *p, int work);
+void sf_sweep_summary_long_header(FILE *f);
+void sf_sweep_summary_long_rows(FILE *f, const char *param, double value, const sf_sweep_point *p);
+void sf_sweep_diagnostics_header(FILE *f);
+void sf_sweep_diagnostics_row(FILE *f, const char *param, double value, const sf_sweep_point *p);
 
 #ifdef __cplusplus
 }

@@ -222,16 +222,70 @@ static double summary_field(const char *text, const char *col)
 /* 16 realisations, 8 of them without a stick fraction (NaN) and one
  * without a PV_x (+Inf): every count and statistic the summary prints
  * is that of the finite values (the summary once said n = 16 over 8). */
-/* The summary (header and one row) that `sweep --summary` writes for p. */
-static char *summary_text(const char *param, double value, const sf_sweep_point *p)
+/* The diagnostics (header and one row) that `sweep --diagnostics` writes for p. */
+static char *diag_text(const char *param, double value, const sf_sweep_point *p)
 {
     char *text = NULL;
     size_t len = 0;
     FILE *f = open_memstream(&text, &len);
-    sf_sweep_summary_header(f);
-    sf_sweep_summary_row(f, param, value, p);
+    sf_sweep_diagnostics_header(f);
+    sf_sweep_diagnostics_row(f, param, value, p);
     fclose(f);
     return text;
+}
+
+/* The summary that `sweep --summary` writes for p: wide (header and one
+ * row, with or without the work column) or long (header and 3 rows). */
+static char *sum_text(const char *param, double value, const sf_sweep_point *p, int work, int lng)
+{
+    char *text = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&text, &len);
+    if (lng) {
+        sf_sweep_summary_long_header(f);
+        sf_sweep_summary_long_rows(f, param, value, p);
+    } else {
+        sf_sweep_summary_header(f, work);
+        sf_sweep_summary_row(f, param, value, p, work);
+    }
+    fclose(f);
+    return text;
+}
+
+/* p's summary (wide, with the work column when work) states ratio q's
+ * answer a: its estimate, se, interval, u_num, n and work to the bit,
+ * and the same numbers in the long form's row of q */
+static void assert_summary_states(const sf_sweep_point *p, int q, const sf_sweep_answer *a, int work)
+{
+    static const char *const qn[SF_SWEEP_NQ] = { "pv_x", "pv_F", "stick_fraction" };
+    char *text = sum_text("l_over_R", 2, p, work, 0), nm[64];
+    snprintf(nm, sizeof nm, "%s_ratio_estimate[-]", qn[q]);
+    assert_true(summary_field(text, nm) == a->estimate);
+    snprintf(nm, sizeof nm, "%s_ratio_se[-]", qn[q]);
+    assert_true(summary_field(text, nm) == a->se);
+    snprintf(nm, sizeof nm, "%s_ratio_ci95_lo[-]", qn[q]);
+    assert_true(summary_field(text, nm) == a->ci_lo);
+    snprintf(nm, sizeof nm, "%s_ratio_ci95_hi[-]", qn[q]);
+    assert_true(summary_field(text, nm) == a->ci_hi);
+    assert_true(summary_field(text, "n") == (double)a->n);
+    char w[32];
+    snprintf(w, sizeof w, "%.6g", a->work);
+    assert_true(work ? summary_field(text, "work") == strtod(w, NULL) : isnan(summary_field(text, "work")));
+    assert_true(!work == !strstr(text, "\twork\t"));
+    free(text);
+    text = sum_text("l_over_R", 2, p, 0, 1);
+    char row[400], u[32];
+    snprintf(u, sizeof u, "%.3g", a->u_num);
+    snprintf(row, sizeof row, "l_over_R\t2\t%s_ratio\t%.17g\t%.17g\t%.17g\t%.17g\t%s\t%zu\t%s\t%s\t-\n", qn[q],
+             a->estimate, a->se, a->ci_lo, a->ci_hi, u, a->n, sf_sweep_estimator_name(a->estimator),
+             sf_mcstop_reason(a->stop));
+    assert_non_null(strstr(text, row));
+    assert_non_null(strstr(text, "param\tvalue\tqoi\testimate\tse\tci_lo\tci_hi\tu_num\tn\testimator\tstop\tunit\n"));
+    size_t lines = 0;
+    for (const char *c = text; *c; c++)
+        lines += *c == '\n';
+    assert_int_equal(lines, 1 + SF_SWEEP_NQ);
+    free(text);
 }
 
 static void summary_counts_finite_values(void **state)
@@ -250,7 +304,7 @@ static void summary_counts_finite_values(void **state)
             sf[m++] = p.qoi[3 * i + 2];
     }
     assert_int_equal(sf_sweep_point_stats(&p), SF_SUCCESS);
-    char *text = summary_text("v_b", 0.6, &p);
+    char *text = diag_text("v_b", 0.6, &p);
     assert_true(summary_field(text, "n") == 16);
     assert_true(summary_field(text, "stick_fraction_n_used") == 8);
     assert_true(summary_field(text, "stick_fraction_n_excluded") == 8);
@@ -268,6 +322,46 @@ static void summary_counts_finite_values(void **state)
     assert_true(isnan(summary_field(text, "no_such_column")));
     assert_non_null(strstr(text, "\nv_b\t0.6\t16\t"));   /* the value as given, not 0.59999999999999998 */
     free(text);
+    /* the summary: plain's answer is the ratio mean and its Student interval; no work, no u_num (not estimated) */
+    p.stop = SF_MCSTOP_FIXED;
+    for (int q = 0; q < SF_SWEEP_NQ; q++) {
+        sf_sweep_answer a;
+        assert_int_equal(sf_sweep_estimate(&p, q, &a), SF_SUCCESS);
+        assert_true(a.estimator == SF_EST_PLAIN && a.estimate == p.rstat[q].mean && a.se == p.rstat[q].se);
+        assert_true(a.ci_lo == p.rstat[q].ci_lo && a.ci_hi == p.rstat[q].ci_hi && a.n == 16);
+        assert_true(isnan(a.u_num) && isnan(a.work) && a.stop == SF_MCSTOP_FIXED);
+        assert_summary_states(&p, q, &a, 0);
+    }
+    text = sum_text("v_b", 0.6, &p, 0, 0);
+    assert_true(!strncmp(text, "param\tvalue\tpv_x_ratio_estimate[-]\tpv_x_ratio_se[-]\tpv_x_ratio_ci95_lo[-]\t"
+                               "pv_x_ratio_ci95_hi[-]\tpv_x_ratio_u_num[-]\tpv_F_ratio_estimate[-]", 128));
+    assert_non_null(strstr(text, "\tstick_fraction_ratio_u_num[-]\tn\testimator\tstop\nv_b\t0.6\t"));
+    assert_non_null(strstr(text, "\t16\tplain\tfixed\n"));
+    free(text);
+    text = sum_text("v_b", 0.6, &p, 1, 0);   /* a work column asked of a point without work: nan */
+    assert_non_null(strstr(text, "\tn\twork\testimator\tstop\n") && strstr(text, "\t16\tnan\tplain\tfixed\n"));
+    free(text);
+    /* u_num in ratio units where estimated */
+    p.num[SF_SWEEP_PVF] = (sf_sweep_num){ .n_sub = 4, .n_used = 4, .u_mean = 0.5 };
+    sf_sweep_answer an;
+    assert_int_equal(sf_sweep_estimate(&p, SF_SWEEP_PVF, &an), SF_SUCCESS);
+    assert_true(an.u_num == 0.5 / p.det[SF_SWEEP_PVF]);
+    /* no such ratio, no such estimator: a NaN answer */
+    assert_int_equal(sf_sweep_estimate(&p, -1, &an), SF_EINVAL);
+    assert_true(isnan(an.estimate) && isnan(an.u_num));
+    assert_int_equal(sf_sweep_estimate(&p, SF_SWEEP_NQ, &an), SF_EINVAL);
+    p.estimator = 99;
+    assert_int_equal(sf_sweep_estimate(&p, 0, &an), SF_EINVAL);
+    assert_true(isnan(an.estimate) && isnan(an.se) && isnan(an.ci_lo) && an.n == 16);
+    text = sum_text("v_b", 0.6, &p, 0, 0);
+    assert_non_null(strstr(text, "\nv_b\t0.6\tnan\tnan\tnan\tnan\tnan\t") && strstr(text, "\tunknown\tfixed\n"));
+    free(text);
+    p.estimator = SF_EST_PLAIN;
+    /* the estimators that record their work */
+    assert_true(!sf_sweep_estimator_work(SF_EST_PLAIN) && !sf_sweep_estimator_work(SF_EST_CV) &&
+                !sf_sweep_estimator_work(SF_EST_TARGET) && sf_sweep_estimator_work(SF_EST_MLMC) &&
+                sf_sweep_estimator_work(SF_EST_MLMC_BOXES) && sf_sweep_estimator_work(SF_EST_MLMC_SUB) &&
+                sf_sweep_estimator_work(SF_EST_ANTITHETIC));
     /* one value: a mean, no spread; none: nothing */
     sf_sweep_stat st;
     double one[2] = { 3, NAN };
@@ -391,11 +485,19 @@ static void stein_sweep(void **state)
     assert_memory_equal(a.qoi, b.qoi, a.n * SF_SWEEP_NQ * sizeof *a.qoi);
     for (int q = 0; q < SF_SWEEP_NQ; q++)   /* Stein's interval is not the Student one */
         assert_true(a.rci_lo[q] < a.rstat[q].mean && a.rstat[q].mean < a.rci_hi[q] && a.rci_lo[q] != a.rstat[q].ci_lo);
-    char *text = summary_text("v_b", 0.2, &a);
+    char *text = diag_text("v_b", 0.2, &a);
     assert_true(summary_field(text, "n_pilot") == 4);
     assert_true(summary_field(text, "pv_F_ratio_ci95_lo[-]") == a.rci_lo[SF_SWEEP_PVF]);
     assert_non_null(strstr(text, a.stop == SF_MCSTOP_CAP ? "\tcap\t4\t" : "\ttarget\t4\t"));
     free(text);
+    /* the summary: the ratio mean, its se, and the interval the two stages guarantee (Stein's) */
+    for (int q = 0; q < SF_SWEEP_NQ; q++) {
+        sf_sweep_answer e;
+        assert_int_equal(sf_sweep_estimate(&a, q, &e), SF_SUCCESS);
+        assert_true(e.estimator == SF_EST_TARGET && e.estimate == a.rstat[q].mean && e.se == a.rstat[q].se);
+        assert_true(e.ci_lo == a.rci_lo[q] && e.ci_hi == a.rci_hi[q] && e.n == a.n && e.stop == a.stop);
+        assert_summary_states(&a, q, &e, 0);
+    }
     sf_sweep_point_free(&a);
     sf_sweep_point_free(&b);
     assert_int_equal(sf_sweep_run_target(&s, 0, 4, 30, 1, NULL, 0, NULL, &a, err, sizeof err), SF_EINVAL);
@@ -427,10 +529,39 @@ static void cv_estimator(void **state)
         assert_true(p.cv[q].ci_lo < p.cv[q].mean && p.cv[q].mean < p.cv[q].ci_hi);
         assert_true(p.cv[q].vrf > 50);   /* the wiggle is 1/30 of C's part */
     }
-    char *text = summary_text("l_over_R", 100, &p);
+    char *text = diag_text("l_over_R", 100, &p);
     assert_true(summary_field(text, "pv_F_cv_ratio_mean[-]") == p.cv[SF_SWEEP_PVF].mean);
     assert_true(summary_field(text, "stick_fraction_cv_vrf[-]") == p.cv[SF_SWEEP_SF].vrf);
     free(text);
+    /* the summary: the regression estimate; without a companion (every C NaN, or none held) plain's */
+    p.estimator = SF_EST_CV;
+    for (int q = 0; q < SF_SWEEP_NQ; q++) {
+        sf_sweep_answer e;
+        assert_int_equal(sf_sweep_estimate(&p, q, &e), SF_SUCCESS);
+        assert_true(e.estimator == SF_EST_CV && e.estimate == p.cv[q].mean && e.se == p.cv[q].se);
+        assert_true(e.ci_lo == p.cv[q].ci_lo && e.ci_hi == p.cv[q].ci_hi && e.n == n && isnan(e.work));
+        assert_summary_states(&p, q, &e, 0);
+    }
+    {
+        double *c = p.companion;
+        sf_sweep_answer e;
+        p.companion = calloc(n, sizeof *p.companion);
+        for (size_t i = 0; i < n; i++)
+            p.companion[i] = NAN;
+        assert_int_equal(sf_sweep_point_stats(&p), SF_SUCCESS);
+        assert_int_equal(sf_sweep_estimate(&p, SF_SWEEP_PVF, &e), SF_SUCCESS);
+        assert_true(e.estimator == SF_EST_PLAIN && e.estimate == p.rstat[SF_SWEEP_PVF].mean && isfinite(e.estimate));
+        assert_true(e.ci_lo == p.rstat[SF_SWEEP_PVF].ci_lo && isnan(p.cv[SF_SWEEP_PVF].mean));
+        text = sum_text("l_over_R", 100, &p, 0, 0);
+        assert_non_null(strstr(text, "\tplain\tfixed\n"));
+        free(text);
+        free(p.companion);
+        p.companion = NULL;
+        assert_int_equal(sf_sweep_estimate(&p, SF_SWEEP_PVF, &e), SF_SUCCESS);
+        assert_true(e.estimator == SF_EST_PLAIN && e.estimate == p.rstat[SF_SWEEP_PVF].mean);
+        p.companion = c;
+        assert_int_equal(sf_sweep_point_stats(&p), SF_SUCCESS);
+    }
     p.n = 2;   /* too few for a line with a residual */
     assert_int_equal(sf_sweep_point_stats(&p), SF_SUCCESS);
     assert_true(isnan(p.cv[0].mean) && isnan(p.cv[0].vrf));
@@ -561,11 +692,20 @@ static void mlmc_estimator(void **state)
         assert_true(e->var[1] < e->var_fine);   /* one field: the difference varies less than the fine value */
     }
     assert_true(a.ml.cost[0] < a.ml.cost_fine && a.ml.cost_fine < a.ml.cost[1]);
-    char *text = summary_text("l_over_R", 1, &a);
+    char *text = diag_text("l_over_R", 1, &a);
     assert_true(summary_field(text, "pv_F_ml_ratio_mean[-]") == a.ml.q[SF_SWEEP_PVF].mean);
     assert_true(summary_field(text, "ml_n0") == (double)a.ml.n[0]);
     free(text);
-    text = summary_text("l_over_R", 1, &p);   /* without it: nan */
+    /* the summary: the two-level estimate, n = both levels' samples, the work */
+    for (int q = 0; q < SF_SWEEP_NQ; q++) {
+        sf_sweep_answer e;
+        assert_int_equal(sf_sweep_estimate(&a, q, &e), SF_SUCCESS);
+        assert_true(e.estimator == SF_EST_MLMC && e.estimate == a.ml.q[q].mean && e.se == a.ml.q[q].se);
+        assert_true(e.ci_lo == a.ml.q[q].ci_lo && e.ci_hi == a.ml.q[q].ci_hi && e.estimate != a.rstat[q].mean);
+        assert_true(e.n == a.ml.n[0] + a.ml.n[1] && e.work == a.ml.work && e.stop == SF_MCSTOP_FIXED);
+        assert_summary_states(&a, q, &e, 1);
+    }
+    text = diag_text("l_over_R", 1, &p);   /* without it: nan */
     assert_true(isnan(summary_field(text, "stick_fraction_ml_vrf[-]")) && isnan(summary_field(text, "ml_cost0")));
     free(text);
     sf_sweep_point_free(&a);
@@ -675,12 +815,21 @@ static void anti_estimator(void **state)
         assert_true(isfinite(e->mean) && e->se > 0 && e->ci_lo < e->mean && e->mean < e->ci_hi && e->vrf > 0);
         assert_true(e->m > 2 ? e->rho >= -1 && e->rho <= 1 : isnan(e->rho));   /* a correlation needs 3 pairs */
     }
-    char *text = summary_text("l_over_R", 1, &p);
+    char *text = diag_text("l_over_R", 1, &p);
     assert_true(summary_field(text, "pv_F_anti_ratio_mean[-]") == p.anti.q[SF_SWEEP_PVF].mean);
     assert_true(summary_field(text, "anti_n") == (double)p.anti.n);
     assert_true(summary_field(text, "pv_x_anti_n_used") == (double)p.anti.q[SF_SWEEP_PVX].m);
     free(text);
-    text = summary_text("l_over_R", 1, &q);   /* without it: nan */
+    /* the summary: the pairs' estimate, n = the pairs, the work */
+    for (int k = 0; k < SF_SWEEP_NQ; k++) {
+        sf_sweep_answer e;
+        assert_int_equal(sf_sweep_estimate(&p, k, &e), SF_SUCCESS);
+        assert_true(e.estimator == SF_EST_ANTITHETIC && e.estimate == p.anti.q[k].mean && e.se == p.anti.q[k].se);
+        assert_true(e.ci_lo == p.anti.q[k].ci_lo && e.ci_hi == p.anti.q[k].ci_hi);
+        assert_true(e.n == p.anti.n && e.work == p.anti.work);
+        assert_summary_states(&p, k, &e, 1);
+    }
+    text = diag_text("l_over_R", 1, &q);   /* without it: nan */
     assert_true(isnan(summary_field(text, "stick_fraction_anti_vrf[-]")) && isnan(summary_field(text, "anti_cost")));
     free(text);
     sf_sweep_point_free(&p);
@@ -760,6 +909,13 @@ static void boxes_estimator(void **state)
     assert_true(a.ml.cost[0] < a.ml.cost_fine && isfinite(a.ml.q[0].mean) && a.ml.q[0].se > 0);
     assert_int_equal(a.estimator, SF_EST_MLMC_BOXES);
     assert_stages_done(&a, 40, 3);
+    for (int q = 0; q < SF_SWEEP_NQ; q++) {   /* the summary: the two-level estimate */
+        sf_sweep_answer e;
+        assert_int_equal(sf_sweep_estimate(&a, q, &e), SF_SUCCESS);
+        assert_true(e.estimator == SF_EST_MLMC_BOXES && e.estimate == a.ml.q[q].mean && e.ci_hi == a.ml.q[q].ci_hi);
+        assert_true(e.n == a.ml.n[0] + a.ml.n[1] && e.work == a.ml.work);
+        assert_summary_states(&a, q, &e, 1);
+    }
     sf_sweep_point_free(&a);
     sf_sweep_point_free(&b);
     assert_int_equal(sf_sweep_run_mlmc_boxes(&s, 8, 1, 1, NULL, &a, err, sizeof err), SF_EINVAL);
@@ -836,6 +992,13 @@ static void sub_estimator(void **state)
     assert_memory_equal(a.ml.q, b.ml.q, sizeof a.ml.q);
     assert_string_equal(sf_sweep_estimator_name(a.estimator), "mlmc-sub");
     assert_stages_done(&a, 40, 3);
+    for (int q = 0; q < SF_SWEEP_NQ; q++) {   /* the summary: the two-level estimate */
+        sf_sweep_answer e;
+        assert_int_equal(sf_sweep_estimate(&a, q, &e), SF_SUCCESS);
+        assert_true(e.estimator == SF_EST_MLMC_SUB && e.estimate == a.ml.q[q].mean && e.ci_lo == a.ml.q[q].ci_lo);
+        assert_true(e.n == a.ml.n[0] + a.ml.n[1] && e.work == a.ml.work);
+        assert_summary_states(&a, q, &e, 1);
+    }
     sf_sweep_point_free(&a);
     sf_sweep_point_free(&b);
     sf_sweep_point_free(&p);

@@ -205,16 +205,20 @@ static void sweep_stats(void **state)
     assert_true(num.n_sub == 0 && isnan(num.bias));
 }
 
-/* point p's per-realisation table (summary 0) or summary as text, T = 30 */
-static char *table_text(const sf_sweep_point *p, int summary)
+/* point p's per-realisation table (which 0), diagnostics (1) or summary
+ * (2) as text, T = 30 */
+static char *table_text(const sf_sweep_point *p, int which)
 {
     char *buf = NULL;
     size_t len = 0;
     FILE *f = open_memstream(&buf, &len);
     assert_non_null(f);
-    if (summary) {
-        sf_sweep_summary_header(f);
-        sf_sweep_summary_row(f, "T", 30, p);
+    if (which == 2) {
+        sf_sweep_summary_header(f, 0);
+        sf_sweep_summary_row(f, "T", 30, p, 0);
+    } else if (which) {
+        sf_sweep_diagnostics_header(f);
+        sf_sweep_diagnostics_row(f, "T", 30, p);
     } else {
         sf_sweep_write_header(f);
         sf_sweep_write_rows(f, "T", 30, p);
@@ -295,6 +299,12 @@ static void sweep_estimate(void **state)
             assert_true(strstr(h, "_cv_") || strstr(h, "ml_") || strstr(h, "anti_"));
         }
     assert_int_equal(nnum, 4 * SF_SWEEP_NQ);
+    free(buf);
+    /* the summary: u_num in ratio units, u_num_mean / det */
+    buf = table_text(&p, 2);
+    assert_non_null(strstr(buf, "\tpv_F_ratio_u_num[-]\t"));
+    snprintf(want, sizeof want, "\t%.3g\t5\tplain\tfixed\n", p.num[2].u_mean / p.det[2]);
+    assert_non_null(strstr(buf, want));
     free(buf);
     s.dof = SF_DOF_1;   /* the 1-D model refuses a quadrature plan's companion: unestimated */
     s.cof = SF_COF_FIELD;

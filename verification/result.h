@@ -105,7 +105,7 @@ void sf_result_sample(sf_result *r, const char *what, size_t n_used, size_t n_ex
 size_t sf_result_nsamples(const sf_result *r);
 const sf_sample_row *sf_result_sample_at(const sf_result *r, size_t i);
 
-/* One QoI of one sweep point, as `slipfield sweep --summary` states it:
+/* One QoI of one sweep point, as `slipfield sweep --diagnostics` states it:
  * the values used and excluded, mean, std, Monte Carlo standard error,
  * the Student interval at `level`, and u_num, the numerical error of the
  * mean (NAN: not estimated), estimated on realisations 0 .. u_num_subset

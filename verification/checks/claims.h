@@ -55,7 +55,7 @@ typedef struct cpoint_s {
     double mean[ND][NQ], sd[ND][NQ];
     double ku[ND][NQ];          /* excess kurtosis of the per-realisation values (NAN below 4 values) */
     size_t nv[ND][NQ];          /* finite values */
-    /* the paper's definitions' statistics (D_OURS) as `sweep --summary`
+    /* the paper's definitions' statistics (D_OURS) as `sweep --diagnostics`
      * states them (sf_sweep_stat_of: mean[D_OURS], sd[D_OURS], nv[D_OURS]
      * are its mean, std, n_used); the claims cases report them per point
      * and QoI */

@@ -483,7 +483,7 @@ static void cpoint_free(cpoint *p)
 
 /* The counts behind each point's statistics (our definitions), for
  * results.json: the claims' tests use nv values, not n.  And each point's
- * statistics per QoI (the paper's definitions) as `sweep --summary`
+ * statistics per QoI (the paper's definitions) as `sweep --diagnostics`
  * states them (results.json's `sweep`, the report's sweep table), each
  * recomputed from the per-realisation values (check_sweep_row_off, the
  * recomputation sweep-aggregation gates on): the largest gap over its
@@ -1038,7 +1038,7 @@ int claims_sweep(const sf_case *c, sf_result *r, const claim_spec *spec, const c
     sf_check_ge(r, "fewest realisations with PV_x, PV_F and T_sk all formed (paper's definitions), as a share of N",
                 (double)fewest / (double)s0->samples, 0.5);
     sf_note(r, "\n(Sweep statistics: every point and QoI under the paper's definitions with its mean, std, "
-               "Monte Carlo standard error and %g%% Student interval, as `slipfield sweep --summary` states them "
+               "Monte Carlo standard error and %g%% Student interval, as `slipfield sweep --diagnostics` states them "
                "(sf_sweep_stat_of; the claims' tests use the same mean, std and n), each recomputed from the "
                "per-realisation values with GSL and gated to 8 n eps (a count used / excluded that differs fails "
                "it). u_num, the numerical error of the means, is "

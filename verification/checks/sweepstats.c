@@ -1,9 +1,11 @@
 /* The Monte Carlo aggregation, recomputed from what a sweep prints.
  *
  * A sweep is run, written as `slipfield sweep` writes it (the
- * per-realisation table and the summary, sweep.h), and read back as text;
- * every statistic of the summary is then recomputed here from the
- * per-realisation rows alone with GSL (gsl_stats_mean, gsl_stats_sd,
+ * per-realisation table, the summary and the diagnostics, sweep.h), and
+ * read back as text; every statistic of the diagnostics and every
+ * estimate of the summary (a plain sweep's: the ratio means and their
+ * Student intervals) is then recomputed here from the per-realisation
+ * rows alone with GSL (gsl_stats_mean, gsl_stats_sd,
  * gsl_cdf_tdist_Pinv), not with the solver's aggregation.  The validation
  * cases gate on the same statistics through sf_sweep_point: those are
  * compared too.  So is the numerical error of each mean (unum.h): from
@@ -28,8 +30,8 @@
 #include <string.h>
 
 #define NQ SF_SWEEP_NQ
-#define MAXCOL 160   /* the summary has 122 columns (3 QoIs x 15, the design's, the control variate's, the two-level
-                        estimator's, the antithetic pairs' and the estimator's name) */
+#define MAXCOL 160   /* the diagnostics have 122 columns (3 QoIs x 15, the design's, the control variate's, the
+                        two-level estimator's, the antithetic pairs' and the estimator's name) */
 #define FS 3.0       /* u_num_mean's safety factor, as documented: 3 (|num_bias| + t se) */
 static const char *const qn[NQ] = { "pv_x", "pv_F", "stick_fraction" };
 
@@ -130,7 +132,7 @@ static int col_around(const table *t, const char *pre, const char *post, char *m
 /* Worst discrepancies, each over its round-off allowance. */
 typedef struct {
     double count;      /* |printed - counted|, realisations */
-    int missing;       /* a column the summary should have is not there */
+    int missing;       /* a column the diagnostics or the summary should have is not there */
     double mean, sd, se, ci, rmean, rsd, rse;   /* |diff| / allowance */
     size_t ratio_bits; /* ratio cells that are not value / det to the bit */
     /* the numerical error of the means: the companion rows against the
@@ -139,9 +141,15 @@ typedef struct {
      * unit of the third digit) */
     double num_rows, num_bias, num_se, num_u, num_printed;
     size_t num_compared, num_excluded;
+    /* the summary: its estimate, se and interval ends against the
+     * recomputed ratio mean, se and Student interval (|diff| /
+     * allowance), its u_num against the recomputed u_num_mean / det
+     * (printed: |diff| / half a unit of the third digit), n against the
+     * rows */
+    double sum_est, sum_se, sum_ci, sum_u, sum_n;
 } worst;
 
-/* The summary prints the numerical error with %.3g: 0 when the printed
+/* The diagnostics and the summary print the numerical error with %.3g: 0 when the printed
  * cell is x printed the same way; else (x and the solver's value apart by
  * round-off on either side of a rounding edge) |printed - x| over half a
  * unit in the third significant digit of x plus x's round-off allowance.
@@ -216,21 +224,25 @@ static renum recompute_num(const table *tv, const size_t *rows, size_t n, int cx
     return o;
 }
 
-/* Compare point k's summary row with the recomputation from its rows. */
-static void compare_point(sf_result *r, const table *tv, const table *ts, size_t srow, const sf_sweep_point *pt,
-                          const char *lv, worst *w, size_t *excluded, double *maxratio)
+/* Compare point k's diagnostics (ts) and summary (tw) rows with the
+ * recomputation from its rows. */
+static void compare_point(sf_result *r, const table *tv, const table *ts, const table *tw, size_t srow,
+                          const sf_sweep_point *pt, const char *lv, worst *w, size_t *excluded, double *maxratio)
 {
     size_t *rows = check_alloc((tv->nrow ? tv->nrow : 1) * sizeof *rows), n = 0;
     double *buf = check_alloc((tv->nrow ? tv->nrow : 1) * sizeof *buf);
     for (size_t i = 0; i < tv->nrow; i++)
         if (!strcmp(tv->key[i], ts->key[srow]))
             rows[n++] = i;
-    /* realisations 0 .. n-1, each once, as many as the summary's n */
+    /* realisations 0 .. n-1, each once, as many as the diagnostics' and the summary's n */
     size_t seen = 0;
     for (size_t i = 0; i < n; i++)
         seen += cell(tv, rows[i], "realisation", &w->missing) == (double)i;
     upd(&w->count, fabs(cell(ts, srow, "n", &w->missing) - (double)n) + (double)(n - seen));
     upd(&w->count, fabs((double)pt->n - (double)n));
+    upd(&w->sum_n, fabs(cell(tw, srow, "n", &w->missing) - (double)n));
+    if (strcmp(tw->key[srow], ts->key[srow]))   /* the two tables' rows in the same order */
+        w->sum_n = INFINITY;
     double level = atof(lv) / 100;
     const char *units[NQ] = { "m", "N", "-" };
     char point[160];
@@ -256,7 +268,7 @@ static void compare_point(sf_result *r, const table *tv, const table *ts, size_t
             break;
         }
         renum e = recompute_num(tv, rows, n, cx, ccx, crho, capr, a.mean, a.scale, level, buf);
-        /* the summary's cells for this QoI: "n_used" -> pv_x_n_used, "mean[%s]" -> pv_x_mean[m] */
+        /* the diagnostics' cells for this QoI: "n_used" -> pv_x_n_used, "mean[%s]" -> pv_x_mean[m] */
 #define S(field) (snprintf(nm, sizeof nm, "%s_" field, qn[q], units[q]), cell(ts, srow, nm, &w->missing))
         double used = S("n_used%.0s"), excl = S("n_excluded%.0s");
         upd(&w->count, fabs(used - (double)a.used) + fabs(excl - (double)(n - a.used)));
@@ -292,6 +304,16 @@ static void compare_point(sf_result *r, const table *tv, const table *ts, size_t
         upd(&w->num_printed, off3(u_printed, e.u, e.e.used, e.scale_u));
         w->num_compared += e.e.used;
         w->num_excluded += e.sub - e.e.used;
+        /* the summary: a plain sweep's estimate is the ratio mean, its Student interval */
+#define W(field) (snprintf(nm, sizeof nm, "%s_ratio_" field "[-]", qn[q]), cell(tw, srow, nm, &w->missing))
+        upd(&w->sum_est, check_roundoff(W("estimate"), b.mean, b.used, b.scale));
+        upd(&w->sum_se, check_roundoff(W("se"), b.se, b.used, b.dscale));
+        snprintf(ci, sizeof ci, "%s_ratio_ci%s_lo[-]", qn[q], lv);
+        upd(&w->sum_ci, check_roundoff(cell(tw, srow, ci, &w->missing), b.lo, b.used, b.scale));
+        snprintf(ci, sizeof ci, "%s_ratio_ci%s_hi[-]", qn[q], lv);
+        upd(&w->sum_ci, check_roundoff(cell(tw, srow, ci, &w->missing), b.hi, b.used, b.scale));
+        upd(&w->sum_u, off3(W("u_num"), e.u / det, e.e.used, e.scale_u / det));
+#undef W
 #undef S
         /* what the validation cases read: sf_sweep_point's ratio statistics */
         upd(&w->rmean, check_roundoff(pt->mean[q], b.mean, b.used, b.scale));
@@ -366,7 +388,7 @@ static int chk_sweep_aggregation(const sf_case *c, sf_result *r)
         rc = sf_sweep_set(&s, c->spec.sweep_param, c->spec.sweep.v[made], err, sizeof err);
         if (!rc)
             rc = sf_sweep_run(&s, s0->samples, 0, NULL, 0, NULL, &pt[made], err, sizeof err);
-        if (!rc)   /* the numerical error of the means, as `sweep --summary` makes it */
+        if (!rc)   /* the numerical error of the means, as `sweep --summary` / `--diagnostics` make it */
             rc = sf_unum_sweep(&s, &pt[made], 0, err, sizeof err);
         if (rc)
             sf_note(r, "**Sweep failed at %s = %g:** %s", c->spec.sweep_param, c->spec.sweep.v[made], err);
@@ -379,30 +401,37 @@ static int chk_sweep_aggregation(const sf_case *c, sf_result *r)
         check_sweep_record(r, c->spec.sweep_param, c->spec.sweep.v[k], &pt[k]);
     if (!rc && (rc = plant(&pt[K - 1], &pt[K])) == SF_SUCCESS)
         made++;
-    /* the two tables, as `slipfield sweep --out --summary` writes them */
-    char *tv_text = NULL, *ts_text = NULL;
-    size_t tv_len = 0, ts_len = 0;
-    FILE *fv = open_memstream(&tv_text, &tv_len), *fs = open_memstream(&ts_text, &ts_len);
-    if (!fv || !fs)
+    /* the three tables, as `slipfield sweep --out --summary --diagnostics` writes them (a plain sweep: no work
+       column) */
+    char *tv_text = NULL, *ts_text = NULL, *tw_text = NULL;
+    size_t tv_len = 0, ts_len = 0, tw_len = 0;
+    FILE *fv = open_memstream(&tv_text, &tv_len), *fs = open_memstream(&ts_text, &ts_len),
+         *fw = open_memstream(&tw_text, &tw_len);
+    if (!fv || !fs || !fw)
         rc = SF_ENOMEM;
     if (!rc) {
         sf_sweep_write_header(fv);
-        sf_sweep_summary_header(fs);
+        sf_sweep_diagnostics_header(fs);
+        sf_sweep_summary_header(fw, 0);
         for (size_t k = 0; k <= K; k++) {
             const char *param = k < K ? c->spec.sweep_param : "planted";
             sf_sweep_write_rows(fv, param, c->spec.sweep.v[k < K ? k : K - 1], &pt[k]);
-            sf_sweep_summary_row(fs, param, c->spec.sweep.v[k < K ? k : K - 1], &pt[k]);
+            sf_sweep_diagnostics_row(fs, param, c->spec.sweep.v[k < K ? k : K - 1], &pt[k]);
+            sf_sweep_summary_row(fw, param, c->spec.sweep.v[k < K ? k : K - 1], &pt[k], 0);
         }
     }
     if (fv)
         fclose(fv);
     if (fs)
         fclose(fs);
-    table tv = { 0 }, ts = { 0 };
+    if (fw)
+        fclose(fw);
+    table tv = { 0 }, ts = { 0 }, tw = { 0 };
     char lv[16] = "";
-    if (!rc && (table_read(tv_text, &tv) || table_read(ts_text, &ts) || ts.nrow != K + 1 ||
-                col_around(&ts, "pv_x_ci", "_lo[m]", lv, sizeof lv) < 0)) {
-        sf_note(r, "**The tables do not read back** (%zu summary rows for %zu points).", ts.nrow, K + 1);
+    if (!rc && (table_read(tv_text, &tv) || table_read(ts_text, &ts) || table_read(tw_text, &tw) ||
+                ts.nrow != K + 1 || tw.nrow != K + 1 || col_around(&ts, "pv_x_ci", "_lo[m]", lv, sizeof lv) < 0)) {
+        sf_note(r, "**The tables do not read back** (%zu diagnostics and %zu summary rows for %zu points).", ts.nrow,
+                tw.nrow, K + 1);
         rc = SF_EFAIL;
     }
     if (!rc) {
@@ -413,9 +442,40 @@ static int chk_sweep_aggregation(const sf_case *c, sf_result *r)
                    "recomputed | ratio mean +- se | num. error: estimates used / companions | bias recomputed | "
                    "u_num_mean printed |\n|---|---|---|---|---|---|---|---|---|---|---|---|", lv);
         for (size_t k = 0; k <= K; k++)
-            compare_point(r, &tv, &ts, k, &pt[k], lv, &w, &excluded, &maxratio);
+            compare_point(r, &tv, &ts, &tw, k, &pt[k], lv, &w, &excluded, &maxratio);
         double level = atof(lv) / 100;
-        sf_check_true(r, "the summary states its interval's level (in the header)", level > 0 && level < 1, lv);
+        sf_check_true(r, "the diagnostics state their interval's level (in the header)", level > 0 && level < 1, lv);
+        /* the summary: the documented columns, none all-NaN, every point plain and fixed */
+        char want[1024] = "param\tvalue";
+        for (int q = 0; q < NQ; q++)
+            snprintf(want + strlen(want), sizeof want - strlen(want),
+                     "\t%s_ratio_estimate[-]\t%s_ratio_se[-]\t%s_ratio_ci%s_lo[-]\t%s_ratio_ci%s_hi[-]\t%s_ratio_u_num[-]",
+                     qn[q], qn[q], qn[q], lv, qn[q], lv, qn[q]);
+        snprintf(want + strlen(want), sizeof want - strlen(want), "\tn\testimator\tstop\n");
+        sf_check_true(r, "the summary's header: param, value, per ratio estimate, se, interval, u_num; n, estimator, "
+                         "stop (a plain sweep: no work column)",
+                      !strncmp(tw_text, want, strlen(want)),
+                      !strncmp(tw_text, want, strlen(want)) ? "as documented" : "other columns");
+        size_t allnan = 0, plain = 0;
+        for (size_t j = 2; j + 2 < tw.ncol; j++) {   /* the numeric columns */
+            size_t finite = 0;
+            for (size_t i = 0; i < tw.nrow; i++)
+                finite += isfinite(tw.cell[i * MAXCOL + j]) != 0;
+            allnan += !finite;
+        }
+        for (const char *p = tw_text; (p = strstr(p, "\tplain\tfixed\n")); p++)
+            plain++;
+        sf_check_le(r, "summary columns that are NaN at every point", (double)allnan, 0);
+        sf_check_le(r, "summary rows that are not estimator plain, stop fixed", (double)(K + 1 - plain), 0);
+        sf_check_le(r, "summary: n against the rows (and the diagnostics' row order): largest |diff|", w.sum_n, 0);
+        sf_check_le(r, "summary: each ratio's estimate against the recomputed ratio mean: largest |diff| / allowance",
+                    w.sum_est, 1);
+        sf_check_le(r, "summary: its se against the recomputed ratio standard error: largest |diff| / allowance",
+                    w.sum_se, 1);
+        sf_check_le(r, "summary: its interval ends against the recomputed Student interval of the ratio: largest "
+                       "|diff| / allowance", w.sum_ci, 1);
+        sf_check_le(r, "summary: u_num against the recomputed u_num_mean / det, printed %.3g: largest |diff| / half a "
+                       "unit of the third digit", w.sum_u, 1);
         sf_check_true(r, "every column the comparison reads is in the tables", !w.missing,
                       w.missing ? "some missing" : "all there");
         sf_check_le(r, "realisations: largest |printed - counted| (n; used and excluded per QoI vs the finite and "
@@ -490,8 +550,10 @@ static int chk_sweep_aggregation(const sf_case *c, sf_result *r)
     }
     table_free(&tv);
     table_free(&ts);
+    table_free(&tw);
     free(tv_text);
     free(ts_text);
+    free(tw_text);
     for (size_t k = 0; k < made; k++)
         sf_sweep_point_free(&pt[k]);
     free(pt);
@@ -768,7 +830,7 @@ static int chk_unum_own_field(const sf_case *c, sf_result *r)
 
 const sf_check_def sf_checks_sweepstats[] = {
     { "mc_sweep_aggregation", chk_sweep_aggregation,
-      "sweep summary: every statistic recomputed from the per-realisation table" },
+      "sweep summary and diagnostics: every estimate and statistic recomputed from the per-realisation table" },
     { "mc_unum_own_field", chk_unum_own_field,
       "sweep u_num: every estimator's companion solves its row's own realisation (bits)" },
     { NULL, NULL, NULL }

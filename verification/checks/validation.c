@@ -58,7 +58,7 @@ static int run_sweep(const sf_case *c, sf_result *r, sweep_run *sw)
             sf_note(r, "**Sweep failed at %s = %g:** %s", c->spec.sweep_param, sw->v[k], err);
             return SF_EFAIL;
         }
-        /* the numerical error of the means, as `sweep --summary` makes it
+        /* the numerical error of the means, as `sweep --summary` and `--diagnostics` make it
          * (a companion that fails leaves it unestimated, as there) */
         if (sf_unum_sweep(&s, &sw->pt[k], 0, err, sizeof err))
             sf_note(r, "(%s = %g: no numerical error of the means: %s)", c->spec.sweep_param, sw->v[k], err);
@@ -632,7 +632,7 @@ static int chk_claims_fig15(const sf_case *c, sf_result *r)
     }
     free(buf);
     sf_note(r, "\n(Sweep statistics: the share per l/R with its std, Monte Carlo standard error and %g%% "
-               "Student interval (sf_sweep_stat_of, as `slipfield sweep --summary` states them), recomputed from the "
+               "Student interval (sf_sweep_stat_of, as `slipfield sweep --diagnostics` states them), recomputed from the "
                "per-realisation shares with GSL and gated to 8 n eps; u_num not estimated: no coarser companion "
                "solves.)\n", 100 * SF_SWEEP_CI_LEVEL);
     sf_check_le(r, "sweep statistics per l/R: largest |reported - recomputed from the per-realisation shares| / "
