@@ -157,7 +157,7 @@ static void one_noise_across_levels(void **state)
 
 /* ---- random access, the cache, the key */
 
-static void random_access(void **state)
+static void noise_random_access(void **state)
 {
     (void)state;
     const int L = 10;
@@ -736,7 +736,7 @@ int main(void)
         cmocka_unit_test(noise_level),
         cmocka_unit_test(noise_alloc_refusals),
         cmocka_unit_test(one_noise_across_levels),
-        cmocka_unit_test(random_access),
+        cmocka_unit_test(noise_random_access),
         cmocka_unit_test(moments),
         cmocka_unit_test(tiles_noise_source),
         cmocka_unit_test(plan_branches),
