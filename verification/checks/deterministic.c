@@ -341,12 +341,160 @@ static int chk_energy(const sf_case *c, sf_result *r)
     return SF_SUCCESS;
 }
 
+/* ---- The window's edges against the closed-form timeline.
+ *
+ * Started in stick at the limit cycle's stick onset (x0 = x_e - d, vx0 =
+ * v_b: the stick set holds it at t = 0), the run is the limit cycle from
+ * t = 0 with no transient, and every phase boundary is a closed form (the
+ * checks' own ref_cycle, common.c): with P = t_st + t_sl,
+ *   stick j:  [j P, j P + t_st],
+ *   slip j:   [j P + t_st, (j + 1) P],
+ *   maximum of x in slip j at j P + t_st + theta_m / omega, theta_m =
+ *   atan(v_r / (omega d)) (x - x_e = d cos th + (v_r / omega) sin th after
+ *   the break), where x = x_e + A; the minimum pi / omega later.
+ * The paper's QoIs over [t_skip, T] follow by counting: the stick time is
+ * the sum of |stick j intersected with [t_skip, T]| (a cut phase counts its
+ * part); an oscillation runs from one maximum at or after t_skip to the
+ * next at or before T, so there are (maxima in [t_skip, T]) - 1 of them,
+ * and each holds one whole cycle: PV_x = 2 A, PV_F = 2 k d. */
+typedef struct {
+    double P, tst, tmax;   /* period, stick duration, a maximum's time after the stick onset [s] */
+} edge_timeline;
+
+static double edge_stick_time(const edge_timeline *e, double t0, double t1)
+{
+    double sum = 0;
+    for (long j = 0; (double)j * e->P <= t1; j++) {
+        double a = fmax((double)j * e->P, t0), b = fmin((double)j * e->P + e->tst, t1);
+        if (b > a)
+            sum += b - a;
+    }
+    return sum;
+}
+
+static long edge_maxima(const edge_timeline *e, double t0, double t1)
+{
+    long n = 0;
+    for (long j = 0; (double)j * e->P + e->tmax <= t1; j++)
+        n += (double)j * e->P + e->tmax >= t0;
+    return n;
+}
+
+/* Phase boundaries (stick onsets, breaks) strictly inside (t0, t1). */
+static long edge_boundaries(const edge_timeline *e, double t0, double t1)
+{
+    long n = 0;
+    for (long j = 0; (double)j * e->P <= t1; j++) {
+        double b[2] = { (double)j * e->P, (double)j * e->P + e->tst };
+        for (int i = 0; i < 2; i++)
+            n += b[i] > t0 && b[i] < t1;
+    }
+    return n;
+}
+
+/* Three windows, each with one edge inside a phase the definitions must
+ * cut, the other edge where no rule is at stake; run with dof 1 and 3
+ * (uniform COF: the 3-DOF model is the 1-D one). */
+static int chk_window_edges(const sf_case *c, sf_result *r)
+{
+    ref_cycle1d cy;
+    if (ref_cycle(&c->scene, c->scene.mu_mean, &cy))
+        return SF_EINVAL;
+    const double tol = c->spec.tolerance;
+    const sf_scene *s0 = &c->scene;
+    double P = cy.t_stick + cy.t_slip, thm = atan2(cy.vr, cy.omega * cy.d);
+    edge_timeline e = { P, cy.t_stick, cy.t_stick + thm / cy.omega };
+    double tdown = cy.t_stick + 0.5 * cy.t_slip;   /* mid-slip, after the maximum, before the minimum */
+    double tup = cy.t_stick + 0.5 * thm / cy.omega; /* slip, after the break, before the maximum */
+    struct {
+        const char *name;
+        double t_skip, T;
+    } w[3] = {
+        { "T mid-stick (half of stick 8 inside)", 2 * P + tdown, 8 * P + 0.5 * cy.t_stick },
+        { "t_skip mid-stick (the last 0.6 of stick 2 inside)", 2 * P + 0.4 * cy.t_stick, 8 * P + tup },
+        { "T mid-slip (cuts oscillation 8 between its maximum and minimum)", 2 * P + tdown, 8 * P + tdown },
+    };
+    sf_note(r, "Closed-form cycle (ref_cycle, eps_lambda = %g): x_s = %.12g m, x_e = %.12g m, d = %.12g m, omega = "
+               "%.12g 1/s, v_r = v_b - eps omega R = %.12g m/s; stick %.12g s, slip %.12g s, period %.12g s; "
+               "maximum of x %.12g s after each stick onset; PV_x = 2 A = %.12g m, PV_F = 2 k d = %.12g N. The run "
+               "starts in stick at x0 = x_e - d = %.12g m, vx0 = v_b: the limit cycle from t = 0.\n\n"
+               "| window | t_skip [s] | T [s] | stick time [s] | T_sk | oscillations | boundaries inside |\n"
+               "|---|---|---|---|---|---|---|",
+            s0->eps_lambda, cy.xs, cy.xe, cy.d, cy.omega, cy.vr, cy.t_stick, cy.t_slip, P, e.tmax, cy.pv_x, cy.pv_F,
+            cy.xe - cy.d);
+    double exp_t[3], exp_sf[3];
+    long exp_n[3], nb[3];
+    for (int i = 0; i < 3; i++) {
+        exp_t[i] = edge_stick_time(&e, w[i].t_skip, w[i].T);
+        exp_sf[i] = exp_t[i] / (w[i].T - w[i].t_skip);
+        exp_n[i] = edge_maxima(&e, w[i].t_skip, w[i].T) - 1;
+        nb[i] = edge_boundaries(&e, w[i].t_skip, w[i].T);
+        sf_note(r, "| %s | %.12g | %.12g | %.12g | %.12g | %ld | %ld |", w[i].name, w[i].t_skip, w[i].T, exp_t[i],
+                exp_sf[i], exp_n[i], nb[i]);
+    }
+    sf_plot *p = NULL;
+    for (int dof = 1; dof <= 3; dof += 2)
+        for (int i = 0; i < 3; i++) {
+            sf_scene s = *s0;
+            s.dof = dof == 1 ? SF_DOF_1 : SF_DOF_3;
+            s.cof = SF_COF_UNIFORM;
+            s.qoi_def = SF_QOI_PAPER;
+            s.x0 = cy.xe - cy.d;
+            s.vx0 = s.v_b;
+            s.t_skip = w[i].t_skip;
+            s.T = w[i].T;
+            sf_osc_result res;
+            check_hist h = { .every = 1 };
+            if (check_osc_run(&s, NULL, NULL, 0, &res, check_hist_row, &h, r))
+                return SF_EFAIL;
+            if (dof == 1) {   /* x(t) up to each window's T, with its edges */
+                if (!p)
+                    p = sf_result_plot(r, "window_edges", "x(t) of the 1-D runs and the windows' edges", "t [s]",
+                                       "x [m]");
+                char lab[160];
+                snprintf(lab, sizeof lab, "x(t), run to T of window %d", i + 1);
+                sf_plot_series(p, lab, SF_STYLE_LINES, h.n, h.t, h.x);
+                double ex[2][2] = { { s.t_skip, s.t_skip }, { s.T, s.T } };
+                double ey[2] = { cy.xe - 1.2 * cy.pv_x / 2, cy.xe + 1.2 * cy.pv_x / 2 };
+                snprintf(lab, sizeof lab, "window %d: t_skip", i + 1);
+                sf_plot_series(p, lab, SF_STYLE_LINES, 2, ex[0], ey);
+                snprintf(lab, sizeof lab, "window %d: T", i + 1);
+                sf_plot_series(p, lab, SF_STYLE_LINES, 2, ex[1], ey);
+            }
+            check_hist_free(&h);
+            char q[240];
+            const char *tag = dof == 1 ? "1-D" : "3-DOF";
+            /* each boundary inside the window is off by at most tol x
+             * period (cases/deterministic/cycle-adaptive's bound on the
+             * transition times); the window's own edges are exact */
+            double at = (double)nb[i] * tol * P;
+            snprintf(q, sizeof q, "%s, %s: stick time inside [t_skip, T] [s] (abs. tol: %ld boundaries x tol x period)",
+                     tag, w[i].name, nb[i]);
+            sf_check_abs(r, q, res.stick_time, exp_t[i], at);
+            snprintf(q, sizeof q, "%s, %s: T_sk (paper) [-]", tag, w[i].name);
+            sf_check_abs(r, q, res.stick_fraction, exp_sf[i], at / (s.T - s.t_skip));
+            snprintf(q, sizeof q, "%s, %s: oscillations (maximum to maximum inside the window)", tag, w[i].name);
+            sf_check_abs(r, q, (double)res.nosc, (double)exp_n[i], 0);
+            snprintf(q, sizeof q, "%s, %s: PV_x (paper) [m]", tag, w[i].name);
+            sf_check_rel(r, q, res.pv_x, cy.pv_x, tol);
+            snprintf(q, sizeof q, "%s, %s: PV_F (paper) [N]", tag, w[i].name);
+            sf_check_rel(r, q, res.pv_F, cy.pv_F, tol);
+            sf_note(r, "%s, %s: stick time %.12g s (exact %.12g), T_sk %.12g (exact %.12g), %zu oscillations, PV_x "
+                       "%.12g m, PV_F %.12g N.", tag, w[i].name, res.stick_time, exp_t[i], res.stick_fraction,
+                    exp_sf[i], res.nosc, res.pv_x, res.pv_F);
+            sf_osc_result_free(&res);
+        }
+    return SF_SUCCESS;
+}
+
 const sf_check_def sf_checks_deterministic[] = {
     { "det_cycle", chk_cycle, "1-D cycle vs the eps-corrected closed form: PV, durations, transition times" },
     { "det_slide_on", chk_slide_on, "a disc that never sticks: PV per oscillation 2 x_e, T_sk = 0 (the paper's definitions)" },
     { "det_eps_order", chk_eps_order, "the threshold's effect is first order in eps_lambda, as predicted" },
     { "det_step_order", chk_step_order, "observed order of the stepper (dt for RK4, rtol for rk8pd)" },
     { "det_3dof_reduces", chk_3dof_reduces, "3-DOF with a constant COF equals the 1-D model" },
+    { "det_window_edges", chk_window_edges,
+      "the paper's QoIs at a window that cuts a stick or a slip phase, against the closed-form timeline" },
     { "det_energy", chk_energy, "energy balance: dE = friction work + jumps" },
     { NULL, NULL, NULL }
 };

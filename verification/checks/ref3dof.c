@@ -1076,7 +1076,172 @@ static int chk_ref_converge(const sf_case *c, sf_result *r)
     return SF_SUCCESS;
 }
 
+/* ---- The paper's QoIs at the window's edges on a field: solver against
+ * the oracle, each with its own window code (solver/oscillator.c;
+ * verification/oracle/ref3dof.c). */
+enum { WQ_STICK, WQ_TSK, WQ_NOSC, WQ_PVX, WQ_PVF, WQ_N };
+static const char *wq_name[WQ_N] = { "stick time inside [t_skip, T] [s]", "T_sk [-]", "oscillations",
+                                     "PV_x per oscillation [m]", "PV_F per oscillation [N]" };
+
+static int window_solver(const sf_scene *s, const sf_cof *cof, double q[WQ_N], sf_result *r)
+{
+    sf_osc_result res;
+    if (check_osc_run(s, NULL, cof, 0, &res, NULL, NULL, r))
+        return SF_EFAIL;
+    q[WQ_STICK] = res.stick_time;
+    q[WQ_TSK] = res.win_stick_fraction;
+    q[WQ_NOSC] = (double)res.nosc;
+    q[WQ_PVX] = res.osc_pv_x_mean;
+    q[WQ_PVF] = res.osc_pv_F_mean;
+    sf_osc_result_free(&res);
+    return SF_SUCCESS;
+}
+
+static int window_oracle(const sf_scene *s, const sf_cof *cof, double dt, size_t nr, double q[WQ_N])
+{
+    ref3dof *o;
+    ref3dof_result res;
+    if (ref3dof_alloc(s, cof, dt, nr, 4 * nr, &o))
+        return SF_EFAIL;
+    int rc = ref3dof_run(o, 0, &res);
+    ref3dof_free(o);
+    q[WQ_STICK] = res.stick_time;
+    q[WQ_TSK] = res.win_stick_fraction;
+    q[WQ_NOSC] = (double)res.nosc;
+    q[WQ_PVX] = res.osc_pv_x;
+    q[WQ_PVF] = res.osc_pv_F;
+    ref3dof_result_free(&res);
+    return rc;
+}
+
+/* On `samples` fields drawn from the case's stream (a field with fewer
+ * than 5 stick phases within the cap is replaced by the next, at most
+ * 4 x samples drawn): a coarse solver run
+ * over the scene's T (a cap) gives the stick phases [on_j, off_j]; the
+ * window starts mid-stick (t_skip = the middle of stick phase 1, the
+ * second) and ends mid-stick (T = the middle of stick phase 4) or
+ * mid-slip (T = the middle of the slip after stick phase 3: it cuts an
+ * oscillation).  Each window is run by the solver (scene: rtol, cells;
+ * fine: rtol / 100, 2 cells) and the oracle (RK4 at dt with cells/2 x
+ * 2 cells nodes; fine: dt / 2, twice the nodes each way), the fine runs
+ * compared: per QoI, `tolerance` x (the solver's coarse-to-fine change +
+ * the oracle's) + 1e-9 of the value, as ref_trajectory; the number of
+ * oscillations must agree exactly in all four runs. */
+static int chk_ref_window_edges(const sf_case *c, sf_result *r)
+{
+    const sf_scene *s0 = &c->scene;
+    char err[256];
+    sf_cof_plan *plan;
+    if (sf_cof_plan_alloc(s0, &plan, err, sizeof err)) {
+        sf_note(r, "**Cannot plan the COF:** %s", err);
+        return SF_EFAIL;
+    }
+    gsl_rng *rng = sf_case_rng(c);
+    size_t nr = oracle_nr(s0);
+    int rc = SF_SUCCESS;
+    sf_note(r, "Solver: rtol %g, %zu rings (coarse) and rtol %g, %zu rings (fine). Oracle: RK4 at dt = %g s, %zu x "
+               "%zu nodes (coarse) and %g s, %zu x %zu (fine). Fine runs compared; tolerance %g x (est. solver "
+               "error + est. oracle error) + 1e-9 relative.\n",
+            s0->rtol, s0->cells, s0->rtol / 100, 2 * s0->cells, s0->dt, nr, 4 * nr, s0->dt / 2, 2 * nr, 8 * nr,
+            c->spec.tolerance);
+    double *gx = check_alloc(2 * s0->samples * sizeof *gx), *gy = check_alloc(2 * s0->samples * sizeof *gy);
+    size_t ng = 0, used = 0, drawn = 0;
+    for (size_t k = 0; used < s0->samples && drawn < 4 * s0->samples && !rc; k++) {
+        drawn++;
+        sf_cof *cof = NULL;
+        sf_cof_plan_draw(plan, rng, &cof);
+        sf_osc_result cap;
+        if (!cof || check_osc_run(s0, NULL, cof, 0, &cap, NULL, NULL, r)) {
+            sf_cof_free(cof);
+            rc = SF_EFAIL;
+            break;
+        }
+        /* the stick phases: an onset followed by its break */
+        double on[5], off[5];
+        size_t ns = 0;
+        for (size_t i = 0; i + 1 < cap.ntrans && ns < 5; i++)
+            if (cap.trans_kind[i] == SF_OSC_STICK_ONSET && cap.trans_kind[i + 1] == SF_OSC_SLIP_ONSET) {
+                on[ns] = cap.trans_t[i];
+                off[ns++] = cap.trans_t[i + 1];
+            }
+        sf_osc_result_free(&cap);
+        char q[240];
+        if (ns < 5) {   /* long slips: too few stick phases for the windows' edges; the next field */
+            sf_note(r, "Field %zu: %zu stick phases within the cap T = %g s (5 needed): replaced by the next field.\n", k,
+                    ns, s0->T);
+            sf_cof_free(cof);
+            continue;
+        }
+        used++;
+        struct {
+            const char *name;
+            double t_skip, T;
+        } w[2] = {
+            { "t_skip mid-stick 1, T mid-stick 4", 0.5 * (on[1] + off[1]), 0.5 * (on[4] + off[4]) },
+            { "t_skip mid-stick 1, T mid-slip after stick 3", 0.5 * (on[1] + off[1]), 0.5 * (off[3] + on[4]) },
+        };
+        sf_note(r, "Field %zu: stick phases 1-4 (coarse solver run) [%.6f, %.6f], [%.6f, %.6f], [%.6f, %.6f], "
+                   "[%.6f, %.6f] s.\n\n| window | QoI | solver (fine) | oracle (fine) | est. error solver | "
+                   "est. error oracle | tolerance |\n|---|---|---|---|---|---|---|",
+                k, on[1], off[1], on[2], off[2], on[3], off[3], on[4], off[4]);
+        for (int iw = 0; iw < 2 && !rc; iw++) {
+            sf_scene sc = *s0, sf = *s0;
+            sc.t_skip = sf.t_skip = w[iw].t_skip;
+            sc.T = sf.T = w[iw].T;
+            sf.rtol = s0->rtol / 100;
+            sf.cells = 2 * s0->cells;
+            double Sc[WQ_N], Sf[WQ_N], Oc[WQ_N], Of[WQ_N];
+            if (window_solver(&sc, cof, Sc, r) || window_solver(&sf, cof, Sf, r) ||
+                window_oracle(&sc, cof, s0->dt, nr, Oc) || window_oracle(&sc, cof, s0->dt / 2, 2 * nr, Of)) {
+                rc = SF_EFAIL;
+                break;
+            }
+            for (int iq = 0; iq < WQ_N; iq++) {
+                double eS = fabs(Sf[iq] - Sc[iq]), eO = fabs(Of[iq] - Oc[iq]);
+                snprintf(q, sizeof q, "field %zu, %s: %s, solver vs oracle", k, w[iw].name, wq_name[iq]);
+                if (iq == WQ_NOSC) {
+                    char cnt[96];
+                    snprintf(cnt, sizeof cnt, "%g, %g (solver), %g, %g (oracle)", Sc[iq], Sf[iq], Oc[iq], Of[iq]);
+                    sf_check_true(r, q, Sc[iq] == Sf[iq] && Sf[iq] == Oc[iq] && Oc[iq] == Of[iq] && Sf[iq] >= 1, cnt);
+                    sf_note(r, "| %s | %s | %g | %g | %g | %g | 0 |", w[iw].name, wq_name[iq], Sf[iq], Of[iq], eS, eO);
+                    continue;
+                }
+                double tol = c->spec.tolerance * (eS + eO) + 1e-9 * fabs(Of[iq]);
+                sf_check_abs(r, q, Sf[iq], Of[iq], tol);
+                sf_note(r, "| %s | %s | %.10g | %.10g | %.3g | %.3g | %.3g |", w[iw].name, wq_name[iq], Sf[iq], Of[iq],
+                        eS, eO, tol);
+                if (iq == WQ_STICK) {
+                    gx[ng] = Of[iq];
+                    gy[ng++] = fmax(fabs(Sf[iq] - Of[iq]) / tol, 1e-6);
+                }
+            }
+        }
+        sf_cof_free(cof);
+    }
+    if (!rc) {
+        char q[160], found[64];
+        snprintf(q, sizeof q, "fields with 5 stick phases within the cap: at least %zu (of at most %zu drawn)",
+                 s0->samples, 4 * s0->samples);
+        snprintf(found, sizeof found, "%zu of %zu drawn", used, drawn);
+        sf_check_true(r, q, used >= s0->samples, found);
+    }
+    if (!rc && ng) {
+        sf_plot *p = sf_result_plot(r, "window_edges_field", "Stick time inside the window: solver vs oracle",
+                                    "stick time inside [t_skip, T], oracle [s]", "|solver - oracle| / tolerance [-]");
+        sf_plot_log(p, 0, 1);
+        sf_plot_series(p, "fields x windows", SF_STYLE_POINTS, ng, gx, gy);
+        sf_plot_hline(p, "tolerance", 1);
+    }
+    free(gx);
+    free(gy);
+    gsl_rng_free(rng);
+    sf_cof_plan_free(plan);
+    return rc;
+}
+
 const sf_check_def sf_checks_ref3dof[] = {
+    { "ref_window_edges", chk_ref_window_edges,
+      "independent 3-DOF oracle: the paper's QoIs at windows that start and end inside a stick phase, on fields" },
     { "ref_trajectory", chk_ref_trajectory, "independent 3-DOF oracle: first transitions, trajectory by trajectory" },
     { "ref_converge", chk_ref_converge,
       "independent 3-DOF oracle: the paired difference falls at order 4 as both codes refine together" },

@@ -315,16 +315,54 @@ typedef struct {
     size_t cap_e, cap_c;
     int open;
     double t0, xmin, xmax, Fmin, Fmax, stick, stick_total, cycle_total;
+    /* the paper's oscillation since the last maximum of x in the window
+     * (osc: one is open), its ranges [lo, hi] of x and F; the sums of
+     * the closed ones' PVs */
+    int osc;
+    double ox[2], oF[2], sum_x, sum_F;
 } qacc;
+
+static void widen(double range[2], double v)
+{
+    if (v < range[0]) range[0] = v;
+    if (v > range[1]) range[1] = v;
+}
 
 static void seen(qacc *a, double x, double F)
 {
+    if (a->osc) {
+        widen(a->ox, x);
+        widen(a->oF, F);
+    }
     if (!a->open)
         return;
     if (x < a->xmin) a->xmin = x;
     if (x > a->xmax) a->xmax = x;
     if (F < a->Fmin) a->Fmin = F;
     if (F > a->Fmax) a->Fmax = F;
+}
+
+/* A maximum of x at t (seen() has taken it): inside the window it ends
+ * the open oscillation, if any, and starts the next one there. */
+static void x_max(const ref3dof *o, qacc *a, double t, double x, double F)
+{
+    if (!(t >= o->t_skip && t <= o->T))
+        return;
+    if (a->osc) {
+        a->r->nosc++;
+        a->sum_x += a->ox[1] - a->ox[0];
+        a->sum_F += a->oF[1] - a->oF[0];
+    }
+    a->osc = 1;
+    a->ox[0] = a->ox[1] = x;
+    a->oF[0] = a->oF[1] = F;
+}
+
+/* The part of the stick span [t0, t1] inside [t_skip, T]. */
+static double in_window(const ref3dof *o, double t0, double t1)
+{
+    double lo = t0 > o->t_skip ? t0 : o->t_skip, hi = t1 < o->T ? t1 : o->T;
+    return hi > lo ? hi - lo : 0;
 }
 
 static int event(const ref3dof *o, qacc *a, int kind, double t, const double pre[REF_N], const double post[REF_N])
@@ -486,6 +524,7 @@ int ref3dof_run(ref3dof *o, double sample_dt, ref3dof_result *res)
             s[REF_X] = x0 + o->vb * tau;
             if (a.open)
                 a.stick += tau;
+            res->stick_time += in_window(o, t, t + tau);
             t += tau;
             seen(&a, s[REF_X], o->k * s[REF_X]);
             if (tau >= span)
@@ -549,6 +588,8 @@ int ref3dof_run(ref3dof *o, double sample_dt, ref3dof_result *res)
             double sx[REF_N], F[3], hx = bisect(o, t, s, h, pred_vx0, sx, &res->bisections);
             ref3dof_wrench(o, t + hx, sx, F);
             seen(&a, sx[REF_X], F[0]);
+            if (s[REF_VX] > 0)   /* vx from + to -: a maximum */
+                x_max(o, &a, t + hx, sx[REF_X], F[0]);
         }
         samples_slip(o, res, &next, t, s, t + h);
         double F[3];
@@ -583,6 +624,9 @@ int ref3dof_run(ref3dof *o, double sample_dt, ref3dof_result *res)
         res->stick_fraction = a.stick_total / a.cycle_total;
     } else
         res->pv_x = res->pv_F = res->stick_fraction = NAN;
+    res->osc_pv_x = res->nosc ? a.sum_x / (double)res->nosc : NAN;
+    res->osc_pv_F = res->nosc ? a.sum_F / (double)res->nosc : NAN;
+    res->win_stick_fraction = o->T > o->t_skip ? res->stick_time / (o->T - o->t_skip) : NAN;
     return rc;
 }
 

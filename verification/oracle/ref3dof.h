@@ -29,7 +29,11 @@
  * opposes local slip; ground frame; belt point (x - v_b t, y).
  * QoIs with the definitions of solver/oscillator.h (a cycle from a stick
  * onset to the next, complete cycles with onset >= t_skip), computed here
- * by their own code.
+ * by their own code; and the paper's (Sec. 3.1, `qoi_def = paper`), also
+ * by their own code: the stick time is each stick span clipped to
+ * [t_skip, T] at both ends, an oscillation runs from a maximum of x (vx
+ * from + to -, bisected on the RK4 step) at or after t_skip to the next,
+ * and one still open at T is not one.
  */
 #ifndef SF_ORACLE_REF3DOF_H
 #define SF_ORACLE_REF3DOF_H
@@ -56,6 +60,12 @@ typedef struct {
     size_t ncycles;
     double *cycle_pv_x, *cycle_pv_F, *cycle_stick;
     double pv_x, pv_F, stick_fraction;   /* means over the complete cycles (NAN if none) */
+    /* the paper's: oscillations (maximum of x to the next, both inside
+     * [t_skip, T]), their mean PV_x and PV_F (NAN if none); the stick time
+     * inside [t_skip, T] and T_sk = that / (T - t_skip) (NAN for an empty
+     * window) */
+    size_t nosc;
+    double osc_pv_x, osc_pv_F, stick_time, win_stick_fraction;
     size_t nsamples;
     double sample_dt, *x_samples;        /* x(i sample_dt) when asked */
     double end[REF_N];
