@@ -8,6 +8,7 @@
  * row's status.  The rows run through sf_mc_run: the same bytes for any
  * thread count. */
 #include "cli.h"
+#include "model.h"
 #include "montecarlo.h"
 #include "numplan.h"
 #include "oscillator.h"
@@ -74,7 +75,8 @@ enum { COL_KEY, COL_LR, COL_SEED, COL_REAL };
 #define MAX_ROWS 1000000
 
 /* The output of a row: per QoI value, ratio, u_num; then its status code. */
-enum { NQ = SF_SWEEP_NQ, O_VAL = 0, O_RATIO = NQ, O_U = 2 * NQ, O_RC = 3 * NQ, NOUT = 3 * NQ + 1 };
+enum { NQ = SF_SWEEP_NQ, O_VAL = SF_MODEL_PVX, O_RATIO = SF_MODEL_RATIO, O_U = SF_MODEL_U, O_RC = SF_MODEL_NOUT,
+       NOUT = SF_MODEL_NOUT + 1 };
 #define MSG 240
 
 typedef struct {
@@ -99,30 +101,20 @@ typedef struct {
     char *msg;               /* MSG per row: its error, or a warning when its status is ok */
 } eval_ctx;
 
-/* A thread's workspace: the COF plan and the deterministic reference of the
- * last scene it ran, reused while rows share it (the same bits: a draw is
- * a function of the stream alone, cof.h). */
+/* A thread's workspace: the model's (its cache of the last scene's COF
+ * plan and reference, model.h) and the rows it reads. */
 typedef struct {
     const eval_ctx *c;
-    sf_scene plan_scene, det_scene;
-    sf_cof_plan *plan;
-    int det_held, det_rc;
-    double det[NQ];
-    char det_err[MSG];
+    sf_model_ws *m;
 } eval_ws;
-
-/* a and b differ only in their seed (which no plan reads: the field's is the stream) */
-static int same_scene(const sf_scene *a, const sf_scene *b)
-{
-    sf_scene t;
-    memcpy(&t, a, sizeof t);
-    t.seed = b->seed;
-    return !memcmp(&t, b, sizeof t);
-}
 
 static void *ws_alloc(void *ctx)
 {
     eval_ws *w = calloc(1, sizeof *w);
+    if (w && !(w->m = sf_model_ws_alloc())) {
+        free(w);
+        return NULL;
+    }
     if (w)
         w->c = ctx;
     return w;
@@ -131,80 +123,23 @@ static void *ws_alloc(void *ctx)
 static void ws_free(void *p)
 {
     eval_ws *w = p;
-    sf_cof_plan_free_mt(w->plan);
+    sf_model_ws_free(w->m);
     free(w);
 }
 
-/* One row on its stream: the run, its QoIs and u_num into out; SF_SUCCESS
- * or the run's error with the reason in err. */
-static int solve(eval_ws *w, const sf_scene *s, gsl_rng *rng, double *out, char *err, size_t errlen)
-{
-    if (!(s->T > s->t_skip))
-        return sf_seterr(err, errlen, SF_EINVAL, "T = %g s is not above t_skip = %g s: no cycle to measure", s->T,
-                         s->t_skip);
-    sf_plan pl;
-    int rc = sf_plan_make(s, &pl, err, errlen);
-    if (rc)
-        return rc;
-    pl.history = 0;   /* the QoIs only, as a sweep's rows */
-    if (!w->plan || !same_scene(&w->plan_scene, s)) {
-        sf_cof_plan_free_mt(w->plan);
-        w->plan = NULL;
-        if ((rc = sf_cof_plan_build_mt(s, &pl, &w->plan, err, errlen)))
-            return rc;
-        memcpy(&w->plan_scene, s, sizeof *s);
-    }
-    sf_cof *cof = NULL;
-    sf_osc *o = NULL;
-    sf_osc_result r = { 0 };
-    if ((rc = sf_cof_plan_draw(w->plan, rng, &cof)) || (rc = sf_osc_alloc_plan(s, &pl, cof, &o, err, errlen))) {
-        sf_cof_free(cof);
-        return rc;
-    }
-    if (!(rc = sf_osc_run(o, NULL, NULL, 0, &r, err, errlen))) {
-        out[O_VAL + SF_SWEEP_PVX] = r.pv_x;
-        out[O_VAL + SF_SWEEP_PVF] = r.pv_F;
-        out[O_VAL + SF_SWEEP_SF] = r.stick_fraction;
-        sf_unum u;
-        char uerr[MSG] = "";
-        if (w->c->unum && sf_unum_estimate(s, cof, sf_osc_get_plan(o), &r, &u, uerr, sizeof uerr) == SF_SUCCESS)
-            for (int q = 0; q < NQ; q++)
-                out[O_U + q] = u.u[q];
-        else if (w->c->unum)   /* a warning: the row's values stand */
-            snprintf(err, errlen, "warning: no u_num (its companion solve: %s)", uerr);
-    }
-    sf_osc_result_free(&r);
-    sf_osc_free(o);
-    sf_cof_free(cof);
-    return rc;
-}
-
+/* Row i on its stream (the model's solve): a failed row fails alone, its
+ * status says why. */
 static int eval_row(void *p, size_t i, gsl_rng *rng, double *out)
 {
     eval_ws *w = p;
     const design_row *row = &w->c->rows[i];
     char *msg = w->c->msg + i * MSG;
-    for (int k = 0; k < NOUT; k++)
-        out[k] = NAN;
     if (row->own_seed)
         gsl_rng_set(rng, row->s.seed);   /* as `slipfield run` seeds the scene's field */
     else
         sf_mc_stream(rng, w->c->seed, row->real);   /* as a sweep seeds its realisation */
-    int rc = solve(w, &row->s, rng, out, msg, MSG);
-    if (!rc) {   /* the deterministic reference, as sweep's ratios */
-        if (!w->det_held || !same_scene(&w->det_scene, &row->s)) {
-            w->det_rc = sf_sweep_det(&row->s, w->det, w->det_err, sizeof w->det_err);
-            memcpy(&w->det_scene, &row->s, sizeof row->s);
-            w->det_held = 1;
-        }
-        if ((rc = w->det_rc))
-            snprintf(msg, MSG, "%s", w->det_err);
-        else
-            for (int q = 0; q < NQ; q++)
-                out[O_RATIO + q] = out[O_VAL + q] / w->det[q];
-    }
-    out[O_RC] = rc;
-    return SF_SUCCESS;   /* a failed row fails alone */
+    out[O_RC] = sf_model_ws_solve(w->m, &row->s, rng, w->c->unum, out, msg, MSG);
+    return SF_SUCCESS;
 }
 
 /* ---- reading the design ---- */

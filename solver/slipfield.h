@@ -30,5 +30,6 @@
 #include "sobol.h"         /* Sobol' indices by pick-freeze */
 #include "sensitivity.h"   /* Sobol' indices of the QoI ratios */
 #include "unum.h"          /* numerical error of a run's QoIs */
+#include "model.h"         /* the high-level calls: a scene in, QoIs with u_num out */
 
 #endif

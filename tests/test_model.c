@@ -1,0 +1,135 @@
+/* Unit tests: the high-level calls (model.h): a model from text, from a
+ * file and its refusals; keys set as scene lines; realisation i equal to
+ * row i of a sweep to the bit; the workspace's cache; the refusals of a
+ * solve. */
+#include "test_util.h"
+#include "model.h"
+#include "montecarlo.h"
+#include "sf_error.h"
+#include "sweep.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define SHORT "cof = field\nl = 0.5\nT = 20\nt_skip = 10\n"
+
+static void from_text_and_file(void **state)
+{
+    (void)state;
+    char err[300];
+    sf_model *m = (sf_model *)1;
+    assert_int_equal(sf_model_new(NULL, &m, err, sizeof err), SF_SUCCESS);
+    sf_scene d;
+    sf_scene_default(&d);
+    assert_close(sf_model_scene(m)->l, d.l, 0);   /* Table 1 */
+    sf_model_free(m);
+    assert_int_equal(sf_model_new("", &m, err, sizeof err), SF_SUCCESS);
+    sf_model_free(m);
+    m = (sf_model *)1;
+    assert_int_equal(sf_model_new("l = -1\n", &m, err, sizeof err), SF_EPARSE);
+    assert_null(m);
+    assert_non_null(strstr(err, "scene:1"));
+    assert_int_equal(sf_model_load("/nonexistent/x.scene", &m, err, sizeof err), SF_EIO);
+    assert_null(m);
+    FILE *f = fopen("test_model.scene", "w");
+    assert_non_null(f);
+    fputs(SHORT, f);
+    fclose(f);
+    assert_int_equal(sf_model_load("test_model.scene", &m, err, sizeof err), SF_SUCCESS);
+    assert_close(sf_model_scene(m)->l, 0.5, 0);
+    sf_model_free(m);
+    remove("test_model.scene");
+    sf_model_free(NULL);
+    sf_model_ws_free(NULL);
+}
+
+static void set_keys(void **state)
+{
+    (void)state;
+    char err[300];
+    sf_model *m;
+    assert_int_equal(sf_model_new(SHORT, &m, err, sizeof err), SF_SUCCESS);
+    assert_int_equal(sf_model_set(m, "v_b", "0.3", err, sizeof err), SF_SUCCESS);
+    assert_close(sf_model_scene(m)->v_b, 0.3, 0);
+    assert_int_equal(sf_model_set(m, "cof", "uniform", err, sizeof err), SF_SUCCESS);
+    assert_int_equal(sf_model_scene(m)->cof, 0);
+    assert_int_equal(sf_model_set(m, "l_over_R", "2", err, sizeof err), SF_SUCCESS);
+    assert_close(sf_model_scene(m)->l, 2 * sf_model_scene(m)->R, 0);
+    /* refusals leave the scene as it was */
+    assert_int_equal(sf_model_set(m, "v_b", "-1", err, sizeof err), SF_EPARSE);
+    assert_close(sf_model_scene(m)->v_b, 0.3, 0);
+    assert_int_equal(sf_model_set(m, "nokey", "1", err, sizeof err), SF_EPARSE);
+    assert_int_equal(sf_model_set(m, "l_over_R", "x", err, sizeof err), SF_EPARSE);
+    assert_int_equal(sf_model_set(m, "l_over_R", "", err, sizeof err), SF_EPARSE);
+    assert_int_equal(sf_model_set(m, "v_b", "0.2\nl = 3", err, sizeof err), SF_EPARSE);   /* one line only */
+    assert_int_equal(sf_model_set(m, "v_b = 1 #", "0.2", err, sizeof err), SF_EPARSE);
+    char big[600];
+    memset(big, '1', sizeof big - 1);
+    big[sizeof big - 1] = 0;
+    assert_int_equal(sf_model_set(m, "v_b", big, err, sizeof err), SF_EPARSE);
+    sf_model_free(m);
+}
+
+/* realisation i is row i of a plain sweep, to the bit; twice the same */
+static void run_is_sweep_row(void **state)
+{
+    (void)state;
+    char err[300];
+    sf_model *m;
+    assert_int_equal(sf_model_new(SHORT, &m, err, sizeof err), SF_SUCCESS);
+    sf_sweep_point p;
+    assert_int_equal(sf_sweep_run(sf_model_scene(m), 3, 1, NULL, 0, NULL, &p, err, sizeof err), SF_SUCCESS);
+    for (size_t i = 0; i < 3; i++) {
+        double out[SF_MODEL_NOUT], again[SF_MODEL_NOUT];
+        assert_int_equal(sf_model_run(m, i, i == 0, out, err, sizeof err), SF_SUCCESS);
+        for (int q = 0; q < SF_SWEEP_NQ; q++) {
+            assert_memory_equal(&out[q], &p.qoi[i * SF_SWEEP_NQ + q], sizeof(double));
+            assert_close(out[SF_MODEL_RATIO + q], p.ratio[i * SF_SWEEP_NQ + q], 1e-15);
+            assert_true(i == 0 ? isfinite(out[SF_MODEL_U + q]) && out[SF_MODEL_U + q] >= 0
+                               : isnan(out[SF_MODEL_U + q]));
+        }
+        assert_int_equal(sf_model_run(m, i, i == 0, again, err, sizeof err), SF_SUCCESS);   /* the cache's reuse */
+        assert_memory_equal(out, again, sizeof out);
+    }
+    sf_sweep_point_free(&p);
+    sf_model_free(m);
+}
+
+static void solve_refusals(void **state)
+{
+    (void)state;
+    char err[300];
+    sf_model *m;
+    assert_int_equal(sf_model_new(SHORT, &m, err, sizeof err), SF_SUCCESS);
+    double out[SF_MODEL_NOUT];
+    assert_int_equal(sf_model_set(m, "T", "5", err, sizeof err), SF_SUCCESS);   /* T below t_skip */
+    assert_int_equal(sf_model_run(m, 0, 1, out, err, sizeof err), SF_EINVAL);
+    assert_non_null(strstr(err, "t_skip"));
+    assert_true(isnan(out[0]));
+    /* a reference without an oscillation in the window: the run's values stand, no ratio */
+    assert_int_equal(sf_model_set(m, "T", "10.5", err, sizeof err), SF_SUCCESS);
+    int rc = sf_model_run(m, 0, 0, out, err, sizeof err);
+    assert_int_equal(rc, SF_EINVAL);
+    assert_true(isnan(out[SF_MODEL_RATIO]));
+    /* a plan that cannot be made */
+    assert_int_equal(sf_model_set(m, "T", "20", err, sizeof err), SF_SUCCESS);
+    assert_int_equal(sf_model_set(m, "qoi_tol", "0.9", err, sizeof err), SF_SUCCESS);
+    assert_int_equal(sf_model_set(m, "cof_model", "cell_average", err, sizeof err), SF_SUCCESS);
+    assert_int_equal(sf_model_set(m, "cof_generator", "belt_noise", err, sizeof err), SF_SUCCESS);
+    assert_int_equal(sf_model_run(m, 0, 0, out, err, sizeof err), SF_EINVAL);
+    sf_model_free(m);
+}
+
+int main(void)
+{
+    sf_init();
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(from_text_and_file),
+        cmocka_unit_test(set_keys),
+        cmocka_unit_test(run_is_sweep_row),
+        cmocka_unit_test(solve_refusals),
+    };
+    return cmocka_run_group_tests_name("model", tests, NULL, NULL);
+}
