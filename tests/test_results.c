@@ -197,6 +197,33 @@ static void results_render_plots(void **state)
     sf_result_free(r);
 }
 
+/* Row labels are kept whole: the longest in the catalogue (montecarlo/
+ * mlmc-boxes-levels, once cut at 159 characters after "(bits; the") and
+ * one as long as SF_LABEL_LEN allows, also through a p-value's label. */
+static void results_long_labels(void **state)
+{
+    (void)state;
+    static const char longest[] = "level 1's first fine and coarse values and level 0's first pair mean (3 QoIs each) "
+                                  "that differ from this check's runs on the fields of their streams (bits; the same "
+                                  "operations)";
+    char most[SF_LABEL_LEN], test[SF_LABEL_LEN], want[SF_LABEL_LEN + 32];
+    memset(most, 'q', sizeof most - 1);
+    most[sizeof most - 1] = '\0';
+    memset(test, 't', 300);
+    test[300] = '\0';
+    sf_result *r = sf_result_alloc();
+    sf_check_le(r, longest, 0, 0);
+    sf_check_abs(r, most, 1, 1, 0);
+    sf_check_pvalue(r, test, 0.5, 0.01, 1000);
+    sf_result_sample(r, longest, 10, 0);
+    assert_string_equal(sf_result_row(r, 0)->quantity, longest);
+    assert_string_equal(sf_result_row(r, 1)->quantity, most);
+    snprintf(want, sizeof want, "%s (n = 1000): p-value", test);
+    assert_string_equal(sf_result_row(r, 2)->quantity, want);
+    assert_string_equal(sf_result_sample_at(r, 0)->what, longest);
+    sf_result_free(r);
+}
+
 int main(void)
 {
     sf_init();
@@ -205,6 +232,7 @@ int main(void)
         cmocka_unit_test(results_case_json),
         cmocka_unit_test(drift_rules),
         cmocka_unit_test(results_render_plots),
+        cmocka_unit_test(results_long_labels),
     };
     return cmocka_run_group_tests_name("results", tests, NULL, NULL);
 }

@@ -170,7 +170,7 @@ int sf_check_ge(sf_result *r, const char *q, double m, double bound)
 
 int sf_check_pvalue(sf_result *r, const char *test, double p, double alpha, size_t n)
 {
-    char q[160];
+    char q[SF_LABEL_LEN];
     snprintf(q, sizeof q, "%s (n = %zu): p-value", test, n);
     sf_row *row = add_row(r, q, p);
     snprintf(row->criterion, sizeof row->criterion, "p >= alpha = %.3g", alpha);

@@ -15,8 +15,12 @@
 typedef struct sf_result sf_result;
 typedef struct sf_plot sf_plot;
 
+/* The longest row label (quantity) or sample label kept whole: a check's
+ * own label buffers are this long too, so no label is cut. */
+#define SF_LABEL_LEN 512
+
 typedef struct {
-    char quantity[160];
+    char quantity[SF_LABEL_LEN];
     double measured, expected;  /* expected may be NAN (no single value) */
     char criterion[96];         /* e.g. "|diff| <= 1e-13", "p >= 1e-3" */
     double ratio;               /* how much of the tolerance is used: > 1 fails */
@@ -98,7 +102,7 @@ const char *sf_claim_status_name(int status);
  * the QoI's definition cannot measure).  results.json lists them per case
  * ("samples"), so that no excluded realisation goes unsaid. */
 typedef struct {
-    char what[160];
+    char what[SF_LABEL_LEN];
     size_t n_used, n_excluded;
 } sf_sample_row;
 void sf_result_sample(sf_result *r, const char *what, size_t n_used, size_t n_excluded);
