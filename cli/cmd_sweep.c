@@ -174,13 +174,13 @@ int sf_cmd_sweep(int argc, char **argv)
         { "--control-variate", SF_OPT_FLAG, &cv, 0, 0, NULL },
         { "--param", SF_OPT_STRING, &param, 0, 0, NULL },
         { "--values", SF_OPT_STRING, &values, 0, 0, NULL },
-        { "--realisations", SF_OPT_SIZE, &n, 1, 10000000, NULL },
+        { "--realisations", SF_OPT_SIZE, &n, 1, SF_MAX_SAMPLES, NULL },
         { "--out", SF_OPT_STRING, &out_path, 0, 0, NULL },
         { "--summary", SF_OPT_STRING, &sum_path, 0, 0, NULL },
         { "--threads", SF_OPT_SIZE, &threads, 1, 1024, NULL },
         { "--resume", SF_OPT_FLAG, &resume, 0, 0, NULL },
         { "--target-se", SF_OPT_DOUBLE, &target_se, 0, 0, NULL },
-        { "--pilot", SF_OPT_SIZE, &pilot, 2, 10000000, NULL },
+        { "--pilot", SF_OPT_SIZE, &pilot, 2, SF_MAX_SAMPLES, NULL },
         { "--estimator", SF_OPT_STRING, &estimator, 0, 0, NULL },
     };
     int rc = sf_cli_parse("sweep", argc, argv, opts, sizeof opts / sizeof opts[0], &path, usage);

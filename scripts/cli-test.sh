@@ -107,6 +107,10 @@ expect 2 "over the size cap" "$bin" field big.scene --out big.tsv
 printf 'cof = field\nstrip_halfwidth = 0.0001\ny0 = 0.05\nT = 15\nt_skip = 0\ncells = 8\n' > strip.scene
 expect 2 "left the belt strip" "$bin" run strip.scene --out strip.tsv --summary strip.txt
 [ ! -e strip.tsv ] && [ ! -e strip.txt ] && ok || bad "the failed run left its outputs"
+# the scene's samples obeys the cap of --realisations: refused at once, file:line
+printf 'cof = uniform\nsamples = 1e9\n' > many.scene
+expect 2 "many.scene:2: key 'samples': must be >= 1 and <= 1e+07" timeout 10 "$bin" sweep many.scene --param T --values 20 --out many.tsv
+expect 2 "--realisations takes a whole number from 1 to 10000000" "$bin" sweep many.scene --param T --values 20 --realisations 1e9 --out many.tsv
 printf 'cof = uniform\nT = 30\nt_skip = 10\n' > sw.scene
 expect 2 "not above t_skip" "$bin" sweep sw.scene --param T --values 40,5 --realisations 2 --out sw.tsv
 [ ! -e sw.tsv ] && ok || bad "the refused sweep left sw.tsv"
