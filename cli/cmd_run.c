@@ -26,9 +26,9 @@ static void usage(FILE *f)
           "                  realisation, 0.04-0.45x the run's CPU); '-' for stdout\n"
           "                  (the default when neither --out nor --summary is given)\n"
           "  --explain       print what the plan computes and what it skips, then exit\n"
-          "A run without --out keeps no history. A quantity that the run cannot form\n"
-          "(no complete cycle after t_skip: raise T) is nan in the summary, and said\n"
-          "on stderr.\n",
+          "A run without --out keeps no history. T must be above t_skip (exit 2\n"
+          "otherwise, as for sweep). A quantity that the run cannot form (no complete\n"
+          "cycle after t_skip: raise T) is nan in the summary, and said on stderr.\n",
           f);
 }
 
@@ -80,6 +80,11 @@ int sf_cmd_run(int argc, char **argv)
     sf_scene s;
     if (sf_cli_load_scene("run", path, &s))
         return SF_EXIT_USAGE;
+    if (!(s.T > s.t_skip)) {   /* the same refusal as slipfield sweep's */
+        fprintf(stderr, "slipfield run: %s: T = %g s is not above t_skip = %g s: no cycle to measure (raise T or lower "
+                        "t_skip)\n", path, s.T, s.t_skip);
+        return SF_EXIT_USAGE;
+    }
     if (out_path && !s.history) {
         fprintf(stderr, "slipfield run: %s: the scene sets history = false; drop --out or the key\n", path);
         return SF_EXIT_USAGE;

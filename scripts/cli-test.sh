@@ -151,9 +151,15 @@ expect 0 "is below what the estimator's sizing says --target-se 1e-09 needs" "$b
 [ "$(awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == "stop") c = i } NR == 2 { print $3, $c }' at.sum)" = "6 cap" ] \
     && ok || bad "antithetic sweep at the cap: $(cat at.sum)"
 # run: no QoI is said; no --out nor --summary prints the summary
-printf 'cof = uniform\nT = 5\n' > t5.scene
-expect 0 "warning: no quantity of interest" "$bin" run t5.scene
+printf 'cof = uniform\nT = 12\n' > t12.scene
+expect 0 "warning: no quantity of interest" "$bin" run t12.scene
 grep -q '^pv_x = nan' "$tmp/out" && ok || bad "run without --out/--summary: no summary on stdout"
+# run refuses T <= t_skip as sweep does (t_skip defaults to 10 s), leaving nothing
+printf 'cof = uniform\nT = 5\n' > t5.scene
+expect 2 "t5.scene: T = 5 s is not above t_skip = 10 s" "$bin" run t5.scene --out t5.tsv --summary t5.sum
+[ ! -e t5.tsv ] && [ ! -e t5.sum ] && [ ! -s "$tmp/out" ] && ok || bad "run at T <= t_skip left output"
+printf 'cof = uniform\nT = 10\n' > t10.scene
+expect 2 "T = 10 s is not above t_skip = 10 s" "$bin" run t10.scene --explain
 # run and sweep: an embedding at its padding cap is said (usable: exit 0)
 printf 'l = 50\npad_cap = 1\nT = 20\n' > trunc.scene
 expect 0 "warning: the COF field's circulant embedding reached its padding cap" "$bin" run trunc.scene --summary tr.sum
