@@ -16,6 +16,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 #include <unistd.h>
 
 static void usage(FILE *f)
@@ -136,6 +137,88 @@ static int parse_values(const char *v, double *out, size_t cap, size_t *n)
 /* Remove the temporary files that a killed run (SIGKILL: no clean-up)
  * left beside out: "<out>.tmp<pid>" and "<out>.ckpt<k>.tmp", of processes
  * that no longer run. */
+/* --param: l_over_R or a numeric scene key */
+static int param_ok(const sf_key *k)
+{
+    return k->type == SF_KEY_DOUBLE || k->type == SF_KEY_SIZE || k->type == SF_KEY_ULONG;
+}
+
+/* Edit distance of two short names (capped at 3: only "close" matters). */
+static size_t name_distance(const char *a, const char *b)
+{
+    size_t la = strlen(a), lb = strlen(b), d[64];
+    if (la >= 63 || lb >= 63)
+        return 3;
+    for (size_t j = 0; j <= lb; j++)
+        d[j] = j;
+    for (size_t i = 1; i <= la; i++) {
+        size_t diag = d[0];
+        d[0] = i;
+        for (size_t j = 1; j <= lb; j++) {
+            size_t up = d[j];
+            size_t best = diag + (a[i - 1] != b[j - 1]);
+            if (up + 1 < best)
+                best = up + 1;
+            if (d[j - 1] + 1 < best)
+                best = d[j - 1] + 1;
+            d[j] = best;
+            diag = up;
+        }
+    }
+    return d[lb] < 3 ? d[lb] : 3;
+}
+
+/* 0 when NAME is a parameter --param takes; else says why, with the
+ * nearest names (the same letters in another case first) and the list. */
+static int check_param(const char *name)
+{
+    sf_scene d;
+    sf_scene_default(&d);
+    sf_keytab t = sf_scene_keytab(&d);
+    if (!strcmp(name, "l_over_R"))
+        return 0;
+    const char *near = NULL;
+    size_t best = 3;
+    for (size_t k = 0; k < t.n; k++) {
+        if (!strcmp(t.keys[k].name, name)) {
+            if (param_ok(&t.keys[k]))
+                return 0;
+            fprintf(stderr, "slipfield sweep: --param %s: not a numeric scene key (it cannot be swept)\n", name);
+            return -1;
+        }
+    }
+    for (size_t k = 0; k <= t.n; k++) {
+        const char *kn = k < t.n ? t.keys[k].name : "l_over_R";
+        if (k < t.n && !param_ok(&t.keys[k]))
+            continue;
+        size_t dist = strcasecmp(kn, name) ? name_distance(kn, name) : 0;
+        if (dist < best && 2 * dist < strlen(name)) {   /* close, for a name this long */
+            best = dist;
+            near = kn;
+        }
+    }
+    fprintf(stderr, "slipfield sweep: --param: unknown parameter '%s'", name);
+    if (near)
+        fprintf(stderr, "; did you mean %s?", near);
+    fputs("\nvalid parameters: l_over_R", stderr);
+    size_t col = 28;
+    for (size_t k = 0; k < t.n; k++) {
+        if (!param_ok(&t.keys[k]))
+            continue;
+        size_t w = strlen(t.keys[k].name) + 2;
+        if (col + w > 79) {
+            fputs(",\n  ", stderr);
+            col = 2;
+        } else {
+            fputs(", ", stderr);
+        }
+        fputs(t.keys[k].name, stderr);
+        col += w;
+    }
+    fputc('\n', stderr);
+    return -1;
+}
+
 static void remove_stale_tmp(const char *out)
 {
     char dir[1100];
@@ -192,6 +275,8 @@ int sf_cmd_sweep(int argc, char **argv)
         fprintf(stderr, "slipfield sweep: --param, --values and --out are required\n");
         return SF_EXIT_USAGE;
     }
+    if (check_param(param))
+        return SF_EXIT_USAGE;
     if (parse_values(values, v, SF_LIST_MAX, &nv)) {
         fprintf(stderr, "slipfield sweep: --values: expected up to %d comma-separated finite numbers, got '%s'\n",
                 SF_LIST_MAX, values);

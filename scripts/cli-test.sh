@@ -24,6 +24,9 @@ expect() {
     if [ $rc -eq "$want" ] && { [ -z "$frag" ] || grep -qF -- "$frag" "$tmp/err"; }; then ok
     else bad "'$*': exit $rc (want $want), stderr: $(head -c 300 "$tmp/err") (want '$frag')"; fi
 }
+# err_has / err_lacks FRAGMENT WHAT: the last expect's stderr
+err_has()   { grep -qF -- "$1" "$tmp/err" && ok || bad "$2: no '$1' in: $(head -c 600 "$tmp/err")"; }
+err_lacks() { grep -qF -- "$1" "$tmp/err" && bad "$2: '$1' in: $(head -c 600 "$tmp/err")" || ok; }
 cd "$tmp" || exit 1
 printf 'cof = uniform\nntheta = 5\nnpsi = 4\n' > s.scene   # 20 surface rows
 cp s.scene s.orig
@@ -115,6 +118,10 @@ printf 'cof = uniform\nT = 30\nt_skip = 10\n' > sw.scene
 expect 2 "not above t_skip" "$bin" sweep sw.scene --param T --values 40,5 --realisations 2 --out sw.tsv
 [ ! -e sw.tsv ] && ok || bad "the refused sweep left sw.tsv"
 expect 2 "in [t_skip, T] (pv_x = nan): raise T" "$bin" sweep sw.scene --param T --values 12 --realisations 2 --out sw.tsv
+# --param: a wrong name is named, with the nearest valid one and the list
+expect 2 "unknown parameter 'l_over_r'; did you mean l_over_R?" "$bin" sweep sw.scene --param l_over_r --values 1 --realisations 2 --out sw.tsv
+err_has "valid parameters: l_over_R, m, k, v_b, R, l, mu_mean" "--param: the valid names"
+expect 2 "not a numeric scene key" "$bin" sweep sw.scene --param cof --values 1 --realisations 2 --out sw.tsv
 # two stages: bad targets and pilots are refused before any work
 for a in "--target-se 0" "--target-se -0.1" "--target-se nan" "--target-se x"; do
     expect 2 "--target-se" "$bin" sweep sw.scene --param T --values 20 --realisations 5 $a --out sw.tsv
@@ -205,9 +212,6 @@ cmp -s sa1.tsv sa2.tsv && cmp -s se1.tsv se2.tsv && [ "$(wc -l < sa1.tsv)" -eq 1
     && ok || bad "sensitivity: 1 and 2 threads differ, or rows missing ($(wc -l < sa1.tsv), $(wc -l < se1.tsv))"
 
 # ---- sensitivity guards its user: stderr off a terminal ------------------------
-# err_has / err_lacks FRAGMENT WHAT: the last expect's stderr
-err_has()   { grep -qF -- "$1" "$tmp/err" && ok || bad "$2: no '$1' in: $(head -c 600 "$tmp/err")"; }
-err_lacks() { grep -qF -- "$1" "$tmp/err" && bad "$2: '$1' in: $(head -c 600 "$tmp/err")" || ok; }
 # 2 rows: below the threshold, the cost line, the stages, the indices flagged
 expect 0 "warning: 2 rows given, below 64" "$bin" sensitivity sa.scene --rows 2 $narrow --threads 1 --out sg.tsv
 err_has "slipfield sensitivity: 7 blocks x 2 rows = 14 runs at T = 20 s" "cost line"
