@@ -184,7 +184,7 @@ printf 'T = 30\nt_skip = 10\ncells = 8\nrtol = 1e-6\n' > long.scene
 sweep="$bin sweep long.scene --param l_over_R --values 1 --realisations 5000 --threads 1 --out cut.tsv"
 started() { for _ in $(seq 1 600); do [ -s cut.tsv.ckpt0 ] && return; sleep 0.05; done; }
 $sweep 2> int.err & pid=$!; started; kill -INT $pid; wait $pid; rc=$?
-[ $rc -ne 0 ] && grep -q "interrupted: rerun with --resume" int.err && [ -z "$(ls | grep 'cut\.tsv\.tmp')" ] && [ ! -e cut.tsv ] \
+[ $rc -eq 130 ] && grep -q "interrupted: rerun with --resume" int.err && [ -z "$(ls | grep 'cut\.tsv\.tmp')" ] && [ ! -e cut.tsv ] \
     && ok || bad "SIGINT: exit $rc, '$(cat int.err)', left: $(ls | grep cut)"
 rm -f cut.tsv.ckpt0
 $sweep 2> /dev/null & pid=$!; started; kill -KILL $pid; wait $pid 2> /dev/null
@@ -250,6 +250,11 @@ done
 expect 2 "no help on 'foo'" "$bin" help foo
 expect 0 "" "$bin" --help
 grep -q -- "--version" "$tmp/out" && ok || bad "--help does not list --version"
+grep -q "^130 interrupted by SIGINT" "$tmp/out" && ok || bad "--help does not list exit status 130"
+expect 0 "" "$bin" help verify
+grep -q "^130 interrupted by SIGINT" "$tmp/out" && ok || bad "help verify does not list exit status 130"
+sh "$top/scripts/man.sh" "$bin" > man.1 && awk '/^\.SH EXIT STATUS/ { on = 1 } /^\.SH ENV/ { on = 0 } on' man.1 | grep -q '^\.B 130' \
+    && ok || bad "the man page's EXIT STATUS does not list 130"
 expect 0 "" "$bin" help scene
 grep -q "^Case-only keys" "$tmp/out" && grep -q "^check " "$tmp/out" && ok || bad "help scene does not mark the case-only keys"
 

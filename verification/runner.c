@@ -58,7 +58,8 @@ static void usage(FILE *f)
           "  --list              list the selected cases with tier, kind, check and tags\n"
           "  --checks            list the registered checks\n"
           "  -h, --help          this help\n\n"
-          "exit status: 0 all passed, 1 a case failed, 2 bad input or usage, 3 internal error\n",
+          "exit status: 0 all passed, 1 a case failed, 2 bad input or usage, 3 internal error,\n"
+          "130 interrupted by SIGINT (Ctrl-C; SIGTERM 143): no summary is written\n",
           f);
 }
 
