@@ -17,6 +17,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
+#include <time.h>
 #include <unistd.h>
 
 static void usage(FILE *f)
@@ -114,7 +115,8 @@ static void usage(FILE *f)
           "                    (and remove the temporary files a killed run left)\n"
           "The swept value overrides the scene's value of NAME.\n"
           "Realisation i of every value uses its own stream (seed, i): bit-identical\n"
-          "output for any thread count. Progress on stderr when it is a terminal.\n",
+          "output for any thread count. Progress on stderr: a live count on a\n"
+          "terminal; off one (a CI log), one line per point: its realisations and time.\n",
           f);
 }
 
@@ -217,6 +219,13 @@ static int check_param(const char *name)
     }
     fputc('\n', stderr);
     return -1;
+}
+
+static double now_s(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
 }
 
 static void remove_stale_tmp(const char *out)
@@ -365,7 +374,10 @@ int sf_cmd_sweep(int argc, char **argv)
     if (sum_path)
         sf_sweep_summary_header(sum.f);
     int ok = 1, fail = SF_SUCCESS;
+    /* off a terminal (a CI log: no live count) one line per point, on stderr */
+    int lines = writer && !isatty(2);
     for (size_t k = 0; k < nv && ok; k++) {
+        double t0 = now_s();
         sf_scene s = s0;
         sf_sweep_set(&s, param, v[k], err, sizeof err);
         sf_cof_plan *cp = NULL;   /* the point's COF plan, only to warn of a truncated embedding */
@@ -427,6 +439,13 @@ int sf_cmd_sweep(int argc, char **argv)
             if (sum_path && sf_unum_sweep(&s, &p, (int)threads, err, sizeof err))
                 fprintf(stderr, "slipfield sweep: %s = %g: warning: no numerical error of the means (its companion "
                                 "failed: %s)\n", param, v[k], err);
+            if (lines) {
+                fprintf(stderr, "slipfield sweep: point %zu/%zu (%s = %g): %zu realisations in %.3g s", k + 1, nv,
+                        param, v[k], p.n, now_s() - t0);
+                if (p.from_checkpoint)
+                    fprintf(stderr, " (%zu from the checkpoint)", p.from_checkpoint);
+                fputc('\n', stderr);
+            }
             sf_sweep_write_rows(out.f, param, v[k], &p);   /* with the companions u_num_mean is made of */
             if (sum_path)
                 sf_sweep_summary_row(sum.f, param, v[k], &p);

@@ -150,6 +150,18 @@ expect 0 "" "$bin" sweep var.scene --param T --values 14 --realisations 6 --esti
 expect 0 "" "$bin" sweep var.scene --param T --values 14 --realisations 6 --estimator auto --pilot 3 --out au.tsv --summary au.sum
 [ "$(awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == "estimator") c = i } NR == 2 { print $c }' au.sum)" = "antithetic" ] \
     && ok || bad "auto sweep on one variable: the estimator column: $(cat au.sum)"
+# off a terminal: one line per point on stderr, and stdout is the table alone
+expect 0 "slipfield sweep: point 1/2 (T = 14): 6 realisations in" "$bin" sweep var.scene --param T --values 14,15 --realisations 6 --out pt.tsv
+err_has "slipfield sweep: point 2/2 (T = 15): 6 realisations in" "sweep: the second point's line"
+[ "$(grep -c '^slipfield sweep: point [0-9]*/2 ' "$tmp/err")" -eq 2 ] && [ ! -s "$tmp/out" ] && ok \
+    || bad "sweep off a terminal: not one line per point, or stdout not empty: $(cat "$tmp/err")"
+expect 0 "point 2/2" "$bin" sweep var.scene --param T --values 14,15 --realisations 6 --out -
+cmp -s "$tmp/out" pt.tsv && ok || bad "sweep --out -: stdout is not the table alone"
+if script --version 2>/dev/null | grep -q util-linux; then   # on a terminal: the live count, no point lines
+    script -qec "'$bin' sweep var.scene --param T --values 14,15 --realisations 6 --out pt.tsv" /dev/null > "$tmp/err" 2>&1 < /dev/null
+    err_has "T = 15: 6/6 realisations" "sweep on a terminal: live count"
+    err_lacks "point 1/2" "sweep on a terminal: a point line"
+fi
 # an estimator at a target standard error: met (stop target), or held at the cap (said)
 expect 0 "" "$bin" sweep var.scene --param T --values 14 --realisations 40 --estimator antithetic --pilot 3 --target-se 0.05 --out at.tsv --summary at.sum
 [ "$(awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == "stop") c = i } NR == 2 { print $c }' at.sum)" = "target" ] \
