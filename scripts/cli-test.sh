@@ -179,6 +179,14 @@ expect 2 "t5.scene: T = 5 s is not above t_skip = 10 s" "$bin" run t5.scene --ou
 [ ! -e t5.tsv ] && [ ! -e t5.sum ] && [ ! -s "$tmp/out" ] && ok || bad "run at T <= t_skip left output"
 printf 'cof = uniform\nT = 10\n' > t10.scene
 expect 2 "T = 10 s is not above t_skip = 10 s" "$bin" run t10.scene --explain
+# run --explain: a CV beyond the plan's calibrated range (0.05-1) is flagged, Table 1's is not
+printf 'cof = field\nmu_mean = 0.5\nmu_std = 2\nT = 20\n' > cv4.scene
+expect 0 "" "$bin" run cv4.scene --explain
+grep -q "^plan warning: CV = mu_std / mu_mean = 4 is beyond the range the plan's error models were calibrated on (CV 0.05-1" \
+    "$tmp/out" && ok || bad "run --explain at CV 4: no calibration warning: $(grep -i cv "$tmp/out")"
+printf 'cof = field\nT = 20\n' > cv02.scene
+expect 0 "" "$bin" run cv02.scene --explain
+grep -q "beyond the range" "$tmp/out" && bad "run --explain at CV 0.2 warns of its CV" || ok
 # run and sweep: an embedding at its padding cap is said (usable: exit 0)
 printf 'l = 50\npad_cap = 1\nT = 20\n' > trunc.scene
 expect 0 "warning: the COF field's circulant embedding reached its padding cap" "$bin" run trunc.scene --summary tr.sum
