@@ -197,6 +197,44 @@ static void results_render_plots(void **state)
     sf_result_free(r);
 }
 
+/* A log x axis spans the data, not whole decades: l/R 0.25 and 1 once
+ * drew from 0.1 (validation/quick-claims-lr).  gnuplot runs the plot's
+ * own script and prints the x range it drew. */
+static void results_plot_log_range(void **state)
+{
+    (void)state;
+    char dir[] = "/tmp/sf-plot-XXXXXX", path[600], why[200], cmd[700];
+    assert_non_null(mkdtemp(dir));
+    const double x[] = { 0.25, 1 }, y[] = { 1.1, 1.3 }, lo[] = { 1.05, 1.2 }, hi[] = { 1.15, 1.4 };
+    sf_result *r = sf_result_alloc();
+    sf_plot *p = sf_result_plot(r, "lr", "lr", "l/R [-]", "ratio [-]");
+    sf_plot_log(p, 1, 0);
+    sf_plot_series(p, "mean", SF_STYLE_LINES, 2, x, y);
+    sf_plot_errorbars(p, "interval", 2, x, y, lo, hi);
+    snprintf(path, sizeof path, "%s/script.gp", dir);
+    FILE *g = fopen(path, "w");
+    assert_non_null(g);
+    char png[600];
+    snprintf(png, sizeof png, "%s/lr.png", dir);
+    sf_plot_write_script(g, p, png, why, sizeof why);
+    fprintf(g, "set print '-'\nprint sprintf('%%.6g %%.6g', GPVAL_X_MIN, GPVAL_X_MAX)\n");
+    fclose(g);
+    assert_string_equal(why, "");
+    snprintf(cmd, sizeof cmd, "gnuplot '%s' 2>/dev/null", path);
+    FILE *o = popen(cmd, "r");
+    assert_non_null(o);
+    double xmin = NAN, xmax = NAN;
+    assert_int_equal(fscanf(o, "%lf %lf", &xmin, &xmax), 2);
+    assert_int_equal(pclose(o), 0);
+    /* within 10% of the data's ends (log scale: 0.23 .. 1.06), not 0.1 */
+    assert_true(xmin > 0.2 && xmin < 0.25);
+    assert_true(xmax > 1 && xmax < 1.1);
+    unlink(png);
+    unlink(path);
+    rmdir(dir);
+    sf_result_free(r);
+}
+
 /* Row labels are kept whole: the longest in the catalogue (montecarlo/
  * mlmc-boxes-levels, once cut at 159 characters after "(bits; the") and
  * one as long as SF_LABEL_LEN allows, also through a p-value's label. */
@@ -233,6 +271,7 @@ int main(void)
         cmocka_unit_test(drift_rules),
         cmocka_unit_test(results_render_plots),
         cmocka_unit_test(results_long_labels),
+        cmocka_unit_test(results_plot_log_range),
     };
     return cmocka_run_group_tests_name("results", tests, NULL, NULL);
 }

@@ -11,6 +11,7 @@
 #define SF_RESULT_H
 
 #include <stddef.h>
+#include <stdio.h>
 
 typedef struct sf_result sf_result;
 typedef struct sf_plot sf_plot;
@@ -152,6 +153,10 @@ void sf_plot_hline(sf_plot *p, const char *label, double y);
 /* Points y with error bars from lo to hi (a confidence interval). */
 void sf_plot_errorbars(sf_plot *p, const char *label, size_t n, const double *x, const double *y,
                        const double *lo, const double *hi);
+/* The gnuplot commands that draw p into the PNG at path (sf_result_render_plots
+ * feeds them to gnuplot; a test may run them itself).  why gets the reason
+ * when the plot would be empty or a series draws nothing. */
+void sf_plot_write_script(FILE *g, const sf_plot *p, const char *path, char *why, size_t whylen);
 
 size_t sf_result_nplots(const sf_result *r);
 sf_plot *sf_result_get_plot(const sf_result *r, size_t i);
