@@ -57,6 +57,48 @@ static void results_row_margins(void **state)
     sf_result_free(r);
 }
 
+/* Near the edge: a count at its bound ("13 of 13 >= 13": margin 1 by
+ * construction), a count against 0 and an exact equality say nothing of
+ * how near a case is to failing and are left out of its margin; the same
+ * rows failing, and a real margin, count. */
+static void results_fixed_margins(void **state)
+{
+    (void)state;
+    sf_result *r = sf_result_alloc();
+    sf_check_ge(r, "releases before the circle's (all of them)", 13, 13);   /* 1, cannot move */
+    sf_check_le(r, "realisations excluded", 0, 0);                        /* 0, cannot move */
+    sf_check_abs(r, "bits that differ", 0, 0, 0);                        /* exact equality */
+    sf_check_le(r, "error", 0.5, 1);                                     /* a real margin */
+    assert_true(sf_row_margin_fixed(sf_result_row(r, 0)));
+    assert_true(sf_row_margin_fixed(sf_result_row(r, 1)));
+    assert_true(sf_row_margin_fixed(sf_result_row(r, 2)));
+    assert_false(sf_row_margin_fixed(sf_result_row(r, 3)));
+    assert_close(sf_row_margin(sf_result_row(r, 0)), 1, 0);   /* the row's own margin is unchanged */
+    size_t at;
+    assert_close(sf_result_margin(r, &at), 0.5, 0);
+    assert_int_equal(at, 3);
+    /* a count above its bound, or a non-whole value at it, is a margin */
+    sf_check_ge(r, "instants exercised", 21, 20);
+    sf_check_le(r, "residual", 0.25, 0.25);
+    assert_false(sf_row_margin_fixed(sf_result_row(r, 4)));
+    assert_false(sf_row_margin_fixed(sf_result_row(r, 5)));
+    assert_close(sf_result_margin(r, &at), 1, 0);
+    assert_int_equal(at, 5);
+    sf_result_free(r);
+    /* only such rows: no margin, not near the edge */
+    r = sf_result_alloc();
+    sf_check_ge(r, "realisations with a PV_F formed", 1000, 1000);
+    assert_true(isnan(sf_result_margin(r, NULL)));
+    /* failing, they count */
+    sf_check_ge(r, "releases (all of them)", 12, 13);
+    sf_check_abs(r, "bits that differ", 1, 0, 0);
+    assert_false(sf_row_margin_fixed(sf_result_row(r, 1)));
+    assert_false(sf_row_margin_fixed(sf_result_row(r, 2)));
+    assert_true(isinf(sf_result_margin(r, &at)));
+    assert_int_equal(at, 2);
+    sf_result_free(r);
+}
+
 static void results_case_json(void **state)
 {
     (void)state;
@@ -267,6 +309,7 @@ int main(void)
     sf_init();
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(results_row_margins),
+        cmocka_unit_test(results_fixed_margins),
         cmocka_unit_test(results_case_json),
         cmocka_unit_test(drift_rules),
         cmocka_unit_test(results_render_plots),

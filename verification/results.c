@@ -50,6 +50,22 @@ double sf_row_margin(const sf_row *row)
     }
 }
 
+static int whole(double x) { return isfinite(x) && fabs(x) < 9007199254740992.0 && floor(x) == x; }
+
+int sf_row_margin_fixed(const sf_row *row)
+{
+    if (!row->pass)
+        return 0;
+    switch (row->test) {
+    case SF_ROW_ABS: case SF_ROW_REL:   /* an exact equality: 0 or a failure */
+        return row->limit == 0;
+    case SF_ROW_LE: case SF_ROW_GE:     /* a count at its bound: 1 (or 0 against 0) or a failure */
+        return whole(row->measured) && whole(row->limit) && row->measured == row->limit;
+    default:
+        return 0;
+    }
+}
+
 double sf_result_margin(const sf_result *r, size_t *which)
 {
     double best = NAN;
@@ -57,7 +73,7 @@ double sf_result_margin(const sf_result *r, size_t *which)
     for (size_t i = 0; r && i < sf_result_nrows(r); i++) {
         const sf_row *row = sf_result_row(r, i);
         double m = sf_row_margin(row);
-        if (row->test == SF_ROW_TRUE || row->test == 0)
+        if (row->test == SF_ROW_TRUE || row->test == 0 || sf_row_margin_fixed(row))
             continue;
         /* a NaN margin (NaN measured) is the worst there is */
         if (isnan(m))
