@@ -34,9 +34,9 @@ static void usage(FILE *f)
           "                  sweep` at this scene (its row I at a swept value: the same\n"
           "                  stream sf_mc_seed(seed, I), the same field bits), instead\n"
           "                  of the field the generator seeded with `seed` draws\n"
-          "A run without --out keeps no history. A quantity that the run cannot form\n"
-          "(no complete cycle after t_skip: raise T) is nan in the summary, and said\n"
-          "on stderr.\n",
+          "A run without --out keeps no history. T must be above t_skip (exit 2\n"
+          "otherwise, as for sweep). A quantity that the run cannot form (no complete\n"
+          "cycle after t_skip: raise T) is nan in the summary, and said on stderr.\n",
           f);
 }
 
@@ -94,6 +94,11 @@ int sf_cmd_run(int argc, char **argv)
     sf_scene s;
     if (sf_cli_load_scene("run", path, &s))
         return SF_EXIT_USAGE;
+    if (!(s.T > s.t_skip)) {   /* the same refusal as slipfield sweep's */
+        fprintf(stderr, "slipfield run: %s: T = %g s is not above t_skip = %g s: no cycle to measure (raise T or lower "
+                        "t_skip)\n", path, s.T, s.t_skip);
+        return SF_EXIT_USAGE;
+    }
     if (out_path && !s.history) {
         fprintf(stderr, "slipfield run: %s: the scene sets history = false; drop --out or the key\n", path);
         return SF_EXIT_USAGE;

@@ -17,6 +17,8 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
+#include <time.h>
 #include <unistd.h>
 
 static void usage(FILE *f)
@@ -134,7 +136,8 @@ static void usage(FILE *f)
           "                    (and remove the temporary files a killed run left)\n"
           "The swept value overrides the scene's value of NAME.\n"
           "Realisation i of every value uses its own stream (seed, i): bit-identical\n"
-          "output for any thread count. Progress on stderr when it is a terminal.\n",
+          "output for any thread count. Progress on stderr: a live count on a\n"
+          "terminal; off one (a CI log), one line per point: its realisations and time.\n",
           f);
 }
 
@@ -157,6 +160,95 @@ static int parse_values(const char *v, double *out, size_t cap, size_t *n)
 /* Remove the temporary files that a killed run (SIGKILL: no clean-up)
  * left beside out: "<out>.tmp<pid>" and "<out>.ckpt<k>.tmp", of processes
  * that no longer run. */
+/* --param: l_over_R or a numeric scene key */
+static int param_ok(const sf_key *k)
+{
+    return k->type == SF_KEY_DOUBLE || k->type == SF_KEY_SIZE || k->type == SF_KEY_ULONG;
+}
+
+/* Edit distance of two short names (capped at 3: only "close" matters). */
+static size_t name_distance(const char *a, const char *b)
+{
+    size_t la = strlen(a), lb = strlen(b), d[64];
+    if (la >= 63 || lb >= 63)
+        return 3;
+    for (size_t j = 0; j <= lb; j++)
+        d[j] = j;
+    for (size_t i = 1; i <= la; i++) {
+        size_t diag = d[0];
+        d[0] = i;
+        for (size_t j = 1; j <= lb; j++) {
+            size_t up = d[j];
+            size_t best = diag + (a[i - 1] != b[j - 1]);
+            if (up + 1 < best)
+                best = up + 1;
+            if (d[j - 1] + 1 < best)
+                best = d[j - 1] + 1;
+            d[j] = best;
+            diag = up;
+        }
+    }
+    return d[lb] < 3 ? d[lb] : 3;
+}
+
+/* 0 when NAME is a parameter --param takes; else says why, with the
+ * nearest names (the same letters in another case first) and the list. */
+static int check_param(const char *name)
+{
+    sf_scene d;
+    sf_scene_default(&d);
+    sf_keytab t = sf_scene_keytab(&d);
+    if (!strcmp(name, "l_over_R"))
+        return 0;
+    const char *near = NULL;
+    size_t best = 3;
+    for (size_t k = 0; k < t.n; k++) {
+        if (!strcmp(t.keys[k].name, name)) {
+            if (param_ok(&t.keys[k]))
+                return 0;
+            fprintf(stderr, "slipfield sweep: --param %s: not a numeric scene key (it cannot be swept)\n", name);
+            return -1;
+        }
+    }
+    for (size_t k = 0; k <= t.n; k++) {
+        const char *kn = k < t.n ? t.keys[k].name : "l_over_R";
+        if (k < t.n && !param_ok(&t.keys[k]))
+            continue;
+        size_t dist = strcasecmp(kn, name) ? name_distance(kn, name) : 0;
+        if (dist < best && 2 * dist < strlen(name)) {   /* close, for a name this long */
+            best = dist;
+            near = kn;
+        }
+    }
+    fprintf(stderr, "slipfield sweep: --param: unknown parameter '%s'", name);
+    if (near)
+        fprintf(stderr, "; did you mean %s?", near);
+    fputs("\nvalid parameters: l_over_R", stderr);
+    size_t col = 28;
+    for (size_t k = 0; k < t.n; k++) {
+        if (!param_ok(&t.keys[k]))
+            continue;
+        size_t w = strlen(t.keys[k].name) + 2;
+        if (col + w > 79) {
+            fputs(",\n  ", stderr);
+            col = 2;
+        } else {
+            fputs(", ", stderr);
+        }
+        fputs(t.keys[k].name, stderr);
+        col += w;
+    }
+    fputc('\n', stderr);
+    return -1;
+}
+
+static double now_s(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
 static void remove_stale_tmp(const char *out)
 {
     char dir[1100];
@@ -196,7 +288,7 @@ int sf_cmd_sweep(int argc, char **argv)
         { "--control-variate", SF_OPT_FLAG, &cv, 0, 0, NULL },
         { "--param", SF_OPT_STRING, &param, 0, 0, NULL },
         { "--values", SF_OPT_STRING, &values, 0, 0, NULL },
-        { "--realisations", SF_OPT_SIZE, &n, 1, 10000000, NULL },
+        { "--realisations", SF_OPT_SIZE, &n, 1, SF_MAX_SAMPLES, NULL },
         { "--out", SF_OPT_STRING, &out_path, 0, 0, NULL },
         { "--summary", SF_OPT_STRING, &sum_path, 0, 0, NULL },
         { "--summary-format", SF_OPT_STRING, &sum_format, 0, 0, NULL },
@@ -204,7 +296,7 @@ int sf_cmd_sweep(int argc, char **argv)
         { "--threads", SF_OPT_SIZE, &threads, 1, 1024, NULL },
         { "--resume", SF_OPT_FLAG, &resume, 0, 0, NULL },
         { "--target-se", SF_OPT_DOUBLE, &target_se, 0, 0, NULL },
-        { "--pilot", SF_OPT_SIZE, &pilot, 2, 10000000, NULL },
+        { "--pilot", SF_OPT_SIZE, &pilot, 2, SF_MAX_SAMPLES, NULL },
         { "--estimator", SF_OPT_STRING, &estimator, 0, 0, NULL },
     };
     int rc = sf_cli_parse("sweep", argc, argv, opts, sizeof opts / sizeof opts[0], &path, usage);
@@ -216,6 +308,8 @@ int sf_cmd_sweep(int argc, char **argv)
         fprintf(stderr, "slipfield sweep: --param, --values and --out are required\n");
         return SF_EXIT_USAGE;
     }
+    if (check_param(param))
+        return SF_EXIT_USAGE;
     if (parse_values(values, v, SF_LIST_MAX, &nv)) {
         fprintf(stderr, "slipfield sweep: --values: expected up to %d comma-separated finite numbers, got '%s'\n",
                 SF_LIST_MAX, values);
@@ -325,7 +419,10 @@ int sf_cmd_sweep(int argc, char **argv)
     if (diag_path)
         sf_sweep_diagnostics_header(diag.f);
     int ok = 1, fail = SF_SUCCESS;
+    /* off a terminal (a CI log: no live count) one line per point, on stderr */
+    int lines = writer && !isatty(2);
     for (size_t k = 0; k < nv && ok; k++) {
+        double t0 = now_s();
         sf_scene s = s0;
         sf_sweep_set(&s, param, v[k], err, sizeof err);
         sf_cof_plan *cp = NULL;   /* the point's COF plan, only to warn of a truncated embedding */
@@ -388,6 +485,13 @@ int sf_cmd_sweep(int argc, char **argv)
             if ((sum_path || diag_path) && sf_unum_sweep(&s, &p, (int)threads, err, sizeof err))
                 fprintf(stderr, "slipfield sweep: %s = %g: warning: no numerical error of the means (its companion "
                                 "failed: %s)\n", param, v[k], err);
+            if (lines) {
+                fprintf(stderr, "slipfield sweep: point %zu/%zu (%s = %g): %zu realisations in %.3g s", k + 1, nv,
+                        param, v[k], p.n, now_s() - t0);
+                if (p.from_checkpoint)
+                    fprintf(stderr, " (%zu from the checkpoint)", p.from_checkpoint);
+                fputc('\n', stderr);
+            }
             sf_sweep_write_rows(out.f, param, v[k], &p);   /* with the companions u_num_mean is made of */
             if (sum_path && sum_long)
                 sf_sweep_summary_long_rows(sum.f, param, v[k], &p);

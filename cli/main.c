@@ -50,7 +50,9 @@ static void usage(FILE *f)
                "Options may follow the positional arguments; '--opt=value' is '--opt value';\n"
                "'--' ends the options.\n"
                "Scenes are 'key = value' files in SI units; defaults are the paper's Table 1.\n"
-               "Exit status: 0 ok, 1 a check failed, 2 bad input or usage, 3 internal error.\n"
+               "Exit status: 0 ok, 1 a check failed, 2 bad input or usage, 3 internal error,\n"
+               "130 interrupted by SIGINT (Ctrl-C; SIGTERM 143, SIGHUP 129: 128 + the signal),\n"
+               "its partial outputs removed (an interrupted sweep: rerun with --resume).\n"
                "Environment: SLIPFIELD_FFTW_WISDOM=FILE keeps FFTW wisdom for scenes with\n"
                "fftw_planner = measure (imported before a command, saved after it).\n");
 }

@@ -24,6 +24,9 @@ expect() {
     if [ $rc -eq "$want" ] && { [ -z "$frag" ] || grep -qF -- "$frag" "$tmp/err"; }; then ok
     else bad "'$*': exit $rc (want $want), stderr: $(head -c 300 "$tmp/err") (want '$frag')"; fi
 }
+# err_has / err_lacks FRAGMENT WHAT: the last expect's stderr
+err_has()   { grep -qF -- "$1" "$tmp/err" && ok || bad "$2: no '$1' in: $(head -c 600 "$tmp/err")"; }
+err_lacks() { grep -qF -- "$1" "$tmp/err" && bad "$2: '$1' in: $(head -c 600 "$tmp/err")" || ok; }
 cd "$tmp" || exit 1
 printf 'cof = uniform\nntheta = 5\nnpsi = 4\n' > s.scene   # 20 surface rows
 cp s.scene s.orig
@@ -107,10 +110,18 @@ expect 2 "over the size cap" "$bin" field big.scene --out big.tsv
 printf 'cof = field\nstrip_halfwidth = 0.0001\ny0 = 0.05\nT = 15\nt_skip = 0\ncells = 8\n' > strip.scene
 expect 2 "left the belt strip" "$bin" run strip.scene --out strip.tsv --summary strip.txt
 [ ! -e strip.tsv ] && [ ! -e strip.txt ] && ok || bad "the failed run left its outputs"
+# the scene's samples obeys the cap of --realisations: refused at once, file:line
+printf 'cof = uniform\nsamples = 1e9\n' > many.scene
+expect 2 "many.scene:2: key 'samples': must be >= 1 and <= 1e+07" timeout 10 "$bin" sweep many.scene --param T --values 20 --out many.tsv
+expect 2 "--realisations takes a whole number from 1 to 10000000" "$bin" sweep many.scene --param T --values 20 --realisations 1e9 --out many.tsv
 printf 'cof = uniform\nT = 30\nt_skip = 10\n' > sw.scene
 expect 2 "not above t_skip" "$bin" sweep sw.scene --param T --values 40,5 --realisations 2 --out sw.tsv
 [ ! -e sw.tsv ] && ok || bad "the refused sweep left sw.tsv"
 expect 2 "in [t_skip, T] (pv_x = nan): raise T" "$bin" sweep sw.scene --param T --values 12 --realisations 2 --out sw.tsv
+# --param: a wrong name is named, with the nearest valid one and the list
+expect 2 "unknown parameter 'l_over_r'; did you mean l_over_R?" "$bin" sweep sw.scene --param l_over_r --values 1 --realisations 2 --out sw.tsv
+err_has "valid parameters: l_over_R, m, k, v_b, R, l, mu_mean" "--param: the valid names"
+expect 2 "not a numeric scene key" "$bin" sweep sw.scene --param cof --values 1 --realisations 2 --out sw.tsv
 # two stages: bad targets and pilots are refused before any work
 for a in "--target-se 0" "--target-se -0.1" "--target-se nan" "--target-se x"; do
     expect 2 "--target-se" "$bin" sweep sw.scene --param T --values 20 --realisations 5 $a --out sw.tsv
@@ -139,6 +150,18 @@ expect 0 "" "$bin" sweep var.scene --param T --values 14 --realisations 6 --esti
 expect 0 "" "$bin" sweep var.scene --param T --values 14 --realisations 6 --estimator auto --pilot 3 --out au.tsv --summary au.sum
 [ "$(awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == "estimator") c = i } NR == 2 { print $c }' au.sum)" = "antithetic" ] \
     && ok || bad "auto sweep on one variable: the estimator column: $(cat au.sum)"
+# off a terminal: one line per point on stderr, and stdout is the table alone
+expect 0 "slipfield sweep: point 1/2 (T = 14): 6 realisations in" "$bin" sweep var.scene --param T --values 14,15 --realisations 6 --out pt.tsv
+err_has "slipfield sweep: point 2/2 (T = 15): 6 realisations in" "sweep: the second point's line"
+[ "$(grep -c '^slipfield sweep: point [0-9]*/2 ' "$tmp/err")" -eq 2 ] && [ ! -s "$tmp/out" ] && ok \
+    || bad "sweep off a terminal: not one line per point, or stdout not empty: $(cat "$tmp/err")"
+expect 0 "point 2/2" "$bin" sweep var.scene --param T --values 14,15 --realisations 6 --out -
+cmp -s "$tmp/out" pt.tsv && ok || bad "sweep --out -: stdout is not the table alone"
+if script --version 2>/dev/null | grep -q util-linux; then   # on a terminal: the live count, no point lines
+    script -qec "'$bin' sweep var.scene --param T --values 14,15 --realisations 6 --out pt.tsv" /dev/null > "$tmp/err" 2>&1 < /dev/null
+    err_has "T = 15: 6/6 realisations" "sweep on a terminal: live count"
+    err_lacks "point 1/2" "sweep on a terminal: a point line"
+fi
 # an estimator at a target standard error: met (stop target), or held at the cap (said)
 expect 0 "" "$bin" sweep var.scene --param T --values 14 --realisations 40 --estimator antithetic --pilot 3 --target-se 0.05 --out at.tsv --summary at.sum
 [ "$(awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == "stop") c = i } NR == 2 { print $c }' at.sum)" = "target" ] \
@@ -202,9 +225,23 @@ expect 2 "--summary-format takes wide or long (got 'tall')" "$bin" sweep sum.sce
 expect 2 "--summary-format needs --summary" "$bin" sweep sum.scene --param l_over_R --values 2 --realisations 8 \
     --out x.tsv --summary-format long
 # run: no QoI is said; no --out nor --summary prints the summary
-printf 'cof = uniform\nT = 5\n' > t5.scene
-expect 0 "warning: no quantity of interest" "$bin" run t5.scene
+printf 'cof = uniform\nT = 12\n' > t12.scene
+expect 0 "warning: no quantity of interest" "$bin" run t12.scene
 grep -q '^pv_x = nan' "$tmp/out" && ok || bad "run without --out/--summary: no summary on stdout"
+# run refuses T <= t_skip as sweep does (t_skip defaults to 10 s), leaving nothing
+printf 'cof = uniform\nT = 5\n' > t5.scene
+expect 2 "t5.scene: T = 5 s is not above t_skip = 10 s" "$bin" run t5.scene --out t5.tsv --summary t5.sum
+[ ! -e t5.tsv ] && [ ! -e t5.sum ] && [ ! -s "$tmp/out" ] && ok || bad "run at T <= t_skip left output"
+printf 'cof = uniform\nT = 10\n' > t10.scene
+expect 2 "T = 10 s is not above t_skip = 10 s" "$bin" run t10.scene --explain
+# run --explain: a CV beyond the plan's calibrated range (0.05-1) is flagged, Table 1's is not
+printf 'cof = field\nmu_mean = 0.5\nmu_std = 2\nT = 20\n' > cv4.scene
+expect 0 "" "$bin" run cv4.scene --explain
+grep -q "^plan warning: CV = mu_std / mu_mean = 4 is beyond the range the plan's error models were calibrated on (CV 0.05-1" \
+    "$tmp/out" && ok || bad "run --explain at CV 4: no calibration warning: $(grep -i cv "$tmp/out")"
+printf 'cof = field\nT = 20\n' > cv02.scene
+expect 0 "" "$bin" run cv02.scene --explain
+grep -q "beyond the range" "$tmp/out" && bad "run --explain at CV 0.2 warns of its CV" || ok
 # run and sweep: an embedding at its padding cap is said (usable: exit 0)
 printf 'l = 50\npad_cap = 1\nT = 20\n' > trunc.scene
 expect 0 "warning: the COF field's circulant embedding reached its padding cap" "$bin" run trunc.scene --summary tr.sum
@@ -222,7 +259,7 @@ printf 'T = 30\nt_skip = 10\ncells = 8\nrtol = 1e-6\n' > long.scene
 sweep="$bin sweep long.scene --param l_over_R --values 1 --realisations 5000 --threads 1 --out cut.tsv"
 started() { for _ in $(seq 1 600); do [ -s cut.tsv.ckpt0 ] && return; sleep 0.05; done; }
 $sweep 2> int.err & pid=$!; started; kill -INT $pid; wait $pid; rc=$?
-[ $rc -ne 0 ] && grep -q "interrupted: rerun with --resume" int.err && [ -z "$(ls | grep 'cut\.tsv\.tmp')" ] && [ ! -e cut.tsv ] \
+[ $rc -eq 130 ] && grep -q "interrupted: rerun with --resume" int.err && [ -z "$(ls | grep 'cut\.tsv\.tmp')" ] && [ ! -e cut.tsv ] \
     && ok || bad "SIGINT: exit $rc, '$(cat int.err)', left: $(ls | grep cut)"
 rm -f cut.tsv.ckpt0
 $sweep 2> /dev/null & pid=$!; started; kill -KILL $pid; wait $pid 2> /dev/null
@@ -297,9 +334,6 @@ cmp -s sa1.tsv sa2.tsv && cmp -s se1.tsv se2.tsv && [ "$(wc -l < sa1.tsv)" -eq 1
     && ok || bad "sensitivity: 1 and 2 threads differ, or rows missing ($(wc -l < sa1.tsv), $(wc -l < se1.tsv))"
 
 # ---- sensitivity guards its user: stderr off a terminal ------------------------
-# err_has / err_lacks FRAGMENT WHAT: the last expect's stderr
-err_has()   { grep -qF -- "$1" "$tmp/err" && ok || bad "$2: no '$1' in: $(head -c 600 "$tmp/err")"; }
-err_lacks() { grep -qF -- "$1" "$tmp/err" && bad "$2: '$1' in: $(head -c 600 "$tmp/err")" || ok; }
 # 2 rows: below the threshold, the cost line, the stages, the indices flagged
 expect 0 "warning: 2 rows given, below 64" "$bin" sensitivity sa.scene --rows 2 $narrow --threads 1 --out sg.tsv
 err_has "slipfield sensitivity: 7 blocks x 2 rows = 14 runs at T = 20 s" "cost line"
@@ -339,6 +373,11 @@ expect 2 "no help on 'foo'" "$bin" help foo
 expect 0 "" "$bin" --help
 grep -q -- "--version" "$tmp/out" && ok || bad "--help does not list --version"
 grep -q "^  evaluate " "$tmp/out" && ok || bad "--help does not list evaluate"
+grep -q "^130 interrupted by SIGINT" "$tmp/out" && ok || bad "--help does not list exit status 130"
+expect 0 "" "$bin" help verify
+grep -q "^130 interrupted by SIGINT" "$tmp/out" && ok || bad "help verify does not list exit status 130"
+sh "$top/scripts/man.sh" "$bin" > man.1 && awk '/^\.SH EXIT STATUS/ { on = 1 } /^\.SH ENV/ { on = 0 } on' man.1 | grep -q '^\.B 130' \
+    && ok || bad "the man page's EXIT STATUS does not list 130"
 expect 0 "" "$bin" help scene
 grep -q "^Case-only keys" "$tmp/out" && grep -q "^check " "$tmp/out" && ok || bad "help scene does not mark the case-only keys"
 

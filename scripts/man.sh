@@ -101,6 +101,13 @@ written (with the system's reason, such as a full disk).
 .TP
 .B 3
 Internal error (such as an allocation that failed).
+.TP
+.B 130
+Interrupted by SIGINT (Ctrl-C); SIGTERM gives 143 and SIGHUP 129 (128 + the
+signal number).  The outputs being written are removed; an interrupted
+.B sweep
+keeps its checkpoints: rerun it with
+.BR \-\-resume .
 .SH ENVIRONMENT
 .TP
 .B SLIPFIELD_FFTW_WISDOM

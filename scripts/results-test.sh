@@ -13,7 +13,9 @@
 #     on its count of fields compared, with all its data finite;
 #  7. a stored-data case (cases/plan/cellavg-calibration.md) without its
 #     data, or with a malformed line, ends in ERROR naming the file (and
-#     line); its stored errors doubled, or one of them NaN, fail it.
+#     line); its stored errors doubled, or one of them NaN, fail it;
+#  8. a case with claims of the paper: its claims array and the run's tally
+#     in results.json agree with its claims.tsv (a header line, decimals).
 # A seeded code defect that moves a metric is scripts/drift-test.sh.
 set -u
 bin=${1:-build/slipfield}
@@ -62,6 +64,33 @@ then ok "a sweep case's results.json carries its points' statistics (u_num null:
 else bad "a sweep case's results.json: no valid sweep statistics"; fi
 grep -q '^## Sweep statistics' "$work/s/validation/fig10-convergence/report.md" && ok "its report tabulates them" \
     || bad "its report has no sweep table"
+
+# 8. the paper's claims: a claims array per case and the run's tally in
+# results.json (valid), the same claims in claims.tsv under a header line,
+# numbers in decimal
+"$bin" verify --reports "$work/cl" cases/validation/quick-fig3-fields.md > "$work/cl.log" 2>&1
+if validate "$work/cl/results.json" && $py - "$work/cl/results.json" "$work/cl/validation/quick-fig3-fields/claims.tsv" <<'EOF'
+import csv, json, sys
+d = json.load(open(sys.argv[1]))
+cl = d["cases"][0]["claims"]
+rows = list(csv.reader(open(sys.argv[2]), delimiter="\t", quoting=csv.QUOTE_NONE))
+head = ["status", "measured", "ci_lo", "ci_hi", "alpha", "id", "text", "how", "note", "defs"]
+ok = rows[0] == head and len(rows) == len(cl) + 1 and len(cl) >= 1
+for r, c in zip(rows[1:], cl):
+    ok &= r[0] == c["status"] and r[5] == c["id"] and r[6] == c["text"]
+    for k, name in enumerate(["measured", "ci_lo", "ci_hi", "alpha"], 1):
+        ok &= "0x" not in r[k]
+        v = float(r[k])
+        ok &= (c[name] is None and v != v) or c[name] == v
+t = d["claims"]
+ok &= t["total"] == len(cl) == t["confirmed"] + t["contradicted"] + t["undecided"]
+ok &= t["confirmed"] == sum(c["status"] == "confirmed" for c in cl)
+sys.exit(not ok)
+EOF
+then ok "claims: per case and tallied in results.json (valid), in claims.tsv under a header, in decimal"
+else bad "claims: results.json and claims.tsv disagree, or no header, or not decimal"; cat "$work/cl/validation/quick-fig3-fields/claims.tsv"; fi
+grep -q "The paper's claims in this run (1): \*\*1 confirmed\*\*" "$work/cl/index.md" && ok "the index's tally reads the new claims.tsv" \
+    || bad "the index's tally: $(grep "claims in this run" "$work/cl/index.md")"
 
 "$bin" verify --reports "$work/b" --baseline "$work/a/results.json" $cases > "$work/b.log" 2>&1
 rc=$?

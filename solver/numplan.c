@@ -696,6 +696,12 @@ void sf_plan_explain(const sf_plan *p, const sf_scene *s, FILE *f)
 {
     explain_cof(p, s, f);
     sf_numplan_explain(&p->num, f);
+    double cv = s->mu_std / s->mu_mean;
+    if (p->cof.kind != SF_COF_UNIFORM && cv > SF_PLAN_CV_MAX)
+        fprintf(f, "plan warning: CV = mu_std / mu_mean = %.3g is beyond the range the plan's error models were "
+                   "calibrated on (CV 0.05-%g: numplan.c, cases/plan/design-quick) and the lognormal map's marginals "
+                   "are verified at (up to CV 1: cases/lognormal): the errors predicted above are extrapolations\n",
+                cv, SF_PLAN_CV_MAX);
     fprintf(f, "limit surface: not computed (the stick test needs only its T = 0 section: %s)\n",
             p->stick_test == SF_PLAN_STICK_SECTION ? "the exact section, by bisection" : "its equatorial circle, in closed form");
     fprintf(f, "history: %s\n", p->history ? "streamed to the output file (not kept in memory)"

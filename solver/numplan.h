@@ -102,6 +102,12 @@ double sf_plan_strip_points(const sf_scene *s, double h);
 /* The loosest rtol the plan chooses: above it stick onsets are missed at
  * some fields (numplan.c (5)). */
 #define SF_PLAN_MAX_RTOL 1e-6
+/* The largest CV = mu_std / mu_mean the plan's error models were
+ * calibrated on (the quadrature's CV factor, the time model's and the
+ * cell-average model's designs, err_pred's fit: CV 0.05-1, numplan.c;
+ * cases/plan/design-quick) and the lognormal map's marginals are verified
+ * at (cases/lognormal/marginal-ks-cv10); `run --explain` warns above it. */
+#define SF_PLAN_CV_MAX 1.0
 
 enum { SF_PLAN_CHOSEN = 0, SF_PLAN_SCENE = 1 };   /* where a setting came from */
 

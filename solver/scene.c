@@ -41,7 +41,7 @@ static const sf_key keys[] = {
     { "strip_halfwidth", SF_KEY_DOUBLE, OFF(strip_halfwidth), 0, 0, INF, 0, 0, "0.5", "m", NULL, "lateral excursion |y| the COF strip covers beyond R (0: the spring-excursion bound); a run that leaves it fails" },
     { "cof_generator", SF_KEY_ENUM, OFF(cof_generator), 0, 0, 0, 0, 0, "auto", "", SF_KEY_CHOICES("auto", "circulant", "tiles", "belt_noise"), "belt COF field generator: circulant strip over [0, T], tiles generated on demand in a window that follows the disc, belt_noise (the tiles' window on one white noise fixed in belt coordinates, the same for every l, v_b and COF marginal: a field that moves continuously with the parameters; noise.h), or auto (circulant unless its strip exceeds 2^" SF_STR(SF_COF_AUTO_LOG2) " points; slipfield run --explain says which)" },
     { "cof_model", SF_KEY_ENUM, OFF(cof_model), 0, 0, 0, 0, 0, "auto", "", SF_KEY_CHOICES("auto", "point", "cell_average"), "COF the quadrature sees: point values of the field at the cells, or the cell-averaged field (Cartesian cells much larger than l; cellavg.h), or auto (the plan chooses from l/R: numplan.h; slipfield run --explain says which)" },
-    { "samples", SF_KEY_SIZE, OFF(samples), 0, 1, 1e9, 0, 0, "1000", "1", NULL, "number of samples or realisations" },
+    { "samples", SF_KEY_SIZE, OFF(samples), 0, 1, SF_MAX_SAMPLES, 0, 0, "1000", "1", NULL, "number of samples or realisations" },
     /* contact */
     { "layout", SF_KEY_ENUM, OFF(layout), 0, 0, 0, 0, 0, "polar", "", SF_KEY_CHOICES("polar", "cartesian"), "disc quadrature layout" },
     { "cells", SF_KEY_SIZE, OFF(cells), 0, 0, 1e5, 0, 0, "0", "1", NULL, "quadrature resolution (rings or cells per diameter); 0: the plan chooses from qoi_tol and l/R (numplan.h)" },

@@ -24,6 +24,9 @@ extern "C" {
 
 #define SF_LIST_MAX 64
 #define SF_SCENE_MAX_KEYS 128
+/* The most realisations (or samples) a run takes: the scene key `samples`
+ * and `slipfield sweep --realisations` / --pilot share this cap. */
+#define SF_MAX_SAMPLES 10000000
 
 typedef struct {
     size_t n;

@@ -28,9 +28,15 @@ int sf_sweep_set(sf_scene *s, const char *name, double value, char *err, size_t 
     }
     double cv = s->mu_std / s->mu_mean;
     sf_keytab t = sf_scene_keytab(s);   /* the swept value overrides the scene's */
+    int known = 0;
     for (size_t k = 0; k < t.n; k++)
-        if (!strcmp(t.keys[k].name, name))
+        if (!strcmp(t.keys[k].name, name)) {
             t.set[k] = 0;
+            known = 1;
+        }
+    if (!known)
+        return sf_seterr(err, errlen, SF_EPARSE, "unknown parameter '%.40s' (l_over_R or a numeric scene key: see "
+                         "'slipfield help scene')", name);
     char line[160];
     snprintf(line, sizeof line, "%s = %.17g\n", name, value);
     int rc = sf_scene_parse(s, line, "--param", 1, err, errlen);

@@ -419,6 +419,7 @@ static void sweep_set_edges(void **state)
     assert_close(s.mu_mean, 0.8, 1e-15);
     assert_close(s.mu_std / s.mu_mean, cv, 1e-15);
     assert_int_not_equal(sf_sweep_set(&s, "no_such_key", 1, err, sizeof err), SF_SUCCESS);
+    assert_non_null(strstr(err, "unknown parameter 'no_such_key'"));
     /* the swept value overrides a value the scene file set (not "set twice"),
        value after value */
     sf_scene_default(&s);

@@ -57,6 +57,48 @@ static void results_row_margins(void **state)
     sf_result_free(r);
 }
 
+/* Near the edge: a count at its bound ("13 of 13 >= 13": margin 1 by
+ * construction), a count against 0 and an exact equality say nothing of
+ * how near a case is to failing and are left out of its margin; the same
+ * rows failing, and a real margin, count. */
+static void results_fixed_margins(void **state)
+{
+    (void)state;
+    sf_result *r = sf_result_alloc();
+    sf_check_ge(r, "releases before the circle's (all of them)", 13, 13);   /* 1, cannot move */
+    sf_check_le(r, "realisations excluded", 0, 0);                        /* 0, cannot move */
+    sf_check_abs(r, "bits that differ", 0, 0, 0);                        /* exact equality */
+    sf_check_le(r, "error", 0.5, 1);                                     /* a real margin */
+    assert_true(sf_row_margin_fixed(sf_result_row(r, 0)));
+    assert_true(sf_row_margin_fixed(sf_result_row(r, 1)));
+    assert_true(sf_row_margin_fixed(sf_result_row(r, 2)));
+    assert_false(sf_row_margin_fixed(sf_result_row(r, 3)));
+    assert_close(sf_row_margin(sf_result_row(r, 0)), 1, 0);   /* the row's own margin is unchanged */
+    size_t at;
+    assert_close(sf_result_margin(r, &at), 0.5, 0);
+    assert_int_equal(at, 3);
+    /* a count above its bound, or a non-whole value at it, is a margin */
+    sf_check_ge(r, "instants exercised", 21, 20);
+    sf_check_le(r, "residual", 0.25, 0.25);
+    assert_false(sf_row_margin_fixed(sf_result_row(r, 4)));
+    assert_false(sf_row_margin_fixed(sf_result_row(r, 5)));
+    assert_close(sf_result_margin(r, &at), 1, 0);
+    assert_int_equal(at, 5);
+    sf_result_free(r);
+    /* only such rows: no margin, not near the edge */
+    r = sf_result_alloc();
+    sf_check_ge(r, "realisations with a PV_F formed", 1000, 1000);
+    assert_true(isnan(sf_result_margin(r, NULL)));
+    /* failing, they count */
+    sf_check_ge(r, "releases (all of them)", 12, 13);
+    sf_check_abs(r, "bits that differ", 1, 0, 0);
+    assert_false(sf_row_margin_fixed(sf_result_row(r, 1)));
+    assert_false(sf_row_margin_fixed(sf_result_row(r, 2)));
+    assert_true(isinf(sf_result_margin(r, &at)));
+    assert_int_equal(at, 2);
+    sf_result_free(r);
+}
+
 static void results_case_json(void **state)
 {
     (void)state;
@@ -197,14 +239,82 @@ static void results_render_plots(void **state)
     sf_result_free(r);
 }
 
+/* A log x axis spans the data, not whole decades: l/R 0.25 and 1 once
+ * drew from 0.1 (validation/quick-claims-lr).  gnuplot runs the plot's
+ * own script and prints the x range it drew. */
+static void results_plot_log_range(void **state)
+{
+    (void)state;
+    char dir[] = "/tmp/sf-plot-XXXXXX", path[600], why[200], cmd[700];
+    assert_non_null(mkdtemp(dir));
+    const double x[] = { 0.25, 1 }, y[] = { 1.1, 1.3 }, lo[] = { 1.05, 1.2 }, hi[] = { 1.15, 1.4 };
+    sf_result *r = sf_result_alloc();
+    sf_plot *p = sf_result_plot(r, "lr", "lr", "l/R [-]", "ratio [-]");
+    sf_plot_log(p, 1, 0);
+    sf_plot_series(p, "mean", SF_STYLE_LINES, 2, x, y);
+    sf_plot_errorbars(p, "interval", 2, x, y, lo, hi);
+    snprintf(path, sizeof path, "%s/script.gp", dir);
+    FILE *g = fopen(path, "w");
+    assert_non_null(g);
+    char png[600];
+    snprintf(png, sizeof png, "%s/lr.png", dir);
+    sf_plot_write_script(g, p, png, why, sizeof why);
+    fprintf(g, "set print '-'\nprint sprintf('%%.6g %%.6g', GPVAL_X_MIN, GPVAL_X_MAX)\n");
+    fclose(g);
+    assert_string_equal(why, "");
+    snprintf(cmd, sizeof cmd, "gnuplot '%s' 2>/dev/null", path);
+    FILE *o = popen(cmd, "r");
+    assert_non_null(o);
+    double xmin = NAN, xmax = NAN;
+    assert_int_equal(fscanf(o, "%lf %lf", &xmin, &xmax), 2);
+    assert_int_equal(pclose(o), 0);
+    /* within 10% of the data's ends (log scale: 0.23 .. 1.06), not 0.1 */
+    assert_true(xmin > 0.2 && xmin < 0.25);
+    assert_true(xmax > 1 && xmax < 1.1);
+    unlink(png);
+    unlink(path);
+    rmdir(dir);
+    sf_result_free(r);
+}
+
+/* Row labels are kept whole: the longest in the catalogue (montecarlo/
+ * mlmc-boxes-levels, once cut at 159 characters after "(bits; the") and
+ * one as long as SF_LABEL_LEN allows, also through a p-value's label. */
+static void results_long_labels(void **state)
+{
+    (void)state;
+    static const char longest[] = "level 1's first fine and coarse values and level 0's first pair mean (3 QoIs each) "
+                                  "that differ from this check's runs on the fields of their streams (bits; the same "
+                                  "operations)";
+    char most[SF_LABEL_LEN], test[SF_LABEL_LEN], want[SF_LABEL_LEN + 32];
+    memset(most, 'q', sizeof most - 1);
+    most[sizeof most - 1] = '\0';
+    memset(test, 't', 300);
+    test[300] = '\0';
+    sf_result *r = sf_result_alloc();
+    sf_check_le(r, longest, 0, 0);
+    sf_check_abs(r, most, 1, 1, 0);
+    sf_check_pvalue(r, test, 0.5, 0.01, 1000);
+    sf_result_sample(r, longest, 10, 0);
+    assert_string_equal(sf_result_row(r, 0)->quantity, longest);
+    assert_string_equal(sf_result_row(r, 1)->quantity, most);
+    snprintf(want, sizeof want, "%s (n = 1000): p-value", test);
+    assert_string_equal(sf_result_row(r, 2)->quantity, want);
+    assert_string_equal(sf_result_sample_at(r, 0)->what, longest);
+    sf_result_free(r);
+}
+
 int main(void)
 {
     sf_init();
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(results_row_margins),
+        cmocka_unit_test(results_fixed_margins),
         cmocka_unit_test(results_case_json),
         cmocka_unit_test(drift_rules),
         cmocka_unit_test(results_render_plots),
+        cmocka_unit_test(results_long_labels),
+        cmocka_unit_test(results_plot_log_range),
     };
     return cmocka_run_group_tests_name("results", tests, NULL, NULL);
 }

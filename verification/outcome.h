@@ -15,7 +15,7 @@ typedef struct sf_outcome {
     int tier, vv;
     int verdict;
     double seconds;
-    char key[320];       /* one line: the quantity, measured value, criterion */
+    char key[768];       /* one line: the quantity (a whole label), measured value, criterion */
     /* results.json (results.h) */
     unsigned long seed;  /* the seed the case ran with */
     char check[64];

@@ -80,6 +80,11 @@ static void tsv_field(FILE *f, const char *s)
         fputc(*s == '\t' || *s == '\n' ? ' ' : *s, f);
 }
 
+/* claims.tsv: a header line, then one claim a line (status a word, the
+ * numbers in decimal, nan where there is none) */
+static const char tsv_head[] = "status\tmeasured\tci_lo\tci_hi\talpha\tid\ttext\thow\tnote\tdefs\n";
+static const char *const status_word[3] = { "confirmed", "contradicted", "undecided" };
+
 int sf_paper_write_tsv(const char *dir, const sf_result *r)
 {
     size_t n = sf_result_nclaims(r);
@@ -90,10 +95,12 @@ int sf_paper_write_tsv(const char *dir, const sf_result *r)
     FILE *f = fopen(path, "w");
     if (!f)
         return -1;
+    fputs(tsv_head, f);
     for (size_t i = 0; i < n; i++) {
         const sf_claim_row *c = sf_result_claim(r, i);
-        /* %a: the values round-trip exactly */
-        fprintf(f, "%d\t%a\t%a\t%a\t%a\t", c->status, c->measured, c->ci_lo, c->ci_hi, c->alpha);
+        /* %.17g: decimal, and the values read back to the same bits */
+        fprintf(f, "%s\t%.17g\t%.17g\t%.17g\t%.17g\t", status_word[c->status < 0 || c->status > 2 ? 2 : c->status],
+                c->measured, c->ci_lo, c->ci_hi, c->alpha);
         const char *fl[5] = { c->id, c->text, c->how, c->note, c->defs };
         for (int k = 0; k < 5; k++) {
             tsv_field(f, fl[k]);
@@ -128,7 +135,7 @@ static sf_claim_row *read_tsv(const char *root, const char *id, size_t *n)
                 *t++ = '\0';
             p = t;
         }
-        if (k < 10)
+        if (k < 10 || !strcmp(fld[0], "status"))   /* short, or the header */
             continue;
         sf_claim_row *q = realloc(v, (*n + 1) * sizeof *v);
         if (!q)
@@ -136,7 +143,10 @@ static sf_claim_row *read_tsv(const char *root, const char *id, size_t *n)
         v = q;
         sf_claim_row *c = &v[(*n)++];
         memset(c, 0, sizeof *c);
-        c->status = atoi(fld[0]);
+        c->status = SF_CLAIM_UNDECIDED;
+        for (int w = 0; w < 3; w++)
+            if (!strcmp(fld[0], status_word[w]))
+                c->status = w;
         c->measured = strtod(fld[1], NULL);
         c->ci_lo = strtod(fld[2], NULL);
         c->ci_hi = strtod(fld[3], NULL);

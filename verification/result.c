@@ -170,7 +170,7 @@ int sf_check_ge(sf_result *r, const char *q, double m, double bound)
 
 int sf_check_pvalue(sf_result *r, const char *test, double p, double alpha, size_t n)
 {
-    char q[160];
+    char q[SF_LABEL_LEN];
     snprintf(q, sizeof q, "%s (n = %zu): p-value", test, n);
     sf_row *row = add_row(r, q, p);
     snprintf(row->criterion, sizeof row->criterion, "p >= alpha = %.3g", alpha);
@@ -451,7 +451,7 @@ static int finite_for(const sf_plot *p, double x, double y)
  * as points and error bars (a line through one point draws nothing).
  * `why` gets a reason when the plot would be empty, or a series would
  * draw nothing: a check that plots nothing shows no evidence. */
-static void write_plot(FILE *g, const sf_plot *p, const char *path, char *why, size_t whylen)
+void sf_plot_write_script(FILE *g, const sf_plot *p, const char *path, char *why, size_t whylen)
 {
     why[0] = '\0';
     fprintf(g, "reset session\n%s", sf_plot_style);
@@ -494,6 +494,15 @@ static void write_plot(FILE *g, const sf_plot *p, const char *path, char *why, s
             fprintf(g, "set xrange [%.10g:%.10g]\n", mid / 3, mid * 3);
         else
             fprintf(g, "set xrange [%.10g:%.10g]\n", mid - h, mid + h);
+    }
+    /* a log x axis: gnuplot's autoscale widens it to whole decades (data at
+     * l/R 0.25 and 1 drawn from 0.1); the data's own range instead, 4% of
+     * it beyond each end, its ends labelled when it spans under 2 decades */
+    if (p->logx && !one_x && isfinite(xlo)) {
+        double m = pow(xhi / xlo, 0.04);
+        fprintf(g, "set xrange [%.10g:%.10g]\n", xlo / m, xhi * m);
+        if (xhi / xlo < 100)
+            fprintf(g, "set format x '%%g'\nset xtics add ('%g' %.10g, '%g' %.10g)\n", xlo, xlo, xhi, xhi);
     }
     /* error bars at the first and last x, or at the top, would sit on the
      * frame, half drawn: a margin of 3% of the axes around the data */
@@ -675,7 +684,7 @@ int sf_result_render_plots(sf_result *r, const char *dir, char *err, size_t errl
     for (size_t i = 0; i < r->nplots; i++) {
         snprintf(path, sizeof path, "%s/%s.png.tmp", dir, r->plots[i]->stem);
         fprintf(g, "print \"@sf-plot %zu\"\n", i);   /* print writes to stderr */
-        write_plot(g, r->plots[i], path, msg[i], sizeof msg[i]);
+        sf_plot_write_script(g, r->plots[i], path, msg[i], sizeof msg[i]);
     }
     fprintf(g, "unset output\nexit\n");
     fclose(g);

@@ -11,12 +11,17 @@
 #define SF_RESULT_H
 
 #include <stddef.h>
+#include <stdio.h>
 
 typedef struct sf_result sf_result;
 typedef struct sf_plot sf_plot;
 
+/* The longest row label (quantity) or sample label kept whole: a check's
+ * own label buffers are this long too, so no label is cut. */
+#define SF_LABEL_LEN 512
+
 typedef struct {
-    char quantity[160];
+    char quantity[SF_LABEL_LEN];
     double measured, expected;  /* expected may be NAN (no single value) */
     char criterion[96];         /* e.g. "|diff| <= 1e-13", "p >= 1e-3" */
     double ratio;               /* how much of the tolerance is used: > 1 fails */
@@ -98,7 +103,7 @@ const char *sf_claim_status_name(int status);
  * the QoI's definition cannot measure).  results.json lists them per case
  * ("samples"), so that no excluded realisation goes unsaid. */
 typedef struct {
-    char what[160];
+    char what[SF_LABEL_LEN];
     size_t n_used, n_excluded;
 } sf_sample_row;
 void sf_result_sample(sf_result *r, const char *what, size_t n_used, size_t n_excluded);
@@ -148,6 +153,10 @@ void sf_plot_hline(sf_plot *p, const char *label, double y);
 /* Points y with error bars from lo to hi (a confidence interval). */
 void sf_plot_errorbars(sf_plot *p, const char *label, size_t n, const double *x, const double *y,
                        const double *lo, const double *hi);
+/* The gnuplot commands that draw p into the PNG at path (sf_result_render_plots
+ * feeds them to gnuplot; a test may run them itself).  why gets the reason
+ * when the plot would be empty or a series draws nothing. */
+void sf_plot_write_script(FILE *g, const sf_plot *p, const char *path, char *why, size_t whylen);
 
 size_t sf_result_nplots(const sf_result *r);
 sf_plot *sf_result_get_plot(const sf_result *r, size_t i);

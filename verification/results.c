@@ -50,6 +50,22 @@ double sf_row_margin(const sf_row *row)
     }
 }
 
+static int whole(double x) { return isfinite(x) && fabs(x) < 9007199254740992.0 && floor(x) == x; }
+
+int sf_row_margin_fixed(const sf_row *row)
+{
+    if (!row->pass)
+        return 0;
+    switch (row->test) {
+    case SF_ROW_ABS: case SF_ROW_REL:   /* an exact equality: 0 or a failure */
+        return row->limit == 0;
+    case SF_ROW_LE: case SF_ROW_GE:     /* a count at its bound: 1 (or 0 against 0) or a failure */
+        return whole(row->measured) && whole(row->limit) && row->measured == row->limit;
+    default:
+        return 0;
+    }
+}
+
 double sf_result_margin(const sf_result *r, size_t *which)
 {
     double best = NAN;
@@ -57,7 +73,7 @@ double sf_result_margin(const sf_result *r, size_t *which)
     for (size_t i = 0; r && i < sf_result_nrows(r); i++) {
         const sf_row *row = sf_result_row(r, i);
         double m = sf_row_margin(row);
-        if (row->test == SF_ROW_TRUE || row->test == 0)
+        if (row->test == SF_ROW_TRUE || row->test == 0 || sf_row_margin_fixed(row))
             continue;
         /* a NaN margin (NaN measured) is the worst there is */
         if (isnan(m))
@@ -188,6 +204,32 @@ static json_t *sweep_json(const sf_sweep_row *x)
     return o;
 }
 
+/* A claim's status in results.json and claims.tsv */
+static const char *claim_word(int status)
+{
+    return status == SF_CLAIM_CONFIRMED ? "confirmed" : status == SF_CLAIM_CONTRADICTED ? "contradicted" : "undecided";
+}
+
+/* One claim of the paper and our verdict on it (result.h: sf_claim_row). */
+static json_t *claim_json(const sf_claim_row *c)
+{
+    json_t *o = json_object(), *nf = json_object();
+    json_object_set_new(o, "id", jstr(c->id));
+    json_object_set_new(o, "text", jstr(c->text));
+    json_object_set_new(o, "status", json_string(claim_word(c->status)));
+    set_num(o, "measured", c->measured, nf);
+    set_num(o, "ci_lo", c->ci_lo, nf);
+    set_num(o, "ci_hi", c->ci_hi, nf);
+    set_num(o, "alpha", c->alpha, nf);
+    json_object_set_new(o, "how", jstr(c->how));
+    json_object_set_new(o, "note", jstr(c->note));
+    if (json_object_size(nf))
+        json_object_set_new(o, "nonfinite", nf);
+    else
+        json_decref(nf);
+    return o;
+}
+
 static const char *vv_key(int vv)
 {
     return vv == 0 ? "code" : vv == 1 ? "solution" : "validation";
@@ -252,6 +294,12 @@ static json_t *case_json(const sf_outcome *o, const sf_result *r)
         }
         json_object_set_new(j, "samples", sm);
     }
+    if (r && sf_result_nclaims(r)) {
+        json_t *cl = json_array();
+        for (size_t i = 0; i < sf_result_nclaims(r); i++)
+            json_array_append_new(cl, claim_json(sf_result_claim(r, i)));
+        json_object_set_new(j, "claims", cl);
+    }
     if (r && sf_result_nsweep(r)) {
         json_t *sw = json_array();
         for (size_t i = 0; i < sf_result_nsweep(r); i++)
@@ -311,6 +359,20 @@ int sf_results_write(const sf_run_meta *meta, sf_outcome *o, size_t n,
         ne += o[i].verdict == SF_VERDICT_ERROR;
         nedge += o[i].near_edge != 0;
     }
+    /* the claims' tally over the cases (each case's "claims" array) */
+    size_t ncl[3] = { 0, 0, 0 };
+    for (size_t i = 0; i < json_array_size(cases); i++) {
+        json_t *cl = json_object_get(json_array_get(cases, i), "claims");
+        for (size_t k = 0; k < json_array_size(cl); k++) {
+            const char *w = json_string_value(json_object_get(json_array_get(cl, k), "status"));
+            ncl[w && !strcmp(w, "confirmed") ? 0 : w && !strcmp(w, "contradicted") ? 1 : 2]++;
+        }
+    }
+    json_t *tally = json_object();
+    json_object_set_new(tally, "total", json_integer((json_int_t)(ncl[0] + ncl[1] + ncl[2])));
+    json_object_set_new(tally, "confirmed", json_integer((json_int_t)ncl[0]));
+    json_object_set_new(tally, "contradicted", json_integer((json_int_t)ncl[1]));
+    json_object_set_new(tally, "undecided", json_integer((json_int_t)ncl[2]));
     json_t *s = json_object();
     json_object_set_new(s, "cases", json_integer((json_int_t)n));
     json_object_set_new(s, "passed", json_integer((json_int_t)np));
@@ -332,6 +394,7 @@ int sf_results_write(const sf_run_meta *meta, sf_outcome *o, size_t n,
     json_object_set_new(j, "gsl", json_string(GSL_VERSION));
     json_object_set_new(j, "fftw", jstr(fftw_version));
     json_object_set_new(j, "summary", s);
+    json_object_set_new(j, "claims", tally);
     json_object_set_new(j, "cases", cases);
     char path[1100];
     snprintf(path, sizeof path, "%s/results.json", meta->root);

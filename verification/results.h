@@ -19,7 +19,8 @@
  * far side of zero) or alpha over p for a statistical row.  It is >= 0,
  * and above 1 exactly when the row fails.  A boolean row has none.  The
  * case's margin is its tightest row (the largest margin; a NaN counts as
- * +inf); a case that passes with a margin >= SF_NEAR_EDGE is "near the
+ * +inf; rows whose margin cannot move are left out: sf_row_margin_fixed);
+ * a case that passes with a margin >= SF_NEAR_EDGE is "near the
  * edge" (not a failure).
  */
 #ifndef SF_RESULTS_H
@@ -39,8 +40,16 @@
  * tolerance). */
 double sf_row_margin(const sf_row *row);
 
-/* The case's tightest margin (largest row margin; NAN when no row has
- * one); *which (may be NULL) gets that row's index. */
+/* 1: a passing row whose margin cannot move, so it says nothing of how
+ * near the case is to failing: an exact equality (abs or rel at tolerance
+ * 0: margin 0) or a count at its bound (le/ge, measured == bound, both
+ * whole numbers: "13 of 13 releases >= 13", "rows excluded <= 0": margin 1
+ * or 0 by construction, and the next step is a failure, not a drift). */
+int sf_row_margin_fixed(const sf_row *row);
+
+/* The case's tightest margin (largest row margin over the rows whose
+ * margin can move, sf_row_margin_fixed; NAN when no row has one); *which
+ * (may be NULL) gets that row's index. */
 double sf_result_margin(const sf_result *r, size_t *which);
 
 /* "abs", "rel", "le", "ge", "pvalue", "true" ("other" for a row made

@@ -58,7 +58,8 @@ static void usage(FILE *f)
           "  --list              list the selected cases with tier, kind, check and tags\n"
           "  --checks            list the registered checks\n"
           "  -h, --help          this help\n\n"
-          "exit status: 0 all passed, 1 a case failed, 2 bad input or usage, 3 internal error\n",
+          "exit status: 0 all passed, 1 a case failed, 2 bad input or usage, 3 internal error,\n"
+          "130 interrupted by SIGINT (Ctrl-C; SIGTERM 143): no summary is written\n",
           f);
 }
 
@@ -206,7 +207,7 @@ static void run_child(const sf_case *c, const char *root, int fd, unsigned timeo
         snprintf(o.key, sizeof o.key, "report not written: %.280s", err);
     }
     sf_result_free(r);
-    char line[600], be[96];
+    char line[1024], be[96];
     sf_budget_entry_format(&o.budget, be, sizeof be);
     int n = snprintf(line, sizeof line, "%d\t%.6f\t%s\t%s\n", o.verdict, o.seconds, be, o.key);
     if (n > 0 && write(fd, line, (size_t)(n < (int)sizeof line ? n : (int)sizeof line - 1)) < 0)
@@ -229,7 +230,7 @@ static void finish_job(const job *j, int status, const sf_case *cases, sf_outcom
     const sf_case *c = &cases[j->idx];
     sf_outcome *o = &out[j->idx];
     fill_outcome(o, c);
-    char line[600] = "";
+    char line[1024] = "";
     ssize_t n = read(j->fd, line, sizeof line - 1);
     close(j->fd);
     line[n > 0 ? n : 0] = '\0';

@@ -132,7 +132,7 @@ static int chk_belt_continuity(const sf_case *c, sf_result *r)
         sf_result_data(r, "the second scene's Gaussian field values", CONT_K, g2);
         xs[q] = (double)q + 1;
         rho[q] = gsl_stats_correlation(g1, 1, g2, 1, CONT_K);
-        char what[240];
+        char what[SF_LABEL_LEN];
         if (pp->key == 'l' || pp->key == 'c') {
             /* H0: rho >= 0.99 (the claim) against rho < 0.99, Fisher's z of
              * a bivariate normal sample (one point per field: independent
@@ -359,7 +359,7 @@ static int chk_sobol_field_function(const sf_case *c, sf_result *r)
         et[i] = x->st;
         lo[i] = x->st_lo;
         hi[i] = x->st_hi;
-        char q[200];
+        char q[SF_LABEL_LEN];
         if (i < SF_SENS_NPAR) {
             snprintf(q, sizeof q, "S1(%s) = %.4f (exact %.4f, bootstrap se %.4f): two-sided z-test",
                      sf_sens_input_name(i), x->s1, s1x[i], x->s1_se);
@@ -420,7 +420,7 @@ static int chk_sobol_pinned(const sf_case *c, sf_result *r)
             st[q][i] = x->st;
             if (i == SF_SENS_FIELD)
                 continue;
-            char what[220];
+            char what[SF_LABEL_LEN];
             snprintf(what, sizeof what, "%s: S_T(%s) = %.2g (bootstrap se %.2g; %d rows): one-sided upper bound "
                      "S_T + z se at alpha / 12", pin_q[q], sf_sens_input_name(i), x->st, x->st_se, PIN_ROWS);
             sf_check_le(r, what, x->st + z * x->st_se, PIN_BOUND);

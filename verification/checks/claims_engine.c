@@ -495,7 +495,7 @@ static void cpoint_samples(sf_result *r, const char *param, const cpoint *pt, si
     for (size_t k = 0; k < K; k++) {
         double *buf = check_alloc((pt[k].n ? pt[k].n : 1) * sizeof *buf);
         for (int q = 0; q < NQ; q++) {
-            char what[160];
+            char what[SF_LABEL_LEN];
             snprintf(what, sizeof what, "%s = %g: %s", *param ? param : "point", pt[k].val, qname[q]);
             sf_result_sample(r, what, pt[k].nv[D_OURS][q], pt[k].n - pt[k].nv[D_OURS][q]);
             check_sweep_stat_record(r, param, pt[k].val, qkey[q], qunit[q], &pt[k].stat[q], NULL);
@@ -740,7 +740,7 @@ static char claim_demand(const sf_case *c, const claim_spec *cs)
 static int claim_gate(sf_result *r, const char *id, char dec, int status, int cause_ok, double mde, double alpha,
                       size_t looks, int nmin)
 {
-    char q[200], found[120], al[48] = "";
+    char q[SF_LABEL_LEN], found[120], al[48] = "";
     if (looks > 1)
         snprintf(al, sizeof al, " a look x %zu looks", looks);
     snprintf(q, sizeof q, "claim %s: confirmed, or contradicted with a measured cause%s (alpha %.2g%s, n = %d)", id,

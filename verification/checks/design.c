@@ -687,7 +687,7 @@ static int stored_gates(sf_result *r, const stored_data *d, const char *test)
     sf_check_true(r, "stored points describe the plan under test (each point's scene from its design seed, "
                      "the planner's rings and rtol as the measuring run printed them)", d->rows > 0 && !d->stale, t);
     sf_check_le(r, "decidable stored points with a non-finite error", (double)d->nonfinite, 0);
-    char q[160];
+    char q[SF_LABEL_LEN];
     snprintf(q, sizeof q, "decided stored points (the %s's n)", test);
     sf_check_ge(r, q, (double)d->pts, 1);
     if (d->stale) {   /* the evidence: the settings planned now against the stored ones */

@@ -64,7 +64,7 @@ static int chk_cycle(const sf_case *c, sf_result *r)
     sf_check_rel(r, "period [s]", res.period, cf.period, tol);
     sf_check_rel(r, "stick duration [s]", stick, cf.t_stick, tol);
     sf_check_rel(r, "slip duration [s]", res.period - stick, cf.t_slip, tol);
-    char q[160];
+    char q[SF_LABEL_LEN];
     snprintf(q, sizeof q, "max |transition time - closed form| over %zu transitions [s] (worst: #%zu)", res.ntrans, worst);
     sf_check_le(r, q, te, tol * cf.period);
     unsigned nexp = 0;
@@ -117,7 +117,7 @@ static int chk_slide_on(const sf_case *c, sf_result *r)
         s.dof = dof ? SF_DOF_3 : SF_DOF_1;
         double N = s.m * s.g, om = sqrt(s.k / s.m), xe = s.mu_k_ratio * s.mu_mean * N / s.k;
         double vr = s.v_b - check_jump_speed(&s);
-        char q[200];
+        char q[SF_LABEL_LEN];
         snprintf(q, sizeof q, "%s: slide-on scene (v_b - delta > x_e omega)", dof ? "3-DOF" : "1-D");
         sf_check_true(r, q, vr > xe * om, "v_b - delta vs x_e omega");
         sf_osc_result res;

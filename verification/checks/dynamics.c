@@ -768,7 +768,7 @@ static int chk_force_extrema(const sf_case *c, sf_result *r)
         worst = fmax(worst, d[i]);
         d[i] = fmax(d[i], DBL_EPSILON);   /* the plot's log axis: equal values at one ulp */
     }
-    char q[160];
+    char q[SF_LABEL_LEN];
     snprintf(q, sizeof q, "largest relative difference of an oscillation's PV_F, rtol %g against 1e-11", s->rtol);
     sf_check_le(r, q, worst, c->spec.tolerance);
     sf_check_rel(r, "PV_F [N], mean over the oscillations", a.pv_F, b.pv_F, c->spec.tolerance);

@@ -196,7 +196,7 @@ static int chk_stein_coverage(const sf_case *c, sf_result *r)
     sf_check_ge(r, "and not one realisation later than needed (N > n0): min of the largest s0 / sqrt(N - 1) / X",
                 worst_min, 1 - 1e-12);
     for (int q = 0; q < NQ; q++) {
-        char what[200];
+        char what[SF_LABEL_LEN];
         if (q == 0)
             snprintf(what, sizeof what, "%s (normal): interval misses in %u replications ~ Binomial(R, %.2f), "
                      "two-sided exact test", qn[q], R, p0);
@@ -275,7 +275,7 @@ static int chk_cv_unbiased(const sf_case *c, sf_result *r)
         sf_result_data(r, "the companions", p.n, p.companion);
         double cm = gsl_stats_mean(p.companion, 1, p.n), sd = s0->mu_std;
         double z = sd > 0 ? (cm - s0->mu_mean) / (sd / sqrt((double)p.n)) : (cm == s0->mu_mean ? 0 : INFINITY);
-        char what[200];
+        char what[SF_LABEL_LEN];
         snprintf(what, sizeof what, "l/R = %g: companion's mean %.6g = mu_mean %g (z, std at most mu_std %g)", lr[k], cm,
                  s0->mu_mean, sd);
         sf_check_pvalue(r, what, 2 * gsl_cdf_ugaussian_Q(fabs(z)), alpha, p.n);
@@ -413,7 +413,7 @@ static void ml_recompute(const sf_sweep_point *p, sf_result *r)
             b[i] = p->ml.coarse0[i * SF_SWEEP_NQ + q] / p->det[q];
         size_t m0, m1;   /* the finite values (a realisation may form no QoI: excluded) */
         double v0, v1, mean = finite_mean(b, n0, &m0, &v0) + finite_mean(d, n1, &m1, &v1);
-        char what[160];
+        char what[SF_LABEL_LEN];
         snprintf(what, sizeof what, "%s: level 0's coarse ratios", ratio_name[q]);
         sf_result_sample(r, what, m0, n0 - m0);
         snprintf(what, sizeof what, "%s: level 1's fine - coarse ratios", ratio_name[q]);
@@ -739,7 +739,7 @@ static int chk_anti_pairs(const sf_case *c, sf_result *r)
         sf_plot_series(plt, ratio_name[q], SF_STYLE_POINTS, m, xa, xb);
         size_t k;
         double v, mean = finite_mean(h, n, &k, &v);
-        char what[160];
+        char what[SF_LABEL_LEN];
         snprintf(what, sizeof what, "%s: pairs with both members finite", ratio_name[q]);
         sf_result_sample(r, what, k, n - k);
         gap = sf_max(gap, fabs(p.anti.q[q].mean - mean));
@@ -834,7 +834,7 @@ static void welch_row(sf_result *r, double lr, int q, const char *name, double m
     double pdf = (double)pl->n_used - 1, a = se * se, b = pl->se * pl->se;
     double den = (a > 0 ? a * a / df : 0) + (b > 0 ? b * b / pdf : 0);
     double t = (mean - pl->mean) / sqrt(a + b), nu = den > 0 ? (a + b) * (a + b) / den : NAN;
-    char what[200];
+    char what[SF_LABEL_LEN];
     snprintf(what, sizeof what, "l/R = %g: %s ratio mean, %s %.5f = plain %.5f (Welch t test, %.0f df)", lr,
              ratio_name[q], name, mean, pl->mean, nu);
     sf_check_pvalue(r, what, 2 * gsl_cdf_tdist_Q(fabs(t), nu), alpha, pl->n_used);
@@ -963,7 +963,7 @@ static int chk_estimator_target(const sf_case *c, sf_result *r)
         }
         double lr = lrs[k] = s.l / s.R;
         const char *name = sf_sweep_estimator_name(est);
-        char what[200], found[120];
+        char what[SF_LABEL_LEN], found[120];
         snprintf(what, sizeof what, "l/R = %g (%s): stopped at its targets, not its cap", lr, name);
         snprintf(found, sizeof found, "stop = %s", sf_mcstop_reason(e.stop));
         sf_check_true(r, what, e.stop == SF_MCSTOP_TARGET, found);

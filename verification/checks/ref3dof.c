@@ -312,7 +312,7 @@ static int chk_ref_trajectory(const sf_case *c, sf_result *r)
                 gap[i] = fmax(fabs(a - b), 1e-16);
             }
         }
-        char name[160];
+        char name[SF_LABEL_LEN];
         if (q == Q_VX || q == Q_VY)
             snprintf(name, sizeof name, "|solver - oracle| at the worst of %zu transitions against its tolerance, %s", K,
                      qname[q]);
@@ -367,7 +367,7 @@ static double ref_paired_test(sf_result *r, const char *what, const double *a, c
         p = sf_interval_null_p(m, se, REF_STATS_MARGIN, df);
     double tq = gsl_cdf_tdist_Qinv(alpha, df), lo = m - tq * se, hi = m + tq * se;
     double mde = REF_STATS_MARGIN + (tq + gsl_cdf_tdist_Qinv(0.01, df)) * se;
-    char name[200];
+    char name[SF_LABEL_LEN];
     /* the mean and its se are in the findings: a row's name must not
        change with its data (the drift page matches rows by name) */
     snprintf(name, sizeof name, "%.60s: paired relative difference, |mean| <= %g (one-sided t test)", what,
@@ -500,7 +500,7 @@ static int chk_ref_stats(const sf_case *c, sf_result *r)
             int fin = 1;
             for (size_t i = 0; i < n; i++)
                 fin &= isfinite(a[q][i]) && isfinite(b[q][i]);
-            char name[160];
+            char name[SF_LABEL_LEN];
             snprintf(name, sizeof name, "l/R = %g: %s finite in every run (both codes)", s.l / s.R, qn[q]);
             sf_check_true(r, name, fin, fin ? "yes" : "NaN/Inf");
             if (q == 0) {   /* plot the PV_x samples of each l/R */
@@ -889,7 +889,7 @@ static int quad_converge(const sf_scene *s, const sf_cof *cof, sf_result *r)
     for (int q = 0; q < 3; q++) {
         sf_plot_series(p, what[q], SF_STYLE_LINESPOINTS, NL, hs, d[q]);
         double slope = check_loglog_slope(hs, d[q], NL);
-        char name[160];
+        char name[SF_LABEL_LEN];
         snprintf(name, sizeof name, "quadrature, %s: observed order of max |solver - oracle| in the cell size", what[q]);
         sf_check_ge(r, name, ns ? slope : NAN, REF_QUAD_ORDER);
         sf_note(r, "| %s | %.3g, %.3g, %.3g, %.3g | %.2f |", what[q], d[q][0], d[q][1], d[q][2], d[q][3], slope);

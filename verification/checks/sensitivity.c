@@ -148,7 +148,7 @@ static int chk_sobol_ishigami(const sf_case *c, sf_result *r)
     for (int k = 0; k < 6; k++) {
         est[k] = idx_of(&big, k, &se[k], &lo[k], &hi[k]);
         double z = (est[k] - ex[k]) / se[k];
-        char q[160];
+        char q[SF_LABEL_LEN];
         snprintf(q, sizeof q, "%s = %.4f (analytic %.4f, bootstrap se %.4f, n = %d): two-sided z-test", ish_name[k],
                  est[k], ex[k], se[k], ISH_N);
         sf_check_pvalue(r, q, 2 * gsl_cdf_ugaussian_Q(fabs(z)), a_row, ISH_N);
@@ -182,7 +182,7 @@ static int chk_sobol_ishigami(const sf_case *c, sf_result *r)
         cov[k] = (double)cover[k] / COV_R;
         band_lo[k] = (double)clo / COV_R;
         band_hi[k] = (double)chi / COV_R;
-        char q[160];
+        char q[SF_LABEL_LEN];
         snprintf(q, sizeof q, "%s: %zu of %d %.0f%% intervals cover (mean width %.3f, n = %d); two-sided binomial "
                  "test of coverage in [%.3f, %.2f]: accepts %u-%u", ish_name[k], cover[k], COV_R, 100 * COV_LEVEL,
                  wsum[k] / COV_R, COV_N, COV_LOW, COV_LEVEL, clo, chi);
@@ -262,7 +262,7 @@ static int chk_sobol_rank_ishigami(const sf_case *c, sf_result *r)
         lo[k] = o->lo;
         hi[k] = o->hi;
         xs[k] = k + 1;
-        char q[200];
+        char q[SF_LABEL_LEN];
         snprintf(q, sizeof q, "%s = %.4f (analytic %.4f, split se %.4f, n = %d, K = %zu groups): two-sided z-test",
                  ish_name[k], est[k], ex[k], se[k], RANK_N, big.groups);
         sf_check_pvalue(r, q, sf_z_pvalue((est[k] - ex[k]) / se[k]), a_row, RANK_N);
@@ -292,7 +292,7 @@ static int chk_sobol_rank_ishigami(const sf_case *c, sf_result *r)
         cov[k] = (double)cover[k] / RCOV_R;
         unsigned kc = (unsigned)cover[k];
         double plo = gsl_cdf_binomial_P(kc, COV_LEVEL, RCOV_R), phi = kc ? gsl_cdf_binomial_Q(kc - 1, COV_LEVEL, RCOV_R) : 1;
-        char q[220];
+        char q[SF_LABEL_LEN];
         snprintf(q, sizeof q, "%s: %zu of %d %.0f%% intervals cover the analytic value (mean width %.3f, n = %d); "
                  "two-sided exact binomial test of coverage = %.2f", ish_name[k], cover[k], RCOV_R, 100 * COV_LEVEL,
                  wsum[k] / RCOV_R, RCOV_N, COV_LEVEL);

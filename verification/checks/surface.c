@@ -450,7 +450,7 @@ static int chk_section_vs_full(const sf_case *c, sf_result *r)
         double order = check_loglog_slope(h, e, NL);
         sf_note(r, "| %g | %.3e | %.3e | %.3e | %.3e | %.3e | %.2f |", c->spec.sweep.v[k], err[0][k], err[1][k], err[2][k],
                 err[3][k], err[4][k], order);
-        char q[160];
+        char q[SF_LABEL_LEN];
         snprintf(q, sizeof q, "l/R = %g: contour error on the finest grid (ntheta = %.0f)", c->spec.sweep.v[k], nth[NL - 1]);
         sf_check_le(r, q, err[NL - 1][k], c->spec.tolerance);
         snprintf(q, sizeof q, "l/R = %g: observed order of the contour's convergence to the section", c->spec.sweep.v[k]);

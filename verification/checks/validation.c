@@ -35,7 +35,7 @@ static void sweep_samples(sf_result *r, const char *param, double v, const sf_sw
 {
     static const char *const nm[SF_SWEEP_NQ] = { "PV_x ratio", "PV_F ratio", "stick-fraction ratio" };
     for (int q = 0; q < SF_SWEEP_NQ; q++) {
-        char what[160];
+        char what[SF_LABEL_LEN];
         snprintf(what, sizeof what, "%s = %g: %s", *param ? param : "point", v, nm[q]);
         sf_result_sample(r, what, p->rstat[q].n_used, p->rstat[q].n_excluded);
     }
