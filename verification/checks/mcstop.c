@@ -27,6 +27,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <gsl/gsl_cdf.h>
+#include <gsl/gsl_fit.h>
 #include <gsl/gsl_integration.h>
 #include <gsl/gsl_randist.h>
 #include <gsl/gsl_statistics_double.h>
@@ -276,8 +277,12 @@ static int chk_cv_unbiased(const sf_case *c, sf_result *r)
         double cm = gsl_stats_mean(p.companion, 1, p.n), sd = s0->mu_std;
         double z = sd > 0 ? (cm - s0->mu_mean) / (sd / sqrt((double)p.n)) : (cm == s0->mu_mean ? 0 : INFINITY);
         char what[SF_LABEL_LEN];
-        snprintf(what, sizeof what, "l/R = %g: companion's mean %.6g = mu_mean %g (z, std at most mu_std %g)", lr[k], cm,
-                 s0->mu_mean, sd);
+        /* the z test's minimum detectable shift of E[C] at power 0.99, relative to mu_mean; a shift d of E[C]
+           biases each ratio's estimate by beta d */
+        double mdec = (gsl_cdf_ugaussian_Pinv(1 - alpha / 2) + gsl_cdf_ugaussian_Pinv(0.99)) * sd /
+                      sqrt((double)p.n) / s0->mu_mean;
+        snprintf(what, sizeof what, "l/R = %g: companion's mean %.6g = mu_mean %g (z, std at most mu_std %g; MDE "
+                 "%.2f%% of mu_mean at power 0.99)", lr[k], cm, s0->mu_mean, sd, 100 * mdec);
         sf_check_pvalue(r, what, 2 * gsl_cdf_ugaussian_Q(fabs(z)), alpha, p.n);
         double gap = 0;   /* |(cv - plain) + beta (mean C - mu_mean)| over the ratios */
         for (int q = 0; q < 3; q++) {
@@ -296,9 +301,10 @@ static int chk_cv_unbiased(const sf_case *c, sf_result *r)
             gap = sf_max(gap, fabs((p.cv[q].mean - ym) + p.cv[q].beta * (cmq - s0->mu_mean)));
             vrf[k * 3 + q] = p.cv[q].vrf;
             used += (size_t)snprintf(tab + used, sizeof tab - used,
-                                     "| %g | %s | %.5f +- %.5f | %.5f +- %.5f | %.3g | %.3g |\n", lr[k], ratio_name[q],
-                                     p.rstat[q].mean, p.rstat[q].se, p.cv[q].mean, p.cv[q].se, p.cv[q].beta,
-                                     p.cv[q].vrf);
+                                     "| %g | %s | %.5f +- %.5f | %.5f +- %.5f | %.3g | %.3g | %.2f%% |\n", lr[k],
+                                     ratio_name[q], p.rstat[q].mean, p.rstat[q].se, p.cv[q].mean, p.cv[q].se,
+                                     p.cv[q].beta, p.cv[q].vrf,
+                                     100 * fabs(p.cv[q].beta) * mdec * s0->mu_mean / fabs(p.rstat[q].mean));
         }
         snprintf(what, sizeof what, "l/R = %g: |cv - plain + beta (mean C - mu_mean)|, max over the ratios", lr[k]);
         sf_check_le(r, what, gap, 1e-12);
@@ -312,8 +318,11 @@ static int chk_cv_unbiased(const sf_case *c, sf_result *r)
     (void)nrow;
     if (!rc) {
         sf_note(r, "%zu realisations per point (seed %lu). Ratio means, plain and with the control variate "
-                   "(+- standard error), the slope beta and the variance reduction factor:\n\n"
-                   "| l/R | QoI | plain | control variate | beta | reduction |\n|---|---|---|---|---|---|\n%s\n",
+                   "(+- standard error), the slope beta, the variance reduction factor and the smallest bias of the "
+                   "ratio's estimate that (1) detects at power 0.99 (beta x the companion's MDE, relative to the "
+                   "plain mean; (2) sees any error in the known mean or the intercept exactly):\n\n"
+                   "| l/R | QoI | plain | control variate | beta | reduction | MDE via (1) |\n"
+                   "|---|---|---|---|---|---|---|\n%s\n",
                 s0->samples, s0->seed, tab);
         plot_vrf(r, "Variance reduction of the control variate", K, lr, vrf);
     }
@@ -809,12 +818,23 @@ static int chk_anti_pairs(const sf_case *c, sf_result *r)
 }
 
 /* Statistical, per sweep point: an estimator's ratio means (two levels,
- * or antithetic pairs) against plain Monte Carlo's on independent streams
- * (seed' = sf_mc_seed(seed, 1) ^ 1, N = samples): Welch's t =
- * difference / sqrt(se_est^2 + se_plain^2) at the Welch-Satterthwaite
- * degrees of freedom (the estimator's own: two levels' df, the pairs'
- * m - 1), two-sided p-value at alpha / (3 K); each estimator's sizes and
- * work, and the variance reduction factor, reported. */
+ * or antithetic pairs) against plain Monte Carlo's on the same streams
+ * (common random numbers): plain's realisation i is stream
+ * sf_mc_seed(seed, i), which is antithetic pair i's G member and two
+ * levels' level-1 fine run i (bit for bit, or, for mlmc-boxes' own fine
+ * plan, the same field on a grid of one more cell per diameter).  Plain
+ * runs N >= the estimator's shared count, so every shared unit is in
+ * both.  The difference D = estimate - plain mean has Var D = se_est^2 +
+ * se_plain^2 - 2 Cov, Cov = (shared / (m N)) cov(u_i, Q_i), u_i the
+ * estimator's shared unit (a pair's mean ratio; level 1's fine - coarse)
+ * and Q_i plain's ratio on its stream, the sample covariance over the
+ * shared units; level 0 draws on streams of its own
+ * (SF_MLMC_LEVEL0_STREAM) and is independent of plain.  Student's t =
+ * D / sqrt(Var D) at the Satterthwaite degrees of freedom of its two
+ * parts, two-sided at alpha / (3 K); the row names the minimum
+ * detectable effect at power 0.99 (relative to plain's mean).  Each
+ * estimator's sizes and work, and the variance reduction factor,
+ * reported. */
 /* Point k of case c's sweep: the scene s and plain Monte Carlo's scene
  * sp on independent streams (seed sf_mc_seed(seed, 1) xor 1). */
 static int point_scenes(const sf_case *c, size_t k, sf_scene *s, sf_scene *sp, char *err, size_t errlen)
@@ -840,6 +860,110 @@ static void welch_row(sf_result *r, double lr, int q, const char *name, double m
     sf_check_pvalue(r, what, 2 * gsl_cdf_tdist_Q(fabs(t), nu), alpha, pl->n_used);
 }
 
+/* The minimum detectable effect of a two-sided t test at level alpha,
+ * power 0.99, nu degrees of freedom, standard error se. */
+static double mde99(double se, double nu, double alpha)
+{
+    if (!(nu > 0) || !isfinite(se))
+        return NAN;
+    return (gsl_cdf_tdist_Pinv(1 - alpha / 2, nu) + gsl_cdf_tdist_Pinv(0.99, nu)) * se;
+}
+
+/* The sample covariance of u_i and plain's ratios Q_i over the shared
+ * units i < n whose both are finite (their count in *m). */
+static double shared_cov(const double *u, const double *Q, size_t n, size_t *m)
+{
+    double su = 0, sq = 0, c = 0;
+    size_t k = 0;
+    for (size_t i = 0; i < n; i++)
+        if (isfinite(u[i]) && isfinite(Q[i])) {
+            su += u[i];
+            sq += Q[i];
+            k++;
+        }
+    *m = k;
+    if (k < 2)
+        return 0;
+    su /= (double)k;
+    sq /= (double)k;
+    for (size_t i = 0; i < n; i++)
+        if (isfinite(u[i]) && isfinite(Q[i]))
+            c += (u[i] - su) * (Q[i] - sq);
+    return c / (double)(k - 1);
+}
+
+/* The paired row: D = mean - plain's on shared streams, Var D = se^2 +
+ * plain's se^2 - 2 cov_ap (cov_ap = Cov(estimate, plain mean)); Student's
+ * t at the Satterthwaite df of se^2 (df) and the rest (plain's n - 1).
+ * The MDE at power 0.99, relative to plain's mean, in *mde. */
+static void paired_row(sf_result *r, double lr, int q, const char *name, double mean, double se, double df,
+                       const sf_sweep_stat *pl, double cov_ap, double alpha, double *mde)
+{
+    double a = se * se, b = pl->se * pl->se - 2 * cov_ap, v = a + b;
+    if (!(v > 0))
+        v = a;
+    double bb = b > 0 ? b : 0, pdf = (double)pl->n_used - 1;
+    double den = (a > 0 ? a * a / df : 0) + (bb > 0 ? bb * bb / pdf : 0);
+    double nu = den > 0 ? v * v / den : NAN;
+    double t = (mean - pl->mean) / sqrt(v);
+    *mde = mde99(sqrt(v), nu, alpha) / fabs(pl->mean);
+    char what[240];
+    snprintf(what, sizeof what, "l/R = %g: %s ratio mean, %s %.5f - plain %.5f on shared streams = 0 (paired t, "
+             "%.0f df; MDE %.2f%% at power 0.99)", lr, ratio_name[q], name, mean, pl->mean, nu, 100 * *mde);
+    sf_check_pvalue(r, what, 2 * gsl_cdf_tdist_Q(fabs(t), nu), alpha, pl->n_used);
+}
+
+/* Antithetic pairs against plain Monte Carlo on the same streams, a
+ * pair at a time: pair i's G member is plain's realisation i (bit for
+ * bit), so estimate - plain mean over the m pairs is the mean of D_i =
+ * (Q(-G_i) - Q(G_i)) / 2, zero in expectation exactly when the -G member
+ * has G's law.  At rho near -1, D_i ~ -(Q(G_i) - E Q) carries Q's whole
+ * spread; the companion C_i of G_i (sweep.h: sf_sweep_run_cv; its mean
+ * is mu_mean exactly, and G_i is plain's field, untouched by the
+ * antithetic map) all but fixes Q(G_i) at large l/R, so D_i is regressed
+ * on C_i - mu_mean and the intercept tested: Student's t at m - 2 df
+ * (without companions, a window of tiles: the mean of D_i at m - 1).  The
+ * MDE at power 0.99, relative to plain's mean, in *mde. */
+static void anti_pair_row(sf_result *r, double lr, int q, const sf_sweep_point *e, const sf_sweep_point *p,
+                          double mu_mean, double alpha, double *mde)
+{
+    size_t n = e->anti.n < p->n ? e->anti.n : p->n, m = 0, mc = 0;
+    double *d = check_alloc((n ? n : 1) * sizeof *d), *x = check_alloc((n ? n : 1) * sizeof *x);
+    for (size_t i = 0; i < n; i++) {
+        double a = e->ratio[i * SF_SWEEP_NQ + q], b = e->anti.qoi_anti[i * SF_SWEEP_NQ + q] / e->det[q];
+        if (!isfinite(a) || !isfinite(b))
+            continue;
+        double cc = p->companion ? p->companion[i] : NAN;
+        d[m] = 0.5 * (b - a);
+        x[m] = cc - mu_mean;
+        mc += isfinite(cc);
+        m++;
+    }
+    double est = NAN, se = NAN, nu = NAN, beta = 0;
+    if (mc == m && m > 3) {
+        double c0, c1, v00, v01, v11, ss;
+        gsl_fit_linear(x, 1, d, 1, m, &c0, &c1, &v00, &v01, &v11, &ss);
+        est = c0;
+        se = sqrt(v00);
+        nu = (double)m - 2;
+        beta = c1;
+    } else if (m > 1) {
+        est = gsl_stats_mean(d, 1, m);
+        se = sqrt(gsl_stats_variance_m(d, 1, m, est) / (double)m);
+        nu = (double)m - 1;
+    }
+    free(d);
+    free(x);
+    double t = est / se, pm = p->rstat[q].mean;
+    *mde = mde99(se, nu, alpha) / fabs(pm);
+    char what[260];
+    snprintf(what, sizeof what, "l/R = %g: %s ratio mean, antithetic - plain on shared streams: (Q(-G) - Q(G)) / 2 "
+             "%s = %.5f = 0 (paired t, %.0f df; MDE %.2f%% at power 0.99)", lr, ratio_name[q],
+             mc == m ? "at C = mu_mean" : "per pair", est, nu, 100 * *mde);
+    sf_check_pvalue(r, what, 2 * gsl_cdf_tdist_Q(fabs(t), nu), alpha, m);
+    (void)beta;
+}
+
 static int estimator_unbiased(const sf_case *c, sf_result *r, int est)
 {
     const sf_scene *s0 = &c->scene;
@@ -847,7 +971,9 @@ static int estimator_unbiased(const sf_case *c, sf_result *r, int est)
     if (!K || !*c->spec.sweep_param)
         return SF_EINVAL;
     double *lr = check_alloc(K * sizeof *lr), *vrf = check_alloc(K * 3 * sizeof *vrf);
-    char tab[6000];
+    double *mde = check_alloc(K * 3 * sizeof *mde);
+    char tab[6000], mtab[2000];
+    size_t mused = 0;
     size_t used = 0;
     int rc = SF_SUCCESS;
     double alpha = c->spec.alpha / (double)(3 * K);
@@ -861,10 +987,17 @@ static int estimator_unbiased(const sf_case *c, sf_result *r, int est)
         sf_sweep_point e = { 0 }, p = { 0 };
         char err[256] = "";
         rc = point_scenes(c, k, &s, &sp, err, sizeof err);
+        sp.seed = s.seed;   /* common random numbers: plain's realisation i is the estimator's shared unit i */
+        /* antithetic: pairs to their cap, samples (a target no pilot meets), so every plain realisation is a
+           pair's G member; plain with the companions of its fields */
+        const double tiny[SF_SWEEP_NQ] = { 1e-100, 1e-100, 1e-100 };   /* squared: 1e-200 */
         if (!rc)
-            rc = est_run(&s, est, s0->samples, &e, err, sizeof err);
+            rc = ml ? est_run(&s, est, s0->samples, &e, err, sizeof err)
+                    : sf_anti_run(&s, s0->samples, ML_PILOT, tiny, 0, NULL, &e, err, sizeof err);
+        size_t shared = ml ? e.ml.n[1] : e.anti.n, np = shared > s0->samples ? shared : s0->samples;
         if (!rc)
-            rc = sf_sweep_run(&sp, s0->samples, 0, NULL, 0, NULL, &p, err, sizeof err);
+            rc = ml ? sf_sweep_run(&sp, np, 0, NULL, 0, NULL, &p, err, sizeof err)
+                    : sf_sweep_run_cv(&sp, np, 0, NULL, 0, NULL, &p, err, sizeof err);
         if (rc) {
             sf_note(r, "**Sweep failed at %s = %g:** %s\n", c->spec.sweep_param, c->spec.sweep.v[k], err);
             sf_sweep_point_free(&e);
@@ -877,7 +1010,30 @@ static int estimator_unbiased(const sf_case *c, sf_result *r, int est)
             const sf_sweep_anti *an = &e.anti.q[q];
             double mean = ml ? e_ml->mean : an->mean, se = ml ? e_ml->se : an->se;
             double df = ml ? e_ml->df : (double)an->m - 1, pse = p.rstat[q].se;
-            welch_row(r, lr[k], q, name, mean, se, df, &p.rstat[q], alpha);
+            /* the shared units u_i against plain's ratios on their streams */
+            double *u = check_alloc((shared ? shared : 1) * sizeof *u), *Q = check_alloc((shared ? shared : 1) * sizeof *Q);
+            for (size_t i = 0; i < shared; i++) {
+                double f = e.ratio[i * SF_SWEEP_NQ + q];
+                u[i] = ml ? f - e.ml.coarse1[i * SF_SWEEP_NQ + q] / e.det[q]
+                          : 0.5 * (f + e.anti.qoi_anti[i * SF_SWEEP_NQ + q] / e.det[q]);
+                Q[i] = p.ratio[i * SF_SWEEP_NQ + q];
+            }
+            size_t msh;
+            double cv = shared_cov(u, Q, shared, &msh), mu = ml ? (double)e_ml->m[1] : (double)an->m;
+            double cov_ap = msh > 1 ? (double)msh * cv / (mu * (double)p.rstat[q].n_used) : 0;
+            free(u);
+            free(Q);
+            if (ml)
+                paired_row(r, lr[k], q, name, mean, se, df, &p.rstat[q], cov_ap, alpha, &mde[k * 3 + q]);
+            else
+                anti_pair_row(r, lr[k], q, &e, &p, s0->mu_mean, alpha, &mde[k * 3 + q]);
+            {   /* the independent-streams design's MDE at these sizes, for comparison */
+                double a = se * se, b = pse * pse, pdf = (double)p.rstat[q].n_used - 1;
+                double den = (a > 0 ? a * a / df : 0) + (b > 0 ? b * b / pdf : 0);
+                double mi = mde99(sqrt(a + b), den > 0 ? (a + b) * (a + b) / den : NAN, alpha) / fabs(p.rstat[q].mean);
+                mused += (size_t)snprintf(mtab + mused, sizeof mtab - mused, "| %g | %s | %.2f%% | %.2f%% |\n", lr[k],
+                                          ratio_name[q], 100 * mde[k * 3 + q], 100 * mi);
+            }
             vrf[k * 3 + q] = ml ? e_ml->vrf : an->vrf;
             if (ml)
                 used += (size_t)snprintf(tab + used, sizeof tab - used,
@@ -895,7 +1051,8 @@ static int estimator_unbiased(const sf_case *c, sf_result *r, int est)
         sf_sweep_point_free(&p);
     }
     if (!rc && ml) {
-        sf_note(r, "Plain Monte Carlo: %zu realisations per point on independent streams; %s: plain's "
+        sf_note(r, "Plain Monte Carlo: %zu realisations per point on the estimator's streams (level 1's fine runs are "
+                   "its first n1; the rows pair them: paired t); %s: plain's "
                    "variance at %zu as the target, a pilot of %d pairs (seed %lu). Ratio means (+- standard error), "
                    "each level's N (n0 %s / n1 pairs), variance (V0 of %s, V1 of fine - coarse), "
                    "work per sample [cell evaluations] and the variance reduction factor at equal work:\n\n"
@@ -908,7 +1065,8 @@ static int estimator_unbiased(const sf_case *c, sf_result *r, int est)
                     : est == EST_SUB ? "Variance reduction of two levels on every 2nd node at equal work"
                                      : "Variance reduction of the two-level estimator at equal work", K, lr, vrf);
     } else if (!rc) {
-        sf_note(r, "Plain Monte Carlo: %zu realisations per point on independent streams; antithetic pairs: plain's "
+        sf_note(r, "Plain Monte Carlo: %zu realisations per point on the estimator's streams (pair i's G member is its "
+                   "realisation i; the rows pair them: paired t); antithetic pairs: plain's "
                    "variance at %zu as the target, a pilot of %d pairs (seed %lu). Ratio means (+- standard error), "
                    "the pairs, rho = corr(Q(G), Q(-G)), the work of a pair and of a plain realisation [cell "
                    "evaluations] and the variance reduction factor at equal work:\n\n"
@@ -917,8 +1075,14 @@ static int estimator_unbiased(const sf_case *c, sf_result *r, int est)
                 s0->samples, s0->samples, ML_PILOT, s0->seed, tab);
         plot_vrf(r, "Variance reduction of antithetic pairs at equal work", K, lr, vrf);
     }
+    if (!rc)
+        sf_note(r, "Minimum detectable effect (power 0.99, two-sided at alpha / %zu = %.3g, relative to plain's "
+                   "mean) of each row: the paired design, and the independent-streams design (Welch) at the same "
+                   "sizes, for comparison:\n\n| l/R | QoI | paired | independent |\n|---|---|---|---|\n%s\n",
+                3 * K, alpha, mtab);
     free(lr);
     free(vrf);
+    free(mde);
     return rc;
 }
 
