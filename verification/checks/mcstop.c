@@ -907,7 +907,7 @@ static void paired_row(sf_result *r, double lr, int q, const char *name, double 
     double nu = den > 0 ? v * v / den : NAN;
     double t = (mean - pl->mean) / sqrt(v);
     *mde = mde99(sqrt(v), nu, alpha) / fabs(pl->mean);
-    char what[240];
+    char what[SF_LABEL_LEN];
     snprintf(what, sizeof what, "l/R = %g: %s ratio mean, %s %.5f - plain %.5f on shared streams = 0 (paired t, "
              "%.0f df; MDE %.2f%% at power 0.99)", lr, ratio_name[q], name, mean, pl->mean, nu, 100 * *mde);
     sf_check_pvalue(r, what, 2 * gsl_cdf_tdist_Q(fabs(t), nu), alpha, pl->n_used);
@@ -956,7 +956,7 @@ static void anti_pair_row(sf_result *r, double lr, int q, const sf_sweep_point *
     free(x);
     double t = est / se, pm = p->rstat[q].mean;
     *mde = mde99(se, nu, alpha) / fabs(pm);
-    char what[260];
+    char what[SF_LABEL_LEN];
     snprintf(what, sizeof what, "l/R = %g: %s ratio mean, antithetic - plain on shared streams: (Q(-G) - Q(G)) / 2 "
              "%s = %.5f = 0 (paired t, %.0f df; MDE %.2f%% at power 0.99)", lr, ratio_name[q],
              mc == m ? "at C = mu_mean" : "per pair", est, nu, 100 * *mde);

@@ -406,7 +406,7 @@ static int chk_sobol_claims(const sf_case *c, sf_result *r)
         double lo = gsl_stats_quantile_from_sorted_data(g, 1, nb, a), hi = gsl_stats_quantile_from_sorted_data(g, 1, nb, 1 - a);
         free(g);
         int status = lo > 0 ? SF_CLAIM_CONFIRMED : hi < 0 ? SF_CLAIM_CONTRADICTED : SF_CLAIM_UNDECIDED;
-        char how[200], found[200];
+        char how[SF_LABEL_LEN], found[SF_LABEL_LEN];
         snprintf(how, sizeof how, "min over CV, v_b, mean COF of S1(l/R) - S1(j) and S_T(l/R) - S_T(j); one-sided "
                  "paired bootstrap percentile bounds at %.2g each way, %zu rows, %zu resamples", a, res->n_used, nb);
         sf_claim(r, cs->id, cs->text, status, m, lo, hi, a, how, cs->note ? cs->note : "");
@@ -414,7 +414,7 @@ static int chk_sobol_claims(const sf_case *c, sf_result *r)
         snprintf(found, sizeof found, "%s: %s(l/R) = %.3f, the closest is %s with %.3f: gap %.3f [%.3f, %.3f]",
                  sf_claim_status_name(status), tot ? "S_T" : "S1", v[SF_SENS_LOGLR], sf_sens_input_name(arg),
                  v[arg], m, lo, hi);
-        char qq[200];
+        char qq[SF_LABEL_LEN];
         snprintf(qq, sizeof qq, "%s: %s not contradicted (no other parameter's first-order or total index above "
                  "l/R's at one-sided %.2g)", cs->id, qlabel[q], a);
         sf_check_verdict(r, qq, status != SF_CLAIM_CONTRADICTED, found, a);
