@@ -106,3 +106,14 @@ def test_results(tmp_path):
     df = slipfield.results(str(p))
     assert list(df["kind"]) == ["row", "claim"]
     assert df.attrs["claims"]["confirmed"] == 1
+
+
+def test_openturns_example_agrees():
+    """examples/openturns_sobol.py: an OpenTURNS Sobol' study on evaluate
+    and `slipfield sensitivity` agree within their intervals (skipped
+    without python3-openturns)."""
+    pytest.importorskip("openturns")
+    r = subprocess.run(["/usr/bin/python3", os.path.join(TOP, "examples", "openturns_sobol.py"), "64"],
+                       capture_output=True, text=True, env=dict(os.environ, PYTHONPATH=os.path.join(TOP, "python")))
+    assert r.returncode == 0, r.stdout + r.stderr
+    assert "agree within their intervals: yes" in r.stdout
