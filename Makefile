@@ -101,7 +101,8 @@ deps:
 
 # The compile rules run after deps so that pkg-config answers.
 all: deps
-	@$(MAKE) --no-print-directory $(BUILD)/slipfield
+	@$(MAKE) --no-print-directory $(BUILD)/slipfield $(BUILD)/libslipfield.so
+
 
 # verification/plot-style.gp as a C string
 $(BUILD)/gen/plot_style.h: verification/plot-style.gp
@@ -183,7 +184,7 @@ test: deps
 check: test
 
 .PHONY: test-run
-test-run: $(TESTS) $(TESTS_SAN) $(BUILD)/slipfield
+test-run: $(TESTS) $(TESTS_SAN) $(BUILD)/slipfield $(BUILD)/libslipfield.so
 	@st=0; sh scripts/layering.sh || st=1; \
 	 sh scripts/refs-check.sh || st=1; \
 	 sh scripts/mutants-fresh.sh || st=1; \
@@ -196,6 +197,7 @@ test-run: $(TESTS) $(TESTS_SAN) $(BUILD)/slipfield
 	 sh scripts/results-test.sh $(BUILD)/slipfield || st=1; \
 	 sh scripts/drift-test.sh || st=1; \
 	 sh scripts/install-test.sh || st=1; \
+	 sh scripts/python-test.sh || st=1; \
 	 sh scripts/catalogue.sh $(BUILD)/slipfield $(BUILD)/catalogue.md && \
 	 if cmp -s $(BUILD)/catalogue.md cases/README.md; then echo "catalogue: cases/README.md up to date"; \
 	 else echo "catalogue: cases/README.md is stale: run make catalogue" >&2; st=1; fi; exit $$st
@@ -336,6 +338,11 @@ $(BUILD)/pic/%.o: %.c | $(GEN_HDRS)
 $(BUILD)/$(SHLIB): $(call objs,pic,$(SOLVER_SRC))
 	$(CC) -shared -Wl,-soname,$(SONAME) -Wl,-z,defs $(OPT) $^ -o $@ $(LIB_LIBS)
 
+# the shared library in build/, under its plain name too: python/slipfield
+# loads it from the source tree (PYTHONPATH=python)
+$(BUILD)/libslipfield.so: $(BUILD)/$(SHLIB)
+	ln -sf $(SHLIB) $@
+
 $(BUILD)/slipfield.1: $(BUILD)/slipfield scripts/man.sh
 	sh scripts/man.sh $(BUILD)/slipfield $(SF_VERSION) > $@.tmp && mv $@.tmp $@
 
@@ -343,7 +350,10 @@ $(BUILD)/slipfield.1: $(BUILD)/slipfield scripts/man.sh
 install: all
 	@$(MAKE) --no-print-directory install-files
 
-INSTALL_DIRS = $(BINDIR) $(LIBDIR) $(PCDIR) $(INCLUDEDIR)/slipfield $(MANDIR)/man1 $(DATADIR)
+# the Python package, where Debian's python3 looks for PREFIX's packages
+PYMINOR := $(shell /usr/bin/python3 -c 'import sys; print(sys.version_info[1])' 2>/dev/null || echo 11)
+PYDIR ?= $(PREFIX)/lib/python3.$(PYMINOR)/dist-packages
+INSTALL_DIRS = $(BINDIR) $(LIBDIR) $(PCDIR) $(INCLUDEDIR)/slipfield $(MANDIR)/man1 $(DATADIR) $(PYDIR)/slipfield
 # the folders this install created (uninstall removes them when empty)
 DIRS_MANIFEST = $(DATADIR)/install-dirs
 install-files: $(BUILD)/slipfield $(BUILD)/libslipfield.a $(BUILD)/$(SHLIB) $(BUILD)/slipfield.1
@@ -359,12 +369,17 @@ install-files: $(BUILD)/slipfield $(BUILD)/libslipfield.a $(BUILD)/$(SHLIB) $(BU
 	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@LIBDIR@|$(LIBDIR)|' -e 's|@INCLUDEDIR@|$(INCLUDEDIR)|' \
 	    -e 's|@VERSION@|$(SF_VERSION)|' slipfield.pc.in > $(DESTDIR)$(PCDIR)/slipfield.pc
 	chmod 644 $(DESTDIR)$(PCDIR)/slipfield.pc
+	install -m 644 python/slipfield/__init__.py $(DESTDIR)$(PYDIR)/slipfield/__init__.py
+	printf '# written by make install: the library this package loads\nLIBRARY = "%s"\n' '$(LIBDIR)/$(SONAME)' \
+	    > $(DESTDIR)$(PYDIR)/slipfield/_installed.py
 	@if [ -s $(BUILD)/install-dirs ] || [ ! -f $(DESTDIR)$(DIRS_MANIFEST) ]; then \
 	   install -m 644 $(BUILD)/install-dirs $(DESTDIR)$(DIRS_MANIFEST); fi
 
 uninstall:
 	rm -f $(DESTDIR)$(BINDIR)/slipfield $(DESTDIR)$(LIBDIR)/libslipfield.a $(DESTDIR)$(LIBDIR)/$(SHLIB) \
 	      $(DESTDIR)$(LIBDIR)/$(SONAME) $(DESTDIR)$(LIBDIR)/libslipfield.so $(DESTDIR)$(PCDIR)/slipfield.pc \
-	      $(DESTDIR)$(MANDIR)/man1/slipfield.1 $(addprefix $(DESTDIR)$(INCLUDEDIR)/slipfield/,$(notdir $(PUBLIC_HEADERS)))
+	      $(DESTDIR)$(MANDIR)/man1/slipfield.1 $(addprefix $(DESTDIR)$(INCLUDEDIR)/slipfield/,$(notdir $(PUBLIC_HEADERS))) \
+	      $(DESTDIR)$(PYDIR)/slipfield/__init__.py $(DESTDIR)$(PYDIR)/slipfield/_installed.py
+	rm -rf $(DESTDIR)$(PYDIR)/slipfield/__pycache__
 	@rmdir $(DESTDIR)$(INCLUDEDIR)/slipfield 2>/dev/null || true
 	@sh scripts/install-dirs.sh remove "$(DESTDIR)" $(DIRS_MANIFEST)

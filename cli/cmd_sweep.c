@@ -7,6 +7,7 @@
 #include "cli.h"
 #include "sweep.h"
 #include "mcstop.h"
+#include "model.h"
 #include "unum.h"
 #include "montecarlo.h"
 #include "sf_error.h"
@@ -335,40 +336,21 @@ int sf_cmd_sweep(int argc, char **argv)
         fprintf(stderr, "slipfield sweep: --realisations is required (or the scene's samples key)\n");
         return SF_EXIT_USAGE;
     }
-    int staged = !isnan(target_se);
-    if (staged && !(target_se > 0)) {
-        fprintf(stderr, "slipfield sweep: --target-se takes a standard error > 0 (got %g)\n", target_se);
-        return SF_EXIT_USAGE;
-    }
-    int ml = 0, anti = 0, boxes = 0, sub = 0, autoe = 0;
-    if (estimator && !(ml = !strcmp(estimator, "mlmc")) && !(anti = !strcmp(estimator, "antithetic")) &&
-        !(boxes = ml = !strcmp(estimator, "mlmc-boxes")) && !(sub = ml = !strcmp(estimator, "mlmc-sub")) &&
-        !(autoe = anti = !strcmp(estimator, "auto")) && strcmp(estimator, "plain")) {
+    sf_model_spec spec = { SF_MODEL_PLAIN, n, pilot, target_se, cv, (int)threads, NULL, resume, NULL };
+    if (sf_model_estimator(estimator, &spec.by)) {
         fprintf(stderr, "slipfield sweep: --estimator takes plain, mlmc, mlmc-boxes, mlmc-sub, antithetic or auto "
                         "(got '%s')\n", estimator);
         return SF_EXIT_USAGE;
     }
-    if ((ml || anti) && (cv || resume)) {
-        fprintf(stderr, "slipfield sweep: --estimator %s does not combine with --control-variate or --resume\n",
-                estimator);
-        return SF_EXIT_USAGE;
+    {
+        char why[300];
+        if (sf_model_spec_check(&spec, why, sizeof why)) {
+            fprintf(stderr, "slipfield sweep: %s\n", why);
+            return SF_EXIT_USAGE;
+        }
     }
-    if (pilot && !staged && !ml && !anti) {
-        fprintf(stderr, "slipfield sweep: --pilot needs --target-se or --estimator (not plain)\n");
-        return SF_EXIT_USAGE;
-    }
-    int paired = ml || anti;   /* the estimators sized from a pilot of pairs */
-    if (staged && cv) {
-        fprintf(stderr, "slipfield sweep: --control-variate and --target-se do not combine\n");
-        return SF_EXIT_USAGE;
-    }
-    if ((staged || paired) && !pilot)
-        pilot = n < (paired ? 10 : 20) ? n : paired ? 10 : 20;
-    if ((staged || paired) && (pilot < 2 || pilot > n)) {
-        fprintf(stderr, "slipfield sweep: --pilot %zu: the pilot needs 2 to %zu (the cap, --realisations) realisations\n",
-                pilot, n);
-        return SF_EXIT_USAGE;
-    }
+    int staged = !isnan(target_se), paired = spec.by != SF_MODEL_PLAIN, anti = spec.by == SF_MODEL_ANTITHETIC ||
+                                                                               spec.by == SF_MODEL_AUTO;
     char err[300];
     for (size_t k = 0; k < nv; k++) {   /* validate every value before any work */
         sf_scene t = s0;
@@ -446,20 +428,9 @@ int sf_cmd_sweep(int argc, char **argv)
         snprintf(label, sizeof label, "%s = %g", param, v[k]);
         sf_sweep_point p;
         const char *ckp = strcmp(out_path, "-") ? ck : NULL;
-        int ae = autoe ? sf_sweep_estimator_auto(&s) : -1;
-        int bx = boxes || ae == SF_EST_MLMC_BOXES, sb = sub || ae == SF_EST_MLMC_SUB;
-        int same = (ml && !boxes && !sub) || ae == SF_EST_MLMC;
-        int est = bx ? SF_EST_MLMC_BOXES : sb ? SF_EST_MLMC_SUB : same ? SF_EST_MLMC : SF_EST_ANTITHETIC;
-        const double tse[SF_SWEEP_NQ] = { target_se, target_se, target_se };
-        rc = staged && (ml || anti)
-                 ? sf_sweep_run_estimator_se(&s, est, tse, pilot, n, (int)threads, label, &p, err, sizeof err)
-             : bx     ? sf_sweep_run_mlmc_boxes(&s, n, pilot, (int)threads, label, &p, err, sizeof err)
-             : sb     ? sf_sweep_run_mlmc_sub(&s, n, pilot, (int)threads, label, &p, err, sizeof err)
-             : same   ? sf_sweep_run_mlmc(&s, n, pilot, (int)threads, label, &p, err, sizeof err)
-             : anti   ? sf_sweep_run_antithetic(&s, n, pilot, (int)threads, label, &p, err, sizeof err)
-             : staged ? sf_sweep_run_target(&s, target_se, pilot, n, (int)threads, ckp, resume, label, &p, err, sizeof err)
-             : cv   ? sf_sweep_run_cv(&s, n, (int)threads, ckp, resume, label, &p, err, sizeof err)
-                    : sf_sweep_run(&s, n, (int)threads, ckp, resume, label, &p, err, sizeof err);
+        spec.checkpoint = ckp;
+        spec.label = label;
+        rc = sf_model_point(&s, &spec, 0, &p, err, sizeof err);
         if (rc) {
             fprintf(stderr, "slipfield sweep: %s = %g: %s\n", param, v[k], *err ? err : sf_strerror(rc));
             ok = 0;
@@ -481,7 +452,7 @@ int sf_cmd_sweep(int argc, char **argv)
             if (staged && p.stop == SF_MCSTOP_CAP)
                 fprintf(stderr, "slipfield sweep: %s = %g: the cap of %zu realisations is below what %s says "
                                 "--target-se %g needs: the interval is wider than the target\n",
-                        param, v[k], n, ml || anti ? "the estimator's sizing" : "the pilot", target_se);
+                        param, v[k], n, paired ? "the estimator's sizing" : "the pilot", target_se);
             if ((sum_path || diag_path) && sf_unum_sweep(&s, &p, (int)threads, err, sizeof err))
                 fprintf(stderr, "slipfield sweep: %s = %g: warning: no numerical error of the means (its companion "
                                 "failed: %s)\n", param, v[k], err);

@@ -3,7 +3,7 @@
 # Debian packages; apt-get as root, or through sudo when that needs no
 # password; otherwise print the exact command and fail.
 set -u
-PKGS="libgsl-dev libfftw3-dev libcmocka-dev gnuplot-nox pkg-config libcmark-gfm-dev libcmark-gfm-extensions-dev libjansson-dev python3-jsonschema"
+PKGS="libgsl-dev libfftw3-dev libcmocka-dev gnuplot-nox pkg-config libcmark-gfm-dev libcmark-gfm-extensions-dev libjansson-dev python3-jsonschema python3-pandas python3-pytest"
 [ $# -gt 0 ] && PKGS="$PKGS $*"
 
 missing=""
@@ -19,9 +19,10 @@ else
     done
     command -v gnuplot >/dev/null 2>&1 || missing="$missing gnuplot"
     python3 -c 'import jsonschema' 2>/dev/null || missing="$missing python3-jsonschema"
+    python3 -c 'import pandas, pytest' 2>/dev/null || missing="$missing python3-pandas python3-pytest"
     if [ -n "$missing" ]; then
         echo "slipfield: missing:$missing" >&2
-        echo "slipfield: install GSL, FFTW3, CMocka, cmark-gfm, jansson, gnuplot, pkg-config and Python jsonschema with your package manager." >&2
+        echo "slipfield: install GSL, FFTW3, CMocka, cmark-gfm, jansson, gnuplot, pkg-config and Python's jsonschema, pandas and pytest with your package manager." >&2
         exit 1
     fi
     exit 0

@@ -130,6 +130,17 @@ if $make -s --no-print-directory install PREFIX="$p2" > "$work/install2.log" 2>&
 else
     bad "make install PREFIX=tmp: the example does not build or run"
 fi
+pyd=$(ls -d "$p2"/lib/python3*/dist-packages 2>/dev/null | head -1)
+if [ -n "$pyd" ] && (cd "$work" && PYTHONPATH="$pyd" /usr/bin/python3 -c '
+import slipfield, math
+r = slipfield.run("cof = field\nl = 0.5\nT = 20\nt_skip = 10\nstrip_halfwidth = 0.05\n", unum=False)
+assert r["pv_x"] > 0 and math.isnan(r["u_pv_x"]), r
+assert slipfield.library()._name.startswith("'"$p2"'"), slipfield.library()._name
+') > "$work/py.log" 2>&1; then
+    ok "make install PREFIX=tmp: the Python package imports and runs on the installed library"
+else
+    bad "make install PREFIX=tmp: the Python package: $(tail -3 "$work/py.log")"
+fi
 $make -s --no-print-directory uninstall PREFIX="$p2" > /dev/null 2>&1
 [ ! -e "$p2" ] && ok "make uninstall PREFIX=tmp removes every file and folder (PREFIX too: install made it)" \
     || bad "uninstall PREFIX=tmp left: $(find "$p2")"

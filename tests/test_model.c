@@ -122,6 +122,134 @@ static void solve_refusals(void **state)
     sf_model_free(m);
 }
 
+static void estimators_by_name(void **state)
+{
+    (void)state;
+    int by = -1;
+    assert_int_equal(sf_model_estimator(NULL, &by), SF_SUCCESS);
+    assert_int_equal(by, SF_MODEL_PLAIN);
+    assert_int_equal(sf_model_estimator("mlmc-sub", &by), SF_SUCCESS);
+    assert_int_equal(by, SF_MODEL_MLMC_SUB);
+    assert_int_equal(sf_model_estimator("auto", &by), SF_SUCCESS);
+    assert_int_equal(by, SF_MODEL_AUTO);
+    assert_int_equal(sf_model_estimator("mlmc2", &by), SF_EINVAL);
+    char err[300];
+    sf_model_spec sp = { SF_MODEL_PLAIN, 8, 0, NAN, 0, 1, NULL, 0, NULL };
+    assert_int_equal(sf_model_spec_check(&sp, err, sizeof err), SF_SUCCESS);
+    assert_int_equal(sp.pilot, 0);
+    sp.by = 9;
+    assert_int_equal(sf_model_spec_check(&sp, err, sizeof err), SF_EINVAL);
+    sp.by = SF_MODEL_PLAIN;
+    sp.target_se = -1;
+    assert_int_equal(sf_model_spec_check(&sp, err, sizeof err), SF_EINVAL);
+    sp.target_se = 0.01;
+    assert_int_equal(sf_model_spec_check(&sp, err, sizeof err), SF_SUCCESS);
+    assert_int_equal(sp.pilot, 8);   /* min(n, 20) */
+    sp.control_variate = 1;
+    assert_int_equal(sf_model_spec_check(&sp, err, sizeof err), SF_EINVAL);
+    sf_model_spec q = { SF_MODEL_MLMC, 40, 0, NAN, 1, 1, NULL, 0, NULL };
+    assert_int_equal(sf_model_spec_check(&q, err, sizeof err), SF_EINVAL);   /* paired + control variate */
+    q.control_variate = 0;
+    q.resume = 1;
+    assert_int_equal(sf_model_spec_check(&q, err, sizeof err), SF_EINVAL);
+    q.resume = 0;
+    assert_int_equal(sf_model_spec_check(&q, err, sizeof err), SF_SUCCESS);
+    assert_int_equal(q.pilot, 10);
+    q.pilot = 50;
+    assert_int_equal(sf_model_spec_check(&q, err, sizeof err), SF_EINVAL);   /* above n */
+    q.pilot = 1;
+    assert_int_equal(sf_model_spec_check(&q, err, sizeof err), SF_EINVAL);
+    sf_model_spec r = { SF_MODEL_PLAIN, 8, 4, NAN, 0, 1, NULL, 0, NULL };
+    assert_int_equal(sf_model_spec_check(&r, err, sizeof err), SF_EINVAL);   /* a pilot with plain */
+}
+
+/* each estimator's point through the one dispatch: its answer's estimator */
+static void points_by_spec(void **state)
+{
+    (void)state;
+    static const struct {
+        int by;
+        double l, target;
+        int cv, est;
+    } t[] = {
+        { SF_MODEL_PLAIN, 0.5, NAN, 0, SF_EST_PLAIN },
+        { SF_MODEL_PLAIN, 0.5, NAN, 1, SF_EST_CV },
+        { SF_MODEL_PLAIN, 0.5, 0.05, 0, SF_EST_TARGET },
+        { SF_MODEL_MLMC, 0.5, NAN, 0, SF_EST_MLMC },
+        { SF_MODEL_MLMC, 0.5, 0.05, 0, SF_EST_MLMC },
+        { SF_MODEL_MLMC_SUB, 0.2, NAN, 0, SF_EST_MLMC_SUB },
+        { SF_MODEL_MLMC_BOXES, 0.015, NAN, 0, SF_EST_MLMC_BOXES },
+        { SF_MODEL_ANTITHETIC, 0.5, NAN, 0, SF_EST_ANTITHETIC },
+        { SF_MODEL_AUTO, 0.5, NAN, 0, SF_EST_MLMC },
+        { SF_MODEL_AUTO, 0.015, NAN, 0, SF_EST_MLMC_BOXES },
+        { SF_MODEL_AUTO, 0.2, NAN, 0, SF_EST_MLMC_SUB },
+        { SF_MODEL_AUTO, 5, NAN, 0, SF_EST_ANTITHETIC },
+    };
+    char err[300];
+    for (size_t k = 0; k < sizeof t / sizeof t[0]; k++) {
+        sf_scene s;
+        sf_scene_default(&s);
+        s.cof = SF_COF_FIELD;
+        s.l = t[k].l;
+        s.T = 20;
+        s.t_skip = 10;
+        s.strip_halfwidth = 0.05;
+        sf_model_spec sp = { t[k].by, 6, t[k].by == SF_MODEL_PLAIN && isnan(t[k].target) ? 0 : 3, t[k].target,
+                             t[k].cv, 1, NULL, 0, NULL };
+        assert_int_equal(sf_model_spec_check(&sp, err, sizeof err), SF_SUCCESS);
+        sf_sweep_point p;
+        int rc = sf_model_point(&s, &sp, k == 0, &p, err, sizeof err);
+        if (rc)
+            print_error("case %zu: %s\n", k, err);
+        assert_int_equal(rc, SF_SUCCESS);
+        assert_int_equal(p.estimator, t[k].est);
+        sf_sweep_answer a;
+        assert_int_equal(sf_sweep_estimate(&p, 0, &a), SF_SUCCESS);
+        assert_true(isfinite(a.estimate));
+        if (k == 0)
+            assert_true(isfinite(a.u_num));
+        sf_sweep_point_free(&p);
+    }
+}
+
+static void sweep_handle(void **state)
+{
+    (void)state;
+    char err[300];
+    sf_model *m;
+    assert_int_equal(sf_model_new(SHORT "strip_halfwidth = 0.05\n", &m, err, sizeof err), SF_SUCCESS);
+    sf_model_spec sp = { SF_MODEL_PLAIN, 4, 0, NAN, 0, 1, NULL, 0, NULL };
+    const double v[2] = { 1, 2 };
+    sf_model_sweep *w = (sf_model_sweep *)1;
+    assert_int_equal(sf_model_sweep_run(m, "l_over_R", v, 2, &sp, &w, err, sizeof err), SF_SUCCESS);
+    assert_int_equal(sf_model_sweep_points(w), 2);
+    double f[6], tab[2 * 3 * 6];
+    const char *e, *st, *names[2 * 3 * 2];
+    assert_int_equal(sf_model_sweep_answer(w, 1, 2, f, &e, &st), SF_SUCCESS);
+    assert_string_equal(e, "plain");
+    assert_true(f[2] <= f[0] && f[0] <= f[3] && f[5] == 4);
+    assert_int_equal(sf_model_sweep_table(w, tab, names), SF_SUCCESS);
+    assert_memory_equal(tab + (1 * 3 + 2) * 6, f, sizeof f);
+    assert_string_equal(names[2 * (1 * 3 + 2) + 1], st);
+    assert_int_equal(sf_model_sweep_answer(w, 2, 0, f, &e, &st), SF_EINVAL);
+    assert_int_equal(sf_model_sweep_answer(w, 0, 3, f, &e, &st), SF_EINVAL);
+    assert_int_equal(sf_model_sweep_answer(w, 0, -1, f, &e, &st), SF_EINVAL);
+    sf_model_sweep_free(w);
+    sf_model_sweep_free(NULL);
+    /* refusals: the spec, no values, a parameter, a point that fails */
+    sp.target_se = -1;
+    assert_int_equal(sf_model_sweep_run(m, "l_over_R", v, 2, &sp, &w, err, sizeof err), SF_EINVAL);
+    assert_null(w);
+    sp.target_se = NAN;
+    assert_int_equal(sf_model_sweep_run(m, "l_over_R", v, 0, &sp, &w, err, sizeof err), SF_EINVAL);
+    assert_int_equal(sf_model_sweep_run(m, "nokey", v, 2, &sp, &w, err, sizeof err), SF_EPARSE);
+    assert_non_null(strstr(err, "nokey"));
+    const double tv[1] = { 5 };   /* T below t_skip: the reference refuses */
+    assert_int_equal(sf_model_sweep_run(m, "T", tv, 1, &sp, &w, err, sizeof err), SF_EINVAL);
+    assert_non_null(strstr(err, "T = 5"));
+    sf_model_free(m);
+}
+
 int main(void)
 {
     sf_init();
@@ -130,6 +258,9 @@ int main(void)
         cmocka_unit_test(set_keys),
         cmocka_unit_test(run_is_sweep_row),
         cmocka_unit_test(solve_refusals),
+        cmocka_unit_test(estimators_by_name),
+        cmocka_unit_test(points_by_spec),
+        cmocka_unit_test(sweep_handle),
     };
     return cmocka_run_group_tests_name("model", tests, NULL, NULL);
 }
