@@ -271,6 +271,18 @@ static void results_plot_log_range(void **state)
     /* within 10% of the data's ends (log scale: 0.23 .. 1.06), not 0.1 */
     assert_true(xmin > 0.2 && xmin < 0.25);
     assert_true(xmax > 1 && xmax < 1.1);
+    /* a range of 600 decades (stress/wrench-extremes): gnuplot runs (no
+     * "inf" in the script: the range is computed in logs) */
+    const double xw[] = { 1e-300, 1e300 }, yw[] = { 1, 0.5 };
+    sf_plot *pw = sf_result_plot(r, "wide", "wide", "eps [-]", "f [-]");
+    sf_plot_log(pw, 1, 0);
+    sf_plot_series(pw, "f", SF_STYLE_LINES, 2, xw, yw);
+    g = fopen(path, "w");
+    assert_non_null(g);
+    sf_plot_write_script(g, pw, png, why, sizeof why);
+    fclose(g);
+    snprintf(cmd, sizeof cmd, "gnuplot '%s' 2>/dev/null", path);
+    assert_int_equal(system(cmd), 0);
     unlink(png);
     unlink(path);
     rmdir(dir);

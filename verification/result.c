@@ -499,8 +499,10 @@ void sf_plot_write_script(FILE *g, const sf_plot *p, const char *path, char *why
      * l/R 0.25 and 1 drawn from 0.1); the data's own range instead, 4% of
      * it beyond each end, its ends labelled when it spans under 2 decades */
     if (p->logx && !one_x && isfinite(xlo)) {
-        double m = pow(xhi / xlo, 0.04);
-        fprintf(g, "set xrange [%.10g:%.10g]\n", xlo / m, xhi * m);
+        /* in logs: a range of 1e-300 .. 1e300 overflows xhi / xlo */
+        double lr = 0.04 * (log(xhi) - log(xlo)), a = exp(log(xlo) - lr), b = exp(log(xhi) + lr);
+        if (a > 0 && isfinite(b))
+            fprintf(g, "set xrange [%.10g:%.10g]\n", a, b);
         if (xhi / xlo < 100)
             fprintf(g, "set format x '%%g'\nset xtics add ('%g' %.10g, '%g' %.10g)\n", xlo, xlo, xhi, xhi);
     }
