@@ -198,6 +198,7 @@ test-run: $(TESTS) $(TESTS_SAN) $(BUILD)/slipfield $(BUILD)/libslipfield.so
 	 sh scripts/drift-test.sh || st=1; \
 	 sh scripts/install-test.sh || st=1; \
 	 sh scripts/python-test.sh || st=1; \
+	 sh scripts/readme-test.sh || st=1; \
 	 sh scripts/catalogue.sh $(BUILD)/slipfield $(BUILD)/catalogue.md && \
 	 if cmp -s $(BUILD)/catalogue.md cases/README.md; then echo "catalogue: cases/README.md up to date"; \
 	 else echo "catalogue: cases/README.md is stale: run make catalogue" >&2; st=1; fi; exit $$st

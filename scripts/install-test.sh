@@ -26,10 +26,10 @@ if $make -s --no-print-directory install DESTDIR="$stage" PREFIX="$prefix" > "$w
 else
     bad "make install failed"; tail -20 "$work/install.log"
     # the README shows the example: the same text
-sed -n '/^#include <slipfield\/cof.h>/,/^}/p' README.md > "$work/readme.c"
+sed -n '/^#include <slipfield\/cof.h>/,/^}/p' docs/library.md > "$work/readme.c"
 sed -n '/^#include <slipfield\/cof.h>/,/^}/p' examples/cycle.c > "$work/example.c"
-if [ -s "$work/example.c" ] && cmp -s "$work/readme.c" "$work/example.c"; then ok "README.md shows examples/cycle.c as it is"
-else bad "README.md's example differs from examples/cycle.c"; fi
+if [ -s "$work/example.c" ] && cmp -s "$work/readme.c" "$work/example.c"; then ok "docs/library.md shows examples/cycle.c as it is"
+else bad "docs/library.md's example differs from examples/cycle.c"; fi
 echo "install: $pass passed, $fail failed"; exit 1
 fi
 root=$stage$prefix
@@ -152,9 +152,9 @@ $make -s --no-print-directory uninstall PREFIX="$p3" > /dev/null 2>&1
 [ "$(cd "$p3" && find . | sort | paste -sd' ')" = ". ./lib ./lib/other.so" ] && ok "uninstall keeps folders it did not create" \
     || bad "uninstall into an existing PREFIX left or took: $(cd "$p3" && find . | paste -sd' ')"
 # the README shows the example: the same text
-sed -n '/^#include <slipfield\/cof.h>/,/^}/p' README.md > "$work/readme.c"
+sed -n '/^#include <slipfield\/cof.h>/,/^}/p' docs/library.md > "$work/readme.c"
 sed -n '/^#include <slipfield\/cof.h>/,/^}/p' examples/cycle.c > "$work/example.c"
-if [ -s "$work/example.c" ] && cmp -s "$work/readme.c" "$work/example.c"; then ok "README.md shows examples/cycle.c as it is"
-else bad "README.md's example differs from examples/cycle.c"; fi
+if [ -s "$work/example.c" ] && cmp -s "$work/readme.c" "$work/example.c"; then ok "docs/library.md shows examples/cycle.c as it is"
+else bad "docs/library.md's example differs from examples/cycle.c"; fi
 echo "install: $pass passed, $fail failed"
 [ $fail -eq 0 ]
