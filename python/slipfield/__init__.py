@@ -64,6 +64,27 @@ def _candidates():
 _lib = None
 
 
+def _pandas():
+    """pandas, from Debian's python3-pandas when the interpreter running
+    us is another one (a python3 first on PATH that does not see
+    /usr/lib/python3/dist-packages)."""
+    try:
+        import pandas
+        return pandas
+    except ImportError:
+        import sys
+        deb = "/usr/lib/python3/dist-packages"
+        if os.path.isdir(deb) and deb not in sys.path:
+            sys.path.append(deb)
+            try:
+                import pandas
+                return pandas
+            except ImportError:
+                sys.path.remove(deb)
+        raise ImportError("slipfield needs pandas: apt-get install python3-pandas (Debian's /usr/bin/python3 "
+                          "sees it)")
+
+
 def library():
     """The loaded libslipfield (ctypes.CDLL): SLIPFIELD_LIB, the source
     tree's build/, the installed one, or the loader's search path."""
@@ -186,7 +207,7 @@ def sweep(scene, param, values, realisations=None, target_se=None, estimator=Non
     (as `slipfield sweep --summary-format long`).  realisations: N (the
     cap with target_se); estimator: plain (default), mlmc, mlmc-boxes,
     mlmc-sub, antithetic or auto."""
-    import pandas as pd
+    pd = _pandas()
     lib = library()
     values = [float(v) for v in values]
     if realisations is None:
@@ -225,7 +246,7 @@ def evaluate(scene, design, unum=True):
     i; without it row j uses realisation j).  Returns the design with the
     QoIs, their ratios, their u_num and a status column ("ok", or why the
     row failed: a failed row fails alone), as `slipfield evaluate`."""
-    import pandas as pd
+    pd = _pandas()
     design = pd.DataFrame(design).reset_index(drop=True)
     out = []
     for j, row in design.iterrows():
@@ -255,7 +276,7 @@ def results(path="reports/results.json"):
     criterion, pass, ...) and per claim (kind = "claim": id, status,
     measured, ci_lo, ci_hi, alpha); the run's claim tally in .attrs."""
     import json
-    import pandas as pd
+    pd = _pandas()
     with open(path) as f:
         d = json.load(f)
     recs = []
