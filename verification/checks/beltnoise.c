@@ -391,6 +391,7 @@ static int chk_sobol_field_function(const sf_case *c, sf_result *r)
 #define PIN_ROWS 64
 #define PIN_NBOOT 1000
 #define PIN_BOUND 0.05
+#define PIN_WIDTH 1.001   /* each range [x, 1.001 x] */
 
 static const char *const pin_q[SF_SWEEP_NQ] = { "PV_x ratio", "PV_F ratio", "stick-duration ratio" };
 
@@ -399,10 +400,10 @@ static int chk_sobol_pinned(const sf_case *c, sf_result *r)
     const sf_scene *s = &c->scene;
     sf_sens_ranges R;
     double u0 = log10(s->l / s->R), cv = s->mu_std / s->mu_mean;
-    R.lo[SF_SENS_LOGLR] = u0, R.hi[SF_SENS_LOGLR] = u0 + log10(1.01);
-    R.lo[SF_SENS_CV] = cv, R.hi[SF_SENS_CV] = 1.01 * cv;
-    R.lo[SF_SENS_VB] = s->v_b, R.hi[SF_SENS_VB] = 1.01 * s->v_b;
-    R.lo[SF_SENS_MU] = s->mu_mean, R.hi[SF_SENS_MU] = 1.01 * s->mu_mean;
+    R.lo[SF_SENS_LOGLR] = u0, R.hi[SF_SENS_LOGLR] = u0 + log10(PIN_WIDTH);
+    R.lo[SF_SENS_CV] = cv, R.hi[SF_SENS_CV] = PIN_WIDTH * cv;
+    R.lo[SF_SENS_VB] = s->v_b, R.hi[SF_SENS_VB] = PIN_WIDTH * s->v_b;
+    R.lo[SF_SENS_MU] = s->mu_mean, R.hi[SF_SENS_MU] = PIN_WIDTH * s->mu_mean;
     sf_sens *S;
     char err[256];
     int rc = sf_sens_run(s, &R, PIN_ROWS, PIN_NBOOT, 0.95, 0, NULL, &S, err, sizeof err);
