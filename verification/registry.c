@@ -22,6 +22,7 @@ static const sf_check_def *const families[] = {
     sf_checks_selftest,
     sf_checks_ref3dof,
     sf_checks_sweepstats,
+    sf_checks_estimators,
     sf_checks_mcstop,
     sf_checks_sensitivity,
     sf_checks_beltnoise,
