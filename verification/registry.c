@@ -14,6 +14,7 @@ static const sf_check_def *const families[] = {
     sf_checks_belt,
     sf_checks_limits,
     sf_checks_validation,
+    sf_checks_mean_cof,
     sf_checks_plan,
     sf_checks_design,
     sf_checks_cellavg,

@@ -14,6 +14,7 @@ extern const sf_check_def sf_checks_dynamics[];
 extern const sf_check_def sf_checks_belt[];
 extern const sf_check_def sf_checks_limits[];
 extern const sf_check_def sf_checks_validation[];
+extern const sf_check_def sf_checks_mean_cof[];
 extern const sf_check_def sf_checks_plan[];
 extern const sf_check_def sf_checks_design[];
 extern const sf_check_def sf_checks_cellavg[];
