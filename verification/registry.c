@@ -17,6 +17,7 @@ static const sf_check_def *const families[] = {
     sf_checks_mean_cof,
     sf_checks_plan,
     sf_checks_design,
+    sf_checks_design_stored,
     sf_checks_cellavg,
     sf_checks_mms,
     sf_checks_cofstrip,

@@ -17,6 +17,7 @@ extern const sf_check_def sf_checks_validation[];
 extern const sf_check_def sf_checks_mean_cof[];
 extern const sf_check_def sf_checks_plan[];
 extern const sf_check_def sf_checks_design[];
+extern const sf_check_def sf_checks_design_stored[];
 extern const sf_check_def sf_checks_cellavg[];
 extern const sf_check_def sf_checks_mms[];
 extern const sf_check_def sf_checks_selftest[];
