@@ -149,7 +149,7 @@ static int section_bare(FILE *f, const char *dir)
     sf_plot_series(p, "bare FFT + RNG, belt strips", SF_STYLE_POINTS, cnt[1], x[1], yb[1]);
     int rc = fb_render(r, dir);
     fprintf(f, "\n![Field sample time vs bare FFT + RNG](field_sample_vs_bare.png)\n\n"
-               "Target: ratio <= 1.5 (issue 6): %s (largest ratio %.3f). The extra over the bare cost is the "
+               "Target: ratio <= 1.5: %s (largest ratio %.3f). The extra over the bare cost is the "
                "amplitude multiply and the extraction of the m x n window of both fields. Our time grows like "
                "M^%.2f in the embedding size M over the squares from 256^2 up (`gsl_fit_linear`, log-log; "
                "N log N alone gives slightly above 1, memory traffic adds to it); a belt strip costs what its "
