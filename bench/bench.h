@@ -25,9 +25,9 @@ static inline double bench_cpu(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
-/* A target a section measures (issue 14: "the bench report shows each
- * target met or not, with the measured ratio"): the report opens with a
- * table of those the sections run reported.  `measured` is printf-style. */
+/* A target a section measures (the bench report shows each target met or
+ * not, with the measured ratio): the report opens with a table of those
+ * the sections run reported.  `measured` is printf-style. */
 void bench_target(const char *target, int met, const char *measured, ...) __attribute__((format(printf, 3, 4)));
 
 /* Each section appends Markdown to f and may write plots into dir. */

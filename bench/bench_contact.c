@@ -4,7 +4,7 @@
  * field-COF path (bilinear look-ups), the one the dynamics pays.
  *
  * Then the cost per cell of sf_contact_wrench against three references, in
- * one interleaved run (issue 14, target 3 ns per cell):
+ * one interleaved run (target 3 ns per cell):
  *  - bare: the same arithmetic with nothing else (no speed scaling, no
  *    clamping to the grid, no fallback counters), one plain loop the
  *    compiler vectorises with a reassociated reduction (its look-up loads
@@ -12,7 +12,7 @@
  *  - bare by pairs (AVX-512 machines): the same again with the wrench's
  *    own look-up (sf_cof_view_eval_on8: the nodal values by pairs) and the
  *    partial sums in registers: the lower bound for the wrench's code;
- *  - scalar: the wrench as it was before issue 14 (hypot, a call to
+ *  - scalar: the wrench as it was before its speed work (hypot, a call to
  *    sf_cof_eval per cell), through the public API. */
 #include "bench.h"
 #include "contact.h"
@@ -83,7 +83,7 @@ static void wrench_bare_pairs(size_t n, const double *rx, const double *ry, cons
 }
 #endif
 
-/* The pre-issue-14 wrench: hypot, a call to sf_cof_eval per cell. */
+/* The former scalar wrench: hypot, a call to sf_cof_eval per cell. */
 static void wrench_scalar(const sf_contact *c, double xb, double yb, double u, double v, double w, double out[3])
 {
     const double *rx, *ry, *wt;
@@ -176,7 +176,7 @@ int bench_contact(FILE *f, const char *dir)
                "clamping, no fallback) as one plain C loop the compiler vectorises (it loads the 4 nodal values of a cell "
                "one by one); *pairs*: the same bare loop with the wrench's own AVX-512 look-up (the nodal values by "
                "pairs, sf_cof_view_eval_on8) and its sums in registers, the lower bound for the wrench's code (%s); "
-               "*scalar*: the wrench before issue 14 (hypot, a call to sf_cof_eval per cell).\n\n| layout | "
+               "*scalar*: the wrench before its speed work (hypot, a call to sf_cof_eval per cell).\n\n| layout | "
                "resolution | cells | time per evaluation [us] | ns per cell | bare ns per cell | ours / bare | "
                "pairs ns per cell | ours / pairs | scalar ns per cell | scalar / ours | error in f, t |\n"
                "|---|---|---|---|---|---|---|---|---|---|---|---|\n", GM, GN,

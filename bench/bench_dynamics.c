@@ -306,7 +306,7 @@ static void cell(FILE *f, const point *q)
         fprintf(f, " not reached |");
 }
 
-/* CVODE vs rk8pd at equal error: the issue-6 target. */
+/* CVODE vs rk8pd at equal error: a target of the bench report. */
 static void cvode_ratios(FILE *f, point *p, size_t n, double e_paper)
 {
     const double targets[3] = { 1e-6, 1e-9, e_paper };
@@ -334,7 +334,7 @@ static void cvode_ratios(FILE *f, point *p, size_t n, double e_paper)
             all &= a != NULL;
         }
     }
-    fprintf(f, "\nTarget (issue 6): our adaptive scheme faster than CVODE at equal error on the 1-D case: **%s**",
+    fprintf(f, "\nTarget: our adaptive scheme faster than CVODE at equal error on the 1-D case: **%s**",
             all ? "met" : "missed");
     if (isfinite(rmin))
         fprintf(f, " (CVODE takes %.1f to %.1f times as long at the targets above)", rmin, rmax);
@@ -589,7 +589,7 @@ int bench_dynamics(FILE *f, const char *dir)
     table(f, "Eq. 15 error [m^2 s]", p2, n2);
     double rk = p2[1].time, erk = p2[1].err, a6 = cheapest(p2, n2, K_RKCK, 1e-6), arl = cheapest(p2, n2, K_RKCK, erk);
     double b6 = cheapest(p2, n2, K_RK8PD, 1e-6), brl = cheapest(p2, n2, K_RK8PD, erk);
-    fprintf(f, "\nTarget (issue 6): Eq. 15 error 1e-6 at least 10x faster than RK4 at dt = 1e-3 s reaching the same "
+    fprintf(f, "\nTarget: Eq. 15 error 1e-6 at least 10x faster than RK4 at dt = 1e-3 s reaching the same "
                "error. Measured: RK4 at dt = 1e-3 s reaches %.2e in %.2f s; the cheapest adaptive run reaching "
                "1e-6 takes %.2f s (ratio RK4/adaptive %.1f at the target error), and reaching RK4's own error "
                "%.2f s (ratio %.1f). RK4 at dt >= 2e-3 s loses the cycle: the relative speed crosses the "
@@ -624,7 +624,7 @@ int bench_dynamics(FILE *f, const char *dir)
     sf_result_free(r);
     fprintf(f, "\n![1-D work-precision](dyn_wp_1d.png)\n\n![Stochastic work-precision](dyn_wp_stochastic.png)\n\n");
 #if !SF_HAVE_CVODE
-    fprintf(f, "SUNDIALS CVODE (the benchmark-only peer of issue 6) was absent from this build: install it "
+    fprintf(f, "SUNDIALS CVODE (a benchmark-only peer) was absent from this build: install it "
                "(`apt-get install libsundials-dev`, CVODE 6.x) and rebuild the bench to add it to both studies.\n");
 #endif
     return rc ? 1 : 0;

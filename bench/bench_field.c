@@ -7,7 +7,9 @@
  * (b) circulant vs a direct GSL Cholesky sampler (bench_field_chol.c).
  * (c) peers: RandomFields, OpenTURNS (bench_field_peers.c).
  * (d) work-precision of the embedding padding (exact covariance error vs
- *     time per field). */
+ *     time per field).
+ * The timing helpers and the circulant cost all sections share are in
+ * bench_field_common.c. */
 #include "bench.h"
 #include "bench_field.h"
 #include "field.h"
@@ -23,104 +25,6 @@
 #include <gsl/gsl_randist.h>
 #include <gsl/gsl_sort.h>
 #include <gsl/gsl_statistics_double.h>
-
-double fb_median(double *t, size_t n)
-{
-    gsl_sort(t, 1, n);
-    return gsl_stats_median_from_sorted_data(t, 1, n);
-}
-
-int fb_more(size_t reps, size_t min_reps, size_t max_reps, double t_start, double budget)
-{
-    return reps < max_reps && (reps < min_reps || now() - t_start < budget);
-}
-
-int fb_render(sf_result *r, const char *dir)
-{
-    char e[200];
-    int rc = sf_result_render_plots(r, dir, e, sizeof e);
-    if (rc)
-        fprintf(stderr, "bench: plot: %s\n", e);
-    sf_result_free(r);
-    return rc;
-}
-
-/* Plan a field; SF_ETRUNC (padding cap reached, plan usable) is not an error
- * here: the caller reports cov_error. */
-static sf_field *plan(const sf_field_spec *spec, const char *what)
-{
-    sf_field *f;
-    int rc = sf_field_alloc(spec, &f);
-    if (!sf_usable(rc)) {
-        fprintf(stderr, "bench: cannot plan %s: %s\n", what, sf_strerror(rc));
-        return NULL;
-    }
-    return f;
-}
-
-int fb_circulant_costs(const sf_field_spec *spec, size_t k, double budget, fb_cost *out)
-{
-    enum { MAXR = 41 };
-    double *t = malloc(k * MAXR * sizeof *t);
-    sf_field **f = calloc(k, sizeof *f);
-    double **re = calloc(k, sizeof *re), **im = calloc(k, sizeof *im);
-    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
-    int rc = !t || !f || !re || !im || !rng;
-    /* set-up: plan and free, round robin over the specs */
-    size_t r = 0;
-    double t_start = now();
-    while (!rc && fb_more(r, 3, MAXR, t_start, budget)) {
-        for (size_t i = 0; i < k && !rc; i++) {
-            double t0 = now();
-            sf_field *g = plan(&spec[i], "circulant");
-            t[i * MAXR + r] = now() - t0;
-            rc = !g;
-            sf_field_free(g);
-        }
-        r++;
-    }
-    for (size_t i = 0; i < k && !rc; i++) {
-        out[i].n = spec[i].n;
-        out[i].reps_setup = r;
-        out[i].setup = fb_median(t + i * MAXR, r);
-        f[i] = plan(&spec[i], "circulant");
-        re[i] = malloc(spec[i].m * spec[i].n * sizeof **re);
-        im[i] = malloc(spec[i].m * spec[i].n * sizeof **im);
-        rc = !f[i] || !re[i] || !im[i];
-        if (!rc) {
-            const sf_field_info *in = sf_field_get_info(f[i]);
-            out[i].px = in->px;
-            out[i].py = in->py;
-            out[i].cov_err = in->cov_error;
-        }
-    }
-    /* per field: half a sample_pair, round robin */
-    r = 0;
-    t_start = now();
-    while (!rc && fb_more(r, 5, MAXR, t_start, budget)) {
-        for (size_t i = 0; i < k; i++) {
-            double t0 = now();
-            sf_field_sample_pair(f[i], rng, re[i], im[i]);
-            t[i * MAXR + r] = 0.5 * (now() - t0);
-        }
-        r++;
-    }
-    for (size_t i = 0; i < k && !rc; i++) {
-        out[i].reps_sample = r;
-        out[i].sample = fb_median(t + i * MAXR, r);
-    }
-    for (size_t i = 0; i < k && f; i++) {
-        sf_field_free(f[i]);
-        if (re) free(re[i]);
-        if (im) free(im[i]);
-    }
-    if (rng) gsl_rng_free(rng);
-    free(re);
-    free(im);
-    free(f);
-    free(t);
-    return rc;
-}
 
 /* ---- (a) ours vs the bare FFT + normal draws ---- */
 
@@ -140,7 +44,7 @@ static int bench_grid(const grid *g, result *r)
     double dx = 0.025, l = 4 * dx;
     sf_field_spec spec;
     sf_field_spec_default(&spec, g->m, g->n, dx, dx, l);
-    sf_field *f = plan(&spec, g->name);
+    sf_field *f = fb_plan(&spec, g->name);
     if (!f)
         return 1;
     const sf_field_info *in = sf_field_get_info(f);
@@ -245,7 +149,7 @@ static int section_bare(FILE *f, const char *dir)
     sf_plot_series(p, "bare FFT + RNG, belt strips", SF_STYLE_POINTS, cnt[1], x[1], yb[1]);
     int rc = fb_render(r, dir);
     fprintf(f, "\n![Field sample time vs bare FFT + RNG](field_sample_vs_bare.png)\n\n"
-               "Target: ratio <= 1.5 (issue 6): %s (largest ratio %.3f). The extra over the bare cost is the "
+               "Target: ratio <= 1.5: %s (largest ratio %.3f). The extra over the bare cost is the "
                "amplitude multiply and the extraction of the m x n window of both fields. Our time grows like "
                "M^%.2f in the embedding size M over the squares from 256^2 up (`gsl_fit_linear`, log-log; "
                "N log N alone gives slightly above 1, memory traffic adds to it); a belt strip costs what its "

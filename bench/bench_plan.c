@@ -119,8 +119,8 @@ int bench_plan(FILE *f, const char *dir)
 
 /* One realisation at l/R = 1 (Table 1 otherwise, T = 100 s) on one core:
  * COF plan, draw and run, CPU time of this thread, at the default
- * qoi_tol (the plan's settings) and at the settings before issue 14
- * (32 rings, rtol 1e-8); interleaved, medians. */
+ * qoi_tol (the plan's settings) and at the fixed settings the plan
+ * replaced (32 rings, rtol 1e-8); interleaved, medians. */
 /* Draw realisation `seed`'s COF from plan p and run it (no history). */
 static int draw_and_run(const sf_scene *s, sf_cof_plan *p, unsigned long seed)
 {
@@ -219,7 +219,7 @@ int bench_realisation(FILE *f, const char *dir)
     sf_scene_default(&s[0]);
     s[0].l = s[0].R;   /* l/R = 1 */
     s[1] = s[0];
-    s[1].cells = 32;   /* the defaults before issue 14 */
+    s[1].cells = 32;   /* the fixed defaults the plan replaced */
     s[1].rtol = 1e-8;
     double t[2][REPS];
     int rc = 0;
@@ -246,7 +246,7 @@ int bench_realisation(FILE *f, const char *dir)
                "CPU time of this thread for COF plan + draw + run, medians of %d interleaved repetitions. Default: "
                "qoi_tol = %g, the plan's settings (%zu rings, rtol %.3g, predicted QoI error %.2g).\n\n"
                "| settings | CPU time per realisation [s] | / 0.05 s target |\n|---|---|---|\n"
-               "| default (plan for qoi_tol) | %.4f | %.2f |\n| before issue 14 (32 rings, rtol 1e-8) | %.4f | %.2f |\n\n"
+               "| default (plan for qoi_tol) | %.4f | %.2f |\n| before the plan (32 rings, rtol 1e-8) | %.4f | %.2f |\n\n"
                "Default vs before: **%.1fx** faster; the 0.05 s target is **%s** (%.2f of it).\n",
             REPS, s[0].qoi_tol, np.cells, np.rtol, np.err_total, a, a / 0.05, b, b / 0.05, b / a,
             a <= 0.05 ? "met" : "NOT met", a / 0.05);

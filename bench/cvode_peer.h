@@ -1,5 +1,5 @@
 /* SUNDIALS CVODE (6.x API) with root-finding as a benchmark-only peer of
- * the stick-slip integrator (issue 6), 1-D (dof = 1, constant COF) and
+ * the stick-slip integrator, 1-D (dof = 1, constant COF) and
  * 3-DOF (any COF, the field included).  Only the benchmark links it:
  * everything here exists when bench_config.h says SF_HAVE_CVODE.
  *

@@ -62,7 +62,7 @@ int main(int argc, char **argv)
         { "realisation", bench_realisation, 0, NULL, 0, 0 },
         { "unum", bench_unum, 0, NULL, 0, 0 },
         { "plan", bench_plan, 0, NULL, 0, 1 },   /* the plan's calibration (minutes): only when named */
-        { "fig11", bench_fig11, 0, NULL, 0, 1 },   /* issue 14: Fig. 11 time estimate (minutes): only when named */
+        { "fig11", bench_fig11, 0, NULL, 0, 1 },   /* Fig. 11 time estimate (minutes): only when named */
         { "estimators", bench_estimators, 0, NULL, 0, 1 },   /* plain MC vs control variate and two levels, Fig. 11 grid (minutes) */
         { "coupling", bench_coupling, 0, NULL, 0, 1 },   /* antithetic and coarser fields, Fig. 11 grid (minutes) */
     };

@@ -1,3 +1,6 @@
+/* Shared helpers of the CLI's subcommands (cli.h): loading a scene and
+ * warning on keys a command ignores, output files, exit statuses, and
+ * the option parse. */
 #include "cli.h"
 #include "sf_error.h"
 

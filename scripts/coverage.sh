@@ -9,8 +9,8 @@
 # then lcov (branch coverage on) keeps
 # solver/*.c, genhtml writes reports/coverage/index.html and this script
 # reports/coverage/summary.md.  Fails when line or branch coverage is below
-# the floor recorded in tests/coverage-floor.txt (the issue-16 target is 95 %
-# of lines, 85 % of branches; the file records the measured value when that
+# the floor recorded in tests/coverage-floor.txt (the target is 95 % of
+# lines, 85 % of branches; the file records the measured value when that
 # is lower, and is raised whenever coverage rises: see the file).
 set -u
 build=$1 jobs=$2; shift 2
@@ -87,7 +87,7 @@ awk -v floorfile="$floor" -v secs=$((t1 - t0)) '
     }' "$out/solver.info" > "$out/summary.md" 2> "$cov/totals" ||
     { echo "coverage: no totals" >&2; exit 1; }
 read -r lines branches < "$cov/totals"
-# the floor: the larger of the issue-16 target and the recorded measurement
+# the floor: the larger of the target and the recorded measurement
 # (tests/coverage-floor.txt: "lines N" and "branches N" lines; "target" the aim)
 get() { sed -n "s/^$1[[:space:]]\{1,\}\([0-9.]\{1,\}\).*/\1/p" "$floor" | head -1; }
 fl=$(get lines) fb=$(get branches) tl=$(get target_lines) tb=$(get target_branches)

@@ -204,7 +204,7 @@ static void contensou(void **state)
     }
 }
 
-/* The fast wrench loop (issue 14): the scaled speeds make the wrench a
+/* The fast wrench loop: the scaled speeds make the wrench a
  * function of the slip direction field only, so scaling (u, v, w) by a
  * power of two gives the same bits (no overflow at 2^900, no underflow at
  * 2^-1000); it agrees with the cell-by-cell hypot loop written here from

@@ -1,5 +1,5 @@
-/* Solver paths no case exercises (issue 16: coverage of solver/ by make
- * test + the quick tier): error messages, the scene key table (units for
+/* Solver paths no case exercises (coverage of solver/ by make test + the
+ * quick tier, `make coverage`): error messages, the scene key table (units for
  * axis labels, `help scene`), the plan's account of itself (`run
  * --explain`), its refusals and warnings, sweep-parameter edges, and the
  * stick break on the exact T = 0 section. */

@@ -1,4 +1,5 @@
-/* Unit tests: a NaN in a check's data fails the case (issue 13, part 1).
+/* Unit tests: a NaN in a check's data fails the case (docs/design.md
+ * sec. 7.6).
  *
  * The harness side: a row whose measured value is NaN fails; NaN/Inf in a
  * plotted series or in an array given to sf_result_data is counted, and

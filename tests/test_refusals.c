@@ -1,5 +1,5 @@
 /* Unit tests: the solver's refusals and rarely taken branches that no case
- * and no other unit test reaches (issue 16, coverage of solver/): invalid
+ * and no other unit test reaches (coverage of solver/): invalid
  * arguments named by an error code, size caps, padding caps per axis, the
  * tiled window's partial slides, checkpoints of other work, the wrench's
  * hypot fallback on a field.  Each test asserts what the branch is for,

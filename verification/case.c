@@ -1,3 +1,5 @@
+/* Literate cases (case.h): a case's Markdown read into its scene and
+ * check spec, and the power runs' alternatives applied to a scene. */
 #include "case.h"
 #include "registry.h"
 #include "sf_error.h"

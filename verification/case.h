@@ -81,7 +81,7 @@ typedef struct {
     int scene_line;        /* line number of the block's first line */
     sf_scene scene;        /* what the solver reads */
     sf_case_spec spec;     /* what the check reads besides: check, tolerance, ... */
-    /* Power runs (issue 13): the alternative the DATA GENERATOR draws
+    /* Power runs (docs/reports.md, `make power`): the alternative the DATA GENERATOR draws
      * under ("" for the null: the normal run).  Set by `slipfield verify
      * --alternative`; the checks' generator helpers (checks/common.h:
      * check_gen_scene, check_field_sample...) apply it, oracles never. */

@@ -1,3 +1,5 @@
+/* The reports' HTML pages (html.h): Markdown rendered with cmark-gfm into
+ * standalone pages with an inline style sheet and the broken-image marker. */
 #include "html.h"
 
 #include <errno.h>

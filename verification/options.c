@@ -1,3 +1,6 @@
+/* The command-line option parser every command shares (options.h):
+ * options and positional arguments, typed and range-checked values, and
+ * the usage message on a bad one. */
 #include "options.h"
 #include "sf_error.h"   /* SF_EXIT_* */
 

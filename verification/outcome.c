@@ -1,3 +1,4 @@
+/* A verdict's name in reports and results (outcome.h). */
 #include "outcome.h"
 
 const char *sf_verdict_name(int v)

@@ -1,3 +1,5 @@
+/* The report writers (report.h): each case's report and plots, a crashed
+ * case's page, and the run's index, written under temporary names. */
 #include "report.h"
 #include "drift.h"
 #include "html.h"

@@ -1,3 +1,5 @@
+/* What a check produces (result.h): its rows and their verdicts, notes,
+ * claims, samples and plots, and the plots' rendering by gnuplot. */
 #include "result.h"
 #include "stats.h"
 #include "sf_error.h"

@@ -61,7 +61,7 @@ int sf_check_verdict(sf_result *r, const char *quantity, int ok, const char *fou
  * the case's budget and may be replicated (budget.h). */
 void sf_result_mark_statistical(sf_result *r, double alpha);
 
-/* Non-finite values fail (issue 13).  The result counts every NaN/Inf
+/* Non-finite values fail (docs/design.md sec. 7.6).  The result counts every NaN/Inf
  * among its rows' measured values and its plotted series (the plots are
  * the check's data), and among arrays handed to sf_result_data: those a
  * check aggregates (max, mean, test statistic) but does not plot.  `what`

@@ -188,7 +188,7 @@ static void run_child(const sf_case *c, const char *root, int fd, unsigned timeo
         snprintf(o.key, sizeof o.key, "the check produced no row (it cannot fail, so it cannot pass)");
     } else if (sf_result_nplots(r) == 0) {
         /* every case report shows its evidence: a check without a plot is
-           a defect like a check without a row (issue 16) */
+           a defect like a check without a row (docs/design.md sec. 7.6) */
         o.verdict = SF_VERDICT_ERROR;
         snprintf(o.key, sizeof o.key, "the check produced no plot (a report must show its evidence)");
     } else if (prc != SF_SUCCESS) {

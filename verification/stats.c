@@ -1,3 +1,5 @@
+/* The statistical tests the checks gate on (stats.h), the NaN-propagating
+ * max and min, and the test-only NaN poison. */
 #include "stats.h"
 
 #include <math.h>

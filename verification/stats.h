@@ -56,7 +56,7 @@ double sf_rms_le_pvalue(const double *e, size_t n, double b);
 /* Standard normal CDF as an sf_cdf_fn. */
 double sf_cdf_normal(double x, void *params);
 
-/* NaN-propagating aggregation (issue 13).  fmax/fmin and `if (x > m)`
+/* NaN-propagating aggregation (docs/design.md sec. 7.6).  fmax/fmin and `if (x > m)`
  * silently drop a NaN, so a NaN at one lag, point or realisation would
  * vanish from a max and the case pass: every max/min a check aggregates
  * goes through these instead.  A NaN argument gives NaN; an Inf is kept

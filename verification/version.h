@@ -1,3 +1,5 @@
+/* slipfield verification: the program's version and the build's git
+ * revision and solver checksum, as the reports state them. */
 #ifndef SF_VERSION_H
 #define SF_VERSION_H
 #include "sf_version.h"   /* the library's version is the program's */

@@ -1,4 +1,4 @@
-/* Checks of the tiled belt COF along a run (issue 14 part 2): the window
+/* Checks of the tiled belt COF along a run (docs/design.md sec. 4.3): the window
  * follows the disc in bounded memory, every look-up lands on it, and the
  * field it shows is one field (random access); the same bits for any
  * thread count. */

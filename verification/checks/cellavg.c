@@ -1,6 +1,7 @@
-/* The cell-average COF model (cof_model = cell_average, solver/cellavg.h,
- * issue 14): the plan's shortcut at small l/R against the full
- * computation.
+/* The cell-average COF model (cof_model = cell_average, solver/cellavg.h;
+ * docs/design.md sec. 4.4): the plan's shortcut at small l/R
+ * against the full computation.  The references these checks rest on (the
+ * covariance oracle, the exact box average) are in cellavg_oracle.c.
  *  - cellavg_covariance: the effective field's produced covariance
  *    against an independent oracle of the box-averaged lognormal
  *    covariance (2-D Gauss-Legendre quadrature of Cov_mu = mubar^2
@@ -14,6 +15,7 @@
  *    switching l/R (two-sample Kolmogorov-Smirnov). */
 #include "checks.h"
 #include "common.h"
+#include "cellavg_oracle.h"
 #include "../stats.h"
 #include "cellavg.h"
 #include "cof.h"
@@ -43,50 +45,6 @@ static void qois(const sf_osc_result *res, double *q)
     q[2] = res->stick_fraction;
 }
 
-/* ---- the oracle: Cov(mu_h(0), mu_h(dx, dy)) =
- * (1/h^4) int_{-h}^{h} int_{-h}^{h} (h - |u|)(h - |v|) Cov_mu(dx + u, dy + v) du dv,
- * Gauss-Legendre (GSL, 20 points) on pieces of at most l/2 split at the
- * triangle's kink; Cov_mu from the oracle's own Nataf parameters. */
-typedef struct { double mean, s2, l; } oracle_par;
-
-static double cov_mu(const oracle_par *o, double x, double y)
-{
-    return o->mean * o->mean * expm1(o->s2 * exp(-(x * x + y * y) / (o->l * o->l)));
-}
-
-static size_t nodes_1d(double h, double l, const gsl_integration_glfixed_table *gl, double *u, double *w)
-{
-    size_t pieces = (size_t)ceil(h / (l / 2)), n = 0;
-    for (int side = -1; side <= 1; side += 2)
-        for (size_t p = 0; p < pieces; p++) {
-            double a = h * (double)p / (double)pieces, b = h * (double)(p + 1) / (double)pieces;
-            for (size_t k = 0; k < gl->n; k++) {
-                double x, wk;
-                gsl_integration_glfixed_point(a, b, k, &x, &wk, gl);
-                u[n] = side * x;
-                w[n++] = wk * (h - x) / (h * h);
-            }
-        }
-    return n;
-}
-
-static double oracle_cov(const oracle_par *o, double h, double dx, double dy, const double *u, const double *w,
-                         size_t n)
-{
-    /* boxes more than 10 l apart along an axis: every value of the
-     * integrand is below mubar^2 sG^2 e^-100, zero in double precision */
-    if (fabs(dx) - h > 10 * o->l || fabs(dy) - h > 10 * o->l)
-        return 0;
-    double s = 0;
-    for (size_t j = 0; j < n; j++) {
-        double r = 0;
-        for (size_t i = 0; i < n; i++)
-            r += w[i] * cov_mu(o, dx + u[i], dy + u[j]);
-        s += w[j] * r;
-    }
-    return s;
-}
-
 /* Node patches of the effective field against the oracle's covariance:
  * whitened likelihood-ratio test of Cov = Sigma (common.c: check_wlrt). */
 enum { PATCH = 4 };
@@ -99,7 +57,7 @@ static gsl_matrix *patch_sigma(const oracle_par *o, double h, double d, const do
     double cl[PATCH][PATCH];   /* the oracle at lags (a d, b d); it is even in each */
     for (int a = 0; a < PATCH; a++)
         for (int b = 0; b < PATCH; b++)
-            cl[a][b] = oracle_cov(o, h, a * d, b * d, u, w, nn);
+            cl[a][b] = cellavg_oracle_cov(o, h, a * d, b * d, u, w, nn);
     gsl_matrix *m = gsl_matrix_alloc(P, P);
     for (int p = 0; p < P; p++)
         for (int q = 0; q < P; q++)
@@ -170,10 +128,10 @@ static int chk_covariance(const sf_case *c, sf_result *r)
         oracle_par o = { s.mu_mean, lp.sigma * lp.sigma, s.l };
         size_t cap = 2 * 20 * ((size_t)ceil(h / (s.l / 2)) + 1);
         double *u = check_alloc(cap * sizeof *u), *w = check_alloc(cap * sizeof *w);
-        size_t nn = nodes_1d(h, s.l, gl, u, w);
+        size_t nn = cellavg_nodes_1d(h, s.l, gl, u, w);
         double *cov = check_alloc(in->nx * in->ny * sizeof *cov);
         sf_field_covariance(f, cov);
-        double ov = oracle_cov(&o, h, 0, 0, u, w, nn), emax = 0;
+        double ov = cellavg_oracle_cov(&o, h, 0, 0, u, w, nn), emax = 0;
         /* near lags, and the farthest ones along x and y (where a circulant
          * period too short for the covariance's support wraps its tail) */
         static const int js[] = { 0, 1, 2, 5, 9 };
@@ -190,7 +148,7 @@ static int chk_covariance(const sf_case *c, sf_result *r)
                     if (ii >= in->nx || jj >= in->ny)
                         continue;
                     double produced = var * cov[ii + in->nx * jj];
-                    double oracle = oracle_cov(&o, h, (double)ii * d, (double)jj * d, u, w, nn);
+                    double oracle = cellavg_oracle_cov(&o, h, (double)ii * d, (double)jj * d, u, w, nn);
                     emax = sf_max(emax, fabs(produced - oracle) / ov);
                 }
         free(cov);
@@ -381,109 +339,6 @@ static int chk_sampler_dft(const sf_case *c, sf_result *r)
     sf_plot_series(pl, "draw vs direct sum", SF_STYLE_LINESPOINTS, NG, xs, es);
     sf_plot_hline(pl, "tolerance", c->spec.tolerance);
     return SF_SUCCESS;
-}
-
-/* ---- the exact box average of a bilinear grid: the interpolant is a sum
- * of tensor-product hat functions, so its integral over an axis-aligned
- * box is separable; the weight of node i along an axis is the integral
- * of its hat over the box's interval.  Nodes off the grid are dropped and
- * the weights renormalised (only at the strip's edge, which the disc never
- * reaches: the strip bound B of cof.h). */
-static double hat_prim(double t)
-{
-    if (t <= -1)
-        return 0;
-    if (t <= 0)
-        return 0.5 * (t + 1) * (t + 1);
-    if (t <= 1)
-        return 1 - 0.5 * (1 - t) * (1 - t);
-    return 1;
-}
-
-/* weights of fine nodes i0.. for the interval [a, b] on a lattice x0 + i dx, m nodes */
-static size_t box_weights(double a, double b, double x0, double dx, size_t m, size_t *i0, double *w, size_t cap)
-{
-    long lo = (long)floor((a - x0) / dx) - 1, hi = (long)ceil((b - x0) / dx) + 1;
-    lo = lo < 0 ? 0 : lo;
-    hi = hi > (long)m - 1 ? (long)m - 1 : hi;
-    size_t n = 0;
-    double sum = 0;
-    for (long i = lo; i <= hi && n < cap; i++) {
-        double xi = x0 + (double)i * dx;
-        w[n] = hat_prim((b - xi) / dx) - hat_prim((a - xi) / dx);
-        sum += w[n++];
-    }
-    for (size_t k = 0; k < n; k++)
-        w[k] /= sum;
-    *i0 = (size_t)lo;
-    return n;
-}
-
-/* The cell-average COF of the fine grid `fine` on the effective grid of
- * scene sc (spacing box/3, marked with its box), its deviations from the
- * mean times `scale` (1: the exact box averages).  A tiled fine field
- * (cof_generator = tiles: a window of the belt that slides) is made to
- * hold each coarse column's support in turn (sf_cof_follow: its node
- * values are a function of the realisation and the lattice point alone,
- * so the averages are those of the one field the point model sees); the
- * columns are visited towards -x, the way the window's slack points. */
-sf_cof *check_cellavg_filter(const sf_cof *fine, const sf_scene *sc, double box, double scale, sf_result *r)
-{
-    size_t m, n, mc, nc;
-    double x0, y0, dx, dy;
-    const double *g;
-    sf_cof_grid_view(fine, &m, &n, &x0, &y0, &dx, &dy, &g);
-    /* the effective grid the plan would draw on */
-    char err[256] = "";
-    sf_cof_plan *cp;
-    if (sf_cof_plan_alloc(sc, &cp, err, sizeof err)) {
-        sf_note(r, "**Cannot plan the cell-average model:** %s", err);
-        return NULL;
-    }
-    sf_cof_plan_info in = *sf_cof_plan_get_info(cp);
-    sf_cof_plan_free(cp);
-    mc = in.nx;
-    nc = in.ny;
-    size_t cap = (size_t)ceil(box / fmin(dx, dy)) + 6;
-    double *wv = check_alloc(cap * sizeof *wv);
-    double *tmp = check_alloc(n * mc * sizeof *tmp), *out = check_alloc(mc * nc * sizeof *out);
-    int rc = SF_SUCCESS;
-    for (size_t ii = mc; ii-- > 0 && !rc;) {   /* along x, every fine row */
-        double c = in.x0 + (double)ii * in.dx;
-        size_t i = ii;
-        if ((rc = sf_cof_follow(fine, c - box / 2 - 2 * dx, c + box / 2 + 2 * dx)) ||
-            (rc = sf_cof_grid_view(fine, &m, &n, &x0, &y0, &dx, &dy, &g))) {
-            sf_note(r, "**The fine field cannot hold the box at x = %g m:** %s.", c, sf_strerror(rc));
-            break;
-        }
-        size_t i0, k = box_weights(c - box / 2, c + box / 2, x0, dx, m, &i0, wv, cap);
-        for (size_t j = 0; j < n; j++) {
-            double s = 0;
-            for (size_t q = 0; q < k; q++)
-                s += wv[q] * g[i0 + q + m * j];
-            tmp[i + mc * j] = s;
-        }
-    }
-    for (size_t j = 0; j < nc; j++) {   /* along y */
-        double c = in.y0 + (double)j * in.dy;
-        size_t j0, k = box_weights(c - box / 2, c + box / 2, y0, dy, n, &j0, wv, cap);
-        for (size_t i = 0; i < mc; i++) {
-            double s = 0;
-            for (size_t q = 0; q < k; q++)
-                s += wv[q] * tmp[i + mc * (j0 + q)];
-            out[i + mc * j] = s;
-        }
-    }
-    if (scale != 1)   /* the model's spread about the mean (model_scale) */
-        for (size_t k = 0; k < mc * nc; k++)
-            out[k] = sc->mu_mean + scale * (out[k] - sc->mu_mean);
-    sf_cof *cof = NULL;
-    if (!rc && !sf_cof_alloc_grid(mc, nc, in.x0, in.y0, in.dx, in.dy, out, &cof))
-        sf_cof_set_box(cof, box);
-    free(wv);
-    free(tmp);
-    free(out);
-    return cof;
 }
 
 /* One realisation i on the same fine field (plan cp, stream (seed, i)):
@@ -962,8 +817,8 @@ static void qstats_row(sf_result *r, double lr, const char *qn, const char *what
 
 /* The cell-average model's std (the generator's scale, cof.h:
  * sf_cof_plan_cell_std) over the oracle's std of the box average (the
- * quadrature above): 1 up to the quadrature's error when the model is
- * right.  The paired runs feed the box averages with their deviations
+ * quadrature, cellavg_oracle.c): 1 up to the quadrature's error when the
+ * model is right.  The paired runs feed the box averages with their deviations
  * times this ratio, so the model's own variance enters them as it enters
  * a drawn effective field.  NaN when the cell-average COF cannot be
  * planned. */
@@ -980,8 +835,8 @@ static double model_scale(const sf_scene *sc, double box)
     gsl_integration_glfixed_table *gl = gsl_integration_glfixed_table_alloc(20);
     size_t cap = 2 * 20 * ((size_t)ceil(box / (sc->l / 2)) + 1);
     double *u = check_alloc(cap * sizeof *u), *w = check_alloc(cap * sizeof *w);
-    size_t nn = nodes_1d(box, sc->l, gl, u, w);
-    double ov = oracle_cov(&o, box, 0, 0, u, w, nn);
+    size_t nn = cellavg_nodes_1d(box, sc->l, gl, u, w);
+    double ov = cellavg_oracle_cov(&o, box, 0, 0, u, w, nn);
     free(u);
     free(w);
     gsl_integration_glfixed_table_free(gl);

@@ -1,4 +1,4 @@
-/* The COF the dynamics sees (issue 13): the field family's tests run on
+/* The COF the dynamics sees: the field family's tests run on
  * realisations drawn by the COF plan (sf_cof_plan_alloc/sf_cof_plan_draw)
  * at the plan's own strip, spacing and bilinear interpolation, read through
  * sf_cof_grid_view and sf_cof_eval.  The oracle is written here and shares

@@ -1,3 +1,6 @@
+/* Helpers shared by the check families (common.h): likelihood-ratio
+ * tests, the generator's scene and fields, runs and their QoIs, sweep
+ * rows and plots. */
 #include "common.h"
 #include "../stats.h"
 #include "lnfield.h"

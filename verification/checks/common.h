@@ -36,7 +36,7 @@ int ref_cycle(const sf_scene *s, double mu, ref_cycle1d *c);
  * which the disc leaves stick (the checks' own, not the solver's). */
 double check_jump_speed(const sf_scene *s);
 
-/* Power runs (issue 13): the scene the DATA GENERATOR draws from -- the
+/* Power runs (docs/reports.md, `make power`): the scene the DATA GENERATOR draws from -- the
  * case's scene with the alternative of `slipfield verify --alternative`
  * applied (unchanged in a normal run).  Oracles use c->scene, never this. */
 sf_scene check_gen_scene(const sf_case *c);

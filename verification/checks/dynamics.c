@@ -677,7 +677,7 @@ static int chk_variable_limit(const sf_case *c, sf_result *r)
                 c->spec.tolerance);
     sf_note(r, "%zu realisations of cof = variable (mean %g, std %g). PV_F = 2 (1 - mu_k/mu_s) mu_s m g is linear "
                "in mu_s: over realisations the ratio PV_F / PV_F,det = mu_s / mean exactly, a lognormal with the "
-               "field's CV (the large-l/R limit of issue 5).", K, s0->mu_mean, s0->mu_std);
+               "field's CV (the large-l/R limit, docs/design.md sec. 4.8).", K, s0->mu_mean, s0->mu_std);
     sf_plot *p = sf_result_plot(r, "variable_limit", "One random variable: PV_F vs the drawn COF", "mu_s [-]", "PV_F [N]");
     sf_plot_series(p, "3-DOF runs", SF_STYLE_POINTS, K, mu, pv);
     sf_plot_series(p, "closed form 2 (1 - mu_k/mu_s) mu_s m g", SF_STYLE_LINES, K, mu, pvc);

@@ -306,7 +306,7 @@ static int chk_reuse(const sf_case *c, sf_result *r)
     return SF_SUCCESS;
 }
 
-/* Solution verification of the accuracy-driven plan (numplan.h, issue 14):
+/* Solution verification of the accuracy-driven plan (numplan.h; docs/design.md sec. 6):
  * at each l/R of the sweep, `samples` realisations run at the plan's own
  * settings for the scene's qoi_tol (cells and rtol unset: the plan
  * chooses) and again at 4x its rings and rtol / 100 on the same field
