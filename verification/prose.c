@@ -202,13 +202,9 @@ static char *join(const blocks *v, int dest, int after, int *found)
 
 void sf_prose_free(sf_prose *p)
 {
-    free(p->claim);
-    free(p->why);
-    free(p->test);
-    free(p->tolerance);
-    free(p->rest_before);
-    free(p->rest_after);
-    free(p->history);
+    char *parts[] = { p->claim, p->why, p->test, p->tolerance, p->rest_before, p->rest_after, p->history };
+    for (size_t i = 0; i < sizeof parts / sizeof *parts; i++)
+        free(parts[i]);
     memset(p, 0, sizeof *p);
 }
 

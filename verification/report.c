@@ -191,6 +191,22 @@ static void write_tail(FILE *f, const sf_case *c, const sf_prose *p)
         fprintf(f, "## History and studies\n\n%s\n", p->history);
 }
 
+/* A report's Markdown in memory, and the case's prose in its parts
+ * (prose.h); NULL with err set when either fails. */
+static FILE *open_report(const sf_case *c, sf_prose *p, char **md, size_t *mdlen, char *err, size_t errlen)
+{
+    if (sf_prose_split(p, c->prose_before, c->prose_after) != 0) {
+        snprintf(err, errlen, "out of memory splitting the prose of %s", c->id);
+        return NULL;
+    }
+    FILE *f = open_memstream(md, mdlen);
+    if (!f) {
+        snprintf(err, errlen, "open_memstream: %s", strerror(errno));
+        sf_prose_free(p);
+    }
+    return f;
+}
+
 int sf_report_plots(const char *root, const sf_case *c, sf_result *r, char *err, size_t errlen)
 {
     char tmp[1024], fin[1024];
@@ -245,18 +261,10 @@ int sf_report_case(const char *root, const sf_case *c, const sf_result *r,
     }
     char *md = NULL;
     size_t mdlen = 0;
-    FILE *f = open_memstream(&md, &mdlen);
-    if (!f) {
-        snprintf(err, errlen, "open_memstream: %s", strerror(errno));
-        return SF_EIO;
-    }
     sf_prose p;
-    if (sf_prose_split(&p, c->prose_before, c->prose_after) != 0) {
-        fclose(f);
-        free(md);
-        snprintf(err, errlen, "out of memory splitting the prose of %s", c->id);
+    FILE *f = open_report(c, &p, &md, &mdlen, err, errlen);
+    if (!f)
         return SF_EIO;
-    }
     write_header(f, c, r, o, &p);
     fprintf(f, "## Results\n\n| quantity | measured | expected | criterion | pass |\n|---|---|---|---|---|\n");
     for (size_t i = 0; i < sf_result_nrows(r); i++) {
@@ -321,18 +329,10 @@ int sf_report_crash(const char *root, const sf_case *c, const sf_outcome *o,
     }
     char *md = NULL;
     size_t mdlen = 0;
-    FILE *f = open_memstream(&md, &mdlen);
-    if (!f) {
-        snprintf(err, errlen, "open_memstream failed");
-        return SF_EIO;
-    }
     sf_prose p;
-    if (sf_prose_split(&p, c->prose_before, c->prose_after) != 0) {
-        fclose(f);
-        free(md);
-        snprintf(err, errlen, "out of memory splitting the prose of %s", c->id);
+    FILE *f = open_report(c, &p, &md, &mdlen, err, errlen);
+    if (!f)
         return SF_EIO;
-    }
     write_header(f, c, NULL, o, &p);
     fprintf(f, "## Results\n\n**The case did not complete:** %s\n\n", o->key);
     write_tail(f, c, &p);
