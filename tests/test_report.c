@@ -151,6 +151,24 @@ static void report_layout(void **state)
     assert_null(strstr(md, "## History and studies"));
     assert_null(strstr(md, "## The case in full"));
 
+    /* a case whose process died: the same opening block, no rows */
+    sf_case c;
+    char err[512];
+    memset(&c, 0, sizeof c);
+    assert_int_equal(sf_case_parse(&c, "cases/demo/crash.md", text, strlen(text), err, sizeof err), SF_SUCCESS);
+    sf_outcome o;
+    memset(&o, 0, sizeof o);
+    o.verdict = SF_VERDICT_ERROR;
+    snprintf(o.key, sizeof o.key, "crashed with signal 11");
+    assert_int_equal(sf_report_crash(root, &c, &o, err, sizeof err), SF_SUCCESS);
+    char path[1200];
+    snprintf(path, sizeof path, "%s/%s/report.md", root, c.id);
+    snprintf(md, sizeof md, "%s", slurp(path));
+    assert_true(at(md, "**Claim.** The claim.") < at(md, "**Check.** `field_exact_covariance`, tolerance = 1e-12."));
+    assert_true(at(md, "**Check.**") < at(md, "**Result.** **ERROR**: crashed with signal 11; seed"));
+    assert_true(at(md, "**The case did not complete:**") < at(md, "## History and studies\n\nFresh seeds"));
+    sf_case_free(&c);
+
     char cmd[200];
     snprintf(cmd, sizeof cmd, "rm -rf '%s'", root);
     assert_int_equal(system(cmd), 0);
