@@ -35,6 +35,29 @@ fam_desc() {
     echo "Kinds: *code* verification (exact solutions, independent oracles), *solution* verification"
     echo "(numerical error of a run), *validation* (the paper's statements)."
     echo
+    echo "## The case format: what the report reads"
+    echo
+    echo "A case's prose is paragraphs with bold labels. The report (verification/prose.h, docs/reports.md)"
+    echo "opens with four of them, in this order, and puts the rest after the evidence:"
+    echo
+    echo "- **Claim** -- the first paragraph labelled \`**Claim...**\` (every case has one; without it the"
+    echo "  first paragraph that is not a heading is taken as the claim);"
+    echo "- **Why** -- the first labelled \`**Why...**\` (why it should hold; left out when there is none);"
+    echo "- **Test** -- the first labelled \`**Test...**\`, \`**The test...**\` or \`**How...**\`, then the first"
+    echo "  labelled \`**Tolerance...**\` (every case states its tolerance and why), then the check, its"
+    echo "  tolerance and alpha and the criteria of its result rows, written by the report;"
+    echo "- **Result** -- written by the report: verdict, the key row, the margin (*near the edge* at 0.9"
+    echo "  or more), the seed, the run time."
+    echo
+    echo "**Statistics**, **Power**, **Oracle**, **Mutants** and every other paragraph stay in the body,"
+    echo "in order, after the results and plots (\"The case in full\"; after the scene: \"Notes from the"
+    echo "case\"). **History**: everything under a heading \`## History\` (up to the next heading of the"
+    echo "same or a higher level, or the scene block) and every paragraph labelled \`**History...**\`"
+    echo "closes the report as \"History and studies\". Put there what is not needed to judge today's"
+    echo "verdict: seed lists and fresh-seed studies, earlier designs and superseded measurements, dated"
+    echo "study narratives. A list or an indented block after a labelled paragraph (with a blank line"
+    echo "between) goes with that paragraph."
+    echo
     echo "## Families"
     echo
     echo "| family | cases | what it proves |"

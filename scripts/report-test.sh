@@ -1,7 +1,8 @@
 #!/bin/sh
 # Tests of what CI and people read (run after `make verify` and
 # `make test`): reports/junit.xml and CMocka's JUnit files validate against
-# tests/junit.xsd (xmllint); Debian's headless Chromium renders
+# tests/junit.xsd (xmllint); every case report opens with Claim, Test,
+# Result and ends with its history (docs/reports.md); Debian's headless Chromium renders
 # reports/index.html and one case page; each screenshot must not be blank
 # (pixel variance, read back with gnuplot), the pages must have no broken
 # image (checked in the rendered DOM) and no link to a missing file.
@@ -28,6 +29,45 @@ for x in "$root/junit.xml" build/test-results/*.xml; do
     if xmllint --noout --schema tests/junit.xsd "$x" 2>"$work/xmllint.log"; then ok "$x: valid JUnit XML"
     else bad "$x: not valid JUnit XML"; sed 's/^/      /' "$work/xmllint.log" | head -5; fi
 done
+
+# Every case report opens with Claim, Test, Result (docs/reports.md): the
+# first paragraph after the title is **Claim...**, a test paragraph
+# (**Test**, **The test**, **How**, **Tolerance** or **Check**) and then
+# **Result.** come before the results table, and "History and studies",
+# when there, is the last section.  Prints what is wrong, nothing if right.
+layout() {
+    awk '
+        NR == 1 { if ($0 !~ /^# /) { print "no title"; bad = 1; exit } next }
+        !claim && /^$/ { next }
+        !claim { if ($0 !~ /^\*\*Claim/) { print "first paragraph is not **Claim**"; bad = 1; exit } claim = NR; next }
+        /^## Results/ && !results { results = NR }
+        !results && !test && /^\*\*(Test|The test|How|Tolerance|Check)/ { test = NR }
+        !results && test && !result && /^\*\*Result\.\*\* / { result = NR }
+        /^## / { last = $0; if ($0 == "## History and studies") hist = NR }
+        END {
+            if (bad) exit
+            if (!test || !result || !results)
+                printf "missing before ## Results:%s%s%s\n", test ? "" : " Test", result ? "" : " Result", results ? "" : " (no ## Results)"
+            else if (hist && last != "## History and studies") print "History and studies is not the last section"
+        }' "$1"
+}
+# the check itself: a right report passes, each wrong one is named
+printf '# T\n\n**Claim.** c\n\n**Tolerance.** t\n\n**Result.** **PASS**: r\n\n## Results\n\n## History and studies\n\nh\n' > "$work/good.md"
+printf '# T\n\n**Claim.** c\n\n**Result.** **PASS**: r\n\n**Check.** x\n\n## Results\n' > "$work/order.md"
+printf '# T\n\n**Claim.** c\n\n**Test.** t\n\n**Result.** **PASS**: r\n\n## Results\n\n## History and studies\n\n## Scene\n' > "$work/hist.md"
+printf '# T\n\nA paragraph.\n\n**Test.** t\n\n**Result.** **PASS**: r\n\n## Results\n' > "$work/noclaim.md"
+if [ -z "$(layout "$work/good.md")" ] && [ -n "$(layout "$work/order.md")" ] && [ -n "$(layout "$work/hist.md")" ] &&
+   [ -n "$(layout "$work/noclaim.md")" ]; then ok "the layout check passes a right report and names three wrong ones"
+else bad "the layout check: good '$(layout "$work/good.md")', order '$(layout "$work/order.md")', history '$(layout "$work/hist.md")', no claim '$(layout "$work/noclaim.md")'"; fi
+nrep=0; badrep=0
+for md in "$root"/*/*/report.md; do
+    [ -f "$md" ] || continue
+    nrep=$((nrep + 1))
+    why=$(layout "$md")
+    if [ -n "$why" ]; then badrep=$((badrep + 1)); echo "      $md: $why"; fi
+done
+if [ "$nrep" -gt 0 ] && [ "$badrep" -eq 0 ]; then ok "$nrep case reports open with Claim, Test, Result; History last"
+else bad "case reports' opening block: $badrep of $nrep wrong"; fi
 
 case_page=$(sed -n 's/.*href="\([^"]*report\.html\)".*/\1/p' "$root/index.html" | head -n 1)
 [ -n "$case_page" ] || { bad "index.html links to no case page"; echo "browser: $pass passed, $fail failed"; exit 1; }

@@ -5,6 +5,7 @@
 #include "html.h"
 #include "results.h"
 #include "paper.h"
+#include "prose.h"
 #include "sf_error.h"
 #include "version.h"
 
@@ -118,17 +119,94 @@ static int write_md_and_html(const char *dir, const char *title, const char *md,
     return sf_html_write(path, title, md, err, errlen) == 0 ? SF_SUCCESS : SF_EIO;
 }
 
-static void write_header(FILE *f, const sf_case *c, const sf_outcome *o)
+/* The opening block a reviewer reads first (docs/reports.md): Claim, Why,
+ * Test (the case's test and tolerance paragraphs, then the check, its
+ * tolerance and its rows' criteria), Result; then the case's identity.  r
+ * is NULL for a case that did not complete. */
+static void write_header(FILE *f, const sf_case *c, const sf_result *r, const sf_outcome *o,
+                         const sf_prose *p)
 {
     fprintf(f, "# %s\n\n", c->title);
+    if (*p->claim)
+        fprintf(f, "%s%s\n", p->claim_labelled ? "" : "**Claim.** ", p->claim);
+    if (p->why)
+        fprintf(f, "%s\n", p->why);
+    if (p->test)
+        fprintf(f, "%s\n", p->test);
+    if (p->tolerance)
+        fprintf(f, "%s\n", p->tolerance);
+    double alpha = sf_case_spec_declared_alpha(&c->spec);
+    fprintf(f, "%s `%s`", p->test || p->tolerance ? "**Check.**" : "**Test.**", c->spec.check);
+    if (c->spec.tolerance != 0 || alpha <= 0)
+        fprintf(f, ", tolerance = %g", c->spec.tolerance);
+    if (alpha > 0)
+        fprintf(f, ", alpha = %g", alpha);
+    size_t nrows = r ? sf_result_nrows(r) : 0, shown = 0;
+    if (nrows) {
+        enum { MAX_SHOWN = 6 };
+        fprintf(f, "; %zu row%s, criteria: ", nrows, nrows == 1 ? "" : "s");
+        size_t distinct = 0;
+        for (size_t i = 0; i < nrows; i++) {
+            const char *ci = sf_result_row(r, i)->criterion;
+            int seen = 0;
+            for (size_t j = 0; j < i && !seen; j++)
+                seen = !strcmp(sf_result_row(r, j)->criterion, ci);
+            if (seen)
+                continue;
+            if (shown < MAX_SHOWN) {
+                fputs(shown ? "; " : "", f);
+                sf_md_text(f, ci);
+                shown++;
+            }
+            distinct++;
+        }
+        if (distinct > shown)
+            fprintf(f, "; and %zu more (the results table)", distinct - shown);
+    }
+    fprintf(f, ".\n\n**Result.** **%s**: ", sf_verdict_name(o->verdict));
+    sf_md_text(f, o->key);
+    size_t at = 0;
+    double m = r ? sf_result_margin(r, &at) : NAN;
+    if (isinf(m))
+        fprintf(f, ". Margin inf (a non-finite value)");
+    else if (!isnan(m))
+        fprintf(f, ". Margin %.3g%s (results row %zu; above 1 fails)", m,
+                o->verdict == SF_VERDICT_PASS && m >= SF_NEAR_EDGE ? ", *near the edge*" : "", at + 1);
+    fprintf(f, "; seed %lu; %.3f s.\n\n", o->seed, o->seconds);
     fprintf(f, "- Case: `%s` (`%s`)\n", c->id, c->path);
     fprintf(f, "- Kind: %s; tier: %s; check: `%s`\n", vv_name(c->spec.vv),
             sf_case_enum_name("tier", c->spec.tier), c->spec.check);
-    fprintf(f, "- Verdict: **%s**\n", sf_verdict_name(o->verdict));
-    fprintf(f, "- Run time: %.3f s\n", o->seconds);
     write_rerun(f, c);
-    fprintf(f, "\n%s\n", c->prose_before);
+    fputc('\n', f);
+}
+
+/* After the evidence: the rest of the prose, the scene, the notes after
+ * it, and the history (prose.h says which paragraphs are which). */
+static void write_tail(FILE *f, const sf_case *c, const sf_prose *p)
+{
+    if (*p->rest_before)
+        fprintf(f, "## The case in full\n\n%s\n", p->rest_before);
     fprintf(f, "## Scene\n\n```scene\n%s```\n\n", c->scene_text);
+    if (*p->rest_after)
+        fprintf(f, "## Notes from the case\n\n%s\n", p->rest_after);
+    if (*p->history)
+        fprintf(f, "## History and studies\n\n%s\n", p->history);
+}
+
+/* A report's Markdown in memory, and the case's prose in its parts
+ * (prose.h); NULL with err set when either fails. */
+static FILE *open_report(const sf_case *c, sf_prose *p, char **md, size_t *mdlen, char *err, size_t errlen)
+{
+    if (sf_prose_split(p, c->prose_before, c->prose_after) != 0) {
+        snprintf(err, errlen, "out of memory splitting the prose of %s", c->id);
+        return NULL;
+    }
+    FILE *f = open_memstream(md, mdlen);
+    if (!f) {
+        snprintf(err, errlen, "open_memstream: %s", strerror(errno));
+        sf_prose_free(p);
+    }
+    return f;
 }
 
 int sf_report_plots(const char *root, const sf_case *c, sf_result *r, char *err, size_t errlen)
@@ -185,12 +263,11 @@ int sf_report_case(const char *root, const sf_case *c, const sf_result *r,
     }
     char *md = NULL;
     size_t mdlen = 0;
-    FILE *f = open_memstream(&md, &mdlen);
-    if (!f) {
-        snprintf(err, errlen, "open_memstream: %s", strerror(errno));
+    sf_prose p;
+    FILE *f = open_report(c, &p, &md, &mdlen, err, errlen);
+    if (!f)
         return SF_EIO;
-    }
-    write_header(f, c, o);
+    write_header(f, c, r, o, &p);
     fprintf(f, "## Results\n\n| quantity | measured | expected | criterion | pass |\n|---|---|---|---|---|\n");
     for (size_t i = 0; i < sf_result_nrows(r); i++) {
         const sf_row *row = sf_result_row(r, i);
@@ -224,8 +301,8 @@ int sf_report_case(const char *root, const sf_case *c, const sf_result *r,
                 fprintf(f, "**Plot `%s` was not rendered** (see the error above).\n\n", sf_plot_stem(p));
         }
     }
-    if (c->prose_after && *c->prose_after)
-        fprintf(f, "## Notes from the case\n%s\n", c->prose_after);
+    write_tail(f, c, &p);
+    sf_prose_free(&p);
     fclose(f);
     int rc = write_md_and_html(tmp, c->title, md, err, errlen);
     free(md);
@@ -254,13 +331,14 @@ int sf_report_crash(const char *root, const sf_case *c, const sf_outcome *o,
     }
     char *md = NULL;
     size_t mdlen = 0;
-    FILE *f = open_memstream(&md, &mdlen);
-    if (!f) {
-        snprintf(err, errlen, "open_memstream failed");
+    sf_prose p;
+    FILE *f = open_report(c, &p, &md, &mdlen, err, errlen);
+    if (!f)
         return SF_EIO;
-    }
-    write_header(f, c, o);
-    fprintf(f, "## Results\n\n**The case did not complete:** %s\n", o->key);
+    write_header(f, c, NULL, o, &p);
+    fprintf(f, "## Results\n\n**The case did not complete:** %s\n\n", o->key);
+    write_tail(f, c, &p);
+    sf_prose_free(&p);
     fclose(f);
     int rc = write_md_and_html(tmp, c->title, md, err, errlen);
     free(md);
