@@ -32,7 +32,7 @@ check verification "([.]*/)*(cli|tests|bench)/|$ch|$th|$bh" "verification/ must 
 # cycle: a plan flows one way, scene -> numplan (the plan, made first) ->
 # the builders (cof, oscillator, ...); numplan.c asking cof.c for the
 # strip while cof.c asks numplan.c for the model was such a cycle.
-edges=$(for f in solver/*.c solver/*.h; do
+edges=$(for f in $(find solver -name '*.[ch]' | sort); do
     m=$(basename "$f"); m=${m%.*}
     sed -n 's/^[[:space:]]*#[[:space:]]*include[[:space:]]*"\([A-Za-z0-9_]*\)\.h".*/\1/p' "$f" |
         while read -r d; do [ "$d" != "$m" ] && echo "$m $d"; done
