@@ -195,6 +195,7 @@ check: test
 .PHONY: test-run
 test-run: $(TESTS) $(TESTS_SAN) $(BUILD)/slipfield $(BUILD)/libslipfield.so
 	@st=0; sh scripts/layering.sh || st=1; \
+	 sh scripts/layering-test.sh || st=1; \
 	 sh scripts/refs-check.sh || st=1; \
 	 sh scripts/mutants-fresh.sh || st=1; \
 	 sh scripts/run-tests.sh $(BUILD) $(TESTS) -- $(TESTS_SAN) || st=1; \
