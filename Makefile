@@ -21,9 +21,6 @@ BASELINE ?=
 
 PKGS := gsl fftw3 jansson
 GIT_REV := $(shell git rev-parse --short HEAD 2>/dev/null || echo unknown)
-# what the solver computes: a checksum of its sources (the paper tier's
-# realisation cache is keyed by it, so a solver change recomputes)
-SOLVER_SUM := $(shell cat solver/*.c solver/*.h | cksum | cut -d' ' -f1)
 WARN := -Wall -Wextra -Wpedantic -Werror
 # -fno-math-errno -fno-trapping-math: nothing reads errno after a libm
 # call nor the floating-point exception flags (no <fenv.h>); without them
@@ -32,17 +29,25 @@ WARN := -Wall -Wextra -Wpedantic -Werror
 # the wrench's cell loop does not vectorise (-fopt-info-vec).  Values are
 # unchanged: no reassociation, no contraction (-std=c11 keeps
 # -ffp-contract=off).
-# Layering (issue 16): solver/ sees only itself, verification/ sees solver/
-# and itself (plus the generated headers), cli/, tests/ and bench/ see
-# everything.  The -I flags are per directory, so an upward #include does
-# not compile; scripts/layering.sh (make layering, run by make test) also
-# greps for one, with a message that names the rule.
+# Layering: solver/ sees only itself, verification/ sees solver/ and
+# itself (plus the generated headers), cli/, tests/ and bench/ see
+# everything.  Inside solver/, a layer folder (solver/LAYERS, bottom up)
+# sees itself and the layers below; the top of solver/ (model.c,
+# slipfield.h) sees every layer.  The -I flags are per directory, so an
+# upward #include does not compile; scripts/layering.sh (make layering,
+# run by make test) also greps for one, with a message that names the rule.
 BASE_CFLAGS := -std=c11 -D_POSIX_C_SOURCE=200809L -fno-math-errno -fno-trapping-math $(WARN) -fopenmp $(MPI_FLAGS)
-INC_solver := -Isolver
-INC_verification := -Isolver -Iverification -I$(BUILD)/gen
-INC_ALL := -Isolver -Iverification -Icli -Itests -I$(BUILD)/gen
-# $(call incs,source.c): the -I flags of the source's top directory
-incs = $(or $(INC_$(firstword $(subst /, ,$(1)))),$(INC_ALL))
+SOLVER_LAYERS := $(shell sed -e 's/\#.*//' solver/LAYERS)
+SOLVER_DIRS := solver $(addprefix solver/,$(SOLVER_LAYERS))
+# INC_solver/<layer>: that layer's folder and the folders below it
+$(foreach i,$(shell seq $(words $(SOLVER_LAYERS))),$(eval \
+  INC_solver/$(word $(i),$(SOLVER_LAYERS)) := $(addprefix -Isolver/,$(wordlist 1,$(i),$(SOLVER_LAYERS)))))
+INC_solver := $(addprefix -I,$(SOLVER_DIRS))
+INC_verification := $(INC_solver) -Iverification -I$(BUILD)/gen
+INC_ALL := $(INC_solver) -Iverification -Icli -Itests -I$(BUILD)/gen
+# $(call incs,source.c): the -I flags of the source's folder (a solver
+# layer), else of its top directory
+incs = $(or $(INC_$(patsubst %/,%,$(dir $(1)))),$(INC_$(firstword $(subst /, ,$(1)))),$(INC_ALL))
 # The git revision and the CVODE choice live in generated headers, rewritten
 # by rules (not at parse time: `make help` writes nothing) and only when
 # their content changes, so a commit does not rebuild everything.
@@ -57,7 +62,13 @@ CMOCKA_CFLAGS = $(shell pkg-config --cflags cmocka 2>/dev/null)
 CMOCKA_LIBS = $(shell pkg-config --libs cmocka 2>/dev/null || echo -lcmocka)
 SAN := -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all
 
-SOLVER_SRC := $(sort $(wildcard solver/*.c))
+SOLVER_SRC := $(sort $(foreach d,$(SOLVER_DIRS),$(wildcard $(d)/*.c)))
+SOLVER_HDR := $(sort $(foreach d,$(SOLVER_DIRS),$(wildcard $(d)/*.h)))
+# what the solver computes: a checksum of its sources, every layer folder,
+# in make's sorted (byte) order (the paper tier's realisation cache is
+# keyed by it, so a solver change recomputes).  After SOLVER_SRC and
+# SOLVER_HDR: := expands now (/dev/null: an empty list reads nothing).
+SOLVER_SUM := $(shell cat $(sort $(SOLVER_SRC) $(SOLVER_HDR)) /dev/null | cksum | cut -d' ' -f1)
 VERIF_SRC := $(sort $(wildcard verification/*.c verification/checks/*.c verification/oracle/*.c))
 CLI_SRC := $(sort $(wildcard cli/*.c))
 TEST_SRC := $(sort $(wildcard tests/test_*.c))
@@ -81,7 +92,7 @@ help:
 	@echo "make regressions  the pinned regression cases of the full tier (seeds that once failed; CI runs them) -> reports/regressions/"
 	@echo "make test     install deps if missing, run the CMocka unit tests (plain and under ASan+UBSan) and the CLI, install and report scripts"
 	@echo "make check    the same as make test"
-	@echo "make layering solver/ includes only solver/, verification/ not cli/ (also run by make test)"
+	@echo "make layering solver/ includes only solver/ (each layer folder only itself and the layers below, solver/LAYERS), verification/ not cli/ (also run by make test)"
 	@echo "make coverage line and branch coverage of solver/ by the unit tests + quick tier (gcov, lcov) -> reports/coverage/"
 	@echo "make bench    benchmarks -> reports/bench/report.md"
 	@echo "make mutants  seeded defects that the cases must catch"
@@ -124,7 +135,7 @@ $(BUILD)/rel/%.o: %.c | $(GEN_HDRS)
 	$(CC) $(BASE_CFLAGS) $(call incs,$<) $(OPT) $(PKG_CFLAGS) $(HTML_CFLAGS) $(CMOCKA_CFLAGS) -MMD -MP -c $< -o $@
 
 # the sanitised build is test-only: its solver carries the allocation
-# fault hooks (solver/sf_alloc.h; disarmed unless tests/test_faults.c arms them)
+# fault hooks (solver/base/sf_alloc.h; disarmed unless tests/test_faults.c arms them)
 $(BUILD)/san/%.o: %.c | $(GEN_HDRS)
 	@mkdir -p $(dir $@)
 	$(CC) $(BASE_CFLAGS) $(call incs,$<) -O1 -g $(SAN) -DSF_FAULT_INJECTION $(PKG_CFLAGS) $(HTML_CFLAGS) $(CMOCKA_CFLAGS) -MMD -MP -c $< -o $@
@@ -186,6 +197,7 @@ check: test
 .PHONY: test-run
 test-run: $(TESTS) $(TESTS_SAN) $(BUILD)/slipfield $(BUILD)/libslipfield.so
 	@st=0; sh scripts/layering.sh || st=1; \
+	 sh scripts/layering-test.sh || st=1; \
 	 sh scripts/refs-check.sh || st=1; \
 	 sh scripts/mutants-fresh.sh || st=1; \
 	 sh scripts/run-tests.sh $(BUILD) $(TESTS) -- $(TESTS_SAN) || st=1; \
@@ -318,16 +330,17 @@ INCLUDEDIR = $(PREFIX)/include
 MANDIR = $(PREFIX)/share/man
 DATADIR = $(PREFIX)/share/slipfield
 PCDIR = $(LIBDIR)/pkgconfig
-# MAJOR.MINOR.PATCH from solver/sf_version.h (releases are tagged vMAJOR.MINOR.PATCH)
-sf_ver = $(shell sed -n 's/^\#define SF_VERSION_$(1) \([0-9]*\)$$/\1/p' solver/sf_version.h)
+# MAJOR.MINOR.PATCH from solver/base/sf_version.h (releases are tagged vMAJOR.MINOR.PATCH)
+sf_ver = $(shell sed -n 's/^\#define SF_VERSION_$(1) \([0-9]*\)$$/\1/p' solver/base/sf_version.h)
 SF_VERSION := $(call sf_ver,MAJOR).$(call sf_ver,MINOR).$(call sf_ver,PATCH)
 SO_MAJOR := $(firstword $(subst ., ,$(SF_VERSION)))
 SONAME := libslipfield.so.$(SO_MAJOR)
 SHLIB := libslipfield.so.$(SF_VERSION)
-# (internal: sf_alloc.h, the allocation wrappers of solver/*.c, and
-# cof_x512.h, the wrench's AVX-512 look-up)
-PRIVATE_HEADERS := solver/sf_alloc.h solver/cof_x512.h
-PUBLIC_HEADERS := $(filter-out $(PRIVATE_HEADERS),$(sort $(wildcard solver/*.h)))
+# (internal: sf_alloc.h, the allocation wrappers of the solver's sources,
+# and cof_x512.h, the wrench's AVX-512 look-up).  The headers install flat
+# in include/slipfield/ whatever their layer folder: <slipfield/cof.h>.
+PRIVATE_HEADERS := solver/base/sf_alloc.h solver/disc/cof_x512.h
+PUBLIC_HEADERS := $(filter-out $(PRIVATE_HEADERS),$(SOLVER_HDR))
 LIB_PKGS := gsl fftw3
 LIB_LIBS = $(shell pkg-config --libs $(LIB_PKGS) 2>/dev/null || echo -lgsl -lgslcblas -lfftw3) -lm -fopenmp
 

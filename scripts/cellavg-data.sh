@@ -5,7 +5,7 @@
 # error as one TSV on stdout.  Two designs, drawn once and listed below
 # (so that they do not depend on an awk's random numbers):
 #   fit      12 points, seeds 681000001..012: what err_cell's belt-speed
-#            and CV factors were fitted on (solver/numplan.c);
+#            and CV factors were fitted on (solver/plan/numplan.c);
 #   holdout  16 points, seeds 681000101..116: never used to fit it.
 #   sh scripts/cellavg-data.sh fit > cases/plan/cellavg-fit.tsv
 #   sh scripts/cellavg-data.sh holdout > cases/plan/cellavg-calibration.tsv

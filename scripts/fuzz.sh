@@ -13,9 +13,13 @@ mkdir -p "$out/obj"
 CC=${FUZZ_CC:-clang}
 PKG=$(pkg-config --cflags gsl fftw3 libcmark-gfm jansson 2>/dev/null || true)
 LIBS="-lcmark-gfm-extensions $(pkg-config --libs libcmark-gfm gsl fftw3 jansson 2>/dev/null || echo -lcmark-gfm -lgsl -lgslcblas -lfftw3 -ljansson) -lm"
-FL="-std=c11 -D_POSIX_C_SOURCE=200809L -g -O1 -fno-omit-frame-pointer -Isolver -Iverification -Ibuild/gen -Wno-unknown-pragmas"
+# solver/ and its layer folders (solver/LAYERS), as the Makefile's INC_solver
+SOLVER_DIRS="solver $(sed -e 's/#.*//' -e '/^[[:space:]]*$/d' -e 's|^|solver/|' solver/LAYERS | paste -sd' ' -)"
+SOLVER_I=$(printf -- '-I%s ' $SOLVER_DIRS)
+FL="-std=c11 -D_POSIX_C_SOURCE=200809L -g -O1 -fno-omit-frame-pointer $SOLVER_I-Iverification -Ibuild/gen -Wno-unknown-pragmas"
 objs=""
-for src in solver/*.c verification/*.c verification/checks/*.c; do
+# shellcheck disable=SC2086
+for src in $(for d in $SOLVER_DIRS; do ls "$d"/*.c; done | sort) verification/*.c verification/checks/*.c; do
     o="$out/obj/$(echo "$src" | tr / _).o"
     if [ ! -f "$o" ] || [ "$src" -nt "$o" ]; then
         $CC $FL $PKG -fsanitize=fuzzer-no-link,address,undefined -c "$src" -o "$o"

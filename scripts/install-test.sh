@@ -49,7 +49,8 @@ else
     bad "shared library: soname '$soname', libslipfield.so.0 -> '$target'"
 fi
 # internal, not installed (Makefile's PRIVATE_HEADERS): sf_alloc.h, cof_x512.h
-public=$(ls solver/*.h | grep -v -e '/sf_alloc\.h$' -e '/cof_x512\.h$')
+# (solver/ and its layer folders; installed flat in include/slipfield/)
+public=$(find solver -name '*.h' | sort | grep -v -e '/sf_alloc\.h$' -e '/cof_x512\.h$')
 nheaders=$(echo "$public" | wc -l)
 [ "$(ls "$root/include/slipfield/"*.h | wc -l)" -eq "$nheaders" ] && ok "all $nheaders public solver headers" || bad "headers missing"
 noguard=""; umbrella_missing=""
@@ -66,7 +67,7 @@ simd=$(grep -l -e immintrin -e '__m512' -e '__attribute__((target' "$root/includ
 
 # the example, against the installed library, with pkg-config
 export PKG_CONFIG_SYSROOT_DIR="$stage" PKG_CONFIG_PATH="$root/lib/pkgconfig"
-ver=$(for k in MAJOR MINOR PATCH; do sed -n "s/^#define SF_VERSION_$k \([0-9]*\)$/\1/p" solver/sf_version.h; done | paste -sd.)
+ver=$(for k in MAJOR MINOR PATCH; do sed -n "s/^#define SF_VERSION_$k \([0-9]*\)$/\1/p" solver/base/sf_version.h; done | paste -sd.)
 if pkg-config --exists slipfield && [ "$(pkg-config --modversion slipfield)" = "$ver" ]; then
     ok "pkg-config finds slipfield $(pkg-config --modversion slipfield)"
 else

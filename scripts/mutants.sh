@@ -6,7 +6,7 @@
 #
 # Mutant file format (one per defect):
 #   # what the defect is
-#   file: solver/field.c
+#   file: solver/field/field.c
 #   find: exact text (one line)
 #   replace: replacement text
 #   cases: cases/field/*.md cases/lognormal/*.md

@@ -1,4 +1,4 @@
-/* The cell-averaged COF (solver/cellavg.h): limits of the box terms, the
+/* The cell-averaged COF (solver/field/cellavg.h): limits of the box terms, the
  * plan's choice, the effective field's embedding, and the oscillator's
  * refusal of a COF whose boxes are not its cells. */
 #include "test_util.h"

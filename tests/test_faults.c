@@ -1,4 +1,4 @@
-/* Unit tests: allocation failure, SQLite style (solver/sf_alloc.h).  This
+/* Unit tests: allocation failure, SQLite style (solver/base/sf_alloc.h).  This
  * program links a solver built with -DSF_FAULT_INJECTION (Makefile: the
  * plain test links build/fi/, the sanitised one build/san/, make coverage
  * build/cov/).  For each public call that allocates, the walk fails its

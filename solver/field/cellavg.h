@@ -1,4 +1,5 @@
-/* slipfield: the cell-averaged COF field (issue 14, small l/R).
+/* slipfield: the cell-averaged COF field, for small l/R (docs/design.md
+ * sec. 4.4).
  *
  * When the quadrature's cells (squares of side h) are much larger than l,
  * what a cell of the slip wrench (Eqs. 7-8) needs is the average of the

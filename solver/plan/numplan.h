@@ -1,7 +1,7 @@
 /* slipfield: the plan of a run, made from the scene before anything is
  * built (sf_plan, at the end: the COF model and generator, the strip, the
  * numerical settings, what is skipped), and its accuracy-driven numerical
- * part (issue 14, "fast by default"): ONE place decides the numerical
+ * part ("fast by default", docs/design.md sec. 6): ONE place decides the numerical
  * settings of the oscillator from the scene's `qoi_tol`: the relative
  * error wanted in a realisation's quantities of interest (PV_x, PV_F,
  * stick fraction).

@@ -1,6 +1,6 @@
 /* slipfield: a Gaussian field with the covariance of Eq. 2 generated on
- * demand, column by column, from white noise in tiles (issue 14: a belt
- * without end).
+ * demand, column by column, from white noise in tiles (a belt
+ * without end; docs/design.md sec. 4.3).
  *
  * The squared-exponential kernel's square root is a squared exponential:
  * exp(-r^2/a^2) convolved with itself is proportional to

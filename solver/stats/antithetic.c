@@ -1,3 +1,5 @@
+/* slipfield: antithetic pairs, an estimator of a sweep point's ratio
+ * means (antithetic.h): each pair runs a drawn field G and its partner -G. */
 #include "antithetic.h"
 #include "cof.h"
 #include "mlmc.h"

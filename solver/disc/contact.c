@@ -1,3 +1,6 @@
+/* slipfield: the friction wrench of the belt on the disc, Eqs. 7-8, by a
+ * quadrature over the contact's cells (contact.h), and the Contensou
+ * closed forms for a uniform COF. */
 #include "contact.h"
 #include "cof_x512.h"
 #include "sf_alloc.h"

@@ -1,3 +1,6 @@
+/* slipfield: Monte Carlo sweeps of the stochastic oscillator over a
+ * parameter (sweep.h): each point's realisations and deterministic
+ * reference, their statistics and the rows written. */
 #include "sweep.h"
 #include "cof.h"
 #include "mcstop.h"

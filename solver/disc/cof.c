@@ -1,3 +1,7 @@
+/* slipfield: the static COF the disc sees (cof.h): uniform, one random
+ * variable or a field on a grid, the windows that follow the disc over a
+ * tiled or belt-noise field, and the COF plan that draws them from the
+ * scene's plan (numplan.h). */
 #include "cof.h"
 #include "cellavg.h"
 #include "field.h"

@@ -1,3 +1,6 @@
+/* slipfield: the two-level Monte Carlo estimators of a sweep point's
+ * ratio means (mlmc.h): the coarse levels' plans, the stage sizes and the
+ * runs at a target standard error. */
 #include "mlmc.h"
 #include "cof.h"
 #include "mcstop.h"

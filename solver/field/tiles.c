@@ -1,3 +1,6 @@
+/* slipfield: a Gaussian field with the covariance of Eq. 2 generated on
+ * demand from white noise in tiles (tiles.h): the tiles' seeds, kernel
+ * weights and the column-by-column fill. */
 #include "tiles.h"
 #include "sf_alloc.h"
 #include "sf_error.h"

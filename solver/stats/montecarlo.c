@@ -1,3 +1,6 @@
+/* slipfield: Monte Carlo over realisations, reproducible by construction
+ * (montecarlo.h): the per-realisation streams, the OpenMP (and MPI) run
+ * over them and its checkpoint. */
 #include "montecarlo.h"
 #include "sf_alloc.h"
 #include "sf_error.h"

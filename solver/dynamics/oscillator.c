@@ -1,3 +1,6 @@
+/* slipfield: the event-driven stick-slip integrators, Eqs. 3-6 and 12-14
+ * (oscillator.h): the slip equations, the stick and slip onsets and the
+ * run that accumulates the QoIs and the Eq. 15 error. */
 #include "oscillator.h"
 #include "contact.h"
 #include "numplan.h"

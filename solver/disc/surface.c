@@ -1,3 +1,6 @@
+/* slipfield: the static limit surface of Eqs. 9-11 as a plan (surface.h):
+ * the COF at each quadrature cell stored once, the surface's points and
+ * sections, and the stick margin of a state against it. */
 #include "surface.h"
 #include "sf_alloc.h"
 #include "sf_error.h"

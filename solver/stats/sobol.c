@@ -1,3 +1,6 @@
+/* slipfield: Sobol' indices by pick-freeze (sobol.h): the design of
+ * sample matrices, the estimators with their bootstrap intervals and the
+ * ranking of S1. */
 #include "sobol.h"
 #include "sf_alloc.h"
 #include "sf_error.h"

@@ -1,3 +1,6 @@
+/* slipfield: Sobol' indices of the QoI ratios over the model's parameters
+ * (sensitivity.h): the inputs' ranges, each evaluation's scene and run,
+ * and the writers of the indices and evaluations. */
 #include "sensitivity.h"
 #include "cof.h"
 #include "montecarlo.h"

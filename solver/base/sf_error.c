@@ -1,3 +1,6 @@
+/* slipfield: the error codes' messages (sf_strerror), sf_seterr, which
+ * writes a failed call's message into the caller's buffer, and sf_init,
+ * which turns GSL's abort-on-error handler off (sf_error.h). */
 #include "sf_error.h"
 
 #include <stdarg.h>

@@ -1,3 +1,6 @@
+/* slipfield: scenes (scene.h): the table of every solver key, the strict
+ * parser of `key = value` text into an sf_scene, and the writers of a
+ * scene and of the key help. */
 #include "scene.h"
 #include "sf_alloc.h"
 #include "sf_error.h"

@@ -1,3 +1,6 @@
+/* slipfield: the a-posteriori numerical error u_num of a run's QoIs from
+ * a companion solve at a coarser setting (unum.h), for one run and for a
+ * sweep. */
 #include "unum.h"
 #include "montecarlo.h"
 #include "sf_alloc.h"

@@ -1,3 +1,5 @@
+/* slipfield: Stein's two-stage sample size and its intervals (mcstop.h):
+ * when to stop adding realisations. */
 #include "mcstop.h"
 #include "sf_alloc.h"
 #include "sf_error.h"

@@ -1,3 +1,6 @@
+/* slipfield: a lognormal COF field from a scene (lnfield.h): the Gaussian
+ * field plan (field.h) and the Nataf map (lognormal.h) together, with the
+ * optional pre-corrected correlation. */
 #include "lnfield.h"
 #include "sf_alloc.h"
 #include "sf_error.h"

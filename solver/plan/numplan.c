@@ -1,3 +1,7 @@
+/* slipfield: the plan of a run (numplan.h): the error models of the
+ * quadrature, the time stepper and the cell average, and the choice of
+ * numerical settings from the scene's qoi_tol, made before anything is
+ * built. */
 #include "numplan.h"
 #include "sf_error.h"
 #include "cellavg.h"

@@ -1,3 +1,5 @@
+/* slipfield: quantities of interest computed from a run's samples
+ * (qoi.h): the periodogram. */
 #include "qoi.h"
 #include "sf_alloc.h"
 #include "sf_error.h"

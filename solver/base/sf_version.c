@@ -1,3 +1,4 @@
+/* slipfield: the version of the library a program runs with (sf_version.h). */
 #include "sf_version.h"
 
 const char *sf_version(void)

@@ -1,3 +1,6 @@
+/* slipfield: lognormal marginals by the Nataf map of Sec. 2.2
+ * (lognormal.h) and the correlation distortion between the Gaussian and
+ * the lognormal field. */
 #include "lognormal.h"
 #include "sf_error.h"
 

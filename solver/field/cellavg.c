@@ -1,3 +1,6 @@
+/* slipfield: the cell-averaged COF field's covariance (cellavg.h): the
+ * box terms of the squared-exponential kernel averaged over a cell, their
+ * variance, correlation and separable-sum terms. */
 #include "cellavg.h"
 #include "sf_error.h"
 

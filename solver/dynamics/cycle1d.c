@@ -1,3 +1,5 @@
+/* slipfield: the closed-form 1-D stick-slip cycle of Eqs. 3-4
+ * (cycle1d.h; docs/design.md sec. 4.7). */
 #include "cycle1d.h"
 #include "sf_error.h"
 
