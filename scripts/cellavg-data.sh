@@ -13,7 +13,7 @@
 # point reference at 2.2 / (l/R) rings costs minutes a field), CV 0.05-1,
 # v_b 0.1-0.8 m/s, mean COF 0.2-1, 32-60 cells per diameter; T = 20 s
 # from rest (t_skip 10 s: the QoIs over the first cycles; over long
-# windows a field's QoIs are not continuous in the quadrature, sec. 6 of
+# windows a field's QoIs are not continuous in the quadrature, sec. 4.4 of
 # docs/design.md); 8 fields a point, tiles, the point reference at
 # ceil(2.2 / (l/R)) rings, rtol 1e-9 for both models.
 # REPORTS=DIR keeps the runs' reports (and reuses them: a study can be
