@@ -1,6 +1,6 @@
 /* SUNDIALS CVODE peer of the stick-slip integrator: see cvode_peer.h for
  * the model (the solver's own pieces, oscillator.h) and how it matches
- * solver/oscillator.c. */
+ * solver/dynamics/oscillator.c. */
 #include "cvode_peer.h"
 
 #if SF_HAVE_CVODE

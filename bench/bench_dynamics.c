@@ -4,7 +4,7 @@
  * plan's choice: rk8pd for the closed-form 1-D wrench, rkck for the 3-DOF
  * quadrature; rk8pd too on the stochastic case, for comparison).
  *  - 1-D Table 1 (T = 100 s): max transition-time error vs the
- *    eps-corrected closed form (solver/cycle1d.h); with SUNDIALS CVODE
+ *    eps-corrected closed form (solver/dynamics/cycle1d.h); with SUNDIALS CVODE
  *    (BDF and Adams, root-finding; bench/cvode_peer.h) as a peer when the
  *    build has it, all runs timed interleaved.
  *  - Table 1 stochastic baseline (T = 100 s, one field, 12 rings): Eq. 15

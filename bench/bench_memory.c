@@ -205,7 +205,7 @@ int bench_belt(FILE *f, const char *dir)
             ca_box[k] = np.cell_size / ps.l;
         }
     }
-    fprintf(f, "\nCell averages (`cof_model`, solver/cellavg.h; docs/design.md sec. 4.4): the plan's choice at l/R = 0.01 is the "
+    fprintf(f, "\nCell averages (`cof_model`, solver/field/cellavg.h; docs/design.md sec. 4.4): the plan's choice at l/R = 0.01 is the "
                "cell-average model (%zu Cartesian cells per diameter, of %.2f l, the effective field at spacing box/3 by "
                "circulant embedding, one real FFT per realisation); against the point model it would replace (forced, %.1f s CPU) it is %.0fx faster. "
                "Ratios to l/R = 1 in this run: l/R = 0.01 (auto) %.1fx CPU (target <= 10x), peak RSS %.1f MiB (target "

@@ -5,7 +5,7 @@
  *
  * The model is not copied: the peer holds a plan of the solver
  * (sf_osc_alloc) and calls its exported pieces (oscillator.h), so it
- * differs from solver/oscillator.c in the integrator and the event
+ * differs from solver/dynamics/oscillator.c in the integrator and the event
  * location only:
  *  - start at rest at the origin; slip if the switching function
  *    sf_osc_g_stick is >= 0 at t = 0, else stick from t = 0 (Eq. 12,

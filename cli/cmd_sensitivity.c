@@ -3,7 +3,7 @@
  *                       [--log-lr LO,HI] [--cv LO,HI] [--vb LO,HI] [--mu LO,HI]
  * First-order and total Sobol' indices of the QoI ratios over l/R, the
  * COF's CV, v_b and the mean COF, the field as the fifth input
- * (solver/sensitivity.h). */
+ * (solver/stats/sensitivity.h). */
 #include "cli.h"
 #include "sensitivity.h"
 #include "montecarlo.h"
@@ -16,7 +16,7 @@
 #include <time.h>
 
 /* Rows below which the study warns.  The Ishigami function through the
- * same estimators (solver/sobol.h; 3 inputs and 2 dummies, 2000 designs
+ * same estimators (solver/stats/sobol.h; 3 inputs and 2 dummies, 2000 designs
  * of 300 resamples each, 95% percentile intervals): the worst index's
  * interval covers its analytic value 73% of the time at 8 rows, 82% at
  * 16, 86% at 32, 90% at 64 (the floor cases/sensitivity/ishigami.md

@@ -129,7 +129,7 @@ int main(int argc, char **argv)
 {
 #ifdef SF_MPI
     /* make MPI=1: `mpirun -np P slipfield sweep ...` spreads realisations
-       over ranks (solver/montecarlo.h); other commands run on each rank */
+       over ranks (solver/stats/montecarlo.h); other commands run on each rank */
     MPI_Init(&argc, &argv);
     int rc = dispatch(argc, argv);
     MPI_Finalize();

@@ -63,19 +63,7 @@ out=$(for f in $files; do
 done
 # any text of any tracked file (fuzz seeds and C strings too) but this one
 git grep -n 'DESIGN\.md' -- . ':!scripts/refs-check.sh' | awk -F: '{ print $1 ":" $2, "DESIGN.md" }')
-# A solver file named by its flat path of before the layer folders
-# (cof.c for what is now disc/cof.c under the solver folder):
-# transitional, while the documents and the harness that other branches
-# edit still use those paths.  Such a path counts as present when a layer
-# folder holds the file, and is reported as a warning (SF_REFS_STRICT=1:
-# an error); drop this once the tree is rewritten with the old -> new map.
-sd=solver
-flat_moved() {   # flat_moved PATH: true if the solver folder's NAME is in a layer folder
-    case $1 in "$sd"/*/*) return 1 ;; "$sd"/*) ;; *) return 1 ;; esac
-    name=${1#"$sd"/}; name=${name%%.\{*}
-    [ -n "$name" ] && [ -n "$(ls "$sd"/*/"$name"* 2>/dev/null)" ]
-}
-bad=0; n=0; flat=0
+bad=0; n=0
 while read -r where p; do
     [ -n "$where" ] || continue
     n=$((n + 1))
@@ -83,8 +71,6 @@ while read -r where p; do
     case " $allowed " in *" $p "*) continue ;; esac
     if [ "$p" = DESIGN.md ]; then
         echo "refs-check: $where cites DESIGN.md: the design document is docs/design.md" >&2; bad=$((bad + 1))
-    elif ! exists "$p" && [ "${SF_REFS_STRICT:-0}" != 1 ] && flat_moved "$p"; then
-        flat=$((flat + 1)); [ $flat -le 3 ] && echo "refs-check: warning: $where names $p, now in a layer folder: $(ls "$sd"/*/"${p#"$sd"/}"* 2>/dev/null | head -1)" >&2
     elif ! exists "$p"; then
         echo "refs-check: $where mentions $p, which the repository does not have" >&2; bad=$((bad + 1))
     fi
@@ -95,5 +81,4 @@ if [ $bad -ne 0 ]; then
     echo "refs-check: $bad dangling reference(s) among $n" >&2
     exit 1
 fi
-[ $flat -eq 0 ] || echo "refs-check: warning: $flat reference(s) name a solver file by its flat path of before the layer folders (SF_REFS_STRICT=1 fails on them)" >&2
 echo "refs-check: $n references to the tree's own files, all present"

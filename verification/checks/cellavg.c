@@ -1,4 +1,4 @@
-/* The cell-average COF model (cof_model = cell_average, solver/cellavg.h;
+/* The cell-average COF model (cof_model = cell_average, solver/field/cellavg.h;
  * docs/design.md sec. 4.4): the plan's shortcut at small l/R
  * against the full computation.  The references these checks rest on (the
  * covariance oracle, the exact box average) are in cellavg_oracle.c.

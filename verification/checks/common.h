@@ -28,7 +28,7 @@ typedef struct {
 } ref_cycle1d;
 
 /* The oracle's 1-D limit cycle at static COF mu (Eqs. 3-4, 1, 12, 14),
- * written from the equations, sharing no code with solver/cycle1d.c: see
+ * written from the equations, sharing no code with solver/dynamics/cycle1d.c: see
  * common.c for the derivation.  0, or -1 when there is no cycle. */
 int ref_cycle(const sf_scene *s, double mu, ref_cycle1d *c);
 
@@ -48,7 +48,7 @@ int check_field_sample(const sf_case *c, sf_field *f, gsl_rng *rng, double *g, s
 int check_field_sample_pair(const sf_case *c, sf_field *f, gsl_rng *rng, double *re, double *im, size_t n);
 
 /* The oracle's Nataf map (docs/design.md sec. 4.1), written from the target
- * moments independently of solver/lognormal.c: ln H ~ N(mu, sigma^2) with
+ * moments independently of solver/field/lognormal.c: ln H ~ N(mu, sigma^2) with
  * E[H] = mean, sd[H] = std. */
 typedef struct { double mu, sigma; } ref_ln_par;
 ref_ln_par ref_lognormal_par(double mean, double std);

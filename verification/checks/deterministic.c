@@ -1,6 +1,6 @@
 /* Checks of the 1-D deterministic oscillator (Eqs. 3-4) and of the 3-DOF
  * integrator with a spatially constant COF, against the closed-form cycle
- * (solver/cycle1d.h: ideal and with the eps_lambda threshold's own effect)
+ * (solver/dynamics/cycle1d.h: ideal and with the eps_lambda threshold's own effect)
  * and exact invariants (energy balance, symmetry). */
 #include "checks.h"
 #include "common.h"

@@ -24,9 +24,9 @@
 /* A QoI ratio as a function of the drawn mu_s, from the closed form.
  * Both halves of the oracle are the checks' own (common.h): the lognormal
  * parameters from the target mean and std (ref_lognormal_par, not
- * solver/lognormal.c, which draws the realisations: a defect there must
+ * solver/field/lognormal.c, which draws the realisations: a defect there must
  * not move the oracle with it) and the cycle (ref_cycle, not
- * solver/cycle1d.c). */
+ * solver/dynamics/cycle1d.c). */
 typedef struct {
     const sf_scene *s;
     int q;               /* SF_SWEEP_PVX, PVF or SF */

@@ -1,6 +1,6 @@
 /* Checks of the lognormal COF field (Nataf map, paper Sec. 2.2).  The
  * oracle's lognormal parameters and correlation distortion are derived
- * here from the target moments, independently of solver/lognormal.c. */
+ * here from the target moments, independently of solver/field/lognormal.c. */
 #include "checks.h"
 #include "common.h"
 #include "../stats.h"

@@ -1,4 +1,4 @@
-/* The two-stage sample size (solver/mcstop.h) keeps its intervals'
+/* The two-stage sample size (solver/stats/mcstop.h) keeps its intervals'
  * coverage at fresh seeds.
  *
  * A cheap QoI with a known mean: per realisation one static COF mu drawn

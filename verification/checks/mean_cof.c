@@ -25,7 +25,7 @@
  * Sec. 3 rests on for that axis is the 1-D stick-slip cycle of Eqs. 3-4,
  * whose stick duration, slip amplitude and friction range scale with mu:
  * written in closed form from the equations (ref_cycle, checks/common.c;
- * it shares no code with solver/cycle1d.c), and checked on the
+ * it shares no code with solver/dynamics/cycle1d.c), and checked on the
  * deterministic runs at each mean COF.  The stochastic model has an exact statement about
  * the mean COF in the long-correlation limit: there every realisation is
  * that cycle at its own mu_s, a lognormal with the scene's mean and CV,

@@ -10,7 +10,7 @@
  *     S(t) = M q*'' + K q* - Q(q*, q*')
  * WITH ITS OWN CODE from the paper: M = diag(m, m, J), J = m R^2/2, K =
  * diag(k, k, 0) (Eq. 5); Q = -(F_sx, F_sy, T_s) with F_s, T_s the integrals
- * of Eq. 8 (friction on the disc opposes the local slip, solver/contact.h),
+ * of Eq. 8 (friction on the disc opposes the local slip, solver/disc/contact.h),
  * by its own product rule (Gauss-Legendre in r, GSL glfixed, x the
  * trapezoid rule in angle, spectral for a smooth periodic integrand) and,
  * for a gridded COF, its own bilinear look-up of the grid values

@@ -1077,7 +1077,7 @@ static int chk_ref_converge(const sf_case *c, sf_result *r)
 }
 
 /* ---- The paper's QoIs at the window's edges on a field: solver against
- * the oracle, each with its own window code (solver/oscillator.c;
+ * the oracle, each with its own window code (solver/dynamics/oscillator.c;
  * verification/oracle/ref3dof.c). */
 enum { WQ_STICK, WQ_TSK, WQ_NOSC, WQ_PVX, WQ_PVF, WQ_N };
 static const char *wq_name[WQ_N] = { "stick time inside [t_skip, T] [s]", "T_sk [-]", "oscillations",

@@ -362,7 +362,7 @@ static int chk_sobol_claims(const sf_case *c, sf_result *r)
     sf_result_data(r, "the runs' ratios and QoIs", ne * 2 * SF_SWEEP_NQ, S->y);
     sf_note(r, "\n%zu rows, %zu runs (T = %g s, t_skip = %g s), %.0f s of CPU in the runs; %d bootstrap resamples "
                "over rows. Ranges: log10 l/R in [%g, %g], CV in [%g, %g], v_b in [%g, %g] m/s, mean COF in [%g, %g]; "
-               "the field is the fifth input, a white noise fixed on the belt (solver/noise.h). S1 by pick-freeze "
+               "the field is the fifth input, a white noise fixed on the belt (solver/field/noise.h). S1 by pick-freeze "
                "(Saltelli) and from given data (rank-based, over the A and B rows: no coupling of the field "
                "enters it), S_T by pick-freeze (Jansen).\n\n| QoI | input | S1 [95%% CI] | S1 given data [95%% CI] | "
                "ST [95%% CI] |\n|---|---|---|---|---|\n",

@@ -416,7 +416,7 @@ static int chk_fig16(const sf_case *c, sf_result *r)
         sf_sweep_set(&s, c->spec.sweep_param, c->spec.sweep.v[j], err, sizeof err);
         sd = s;
         sd.cof = SF_COF_UNIFORM;
-        ref_cycle1d cf;   /* the checks' own closed form (common.h), not solver/cycle1d.c */
+        ref_cycle1d cf;   /* the checks' own closed form (common.h), not solver/dynamics/cycle1d.c */
         sf_osc_result rs, rd;
         if (ref_cycle(&sd, sd.mu_mean, &cf) || check_osc_run(&sd, NULL, NULL, 0, &rd, NULL, NULL, r) ||
             check_osc_run(&s, rng, NULL, 0, &rs, NULL, NULL, r)) {

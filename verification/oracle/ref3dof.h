@@ -25,9 +25,9 @@
  *    the event predicate over single RK4 steps from the step's start; the
  *    stick phase as exact belt motion with its break found by bisection
  *    on k |(x, y)| - mu_bar m g (the solver uses a closed form).
- * Same conventions as solver/contact.h: the wrench acts ON the disc and
+ * Same conventions as solver/disc/contact.h: the wrench acts ON the disc and
  * opposes local slip; ground frame; belt point (x - v_b t, y).
- * QoIs with the definitions of solver/oscillator.h (a cycle from a stick
+ * QoIs with the definitions of solver/dynamics/oscillator.h (a cycle from a stick
  * onset to the next, complete cycles with onset >= t_skip), computed here
  * by their own code; and the paper's (Sec. 3.1, `qoi_def = paper`), also
  * by their own code: the stick time is each stick span clipped to
