@@ -1,3 +1,5 @@
+/* A case's prose split into the parts its report shows, in order (prose.h:
+ * the labels it reads, and History moved last). */
 #include "prose.h"
 
 #include <ctype.h>

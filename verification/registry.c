@@ -1,3 +1,5 @@
+/* The table of check families: every check a case can name, in the order
+ * `slipfield verify --checks` lists them (registry.h: lookup by name). */
 #include "registry.h"
 #include "checks/checks.h"
 
