@@ -82,7 +82,11 @@ static int chk_claims_synth(const sf_case *c, sf_result *r)
     *syn = *c;
     syn->spec.alpha = SYN_ALPHA;
     syn->spec.looks = SYN_LOOKS;
-    double a = claims_alpha(syn, syn_claims), share = a * SYN_LOOKS;
+    /* the engine's alpha a test (what it judges at), and the rates its
+     * design promises, from the synthetic case's definition: a test at
+     * alpha / claims / looks, a claim over the looks at alpha / claims */
+    double a = claims_alpha(syn, syn_claims);
+    double p_test = SYN_ALPHA / 3 / SYN_LOOKS, share = SYN_ALPHA / 3;
     free(syn);
     const claim_spec *up = &syn_claims[0], *dn = &syn_claims[1], *eq = &syn_claims[2];
     gsl_rng *g = gsl_rng_alloc(gsl_rng_mt19937);
@@ -128,8 +132,9 @@ static int chk_claims_synth(const sf_case *c, sf_result *r)
      * normal path (df above 1e6, the path of the engine's log-std, gap and
      * drop tests): est ~ N(effect, se^2) with se known, so the power is
      * exactly 0.99 at the MDE and Phi(MDE / 2 / se - z_alpha) at half */
-    double se = 1, mde = claims_mde(se, a, 0), z = gsl_cdf_ugaussian_Qinv(a);
-    double p_half = gsl_cdf_ugaussian_P(mde / 2 / se - z);
+    double se = 1, z = gsl_cdf_ugaussian_Qinv(p_test);
+    double mde = (z + gsl_cdf_ugaussian_Qinv(1 - CLAIM_MDE_POWER)) * se;   /* at the promised alpha */
+    double p_half = gsl_cdf_ugaussian_P(mde / 2 / se - z), mde_engine = claims_mde(se, a, 0);
     for (unsigned i = 0; i < R; i++) {
         estp[i] = mde + gsl_ran_gaussian(g, se);
         esth[i] = mde / 2 + gsl_ran_gaussian(g, se);
@@ -151,9 +156,9 @@ static int chk_claims_synth(const sf_case *c, sf_result *r)
         "syn-eq (equivalence) confirmed at its margin's boundary (one look)",
         "syn-up wrongly confirmed over the 2-look design", "syn-up confirmed at the MDE",
         "syn-up confirmed at half the MDE" };
-    double p0[NR] = { a, a, a, a, a, share, CLAIM_MDE_POWER, p_half }, rate[NR], xs[NR], lo[NR], hi[NR];
-    unsigned kc1 = crit_upper(a, R, level), kc2 = crit_upper(share, R, level);
-    double pw6 = miss_upper(a, 6 * a, R, level), pw2 = miss_upper(a, 2 * a, R, level),
+    double p0[NR] = { p_test, p_test, p_test, p_test, p_test, share, CLAIM_MDE_POWER, p_half }, rate[NR], xs[NR], lo[NR], hi[NR];
+    unsigned kc1 = crit_upper(p_test, R, level), kc2 = crit_upper(share, R, level);
+    double pw6 = miss_upper(p_test, 6 * p_test, R, level), pw2 = miss_upper(p_test, 2 * p_test, R, level),
            pwd6 = miss_upper(share, 6 * share, R, level), pwd15 = miss_upper(share, 1.5 * share, R, level);
     char tab[2048];
     size_t used = 0;
@@ -166,14 +171,14 @@ static int chk_claims_synth(const sf_case *c, sf_result *r)
         used += (size_t)snprintf(tab + used, sizeof tab - used, "| %d | %s | %u | %.5f | %.5f |\n", j + 1, what[j],
                                  k[j], rate[j], p0[j]);
     }
-    sf_note(r, "Synthetic case: alpha %g, %d looks, %zu claims: claims_alpha = %.4g a test, a claim's share over "
-               "the looks %.4g. %u replications a row (seed %lu); each exact binomial test at %.3g (the case's alpha "
+    sf_note(r, "Synthetic case: alpha %g, %d looks, %zu claims: claims_alpha = %.4g a test (promised: %.4g), a "
+               "claim's share over the looks %.4g. %u replications a row (seed %lu); each exact binomial test at %.3g (the case's alpha "
                "%g over %d rows). The MDE at se = 1: %.4f (power %.2f); at half of it the exact power is %.4f.\n\n"
                "| row | verdict | count | rate | stated rate |\n|---|---|---|---|---|\n%s\n"
                "Power of the one-look type-I rows (exact binomial: reject from %u of %u): 1 - %.2g against 6x the "
                "rate (the case's whole alpha), 1 - %.2g against 2x (the looks ignored); of the design's row (reject "
                "from %u): 1 - %.2g against 6x the share, 1 - %.2g against 1.5x.\n",
-            SYN_ALPHA, SYN_LOOKS, (size_t)3, a, share, R, c->scene.seed, level, c->spec.alpha, NR, mde,
+            SYN_ALPHA, SYN_LOOKS, (size_t)3, a, p_test, share, R, c->scene.seed, level, c->spec.alpha, NR, mde,
             CLAIM_MDE_POWER, p_half, tab, kc1, R, pw6, pw2, kc2, pwd6, pwd15);
     sf_plot *pl = sf_result_plot(r, "verdict_rates", "Synthetic claims: each verdict's rate against the engine's",
                                  "row (1-5 at the boundary, 6 the 2-look design, 7 at the MDE, 8 at half)",
@@ -201,8 +206,8 @@ static int chk_claims_synth(const sf_case *c, sf_result *r)
     }
     /* the exact rows: the engine's alpha a test is the synthetic case's
      * alpha / claims / looks, and a non-finite estimate is not decidable */
-    sf_check_rel(r, "claims_alpha of the synthetic case (alpha 0.06, 3 claims, 2 looks)", a, SYN_ALPHA / 3 / SYN_LOOKS,
-                 1e-15);
+    sf_check_rel(r, "claims_alpha of the synthetic case (alpha 0.06, 3 claims, 2 looks)", a, p_test, 1e-15);
+    sf_check_rel(r, "claims_mde at se = 1 and that alpha: (z_alpha + z_0.01) se", mde_engine, mde, 1e-12);
     int nan_ok = claims_decide(up, NAN, 1, 4, a, NULL, NULL) == SF_CLAIM_UNDECIDED &&
                  claims_decide(up, 1, INFINITY, 4, a, NULL, NULL) == SF_CLAIM_UNDECIDED &&
                  claims_decide(eq, INFINITY, 1, 4, a, NULL, NULL) == SF_CLAIM_UNDECIDED;
