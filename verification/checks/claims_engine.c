@@ -385,6 +385,17 @@ static void decide(claim_eval *e, const claim_spec *c, double est, double se, do
     e->hi = logscale ? exp(hi) : hi;
 }
 
+int claims_decide(const claim_spec *cs, double est, double se, double df, double alpha, double *lo, double *hi)
+{
+    claim_eval e;
+    decide(&e, cs, est, se, df, alpha, 0);
+    if (lo)
+        *lo = e.lo;
+    if (hi)
+        *hi = e.hi;
+    return e.status;
+}
+
 /* Evaluate a claim under definition dd; returns 0 when its points are
  * not in this sweep. */
 static int claim_eval_at(const claim_spec *c, const cpoint *pt, size_t K, int dd, double alpha, claim_eval *e)
@@ -477,13 +488,17 @@ static int claim_eval_at(const claim_spec *c, const cpoint *pt, size_t K, int dd
  * alpha to decide with power CLAIM_MDE_POWER, (z_alpha + z_(1 - power)) se,
  * on the statistic's scale (a factor for log-scale statistics; NAN
  * without a standard error). */
-#define CLAIM_MDE_POWER 0.99
+double claims_mde(double se, double alpha, int logscale)
+{
+    if (!isfinite(se) || se <= 0)
+        return NAN;
+    double d = (gsl_cdf_ugaussian_Qinv(alpha) + gsl_cdf_ugaussian_Qinv(1 - CLAIM_MDE_POWER)) * se;
+    return logscale ? exp(d) : d;
+}
+
 static double claim_mde(const claim_eval *e, double alpha)
 {
-    if (!isfinite(e->se) || e->se <= 0)
-        return NAN;
-    double d = (gsl_cdf_ugaussian_Qinv(alpha) + gsl_cdf_ugaussian_Qinv(1 - CLAIM_MDE_POWER)) * e->se;
-    return e->logscale ? exp(d) : d;
+    return claims_mde(e->se, alpha, e->logscale);
 }
 
 /* The group-sequential design's number of looks (case key `looks`). */
@@ -513,6 +528,11 @@ static double claim_alpha(const sf_case *c, const claim_spec *spec, const cpoint
     for (const claim_spec *cs = spec; cs->id; cs++)
         g += !pt || (claims_pick(pt, K, cs->a) >= 0 && (!cs->b || claims_pick(pt, K, cs->b) >= 0));
     return c->spec.alpha / (double)(g ? g : 1) / (double)claims_looks(c);
+}
+
+double claims_alpha(const sf_case *c, const claim_spec *spec)
+{
+    return claim_alpha(c, spec, NULL, 0);
 }
 
 static const char *kind_how(int kind)

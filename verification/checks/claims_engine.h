@@ -37,4 +37,21 @@ void claims_free(cpoint *pt, size_t K);
 void claims_judge_one(const sf_case *c, sf_result *r, const claim_spec *all, const claim_spec *cs, double est,
                       double se, double df, const char *how, const char *defs);
 
+/* The engine's verdict rule, pure (what claims_judge_one and the sweep's
+ * judgement use; claims-engine-synthetic drives it on synthetic claims):
+ * the verdict (SF_CLAIM_*) of the claim cs (its kind, dir, lo, hi) from
+ * an estimate est with standard error se on df degrees of freedom
+ * (Student's t quantile; the normal one above df = 1e6), each one-sided
+ * test at alpha; its one-sided (1 - alpha) bounds into *lo, *hi (either
+ * may be NULL).  Linear scale (the log-scale kinds pass logs). */
+int claims_decide(const claim_spec *cs, double est, double se, double df, double alpha, double *lo, double *hi);
+/* The alpha each claim of the table spec (NULL-id ended) is tested at in
+ * case c: c's alpha / the claims judged / the looks (Bonferroni). */
+double claims_alpha(const sf_case *c, const claim_spec *spec);
+/* The power every minimum detectable effect is stated at, and that
+ * effect for a test of standard error se at alpha: (z_alpha +
+ * z_(1 - power)) se (a factor, exp of it, when logscale). */
+#define CLAIM_MDE_POWER 0.99
+double claims_mde(double se, double alpha, int logscale);
+
 #endif
