@@ -227,15 +227,17 @@ static int chk_stein_coverage(const sf_case *c, sf_result *r)
 static const size_t cp_n[CP_NPROC] = { 20, 40, 0 };
 static const char *const cp_proc[CP_NPROC] = { "plain N=20", "plain N=40", "target-se" };
 static const char *const cp_qn[SF_SWEEP_NQ] = { "pv_x_ratio", "pv_F_ratio", "stick_fraction_ratio" };
-/* The documented shortfalls: the coverage a procedure has on a population
+/* The documented levels: the coverage a procedure has on a population
  * where it is not the nominal 0.95, indexed [point][procedure][QoI] (0:
- * nominal).  Measured by this check at R = 10^6 replications (samples =
- * 1000000, seed 7, the case's note prints it), Clopper-Pearson 95%
- * intervals of +-0.0005; the README's estimator table states them. */
+ * nominal), below it a shortfall.  Measured by this check at R = 10^6
+ * replications (samples = 1000000, seed = 7 in a copy of the case: 100 s),
+ * Clopper-Pearson 95% intervals of +-0.0005: every row whose interval
+ * excludes 0.95 is listed at its measured coverage (the README's
+ * estimator table states them). */
 static const double cp_doc[CP_NPT][CP_NPROC][SF_SWEEP_NQ] = {
-    { { 0, 0, 0 }, { 0, 0, 0 }, { 0, 0, 0 } },
-    { { 0, 0, 0 }, { 0, 0, 0 }, { 0, 0, 0 } },
-    { { 0, 0, 0 }, { 0, 0, 0 }, { 0, 0, 0 } },
+    { { 0, 0.9469, 0.9215 }, { 0.9490, 0.9437, 0.9173 }, { 0.9491, 0.9453, 0.9191 } },   /* l/R 0.1 */
+    { { 0.9506, 0, 0.9449 }, { 0, 0, 0.9470 }, { 0.9509, 0.9506, 0.9445 } },              /* l/R 1 */
+    { { 0.9470, 0.9490, 0.9506 }, { 0.9486, 0.9494, 0 }, { 0.9463, 0.9484, 0 } },         /* l/R 10 */
 };
 
 typedef struct {
@@ -437,7 +439,9 @@ static int chk_coverage_populations(const sf_case *c, sf_result *r)
         lvl[row] = cp_doc[k][j][q] > 0 ? cp_doc[k][j][q] : SF_SWEEP_CI_LEVEL;
         used += (size_t)snprintf(tab + used, sizeof tab - used, "| %g | %s | %s | %.4f [%.4f, %.4f] | %+.3f +- %.3f | %s |\n",
                                  pop[k].lr, cp_proc[j], cp_qn[q], cov[row], lo[row], hi[row], bias[row], bse,
-                                 cp_doc[k][j][q] > 0 ? "documented shortfall" : "nominal 0.95");
+                                 cp_doc[k][j][q] <= 0                   ? "nominal 0.95"
+                                 : cp_doc[k][j][q] < SF_SWEEP_CI_LEVEL ? "documented shortfall"
+                                                                       : "documented, above nominal");
     }
     sf_result_data(r, "the coverages", CP_ROWS, cov);
     sf_result_data(r, "the biases in se units", CP_ROWS, bias);
@@ -462,7 +466,7 @@ static int chk_coverage_populations(const sf_case *c, sf_result *r)
         int k = row / (CP_NPROC * SF_SWEEP_NQ), j = row / SF_SWEEP_NQ % CP_NPROC, q = row % SF_SWEEP_NQ;
         char what[SF_LABEL_LEN];
         snprintf(what, sizeof what, "l/R %g, %s, %s: misses ~ Binomial(R, %.4f) (%s), two-sided exact test", pop[k].lr,
-                 cp_proc[j], cp_qn[q], 1 - lvl[row], cp_doc[k][j][q] > 0 ? "documented shortfall" : "nominal");
+                 cp_proc[j], cp_qn[q], 1 - lvl[row], cp_doc[k][j][q] <= 0 ? "nominal" : "documented level");
         sf_check_pvalue(r, what, binom_p(miss[row], 1 - lvl[row], R, 1), a_row, R);
     }
     return SF_SUCCESS;
