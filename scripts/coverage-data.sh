@@ -8,7 +8,7 @@
 #   slipfield evaluate examples/disc.scene --design D --threads 2 --no-unum
 # whose output does not depend on the thread count; the ratios are copied
 # as evaluate prints them (%.17g), so a rerun is bit-identical:
-#   sh scripts/coverage-data.sh > cases/montecarlo/coverage-population.tsv
+#   sh scripts/coverage-data.sh > cases/montecarlo/coverage-populations.tsv
 # SLIPFIELD=path picks the binary (default build/slipfield); THREADS=N the
 # threads (default 2); POINTS="LR:COUNT ..." the points and their
 # realisations (default "0.1:3000 1:10000 10:10000").
