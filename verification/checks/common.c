@@ -627,6 +627,18 @@ int check_data_path(const sf_case *c, char *buf, size_t len)
     return SF_SUCCESS;
 }
 
+FILE *check_data_open(const sf_case *c, sf_result *r, char *buf, size_t len, const char *regen, int *rc)
+{
+    FILE *f = NULL;
+    if ((*rc = check_data_path(c, buf, len)))
+        return NULL;
+    if (!(f = fopen(buf, "r"))) {
+        sf_note(r, "**Stored data missing:** cannot read %s: regenerate it with `%s > %s`.", buf, regen, buf);
+        *rc = SF_EIO;
+    }
+    return f;
+}
+
 int check_parse_num(const char *t, double *x)
 {
     char *end;

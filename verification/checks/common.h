@@ -250,6 +250,9 @@ void check_plot_vs_predicted(sf_result *r, const char *name, const char *title, 
 /* A stored-data case's file beside it: NAME.tsv for NAME.md (SF_EINVAL
  * when the case's path does not end in .md). */
 int check_data_path(const sf_case *c, char *buf, size_t len);
+/* The file above opened for reading; NULL, *rc set and a note saying how
+ * to regenerate it (the command `regen`) when it cannot be read. */
+FILE *check_data_open(const sf_case *c, sf_result *r, char *buf, size_t len, const char *regen, int *rc);
 /* t is a whole number (strtod's syntax, nothing after it): 1, and *x. */
 int check_parse_num(const char *t, double *x);
 
