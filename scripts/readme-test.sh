@@ -2,7 +2,8 @@
 # README.md is a door: at most 300 lines, its Quick start in the first 30,
 # and every command in its ```sh blocks runs (from a scratch folder,
 # against this tree's build/, examples/ and python/): the make targets are
-# CI's own steps and are only checked to exist.
+# CI's own steps and are only checked to exist.  Also: docs/design.md at
+# most 1200 lines.
 set -u
 top=$(cd "$(dirname "$0")/.." && pwd)
 readme=$top/README.md
@@ -11,6 +12,9 @@ ok() { pass=$((pass + 1)); }
 bad() { fail=$((fail + 1)); echo "readme-test: FAIL $*" >&2; }
 n=$(wc -l < "$readme")
 [ "$n" -le 300 ] && ok || bad "README.md has $n lines (at most 300)"
+# docs/design.md is the design, not a notebook: records go to docs/studies/
+n=$(wc -l < "$top/docs/design.md")
+[ "$n" -le 1200 ] && ok || bad "docs/design.md has $n lines (at most 1200: move records to docs/studies/)"
 q=$(grep -n '^## Quick start' "$readme" | head -1 | cut -d: -f1)
 [ -n "$q" ] && [ "$q" -le 30 ] && ok || bad "no '## Quick start' in README.md's first 30 lines"
 work=$(mktemp -d /tmp/sf-readme.XXXXXX)
