@@ -40,11 +40,22 @@ else
     exit 1
 fi
 echo "slipfield: installing:$missing" >&2
-if [ -n "$run" ]; then
-    $run apt-get update -qq && $run env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $missing
-else
-    apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $missing
-fi
+# apt-get, retried while another apt holds its lock (a second make
+# started at once on a new machine): every 5 s, up to 10 min
+apt() {
+    i=0
+    while :; do
+        out=$($run env DEBIAN_FRONTEND=noninteractive apt-get "$@" 2>&1); st=$?
+        [ $st -eq 0 ] && return 0
+        case $out in
+        *"Could not get lock"*) [ $i -lt 120 ] || break; i=$((i + 1)); sleep 5 ;;
+        *) break ;;
+        esac
+    done
+    printf '%s\n' "$out" >&2
+    return $st
+}
+apt update -qq && apt install -y -qq --no-install-recommends $missing
 rc=$?
 if [ $rc -ne 0 ]; then
     echo "slipfield: package installation failed (exit $rc); run:  ${run:+sudo }$cmd" >&2
