@@ -215,3 +215,26 @@ double sf_min(double a, double b)
         return NAN;
     return pass_value(a < b ? a : b);
 }
+
+double sf_cov_pvalue(unsigned x, unsigned R, double clo, double chi)
+{
+    double pl = gsl_cdf_binomial_P(x, clo, R), ph = x ? gsl_cdf_binomial_Q(x - 1, chi, R) : 1;
+    return fmin(1, 2 * fmin(pl, ph));
+}
+
+void sf_cov_region(unsigned R, double clo, double chi, double alpha, unsigned *lo, unsigned *hi)
+{
+    unsigned l = 0, h = R;
+    while (l < R && gsl_cdf_binomial_P(l, clo, R) < alpha / 2)
+        l++;
+    while (h > 0 && gsl_cdf_binomial_Q(h - 1, chi, R) < alpha / 2)
+        h--;
+    *lo = l;
+    *hi = h;
+}
+
+double sf_cov_reject(unsigned R, unsigned lo, unsigned hi, double c)
+{
+    double below = lo ? gsl_cdf_binomial_P(lo - 1, c, R) : 0, above = hi < R ? gsl_cdf_binomial_Q(hi, c, R) : 0;
+    return below + above;
+}

@@ -53,6 +53,18 @@ double sf_interval_null_p(double est, double se, double margin, double df);
  * else 0. */
 double sf_rms_le_pvalue(const double *e, size_t n, double b);
 
+/* The two-sided exact binomial test of an interval procedure's coverage:
+ * H0 "coverage in [clo, chi]" from x of R intervals covering.
+ * sf_cov_pvalue: p = 2 min(P(X <= x | clo), P(X >= x | chi)), at most 1;
+ * its size is at most alpha at every c in [clo, chi] (each tail is
+ * largest at its own end of H0).  sf_cov_region: the counts [*lo, *hi]
+ * whose p is at least alpha.  sf_cov_reject: the probability of a count
+ * outside [lo, hi] at true coverage c (the power there, or the
+ * false-alarm rate inside H0). */
+double sf_cov_pvalue(unsigned x, unsigned R, double clo, double chi);
+void sf_cov_region(unsigned R, double clo, double chi, double alpha, unsigned *lo, unsigned *hi);
+double sf_cov_reject(unsigned R, unsigned lo, unsigned hi, double c);
+
 /* Standard normal CDF as an sf_cdf_fn. */
 double sf_cdf_normal(double x, void *params);
 

@@ -88,46 +88,6 @@ static const char *const ish_name[6] = { "S1", "S2", "S3", "ST1", "ST2", "ST3" }
                           * errors (the case's prose) */
 #define COV_POWER 0.9    /* the test's least power against coverage 0.90 and 0.99 */
 
-/* P(X < k) and P(X > k) for X ~ Binomial(R, c). */
-static double binom_below(unsigned k, double c, unsigned R)
-{
-    return k ? gsl_cdf_binomial_P(k - 1, c, R) : 0;
-}
-
-static double binom_above(unsigned k, double c, unsigned R)
-{
-    return k < R ? gsl_cdf_binomial_Q(k, c, R) : 0;
-}
-
-/* The two-sided test of H0: coverage in [clo, chi] from a count x of R:
- * p = 2 min(P(X <= x | clo), P(X >= x | chi)), at most 1.  Its size is at
- * most alpha at every c in [clo, chi]: P(X <= x | c) falls and P(X >= x | c)
- * grows with c, so each tail is largest at its end of H0. */
-static double cov_pvalue(unsigned x, unsigned R, double clo, double chi)
-{
-    double pl = gsl_cdf_binomial_P(x, clo, R), ph = x ? gsl_cdf_binomial_Q(x - 1, chi, R) : 1;
-    return fmin(1, 2 * fmin(pl, ph));
-}
-
-/* The acceptance region [*lo, *hi] of that test at alpha: the counts whose
- * p-value is at least alpha. */
-static void cov_region(unsigned R, double clo, double chi, double alpha, unsigned *lo, unsigned *hi)
-{
-    unsigned l = 0, h = R;
-    while (l < R && gsl_cdf_binomial_P(l, clo, R) < alpha / 2)
-        l++;
-    while (h > 0 && gsl_cdf_binomial_Q(h - 1, chi, R) < alpha / 2)
-        h--;
-    *lo = l;
-    *hi = h;
-}
-
-/* P(reject) at true coverage c: the power there, or the false-alarm rate. */
-static double cov_reject(unsigned R, unsigned lo, unsigned hi, double c)
-{
-    return binom_below(lo, c, R) + binom_above(hi, c, R);
-}
-
 static int chk_sobol_ishigami(const sf_case *c, sf_result *r)
 {
     double ex[6], quoted[6] = { 0.3139, 0.4424, 0, 0.5576, 0.4424, 0.2437 }, dq = 0;
@@ -172,9 +132,9 @@ static int chk_sobol_ishigami(const sf_case *c, sf_result *r)
     if (rc)
         return rc;
     unsigned clo, chi;
-    cov_region(COV_R, COV_LOW, COV_LEVEL, a_row, &clo, &chi);
-    double pw90 = cov_reject(COV_R, clo, chi, 0.90), pw99 = cov_reject(COV_R, clo, chi, 0.99);
-    double fa_nom = cov_reject(COV_R, clo, chi, COV_LEVEL), fa_low = cov_reject(COV_R, clo, chi, COV_LOW);
+    sf_cov_region(COV_R, COV_LOW, COV_LEVEL, a_row, &clo, &chi);
+    double pw90 = sf_cov_reject(COV_R, clo, chi, 0.90), pw99 = sf_cov_reject(COV_R, clo, chi, 0.99);
+    double fa_nom = sf_cov_reject(COV_R, clo, chi, COV_LEVEL), fa_low = sf_cov_reject(COV_R, clo, chi, COV_LOW);
     sf_check_ge(r, "the coverage test's design: its least exact binomial power against coverage 0.90 and 0.99",
                 fmin(pw90, pw99), COV_POWER);
     double cov[6], band_lo[6], band_hi[6];
@@ -186,7 +146,7 @@ static int chk_sobol_ishigami(const sf_case *c, sf_result *r)
         snprintf(q, sizeof q, "%s: %zu of %d %.0f%% intervals cover (mean width %.3f, n = %d); two-sided binomial "
                  "test of coverage in [%.3f, %.2f]: accepts %u-%u", ish_name[k], cover[k], COV_R, 100 * COV_LEVEL,
                  wsum[k] / COV_R, COV_N, COV_LOW, COV_LEVEL, clo, chi);
-        sf_check_pvalue(r, q, cov_pvalue((unsigned)cover[k], COV_R, COV_LOW, COV_LEVEL), a_row, COV_R);
+        sf_check_pvalue(r, q, sf_cov_pvalue((unsigned)cover[k], COV_R, COV_LOW, COV_LEVEL), a_row, COV_R);
     }
     sf_note(r, "\nAccuracy: one design of %d rows (%d model runs), %d bootstrap resamples; each index's z = "
                "(estimate - analytic) / bootstrap se, two-sided normal p-value. Coverage: %d independent designs of "
@@ -199,7 +159,7 @@ static int chk_sobol_ishigami(const sf_case *c, sf_result *r)
                "false-alarm rate %.2e at coverage %.2f and %.2e at %.3f (alpha / 12 = %.3g).\n",
             ISH_N, ISH_N * 5, ISH_NB, COV_R, COV_N, COV_NB, 100 * COV_LEVEL, COV_R, COV_LOW, COV_LEVEL, COV_N,
             COV_LOW, COV_LEVEL, a_row, clo, chi, COV_R, (double)clo / COV_R, (double)chi / COV_R, pw90, pw99,
-            cov_reject(COV_R, clo, chi, 0.97), cov_reject(COV_R, clo, chi, 0.91), fa_nom, COV_LEVEL, fa_low,
+            sf_cov_reject(COV_R, clo, chi, 0.97), sf_cov_reject(COV_R, clo, chi, 0.91), fa_nom, COV_LEVEL, fa_low,
             COV_LOW, a_row);
     sf_plot *pl = sf_result_plot(r, "ishigami", "Ishigami indices: estimate with its interval (n = 20000), analytic",
                                  "index: S1 S2 S3 ST1 ST2 ST3 [-]", "index [-]");
