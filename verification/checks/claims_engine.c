@@ -488,9 +488,9 @@ int claims_sequential_decide(const claim_spec *cs, const size_t *N, size_t L, si
     e.status = SF_CLAIM_UNDECIDED;
     size_t j = 0;
     for (; j < m && j < L; j++) {
-        double aj = claims_look_alpha(alpha, N, L, j, spend);
-        decide(&e, cs, est[j], se[j], df[j], aj, logscale);
-        within_margin(&e, cs, aj, margin);
+        double level = claims_look_alpha(alpha, N, L, j, spend);   /* the look's increment of A */
+        decide(&e, cs, est[j], se[j], df[j], level, logscale);
+        within_margin(&e, cs, level, margin);
         if (e.status != SF_CLAIM_UNDECIDED)
             break;
     }
