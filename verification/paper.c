@@ -234,6 +234,16 @@ static size_t tally(const char *root, const sf_outcome *o, size_t n, size_t *cnt
     return tot;
 }
 
+/* The tally at the cases' N: confirmed, contradicted, not decidable. */
+static void tally_cases_n(FILE *f, const size_t *cnt)
+{
+    tally_count(f, cnt[SF_CLAIM_CONFIRMED], "confirmed");
+    fputs(", ", f);
+    tally_count(f, cnt[SF_CLAIM_CONTRADICTED], "contradicted");
+    fputs(", ", f);
+    tally_count(f, cnt[SF_CLAIM_UNDECIDED], "not decidable");
+}
+
 /* The model verdicts' tally (nothing when no case ran them). */
 static void tally_model(FILE *f, const size_t *mod, size_t tot)
 {
@@ -256,11 +266,7 @@ void sf_paper_index_tally(FILE *f, const char *root, const sf_outcome *o, size_t
     if (!tot)
         return;
     fprintf(f, "- The paper's claims in this run (%zu): ", tot);
-    tally_count(f, cnt[SF_CLAIM_CONFIRMED], "confirmed");
-    fputs(", ", f);
-    tally_count(f, cnt[SF_CLAIM_CONTRADICTED], "contradicted");
-    fputs(", ", f);
-    tally_count(f, cnt[SF_CLAIM_UNDECIDED], "not decidable");
+    tally_cases_n(f, cnt);
     fputs(" at the cases' N", f);
     tally_model(f, mod, tot);
     fprintf(f, "; figure by figure: [paper%s](paper%s)\n", html ? ".html" : ".md", html ? ".html" : ".md");
@@ -368,11 +374,7 @@ int sf_paper_report(const sf_run_meta *meta, const sf_outcome *o, size_t n, char
                    "Pocock-type; docs/design.md sec. 7.7); at the budget without a verdict the row gives the effect's "
                    "interval.\n\n", meta->tier_name, meta->seed_note);
         fprintf(f, "**Tally** (%zu claims): at the cases' N ", tot);
-        tally_count(f, cnt[SF_CLAIM_CONFIRMED], "confirmed");
-        fputs(", ", f);
-        tally_count(f, cnt[SF_CLAIM_CONTRADICTED], "contradicted");
-        fputs(", ", f);
-        tally_count(f, cnt[SF_CLAIM_UNDECIDED], "not decidable");
+        tally_cases_n(f, cnt);
         tally_model(f, mod, tot);
         fputs(".\n\n", f);
         fprintf(f, "## Protocol, and where it departs from the paper's\n\n"

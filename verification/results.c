@@ -231,12 +231,10 @@ static json_t *claim_json(const sf_claim_row *c)
                                                                                         : claim_word(m->status)));
         json_object_set_new(mo, "n", json_integer((json_int_t)m->n));
         json_object_set_new(mo, "budget", json_integer((json_int_t)m->budget));
-        set_num(mo, "estimate", m->est, NULL);
-        set_num(mo, "lo", m->lo, NULL);
-        set_num(mo, "hi", m->hi, NULL);
-        set_num(mo, "mde", m->mde, NULL);
-        set_num(mo, "alpha", m->alpha, NULL);
-        set_num(mo, "margin", m->margin, NULL);
+        static const char *const key[6] = { "estimate", "lo", "hi", "mde", "alpha", "margin" };
+        const double val[6] = { m->est, m->lo, m->hi, m->mde, m->alpha, m->margin };
+        for (int k = 0; k < 6; k++)
+            set_num(mo, key[k], val[k], NULL);
         json_object_set_new(o, "model", mo);
     }
     if (json_object_size(nf))

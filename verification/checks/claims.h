@@ -52,6 +52,7 @@ typedef struct cpoint_s {
     size_t n;                   /* realisations */
     double *raw;                /* n x NOUT, then ratios in place for PVX, PVF, SF */
     double *raw0;               /* n x NOUT as the realisations wrote them (a model verdict's look extends it) */
+    double recheck;             /* realisation 0 (and, extended, n-1) rerun alone: largest difference from its slot */
     double det[NOUT];           /* the deterministic reference, same definitions */
     double mean[ND][NQ], sd[ND][NQ];
     double ku[ND][NQ];          /* excess kurtosis of the per-realisation values (NAN below 4 values) */

@@ -66,6 +66,11 @@ double claims_look_alpha(double alpha, const size_t *N, size_t L, size_t j, int 
 int claims_sequential_decide(const claim_spec *cs, const size_t *N, size_t L, size_t m, const double *est,
                              const double *se, const double *df, double alpha, double margin, int logscale,
                              int spend, size_t *look, double *lo, double *hi);
+/* A directional claim's indifference margin on its test's scale: its
+ * spec's hi when set (log of a factor for the std kinds), otherwise 2% of
+ * scale (the statistic's deterministic scale: 1 for a ratio) for a mean,
+ * log 1.1 for a std; NAN for the equivalence kinds and the F test. */
+double claims_margin_of(const claim_spec *cs, double scale);
 /* The alpha each claim of the table spec (NULL-id ended) is tested at in
  * case c: c's alpha / the claims judged / the looks (Bonferroni). */
 double claims_alpha(const sf_case *c, const claim_spec *spec);
