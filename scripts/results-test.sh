@@ -74,7 +74,8 @@ import csv, json, sys
 d = json.load(open(sys.argv[1]))
 cl = d["cases"][0]["claims"]
 rows = list(csv.reader(open(sys.argv[2]), delimiter="\t", quoting=csv.QUOTE_NONE))
-head = ["status", "measured", "ci_lo", "ci_hi", "alpha", "id", "text", "how", "note", "defs"]
+head = ["status", "measured", "ci_lo", "ci_hi", "alpha", "id", "text", "how", "note", "defs", "model_status",
+        "model_n", "model_budget", "model_est", "model_lo", "model_hi", "model_mde", "model_alpha", "model_margin"]
 ok = rows[0] == head and len(rows) == len(cl) + 1 and len(cl) >= 1
 for r, c in zip(rows[1:], cl):
     ok &= r[0] == c["status"] and r[5] == c["id"] and r[6] == c["text"]
@@ -82,6 +83,7 @@ for r, c in zip(rows[1:], cl):
         ok &= "0x" not in r[k]
         v = float(r[k])
         ok &= (c[name] is None and v != v) or c[name] == v
+    ok &= r[10] == "none" and "model" not in c   # the quick case runs no model verdict
 t = d["claims"]
 ok &= t["total"] == len(cl) == t["confirmed"] + t["contradicted"] + t["undecided"]
 ok &= t["confirmed"] == sum(c["status"] == "confirmed" for c in cl)

@@ -51,6 +51,10 @@ static void claims_tsv_reach_the_index(void **state)
     sf_result *r = sf_result_alloc();
     sf_claim(r, "ok-claim", "holds\twith a tab", SF_CLAIM_CONFIRMED, 1, 0.9, 1.1, 0.01, "t", "");
     sf_claim(r, "bad-claim", "fails | with a bar", SF_CLAIM_CONTRADICTED, 1.46, 1.3, 1.6, 0.01, "t", "why");
+    /* a verdict about the model on the first (the second has none) */
+    sf_claim_model mv = { SF_CLAIM_WITHIN, 400, 800, 0.995, 0.985, 1.005, 0.012, 0.01, 0.02 };
+    sf_claim_set_model(r, "ok-claim", &mv);
+    assert_int_equal(sf_result_claim(r, 1)->model.status, -1);
     assert_int_equal(sf_paper_write_tsv(dir, r), 0);
     sf_outcome o;
     memset(&o, 0, sizeof o);
@@ -72,6 +76,9 @@ static void claims_tsv_reach_the_index(void **state)
     sf_paper_index_tally(f, root, &o, 1, 1);
     fclose(f);
     assert_non_null(strstr(md, "(2): **1 confirmed**, **1 contradicted**, 0 not decidable"));
+    /* the model verdict's trip through claims.tsv: counted apart */
+    assert_non_null(strstr(md, "0 confirmed, 0 contradicted, **1 within margin**, 0 without a verdict (budget "
+                               "reached), 1 not run"));
     assert_non_null(strstr(md, "[paper.html](paper.html)"));
     free(md);
     sf_run_meta meta = { root, "fixed", "quick", 1.0, 0, NULL };
@@ -81,12 +88,14 @@ static void claims_tsv_reach_the_index(void **state)
     snprintf(p, sizeof p, "%s/paper.md", root);
     f = fopen(p, "r");
     assert_non_null(f);
-    char buf[8192];
+    char buf[65536];
     size_t n = fread(buf, 1, sizeof buf - 1, f);
     buf[n] = '\0';
     fclose(f);
     assert_non_null(strstr(buf, "ok-claim"));
     assert_non_null(strstr(buf, "bad-claim"));
+    assert_non_null(strstr(buf, "**within margin** at N = 400 (0.995 [0.985, 1.005]); MDE 0.012; margin 0.02"));
+    assert_non_null(strstr(buf, "**Tally** (2 claims)"));
     sf_result_free(r);
     char cmd[200];
     snprintf(cmd, sizeof cmd, "rm -rf %s", root);
@@ -171,7 +180,7 @@ static void verdicts_are_coloured(void **state)
                                               "**4 passed**, **Error:** x\n", err, sizeof err), 0);
     FILE *f = fopen(path, "r");
     assert_non_null(f);
-    char buf[8192];
+    char buf[65536];
     size_t n = fread(buf, 1, sizeof buf - 1, f);
     buf[n] = '\0';
     fclose(f);

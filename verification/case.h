@@ -50,6 +50,9 @@ typedef struct {
      * runs k x samples realisations per point and the last is taken when
      * every claim the tier demands a verdict on is decided */
     size_t looks;
+    /* claims: the model verdicts' budget, realisations a point (0: no
+     * model verdicts; claims_engine.c, docs/design.md sec. 7.7) */
+    size_t model_budget;
     /* which keys the block set (index into the table) */
     unsigned char set[SF_CASE_SPEC_MAX_KEYS];
 } sf_case_spec;

@@ -34,6 +34,25 @@ static const char *status_md(int s)
                                                                                 : "**not decidable at this N**";
 }
 
+/* The model verdict's cell: its verdict, the N it took and the MDE
+ * there; at the budget the effect's interval (the reason it has none). */
+static void model_cell(FILE *f, const sf_claim_row *c)
+{
+    const sf_claim_model *m = &c->model;
+    if (m->status < 0) {
+        fputs("—", f);
+        return;
+    }
+    if (m->status == SF_CLAIM_UNDECIDED)
+        fprintf(f, "none: **budget reached** (N = %zu), the effect in [%.4g, %.4g]", m->n, m->lo, m->hi);
+    else
+        fprintf(f, "**%s** at N = %zu (%.4g [%.4g, %.4g])", sf_claim_model_name(m->status), m->n, m->est, m->lo, m->hi);
+    if (isfinite(m->mde))
+        fprintf(f, "; MDE %.3g", m->mde);
+    if (isfinite(m->margin))
+        fprintf(f, "; margin %.3g", m->margin);
+}
+
 static void claim_row(FILE *f, const sf_claim_row *c, const char *link)
 {
     fputs("| ", f);
@@ -45,6 +64,8 @@ static void claim_row(FILE *f, const sf_claim_row *c, const char *link)
     fputs(" | ", f);
     num_ci(f, c);
     fprintf(f, " | %s | ", status_md(c->status));
+    model_cell(f, c);
+    fputs(" | ", f);
     sf_md_text(f, c->how);
     if (isfinite(c->alpha))
         fprintf(f, "; alpha = %.3g", c->alpha);
@@ -60,8 +81,8 @@ static void claim_row(FILE *f, const sf_claim_row *c, const char *link)
 }
 
 static const char *table_head =
-    "| claim | the paper says | ours [one-sided (1 - alpha) bounds] | verdict | test | explanation | under other QoI definitions |\n"
-    "|---|---|---|---|---|---|---|\n";
+    "| claim | the paper says | ours [one-sided (1 - alpha) bounds] | verdict at the case's N | model verdict (sequential; N it took, MDE) | test | explanation | under other QoI definitions |\n"
+    "|---|---|---|---|---|---|---|---|\n";
 
 void sf_paper_case_claims(FILE *f, const sf_result *r)
 {
@@ -82,8 +103,15 @@ static void tsv_field(FILE *f, const char *s)
 
 /* claims.tsv: a header line, then one claim a line (status a word, the
  * numbers in decimal, nan where there is none) */
-static const char tsv_head[] = "status\tmeasured\tci_lo\tci_hi\talpha\tid\ttext\thow\tnote\tdefs\n";
 static const char *const status_word[3] = { "confirmed", "contradicted", "undecided" };
+static const char tsv_head[] = "status\tmeasured\tci_lo\tci_hi\talpha\tid\ttext\thow\tnote\tdefs\tmodel_status\t"
+                               "model_n\tmodel_budget\tmodel_est\tmodel_lo\tmodel_hi\tmodel_mde\tmodel_alpha\t"
+                               "model_margin\n";
+/* a model verdict's status in claims.tsv ("none": the case runs none) */
+static const char *model_word(int s)
+{
+    return s == SF_CLAIM_WITHIN ? "within" : s >= 0 && s <= 2 ? status_word[s] : "none";
+}
 
 int sf_paper_write_tsv(const char *dir, const sf_result *r)
 {
@@ -104,14 +132,17 @@ int sf_paper_write_tsv(const char *dir, const sf_result *r)
         const char *fl[5] = { c->id, c->text, c->how, c->note, c->defs };
         for (int k = 0; k < 5; k++) {
             tsv_field(f, fl[k]);
-            fputc(k < 4 ? '\t' : '\n', f);
+            fputc('\t', f);
         }
+        const sf_claim_model *m = &c->model;
+        fprintf(f, "%s\t%zu\t%zu\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\n", model_word(m->status), m->n,
+                m->budget, m->est, m->lo, m->hi, m->mde, m->alpha, m->margin);
     }
     return fclose(f) == 0 ? 0 : -1;
 }
 
 _Static_assert(sizeof(((sf_claim_row *)0)->id) + sizeof(((sf_claim_row *)0)->text) + sizeof(((sf_claim_row *)0)->how) +
-                   sizeof(((sf_claim_row *)0)->note) + sizeof(((sf_claim_row *)0)->defs) + 5 * 32 < 4096,
+                   sizeof(((sf_claim_row *)0)->note) + sizeof(((sf_claim_row *)0)->defs) + 14 * 32 < 4096,
                "a claims.tsv line must fit read_tsv's buffer");
 
 /* The claims of one case from its claims.tsv (NULL, 0 when none). */
@@ -126,9 +157,9 @@ static sf_claim_row *read_tsv(const char *root, const char *id, size_t *n)
     sf_claim_row *v = NULL;
     while (fgets(line, sizeof line, f)) {
         line[strcspn(line, "\n")] = '\0';
-        char *p = line, *fld[10];
+        char *p = line, *fld[19];
         int k = 0;
-        for (; k < 10 && p; k++) {   /* split at tabs; empty fields kept */
+        for (; k < 19 && p; k++) {   /* split at tabs; empty fields kept */
             fld[k] = p;
             char *t = strchr(p, '\t');
             if (t)
@@ -156,6 +187,20 @@ static sf_claim_row *read_tsv(const char *root, const char *id, size_t *n)
         snprintf(c->how, sizeof c->how, "%s", fld[7]);
         snprintf(c->note, sizeof c->note, "%s", fld[8]);
         snprintf(c->defs, sizeof c->defs, "%s", fld[9]);
+        c->model.status = -1;
+        c->model.est = c->model.lo = c->model.hi = c->model.mde = c->model.alpha = c->model.margin = NAN;
+        if (k == 19 && strcmp(fld[10], "none")) {   /* a model verdict */
+            c->model.status = !strcmp(fld[10], "within") ? SF_CLAIM_WITHIN : SF_CLAIM_UNDECIDED;
+            for (int w = 0; w < 3; w++)
+                if (!strcmp(fld[10], status_word[w]))
+                    c->model.status = w;
+            c->model.n = (size_t)strtoul(fld[11], NULL, 10);
+            c->model.budget = (size_t)strtoul(fld[12], NULL, 10);
+            double *d[6] = { &c->model.est, &c->model.lo, &c->model.hi, &c->model.mde, &c->model.alpha,
+                             &c->model.margin };
+            for (int w = 0; w < 6; w++)
+                *d[w] = strtod(fld[13 + w], NULL);
+        }
     }
     fclose(f);
     return v;
@@ -168,27 +213,63 @@ static void tally_count(FILE *f, size_t k, const char *what)
     fprintf(f, k ? "**%zu %s**" : "%zu %s", k, what);
 }
 
-void sf_paper_index_tally(FILE *f, const char *root, const sf_outcome *o, size_t n, int html)
+/* The run's claims counted by verdict at the case's N (cnt[3]) and by
+ * model verdict (mod[5]: confirmed, contradicted, budget reached, within
+ * margin, none run); returns the total. */
+static size_t tally(const char *root, const sf_outcome *o, size_t n, size_t *cnt, size_t *mod)
 {
-    size_t tot = 0, cnt[3] = { 0, 0, 0 };
+    size_t tot = 0;
+    memset(cnt, 0, 3 * sizeof *cnt);
+    memset(mod, 0, 5 * sizeof *mod);
     for (size_t i = 0; i < n; i++) {
         size_t m;
         sf_claim_row *v = read_tsv(root, o[i].id, &m);
         for (size_t j = 0; j < m; j++) {
             tot++;
             cnt[v[j].status < 0 || v[j].status > 2 ? 2 : v[j].status]++;
+            mod[v[j].model.status < 0 || v[j].model.status > 3 ? 4 : v[j].model.status]++;
         }
         free(v);
     }
-    if (!tot)
-        return;
-    fprintf(f, "- The paper's claims in this run (%zu): ", tot);
+    return tot;
+}
+
+/* The tally at the cases' N: confirmed, contradicted, not decidable. */
+static void tally_cases_n(FILE *f, const size_t *cnt)
+{
     tally_count(f, cnt[SF_CLAIM_CONFIRMED], "confirmed");
     fputs(", ", f);
     tally_count(f, cnt[SF_CLAIM_CONTRADICTED], "contradicted");
     fputs(", ", f);
     tally_count(f, cnt[SF_CLAIM_UNDECIDED], "not decidable");
-    fprintf(f, " at this N; figure by figure: [paper%s](paper%s)\n", html ? ".html" : ".md", html ? ".html" : ".md");
+}
+
+/* The model verdicts' tally (nothing when no case ran them). */
+static void tally_model(FILE *f, const size_t *mod, size_t tot)
+{
+    if (mod[4] == tot)
+        return;
+    fputs("; the verdicts about the model (sequential, docs/design.md sec. 7.7): ", f);
+    tally_count(f, mod[SF_CLAIM_CONFIRMED], "confirmed");
+    fputs(", ", f);
+    tally_count(f, mod[SF_CLAIM_CONTRADICTED], "contradicted");
+    fputs(", ", f);
+    tally_count(f, mod[SF_CLAIM_WITHIN], "within margin");
+    fputs(", ", f);
+    tally_count(f, mod[SF_CLAIM_UNDECIDED], "without a verdict (budget reached)");
+    fprintf(f, ", %zu not run", mod[4]);
+}
+
+void sf_paper_index_tally(FILE *f, const char *root, const sf_outcome *o, size_t n, int html)
+{
+    size_t cnt[3], mod[5], tot = tally(root, o, n, cnt, mod);
+    if (!tot)
+        return;
+    fprintf(f, "- The paper's claims in this run (%zu): ", tot);
+    tally_cases_n(f, cnt);
+    fputs(" at the cases' N", f);
+    tally_model(f, mod, tot);
+    fprintf(f, "; figure by figure: [paper%s](paper%s)\n", html ? ".html" : ".md", html ? ".html" : ".md");
 }
 
 void sf_paper_index_section(FILE *f, const char *root, const sf_outcome *o, size_t n, int html)
@@ -263,12 +344,7 @@ static const char *sec5 =
 
 int sf_paper_report(const sf_run_meta *meta, const sf_outcome *o, size_t n, char *err, size_t errlen)
 {
-    size_t tot = 0;
-    for (size_t i = 0; i < n; i++) {
-        size_t m;
-        free(read_tsv(meta->root, o[i].id, &m));
-        tot += m;
-    }
+    size_t cnt[3], mod[5], tot = tally(meta->root, o, n, cnt, mod);
     if (!tot)
         return SF_SUCCESS;
     for (int html = 0; html < 2; html++) {
@@ -290,7 +366,17 @@ int sf_paper_report(const sf_run_meta *meta, const sf_outcome *o, size_t n, char
                    "stick or not); what the paper leaves open is ours and stated: every run starts at rest at the "
                    "origin, t_skip = 10 s (paper tier). A claim passes its gate when confirmed, or contradicted with "
                    "its measured cause (the explanation names a quantity the run measures, and it holds); the last "
-                   "column gives the verdict under the alternatives (the old per-cycle definitions among them).\n\n", meta->tier_name, meta->seed_note);
+                   "column gives the verdict under the alternatives (the old per-cycle definitions among them). "
+                   "Where a case sets `model_budget`, each claim also has a **verdict about the model**: a sequential "
+                   "design adds realisations at the claim's points (N, 2N, 4N, ... up to the budget, each look "
+                   "extending the last) until the claim is confirmed, contradicted or within its margin either way "
+                   "(no effect larger than the margin), its own alpha spent over the looks (Lan & DeMets 1983, "
+                   "Pocock-type; docs/design.md sec. 7.7); at the budget without a verdict the row gives the effect's "
+                   "interval.\n\n", meta->tier_name, meta->seed_note);
+        fprintf(f, "**Tally** (%zu claims): at the cases' N ", tot);
+        tally_cases_n(f, cnt);
+        tally_model(f, mod, tot);
+        fputs(".\n\n", f);
         fprintf(f, "## Protocol, and where it departs from the paper's\n\n"
                    "- Paper tier (`make verify TIER=paper`): T = 100 s, 100 realisations per point, eps_lambda = 1e-3, "
                    "the grids of Sec. 3 (l/R 0.01 .. 1000: 11 values, v_b 0.1 .. 0.6 m/s, mean COF 0.2 .. 1 at CV = 0.2), Fig. 15 "

@@ -263,6 +263,23 @@ void sf_claim(sf_result *r, const char *id, const char *text, int status, double
     c->ci_lo = ci_lo;
     c->ci_hi = ci_hi;
     c->alpha = alpha;
+    c->model.status = -1;
+    c->model.est = c->model.lo = c->model.hi = c->model.mde = c->model.alpha = c->model.margin = NAN;
+}
+
+void sf_claim_set_model(sf_result *r, const char *id, const sf_claim_model *m)
+{
+    for (size_t i = r->nclaims; i-- > 0;)
+        if (!strcmp(r->claims[i].id, id)) {
+            r->claims[i].model = *m;
+            return;
+        }
+}
+
+const char *sf_claim_model_name(int s)
+{
+    return s == SF_CLAIM_CONFIRMED ? "confirmed" : s == SF_CLAIM_CONTRADICTED ? "contradicted"
+         : s == SF_CLAIM_WITHIN ? "within margin" : s == SF_CLAIM_UNDECIDED ? "budget reached" : "none";
 }
 
 void sf_claim_defs(sf_result *r, const char *defs)

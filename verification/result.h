@@ -82,18 +82,38 @@ int sf_result_gate_nonfinite(sf_result *r);
  * sample size; `note` explains a contradiction or what would decide it.
  * A claim is not a row: a check gates the claims it expects to hold (or to
  * fail) with rows of its own. */
-enum { SF_CLAIM_CONFIRMED = 0, SF_CLAIM_CONTRADICTED = 1, SF_CLAIM_UNDECIDED = 2 };
+enum { SF_CLAIM_CONFIRMED = 0, SF_CLAIM_CONTRADICTED = 1, SF_CLAIM_UNDECIDED = 2, SF_CLAIM_WITHIN = 3 };
+/* The verdict about the model (docs/design.md sec. 7.7): a sequential
+ * design's at N up to a budget (claims_sequential_decide).  status: -1
+ * none (the case runs no model verdicts), SF_CLAIM_CONFIRMED /
+ * _CONTRADICTED, SF_CLAIM_WITHIN (no effect beyond the claim's margin
+ * either way), SF_CLAIM_UNDECIDED (the budget reached); n the
+ * realisations a point it took, budget the most it could; est [lo, hi]
+ * and mde at the look it stopped at, alpha the model verdict's own share
+ * over its looks, margin its indifference margin (NAN: none). */
+typedef struct {
+    int status;
+    size_t n, budget;
+    double est, lo, hi, mde, alpha, margin;
+} sf_claim_model;
 typedef struct {
     char id[48], text[320], how[200], note[800];
     char defs[400];   /* the verdict under other QoI definitions (sf_claim_defs) */
     int status;
     double measured, ci_lo, ci_hi, alpha;
+    sf_claim_model model;
 } sf_claim_row;
 void sf_claim(sf_result *r, const char *id, const char *text, int status, double measured, double ci_lo,
               double ci_hi, double alpha, const char *how, const char *note);
 /* The last claim's verdicts under alternative QoI definitions (docs/design.md
  * sec. 5.3), e.g. "t_skip 0 s: confirmed; window stick fraction: confirmed". */
 void sf_claim_defs(sf_result *r, const char *defs);
+/* The model verdict of the last claim recorded with this id (nothing when
+ * there is none). */
+void sf_claim_set_model(sf_result *r, const char *id, const sf_claim_model *m);
+/* "confirmed", "contradicted", "within margin", "budget reached" (a model
+ * verdict's status), "none" for -1 */
+const char *sf_claim_model_name(int status);
 size_t sf_result_nclaims(const sf_result *r);
 const sf_claim_row *sf_result_claim(const sf_result *r, size_t i);
 const char *sf_claim_status_name(int status);

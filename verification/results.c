@@ -223,6 +223,20 @@ static json_t *claim_json(const sf_claim_row *c)
     set_num(o, "alpha", c->alpha, nf);
     json_object_set_new(o, "how", jstr(c->how));
     json_object_set_new(o, "note", jstr(c->note));
+    if (c->model.status >= 0) {   /* the verdict about the model (schema: claim.model; non-finite as null) */
+        const sf_claim_model *m = &c->model;
+        json_t *mo = json_object();
+        json_object_set_new(mo, "status", json_string(m->status == SF_CLAIM_WITHIN ? "within_margin"
+                                                      : m->status == SF_CLAIM_UNDECIDED ? "budget_reached"
+                                                                                        : claim_word(m->status)));
+        json_object_set_new(mo, "n", json_integer((json_int_t)m->n));
+        json_object_set_new(mo, "budget", json_integer((json_int_t)m->budget));
+        static const char *const key[6] = { "estimate", "lo", "hi", "mde", "alpha", "margin" };
+        const double val[6] = { m->est, m->lo, m->hi, m->mde, m->alpha, m->margin };
+        for (int k = 0; k < 6; k++)
+            set_num(mo, key[k], val[k], NULL);
+        json_object_set_new(o, "model", mo);
+    }
     if (json_object_size(nf))
         json_object_set_new(o, "nonfinite", nf);
     else
@@ -360,12 +374,19 @@ int sf_results_write(const sf_run_meta *meta, sf_outcome *o, size_t n,
         nedge += o[i].near_edge != 0;
     }
     /* the claims' tally over the cases (each case's "claims" array) */
-    size_t ncl[3] = { 0, 0, 0 };
+    size_t ncl[3] = { 0, 0, 0 }, nmod[5] = { 0, 0, 0, 0, 0 };
+    static const char *const mkey[5] = { "confirmed", "contradicted", "within_margin", "budget_reached", "not_run" };
     for (size_t i = 0; i < json_array_size(cases); i++) {
         json_t *cl = json_object_get(json_array_get(cases, i), "claims");
         for (size_t k = 0; k < json_array_size(cl); k++) {
             const char *w = json_string_value(json_object_get(json_array_get(cl, k), "status"));
             ncl[w && !strcmp(w, "confirmed") ? 0 : w && !strcmp(w, "contradicted") ? 1 : 2]++;
+            json_t *mo = json_object_get(json_array_get(cl, k), "model");
+            const char *mw = mo ? json_string_value(json_object_get(mo, "status")) : NULL;
+            size_t u = 4;
+            for (size_t q = 0; mw && q < 4; q++)
+                u = !strcmp(mw, mkey[q]) ? q : u;
+            nmod[u]++;
         }
     }
     json_t *tally = json_object();
@@ -373,6 +394,12 @@ int sf_results_write(const sf_run_meta *meta, sf_outcome *o, size_t n,
     json_object_set_new(tally, "confirmed", json_integer((json_int_t)ncl[0]));
     json_object_set_new(tally, "contradicted", json_integer((json_int_t)ncl[1]));
     json_object_set_new(tally, "undecided", json_integer((json_int_t)ncl[2]));
+    if (nmod[4] < ncl[0] + ncl[1] + ncl[2]) {   /* some case ran model verdicts */
+        json_t *mt = json_object();
+        for (size_t q = 0; q < 5; q++)
+            json_object_set_new(mt, mkey[q], json_integer((json_int_t)nmod[q]));
+        json_object_set_new(tally, "model", mt);
+    }
     json_t *s = json_object();
     json_object_set_new(s, "cases", json_integer((json_int_t)n));
     json_object_set_new(s, "passed", json_integer((json_int_t)np));

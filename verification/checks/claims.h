@@ -51,6 +51,8 @@ typedef struct cpoint_s {
     double val;                 /* the parameter's value */
     size_t n;                   /* realisations */
     double *raw;                /* n x NOUT, then ratios in place for PVX, PVF, SF */
+    double *raw0;               /* n x NOUT as the realisations wrote them (a model verdict's look extends it) */
+    double recheck;             /* realisation 0 (and, extended, n-1) rerun alone: largest difference from its slot */
     double det[NOUT];           /* the deterministic reference, same definitions */
     double mean[ND][NQ], sd[ND][NQ];
     double ku[ND][NQ];          /* excess kurtosis of the per-realisation values (NAN below 4 values) */
@@ -79,7 +81,9 @@ typedef struct claim_spec_s {
     int kind, q;
     const char *a, *b;   /* point selectors: "=1" (that value), "<=0.1" (the first point, if at most 0.1),
                             ">=100" (the last point, if at least 100); b may be NULL */
-    double lo, hi;       /* threshold (lo) or equivalence margin [lo, hi] */
+    double lo, hi;       /* threshold (lo) or equivalence margin [lo, hi]; a directional claim's hi > 0 is
+                            its model verdict's indifference margin (a factor for the std kinds; 0: the
+                            default of claims_margin, claims_engine.c) */
     int dir;             /* +1: the claim says statistic > lo; -1: < lo */
     char decq, decp;     /* 'D': the quick / paper tier's N was chosen to decide this claim (not
                           * decidable fails the gate); '-': not demanded (see claim_gate) */

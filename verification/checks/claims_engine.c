@@ -145,8 +145,12 @@ static int claims_realise(void *p, size_t i, gsl_rng *rng, double *out)
     return claims_ws_realise(p, rng, out, claims_run_qoi);
 }
 
+/* The point at s0's samples = N realisations; with prev (its N' < N
+ * realisations of the same point, seed and scene), realisations 0 .. N'-1
+ * are prev's (the same streams: copied, not recomputed) and only N' .. N-1
+ * run. */
 static int claims_point(const sf_scene *s0, const char *param, double val, cpoint *pt, sf_result *r,
-                        const char *ckpt)
+                        const char *ckpt, const cpoint *prev)
 {
     memset(pt, 0, sizeof *pt);
     pt->val = val;
@@ -197,8 +201,10 @@ static int claims_point(const sf_scene *s0, const char *param, double val, cpoin
         spec.resume = 1;
     }
     sf_mc_ops ops = { claims_ws_alloc, claims_ws_free, claims_realise };
-    size_t before = 0;
-    rc = sf_mc_run(&spec, &ops, &ctx, pt->raw, &before, err, sizeof err);
+    size_t before = 0, first = prev && prev->raw0 && prev->n < pt->n ? prev->n : 0;
+    if (first)
+        memcpy(pt->raw, prev->raw0, first * NOUT * sizeof *pt->raw);
+    rc = sf_mc_run_range(&spec, first, pt->n, &ops, &ctx, pt->raw, &before, err, sizeof err);
     if (!rc && before)
         sf_note(r, "(%s = %g: %zu of %zu realisations read back from the checkpoint %s, written by an earlier run "
                    "of the same scene: delete it to recompute.)", param, val, before, pt->n, ckfile);
@@ -206,16 +212,26 @@ static int claims_point(const sf_scene *s0, const char *param, double val, cpoin
         sf_note(r, "**Monte Carlo failed at %s = %g:** %s %s", param, val, sf_strerror(rc), err);
         return SF_EFAIL;
     }
-    /* realisation 0 again, for its bifurcation samples (the same stream) */
-    {
+    /* realisation 0 again, for its bifurcation samples (the same stream);
+     * after an extension also its last realisation: each rerun alone on its
+     * stream is compared with its slot (pt->recheck: the largest
+     * difference), so a prefix from another point or an extension on the
+     * wrong streams shows */
+    pt->recheck = 0;
+    for (size_t u = 0, redo[2] = { 0, pt->n - 1 }; u < (first ? 2u : 1u); u++) {
         claims_ws *w = claims_ws_alloc(&ctx);
         gsl_rng *g = gsl_rng_alloc(gsl_rng_mt19937);
-        gsl_rng_set(g, sf_mc_seed(s.seed, 0));
+        gsl_rng_set(g, sf_mc_seed(s.seed, redo[u]));
         sf_cof *cof = NULL;
         double tmp[NOUT];
         rc = !w ? SF_EFAIL : sf_cof_plan_draw(w->plan, g, &cof);
         if (!rc)
-            rc = claims_run(w, cof, tmp, &pt->bif0, &pt->nbif0);
+            rc = claims_run(w, cof, tmp, u ? NULL : &pt->bif0, u ? NULL : &pt->nbif0);
+        for (int j = 0; !rc && j < NOUT; j++) {
+            double x = pt->raw[redo[u] * NOUT + (size_t)j];
+            pt->recheck = isnan(x) && isnan(tmp[j]) ? pt->recheck
+                        : isnan(x) || isnan(tmp[j]) ? INFINITY : fmax(pt->recheck, fabs(x - tmp[j]));
+        }
         sf_cof_free(cof);
         gsl_rng_free(g);
         if (w)
@@ -223,6 +239,8 @@ static int claims_point(const sf_scene *s0, const char *param, double val, cpoin
         if (rc)
             return SF_EFAIL;
     }
+    pt->raw0 = check_alloc(pt->n * NOUT * sizeof *pt->raw0);
+    memcpy(pt->raw0, pt->raw, pt->n * NOUT * sizeof *pt->raw0);
     for (size_t i = 0; i < pt->n; i++) {
         for (int dd = 0; dd < ND_RAW; dd++) {
             for (int q = Q_PVX; q <= Q_SF; q++)
@@ -287,6 +305,7 @@ static int claims_point(const sf_scene *s0, const char *param, double val, cpoin
 static void cpoint_free(cpoint *p)
 {
     free(p->raw);
+    free(p->raw0);
     free(p->bif0);
     free(p->bifdet);
 }
@@ -337,6 +356,7 @@ typedef struct {
     int status;
     double est, lo, hi;   /* estimate and one-sided (1 - alpha) bounds */
     double se, thr;       /* for power: the test's standard error and threshold (transformed scale) */
+    double est_t, df;     /* the estimate on the test's scale, its degrees of freedom */
     int logscale;
 } claim_eval;
 
@@ -370,6 +390,8 @@ static void decide(claim_eval *e, const claim_spec *c, double est, double se, do
     e->se = se;
     e->logscale = logscale;
     e->thr = tlo;
+    e->est_t = est;
+    e->df = df;
     if (!isfinite(est) || !isfinite(se)) {
         e->status = SF_CLAIM_UNDECIDED;
     } else if (c->kind == K_MEAN_EQ || c->kind == K_DROP_EQ || c->kind == K_SD_EQ) {
@@ -389,6 +411,101 @@ int claims_decide(const claim_spec *cs, double est, double se, double df, double
 {
     claim_eval e;
     decide(&e, cs, est, se, df, alpha, 0);
+    if (lo)
+        *lo = e.lo;
+    if (hi)
+        *hi = e.hi;
+    return e.status;
+}
+
+/* ==================================================================
+ * The verdict about the model: a group-sequential design per claim.
+ *
+ * Look 1 is the paper-scale sample (N_1 = samples realisations a point);
+ * look j runs N_j = 2^(j-1) N_1 (the last at the budget), its realisations
+ * 0 .. N_j - 1 on the streams of sf_mc_seed, so that look j's sample
+ * extends look j-1's and the first N_1 are the paper-scale verdict's bits.
+ * At look j both one-sided tests of the claim (and, for a directional
+ * claim, the two one-sided tests against its indifference margin: TOST,
+ * Schuirmann 1987) run at the level
+ *
+ *     alpha_j = A(t_j) - A(t_(j-1)),   t_j = N_j / N_L,  A(0) = 0,
+ *
+ * of an alpha-spending function A (Lan & DeMets 1983, Biometrika 70,
+ * 659-663): the Pocock-type A(t) = alpha ln(1 + (e - 1) t) (their second
+ * function) by default, or the O'Brien-Fleming-type A(t) = 2 - 2
+ * Phi(z_(alpha/2) / sqrt(t)) (their first; O'Brien & Fleming 1979).  The
+ * levels are spent by the union bound (Bonferroni with unequal shares),
+ * not by the looks' joint law: a wrong verdict at any look has
+ * probability at most sum_j alpha_j = A(1) = alpha whatever the looks'
+ * correlation, so the design holds its alpha at any stopping rule
+ * (conservatively: the exact boundaries of Lan & DeMets would spend the
+ * same alpha with less strict early looks).  The design stops at the
+ * first look where the claim is confirmed, contradicted or shown within
+ * its margin; at the last without that, the budget is reached.  The
+ * Pocock-type function spends about a fifth of alpha at N_1 (where the
+ * paper-scale verdict already decides most claims) and the rest evenly;
+ * the O'Brien-Fleming-type keeps nearly all for the last look.
+ * ================================================================== */
+
+size_t claims_model_looks(size_t n1, size_t budget, size_t *N)
+{
+    size_t L = 0;
+    for (size_t n = n1; n1 && L < CLAIMS_MAX_LOOKS; n *= 2) {
+        N[L++] = n < budget ? n : budget;
+        if (n >= budget)
+            break;
+    }
+    if (L == CLAIMS_MAX_LOOKS)
+        N[L - 1] = budget > N[L - 1] ? budget : N[L - 1];
+    return L;
+}
+
+/* the spending function A(t) at t in [0, 1] for a total alpha */
+static double spend_fn(double alpha, double t, int spend)
+{
+    if (t <= 0)
+        return 0;
+    if (spend == CLAIMS_SPEND_OBF)
+        return 2 * gsl_cdf_ugaussian_Q(gsl_cdf_ugaussian_Qinv(alpha / 2) / sqrt(t));
+    return alpha * log(1 + (exp(1.0) - 1) * t);
+}
+
+double claims_look_alpha(double alpha, const size_t *N, size_t L, size_t j, int spend)
+{
+    double tl = (double)N[L - 1];
+    return spend_fn(alpha, (double)N[j] / tl, spend) - (j ? spend_fn(alpha, (double)N[j - 1] / tl, spend) : 0);
+}
+
+/* An undecided directional verdict e at level alpha: within the margin
+ * m (on the test's scale) when both one-sided tests against thr - m and
+ * thr + m reject (TOST). */
+static void within_margin(claim_eval *e, const claim_spec *c, double alpha, double m)
+{
+    if (e->status != SF_CLAIM_UNDECIDED || !(m > 0) || c->kind == K_MEAN_EQ || c->kind == K_DROP_EQ ||
+        c->kind == K_SD_EQ || c->kind == K_CLUSTER || !isfinite(e->est_t) || !isfinite(e->se))
+        return;
+    double q = tq(alpha, e->df);
+    if (e->est_t - q * e->se > e->thr - m && e->est_t + q * e->se < e->thr + m)
+        e->status = SF_CLAIM_WITHIN;
+}
+
+int claims_sequential_decide(const claim_spec *cs, const size_t *N, size_t L, size_t m, const double *est,
+                             const double *se, const double *df, double alpha, double margin, int logscale,
+                             int spend, size_t *look, double *lo, double *hi)
+{
+    claim_eval e = { 0 };
+    e.status = SF_CLAIM_UNDECIDED;
+    size_t j = 0;
+    for (; j < m && j < L; j++) {
+        double level = claims_look_alpha(alpha, N, L, j, spend);   /* the look's increment of A */
+        decide(&e, cs, est[j], se[j], df[j], level, logscale);
+        within_margin(&e, cs, level, margin);
+        if (e.status != SF_CLAIM_UNDECIDED)
+            break;
+    }
+    if (look)
+        *look = j < m && j < L ? j : (m < L ? m : L) - 1;
     if (lo)
         *lo = e.lo;
     if (hi)
@@ -477,6 +594,8 @@ static int claim_eval_at(const claim_spec *c, const cpoint *pt, size_t K, int dd
         e->se = NAN;
         e->logscale = 0;
         e->thr = 1;
+        e->est_t = F;
+        e->df = NAN;
         break;
     }
     }
@@ -648,6 +767,179 @@ static size_t claims_judge(const sf_case *c, sf_result *r, const claim_spec *spe
     return gated;
 }
 
+/* A directional claim's indifference margin on its test's scale (NAN for
+ * the equivalence kinds, whose margin is the claim, and for the F test):
+ * its spec's hi when set (a factor for the std kinds), otherwise 2% of the
+ * deterministic scale for a mean (the ratio QoIs' 1; the deterministic
+ * value of a dimensional QoI at the claim's first point, its PV_x for the
+ * slip-to-stick positions) and a factor 1.1 for a std: the smallest
+ * effect a claim's words ("slightly", "bends", "rises") can mean that the
+ * paper's figures would show. */
+double claims_margin_of(const claim_spec *cs, double scale)
+{
+    if (cs->kind == K_MEAN_EQ || cs->kind == K_DROP_EQ || cs->kind == K_SD_EQ || cs->kind == K_CLUSTER)
+        return NAN;
+    int logk = cs->kind == K_SD || cs->kind == K_HW100;
+    if (cs->hi > 0)
+        return logk ? log(cs->hi) : cs->hi;
+    return logk ? log(1.1) : 0.02 * fabs(scale);
+}
+
+static double claims_margin(const claim_spec *cs, const cpoint *pt, size_t K)
+{
+    int a = claims_pick(pt, K, cs->a);
+    double scale = 1;
+    if (a >= 0 && (cs->q == Q_TSTK || cs->q == Q_TSK))
+        scale = pt[a].det[D_OURS * NQ + cs->q];
+    else if (a >= 0 && (cs->q == Q_BIFSD || cs->q == Q_BIFMEAN))
+        scale = pt[a].det[D_OURS * NQ + Q_PVX];
+    return claims_margin_of(cs, scale);
+}
+
+static const char *model_short(int s)
+{
+    return s == SF_CLAIM_WITHIN ? "within margin" : s == SF_CLAIM_UNDECIDED ? "budget reached" : status_short(s);
+}
+
+/* The verdicts about the model (the design above claims_model_looks):
+ * every claim of spec with its points in the sweep pt (look 1, N_1 =
+ * pt's n) gets looks at 2 N_1, 4 N_1, ... up to the case's model_budget
+ * at its points only, extended in place (a point shared by claims runs
+ * once a look), until it is decided; recorded with sf_claim_set_model.
+ * The model verdicts are reported, not gated: their own share of the
+ * case's alpha is the claim's (alpha / claims judged), spent over their
+ * looks.  Gated: every extended point's first N_1 realisations are the
+ * paper-scale run's, bit for bit.  SF_EFAIL when a look's run fails. */
+static const char *ckpt_path(const sf_case *c, size_t k, char *buf, size_t n);
+static int claims_model(const sf_case *c, sf_result *r, const claim_spec *spec, const cpoint *pt, size_t K)
+{
+    size_t N[CLAIMS_MAX_LOOKS], L = claims_model_looks(pt[0].n, c->spec.model_budget, N);
+    double alpha = claim_alpha(c, spec, pt, K) * (double)claims_looks(c);   /* the claim's share, as at one look */
+    const int spend = CLAIMS_SPEND_POCOCK;
+    size_t nc = 0;
+    for (const claim_spec *cs = spec; cs->id; cs++)
+        nc++;
+    cpoint *cur = check_alloc(K * sizeof *cur);
+    memcpy(cur, pt, K * sizeof *cur);   /* shallow: a point not extended is the sweep's */
+    int *own = check_alloc(K * sizeof *own), *st = check_alloc((nc + 1) * sizeof *st);
+    size_t *lk = check_alloc((nc + 1) * sizeof *lk);
+    double *est = check_alloc((nc + 1) * L * sizeof *est), *se = check_alloc((nc + 1) * L * sizeof *se),
+           *df = check_alloc((nc + 1) * L * sizeof *df), *blo = check_alloc((nc + 1) * sizeof *blo),
+           *bhi = check_alloc((nc + 1) * sizeof *bhi), *mg = check_alloc((nc + 1) * sizeof *mg);
+    memset(own, 0, K * sizeof *own);
+    double worst = 0, t0 = cpu_s();
+    int rc = SF_SUCCESS;
+    char ck[300];
+    for (size_t i = 0; i < nc; i++) {
+        const claim_spec *cs = &spec[i];
+        int a = claims_pick(pt, K, cs->a), b = claims_pick(pt, K, cs->b);
+        st[i] = a < 0 || (cs->b && b < 0) ? -1 : SF_CLAIM_UNDECIDED;   /* -1: not in this sweep */
+        lk[i] = 0;
+        mg[i] = st[i] < 0 ? NAN : claims_margin(cs, pt, K);
+    }
+    for (size_t j = 0; j < L && rc == SF_SUCCESS; j++) {
+        double aj = claims_look_alpha(alpha, N, L, j, spend);
+        for (size_t i = 0; i < nc && rc == SF_SUCCESS; i++) {   /* the open claims' points at N_j */
+            if (st[i] != SF_CLAIM_UNDECIDED || lk[i] + 1 < j)
+                continue;
+            const char *sel[2] = { spec[i].a, spec[i].b };
+            for (int u = 0; u < 2 && rc == SF_SUCCESS; u++) {
+                int k = claims_pick(pt, K, sel[u]);
+                if (k < 0 || cur[k].n >= N[j])
+                    continue;
+                sf_scene sl = c->scene;
+                sl.samples = N[j];
+                cpoint np;
+                if (claims_point(&sl, c->spec.sweep_param, pt[k].val, &np, r, ckpt_path(c, (size_t)k, ck, sizeof ck),
+                                 &cur[k])) {
+                    cpoint_free(&np);
+                    rc = SF_EFAIL;
+                    break;
+                }
+                worst = fmax(worst, np.recheck);   /* its first and last realisation rerun alone */
+                if (own[k])
+                    cpoint_free(&cur[k]);
+                cur[k] = np;
+                own[k] = 1;
+            }
+        }
+        for (size_t i = 0; i < nc && rc == SF_SUCCESS; i++) {   /* each open claim's verdict at look j */
+            if (st[i] != SF_CLAIM_UNDECIDED || lk[i] + 1 < j)
+                continue;
+            claim_eval e;
+            claim_eval_at(&spec[i], cur, K, D_OURS, aj, &e);
+            est[i * L + j] = e.est_t;
+            se[i * L + j] = e.se;
+            df[i * L + j] = e.df;
+            lk[i] = j;
+            if (spec[i].kind == K_CLUSTER) {   /* no standard error: the F test's verdict at the look's level */
+                st[i] = e.status;
+                blo[i] = e.lo;
+                bhi[i] = e.hi;
+            } else {
+                size_t look;
+                st[i] = claims_sequential_decide(&spec[i], N, L, j + 1, est + i * L, se + i * L, df + i * L, alpha,
+                                                 mg[i], e.logscale, spend, &look, &blo[i], &bhi[i]);
+            }
+        }
+    }
+    double cpu = cpu_s() - t0;
+    if (rc == SF_SUCCESS) {
+        char lv[400] = "", ns[200] = "";
+        for (size_t j = 0, u = 0, v = 0; j < L; j++) {
+            u += (size_t)snprintf(ns + u, u < sizeof ns ? sizeof ns - u : 0, "%s%zu", !j ? "" : j + 1 < L ? ", " : " and ",
+                                  N[j]);
+            v += (size_t)snprintf(lv + v, v < sizeof lv ? sizeof lv - v : 0, "%s%.3g", j ? ", " : "",
+                                  claims_look_alpha(alpha, N, L, j, spend));
+            u = u < sizeof ns ? u : sizeof ns - 1;
+            v = v < sizeof lv ? v : sizeof lv - 1;
+        }
+        sf_note(r, "\n### Verdicts about the model\n\nA sequential design per claim (claims_engine.c; docs/design.md "
+                   "sec. 7.7): looks at N = %s realisations a point (the budget %zu; each look's sample extends the "
+                   "last: the first %zu are the verdict's above), at the claim's points only, stopping at the first "
+                   "look where the claim is confirmed, contradicted or within its indifference margin (two one-sided "
+                   "tests, directional claims); an equivalence claim's margin is the claim. Each claim's model verdict "
+                   "spends its own alpha = %.3g (the case's alpha over the claims judged) over the looks by the "
+                   "Pocock-type alpha-spending function of Lan & DeMets (1983), alpha ln(1 + (e - 1) t), t = N / %zu, "
+                   "by the union bound: look levels %s. Reported, not gated (the gates are the verdicts above). CPU "
+                   "of the looks beyond N = %zu: %.1f s.\n\n| claim | verdict at N = %zu | model verdict | N it took "
+                   "| estimate [bounds at its look's level] | MDE at that N | margin |\n|---|---|---|---|---|---|---|",
+                ns, c->spec.model_budget, N[0], alpha, N[L - 1], lv, N[0], cpu, N[0]);
+        for (size_t i = 0; i < nc; i++) {
+            if (st[i] < 0)
+                continue;
+            const claim_spec *cs = &spec[i];
+            size_t j = lk[i];
+            double aj = claims_look_alpha(alpha, N, L, j, spend);
+            claim_eval e0;
+            claim_eval_at(cs, pt, K, D_OURS, claim_alpha(c, spec, pt, K), &e0);
+            int logk = e0.logscale;
+            sf_claim_model m = { st[i], N[j], c->spec.model_budget, logk ? exp(est[i * L + j]) : est[i * L + j],
+                                 blo[i], bhi[i], cs->kind == K_CLUSTER ? NAN : claims_mde(se[i * L + j], aj, logk),
+                                 alpha, isfinite(mg[i]) && logk ? exp(mg[i]) : mg[i] };
+            if (cs->kind == K_CLUSTER)
+                m.est = est[i * L + j];
+            sf_claim_set_model(r, cs->id, &m);
+            char mgs[48];
+            if (isfinite(m.margin))
+                snprintf(mgs, sizeof mgs, "%.3g%s", m.margin, logk ? " (factor)" : "");
+            else
+                snprintf(mgs, sizeof mgs, "%s", cs->kind == K_CLUSTER ? "none (F test)" : "the claim's");
+            sf_note(r, "| %s | %s | %s | %zu%s | %.4g [%.4g, %.4g] | %.3g%s | %s |", cs->id, status_short(e0.status),
+                    model_short(st[i]), N[j], st[i] == SF_CLAIM_UNDECIDED ? " (budget)" : "", m.est, m.lo, m.hi,
+                    m.mde, logk ? " (factor)" : "", mgs);
+        }
+        sf_check_le(r, "model verdicts' looks: an extended point's realisation 0 (copied from the look before) and its "
+                       "last (run by the extension), each rerun alone on its stream: largest |difference| from its "
+                       "slot (the same bits)", worst, 0);
+    }
+    for (size_t k = 0; k < K; k++)
+        if (own[k])
+            cpoint_free(&cur[k]);
+    free(cur); free(own); free(st); free(lk); free(est); free(se); free(df); free(blo); free(bhi); free(mg);
+    return rc;
+}
+
 /* The claims the tier demands a verdict on that this sweep leaves
  * undecided (the group-sequential design's stopping rule). */
 static size_t claims_open(const sf_case *c, const claim_spec *spec, const cpoint *pt, size_t K)
@@ -800,7 +1092,7 @@ int claims_sweep(const sf_case *c, sf_result *r, const claim_spec *spec, const c
         sl.samples = look * s0->samples;
         for (size_t k = 0; k < K; k++, secs[k - 1] += now_s(), cpu[k - 1] += cpu_s())
             if ((secs[k] -= now_s(), cpu[k] -= cpu_s(), claims_point(&sl, c->spec.sweep_param, c->spec.sweep.v[k],
-                                                                  &pt[k], r, ckpt_path(c, k, ck, sizeof ck)))) {
+                                                                  &pt[k], r, ckpt_path(c, k, ck, sizeof ck), NULL))) {
                 for (size_t j = 0; j <= k; j++)
                     cpoint_free(&pt[j]);
                 free(pt);
@@ -878,6 +1170,10 @@ int claims_sweep(const sf_case *c, sf_result *r, const claim_spec *spec, const c
     sf_check_le(r, "sweep statistics per point and QoI: largest |reported - recomputed from the per-realisation "
                    "values| / (8 n eps scale)", worst, 1);
     claims_judge(c, r, spec, pt, K);
+    if (c->spec.model_budget > s0->samples && claims_model(c, r, spec, pt, K)) {
+        claims_free(pt, K);
+        return SF_EFAIL;
+    }
     claims_plots(r, pt, K, fig, xl, logx);
     *out = pt;
     *Kout = K;

@@ -45,6 +45,32 @@ void claims_judge_one(const sf_case *c, sf_result *r, const claim_spec *all, con
  * test at alpha; its one-sided (1 - alpha) bounds into *lo, *hi (either
  * may be NULL).  Linear scale (the log-scale kinds pass logs). */
 int claims_decide(const claim_spec *cs, double est, double se, double df, double alpha, double *lo, double *hi);
+/* The verdict about the model (claims_engine.c: the design, its
+ * spending function and its citation).  claims_model_looks: the looks'
+ * realisations a point, N[0] = n1 doubling up to the last = budget (at
+ * most CLAIMS_MAX_LOOKS); returns L.  claims_look_alpha: look j's level
+ * (j = 0 .. L-1) of the total alpha under the spending function spend;
+ * the levels sum to alpha.  claims_sequential_decide: the design's
+ * verdict from the first m of its L looks' estimates est, standard errors
+ * se, degrees of freedom df (the test's scale: logs with logscale, the
+ * claim's thresholds and margin then factors; margin on that scale, NAN
+ * or 0 for none): at each look the claim's verdict at its level
+ * (claims_decide), or SF_CLAIM_WITHIN when a directional claim's two
+ * one-sided tests against its threshold -+ margin both reject; the first
+ * decided look into *look with its bounds (*lo, *hi, either may be NULL);
+ * SF_CLAIM_UNDECIDED with the last look given when none decides. */
+#define CLAIMS_MAX_LOOKS 12
+enum { CLAIMS_SPEND_POCOCK, CLAIMS_SPEND_OBF };
+size_t claims_model_looks(size_t n1, size_t budget, size_t *N);
+double claims_look_alpha(double alpha, const size_t *N, size_t L, size_t j, int spend);
+int claims_sequential_decide(const claim_spec *cs, const size_t *N, size_t L, size_t m, const double *est,
+                             const double *se, const double *df, double alpha, double margin, int logscale,
+                             int spend, size_t *look, double *lo, double *hi);
+/* A directional claim's indifference margin on its test's scale: its
+ * spec's hi when set (log of a factor for the std kinds), otherwise 2% of
+ * scale (the statistic's deterministic scale: 1 for a ratio) for a mean,
+ * log 1.1 for a std; NAN for the equivalence kinds and the F test. */
+double claims_margin_of(const claim_spec *cs, double scale);
 /* The alpha each claim of the table spec (NULL-id ended) is tested at in
  * case c: c's alpha / the claims judged / the looks (Bonferroni). */
 double claims_alpha(const sf_case *c, const claim_spec *spec);

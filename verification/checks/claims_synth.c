@@ -70,7 +70,54 @@ static double miss_upper(double p0, double p1, unsigned R, double a)
     return k ? gsl_cdf_binomial_P(k - 1, p1, R) : 0;
 }
 
-enum { R_UP_CONF, R_UP_CONTRA, R_DN_CONF, R_DN_CONTRA, R_EQ_CONF, R_DESIGN, R_POWER, R_HALF, NR };
+/* The sequential design of the verdicts about the model
+ * (claims_sequential_decide): syn-up with an indifference margin SEQ_M,
+ * looks at SEQ_N1, 2 SEQ_N1, ... SEQ_BUDGET values (each extending the
+ * last), the model share SEQ_ALPHA spent over them (Pocock-type), the
+ * normal path (sigma known: se = 1 / sqrt(n)). */
+#define SEQ_N1 5
+#define SEQ_BUDGET 40
+#define SEQ_M 1.0
+#define SEQ_ALPHA 0.02
+
+/* the truths planted: none (0), half the margin, the margin, minus the margin */
+enum { T_NONE, T_HALF, T_MARGIN, T_NEG, NT };
+
+enum { R_UP_CONF, R_UP_CONTRA, R_DN_CONF, R_DN_CONTRA, R_EQ_CONF, R_DESIGN, R_POWER, R_HALF,
+       S_NONE_CONF, S_NONE_CONTRA, S_NONE_WITHIN, S_HALF_CONTRA, S_HALF_RIGHT, S_MARGIN_CONF, S_MARGIN_WITHIN,
+       S_NEG_CONTRA, S_NEG_WITHIN, NR };
+/* a sequential row that counts a right verdict (at least its bound; the others count a wrong one) */
+static int seq_right(int j)
+{
+    return j == S_NONE_WITHIN || j == S_HALF_RIGHT || j == S_MARGIN_CONF || j == S_NEG_CONTRA;
+}
+
+/* One run of the design at truth theta: values drawn one look at a time
+ * (look j's sample extends look j-1's); the verdict, the look into *look.
+ * naive: every look at the whole share (the boundary that ignores the
+ * number of looks; reported, not gated). */
+static int seq_run(gsl_rng *g, double theta, const size_t *N, size_t L, int naive, size_t *look)
+{
+    double est[CLAIMS_MAX_LOOKS], se[CLAIMS_MAX_LOOKS], df[CLAIMS_MAX_LOOKS], sum = 0;
+    size_t n = 0;
+    *look = L - 1;
+    for (size_t j = 0; j < L; j++) {
+        for (; n < N[j]; n++)
+            sum += theta + gsl_ran_gaussian(g, 1);
+        est[j] = sum / (double)n;
+        se[j] = 1 / sqrt((double)n);
+        df[j] = 1e9;
+        int st = naive ? claims_sequential_decide(&syn_claims[0], N + j, 1, 1, est + j, se + j, df + j, SEQ_ALPHA,
+                                                  SEQ_M, 0, CLAIMS_SPEND_POCOCK, NULL, NULL, NULL)
+                       : claims_sequential_decide(&syn_claims[0], N, L, j + 1, est, se, df, SEQ_ALPHA, SEQ_M, 0,
+                                                  CLAIMS_SPEND_POCOCK, NULL, NULL, NULL);
+        if (st != SF_CLAIM_UNDECIDED) {
+            *look = j;
+            return st;
+        }
+    }
+    return SF_CLAIM_UNDECIDED;
+}
 
 static int chk_claims_synth(const sf_case *c, sf_result *r)
 {
@@ -141,7 +188,44 @@ static int chk_claims_synth(const sf_case *c, sf_result *r)
         k[R_POWER] += claims_decide(up, estp[i], se, 1e9, a, NULL, NULL) == SF_CLAIM_CONFIRMED;
         k[R_HALF] += claims_decide(up, esth[i], se, 1e9, a, NULL, NULL) == SF_CLAIM_CONFIRMED;
     }
+    /* the sequential design at each planted truth; the stated rates: a
+     * wrong verdict at most the share SEQ_ALPHA (the union bound over the
+     * looks), a right one at least its test's power at the last look less
+     * the wrong verdicts that could stop the design before it */
+    size_t N[CLAIMS_MAX_LOOKS], L = claims_model_looks(SEQ_N1, SEQ_BUDGET, N);
+    const double theta[NT] = { 0, SEQ_M / 2, SEQ_M, -SEQ_M };
+    unsigned vc[NT][4] = { { 0 } }, naive_conf = 0;
+    double nlook[NT] = { 0 };
+    for (int t = 0; t < NT; t++)
+        for (unsigned i = 0; i < R; i++) {
+            size_t look;
+            int st = seq_run(g, theta[t], N, L, 0, &look);
+            vc[t][st]++;
+            nlook[t] += (double)N[look];
+        }
+    for (unsigned i = 0; i < R; i++) {
+        size_t look;
+        naive_conf += seq_run(g, 0, N, L, 1, &look) == SF_CLAIM_CONFIRMED;
+    }
     gsl_rng_free(g);
+    double asum = 0, aj[CLAIMS_MAX_LOOKS];
+    for (size_t j = 0; j < L; j++)
+        asum += aj[j] = claims_look_alpha(SEQ_ALPHA, N, L, j, CLAIMS_SPEND_POCOCK);
+    double seL = 1 / sqrt((double)N[L - 1]), zL = gsl_cdf_ugaussian_Qinv(aj[L - 1]);
+    /* the last look's tests: confirm (lo > 0) at the margin, TOST (both
+     * bounds inside -+ m; the intersection exact while z se < m) */
+    double pc_m = gsl_cdf_ugaussian_P(SEQ_M / seL - zL), pt0 = 2 * gsl_cdf_ugaussian_P(SEQ_M / seL - zL) - 1;
+    double pt_half = gsl_cdf_ugaussian_P(0.5 * SEQ_M / seL - zL) + gsl_cdf_ugaussian_P(1.5 * SEQ_M / seL - zL) - 1;
+    k[S_NONE_CONF] = vc[T_NONE][SF_CLAIM_CONFIRMED];
+    k[S_NONE_CONTRA] = vc[T_NONE][SF_CLAIM_CONTRADICTED];
+    k[S_NONE_WITHIN] = vc[T_NONE][SF_CLAIM_WITHIN];
+    k[S_HALF_CONTRA] = vc[T_HALF][SF_CLAIM_CONTRADICTED];
+    k[S_HALF_RIGHT] = vc[T_HALF][SF_CLAIM_CONFIRMED] + vc[T_HALF][SF_CLAIM_WITHIN];
+    k[S_MARGIN_CONF] = vc[T_MARGIN][SF_CLAIM_CONFIRMED];
+    k[S_MARGIN_WITHIN] = vc[T_MARGIN][SF_CLAIM_WITHIN];
+    k[S_NEG_CONTRA] = vc[T_NEG][SF_CLAIM_CONTRADICTED];
+    k[S_NEG_WITHIN] = vc[T_NEG][SF_CLAIM_WITHIN];
+    sf_result_data(r, "the sequential design's mean N at each planted truth", NT, nlook);
     sf_result_data(r, "estimates at the boundary, one look", R, est0);
     sf_result_data(r, "estimates at the boundary, the design's stopping look", R, est2);
     sf_result_data(r, "estimates at the MDE", R, estp);
@@ -155,19 +239,28 @@ static int chk_claims_synth(const sf_case *c, sf_result *r)
         "syn-down confirmed at its boundary (one look)", "syn-down contradicted at its boundary (one look)",
         "syn-eq (equivalence) confirmed at its margin's boundary (one look)",
         "syn-up wrongly confirmed over the 2-look design", "syn-up confirmed at the MDE",
-        "syn-up confirmed at half the MDE" };
-    double p0[NR] = { p_test, p_test, p_test, p_test, p_test, share, CLAIM_MDE_POWER, p_half }, rate[NR], xs[NR], lo[NR], hi[NR];
+        "syn-up confirmed at half the MDE",
+        "sequential, no effect: wrongly confirmed", "sequential, no effect: wrongly contradicted",
+        "sequential, no effect: within margin", "sequential, half the margin: wrongly contradicted",
+        "sequential, half the margin: confirmed or within margin",
+        "sequential, effect of the margin: confirmed", "sequential, effect of the margin: wrongly within margin",
+        "sequential, minus the margin: contradicted", "sequential, minus the margin: wrongly within margin" };
+    double p0[NR] = { p_test, p_test, p_test, p_test, p_test, share, CLAIM_MDE_POWER, p_half,
+                      SEQ_ALPHA, SEQ_ALPHA, pt0 - 2 * SEQ_ALPHA, SEQ_ALPHA, pt_half - SEQ_ALPHA,
+                      pc_m - 2 * SEQ_ALPHA, SEQ_ALPHA, pc_m - 2 * SEQ_ALPHA, SEQ_ALPHA },
+           rate[NR], xs[NR], lo[NR], hi[NR];
     unsigned kc1 = crit_upper(p_test, R, level), kc2 = crit_upper(share, R, level);
     double pw6 = miss_upper(p_test, 6 * p_test, R, level), pw2 = miss_upper(p_test, 2 * p_test, R, level),
            pwd6 = miss_upper(share, 6 * share, R, level), pwd15 = miss_upper(share, 1.5 * share, R, level);
-    char tab[2048];
+    char tab[4096];
     size_t used = 0;
     for (int j = 0; j < NR; j++) {
         rate[j] = k[j] / (double)R;
         xs[j] = j + 1;
         double w = sqrt(p0[j] * (1 - p0[j]) / R), zz = gsl_cdf_ugaussian_Qinv(level);
-        lo[j] = j == R_POWER ? p0[j] - zz * w : j == R_HALF ? p0[j] - gsl_cdf_ugaussian_Qinv(level / 2) * w : 0;
-        hi[j] = j == R_POWER ? 1 : j == R_HALF ? p0[j] + gsl_cdf_ugaussian_Qinv(level / 2) * w : p0[j] + zz * w;
+        int low = j == R_POWER || (j >= S_NONE_CONF && seq_right(j));
+        lo[j] = low ? p0[j] - zz * w : j == R_HALF ? p0[j] - gsl_cdf_ugaussian_Qinv(level / 2) * w : 0;
+        hi[j] = low ? 1 : j == R_HALF ? p0[j] + gsl_cdf_ugaussian_Qinv(level / 2) * w : p0[j] + zz * w;
         used += (size_t)snprintf(tab + used, sizeof tab - used, "| %d | %s | %u | %.5f | %.5f |\n", j + 1, what[j],
                                  k[j], rate[j], p0[j]);
     }
@@ -180,8 +273,22 @@ static int chk_claims_synth(const sf_case *c, sf_result *r)
                "from %u): 1 - %.2g against 6x the share, 1 - %.2g against 1.5x.\n",
             SYN_ALPHA, SYN_LOOKS, (size_t)3, a, p_test, share, R, c->scene.seed, level, c->spec.alpha, NR, mde,
             CLAIM_MDE_POWER, p_half, tab, kc1, R, pw6, pw2, kc2, pwd6, pwd15);
+    unsigned kcs = crit_upper(SEQ_ALPHA, R, level);
+    double pn = naive_conf / (double)R, pwn = miss_upper(SEQ_ALPHA, fmax(pn, SEQ_ALPHA), R, level);
+    sf_note(r, "\nSequential rows (9-17): the verdict about the model (claims_sequential_decide) on syn-up (> 0) with "
+               "the indifference margin %g, looks at N = %zu, %zu, %zu, %zu normal values of sd 1 (se = 1 / sqrt(N), "
+               "each look extending the last), the share %g spent over them by the Pocock-type Lan-DeMets function: "
+               "look levels %.4g, %.4g, %.4g, %.4g (sum %.6g). Stated rates: a wrong verdict at most %g (the union "
+               "bound); a right one at least the last look's power less the wrong verdicts that could stop the "
+               "design first (powers %.5f to confirm at the margin, %.5f within at none, %.4f within at half). "
+               "Mean N it took: none %.1f, half %.1f, margin %.1f, minus the margin %.1f. The boundary that ignores "
+               "the number of looks (each look at the whole share %g) wrongly confirms at no effect at rate %.4f "
+               "(reported, not gated; the rows reject from %u of %u: power 1 - %.2g against that rate; mutant "
+               "claims-seq-looks-ignored).\n",
+            SEQ_M, N[0], N[1], N[2], N[3], SEQ_ALPHA, aj[0], aj[1], aj[2], aj[3], asum, SEQ_ALPHA, pc_m, pt0, pt_half,
+            nlook[T_NONE] / R, nlook[T_HALF] / R, nlook[T_MARGIN] / R, nlook[T_NEG] / R, SEQ_ALPHA, pn, kcs, R, pwn);
     sf_plot *pl = sf_result_plot(r, "verdict_rates", "Synthetic claims: each verdict's rate against the engine's",
-                                 "row (1-5 at the boundary, 6 the 2-look design, 7 at the MDE, 8 at half)",
+                                 "row (1-5 at the boundary, 6 the 2-look design, 7 at the MDE, 8 at half, 9-17 sequential)",
                                  "rate [-]");
     sf_plot_log(pl, 0, 1);
     sf_plot_band(pl, "acceptance region (normal approx.)", NR, xs, lo, hi);
@@ -190,7 +297,15 @@ static int chk_claims_synth(const sf_case *c, sf_result *r)
     for (int j = 0; j < NR; j++) {
         char q[SF_LABEL_LEN];
         double p;
-        if (j == R_POWER) {
+        if (j >= S_NONE_CONF && seq_right(j)) {
+            snprintf(q, sizeof q, "%s: not below its bound %.4f, one-sided exact binomial test (R = %u)", what[j], p0[j],
+                     R);
+            p = p_lower(k[j], p0[j], R);
+        } else if (j >= S_NONE_CONF) {
+            snprintf(q, sizeof q, "%s: not above the model share %.4g over the looks, one-sided exact binomial test "
+                     "(R = %u)", what[j], p0[j], R);
+            p = p_upper(k[j], p0[j], R);
+        } else if (j == R_POWER) {
             snprintf(q, sizeof q, "%s: not below %.2f, one-sided exact binomial test (R = %u)", what[j], p0[j], R);
             p = p_lower(k[j], p0[j], R);
         } else if (j == R_HALF) {
@@ -208,6 +323,15 @@ static int chk_claims_synth(const sf_case *c, sf_result *r)
      * alpha / claims / looks, and a non-finite estimate is not decidable */
     sf_check_rel(r, "claims_alpha of the synthetic case (alpha 0.06, 3 claims, 2 looks)", a, p_test, 1e-15);
     sf_check_rel(r, "claims_mde at se = 1 and that alpha: (z_alpha + z_0.01) se", mde_engine, mde, 1e-12);
+    /* the design's exact rows: its looks and levels */
+    size_t Np[CLAIMS_MAX_LOOKS], Lp = claims_model_looks(100, 800, Np);
+    int looks_ok = L == 4 && Lp == 4 && Np[0] == 100 && Np[1] == 200 && Np[2] == 400 && Np[3] == 800;
+    looks_ok = looks_ok && claims_model_looks(100, 300, Np) == 3 && Np[2] == 300;
+    sf_check_true(r, "the model looks: N = 100 to a budget 800 gives 100, 200, 400, 800; to 300, 100, 200, 300",
+                  looks_ok, looks_ok ? "as stated" : "other looks");
+    sf_check_rel(r, "the look levels sum to the model share (the spending function at t = 1)", asum, SEQ_ALPHA, 1e-12);
+    sf_check_rel(r, "the first look's level: alpha ln(1 + (e - 1) N_1 / N_L) (Lan & DeMets 1983, Pocock-type)", aj[0],
+                 SEQ_ALPHA * log(1 + (exp(1.0) - 1) * (double)N[0] / (double)N[L - 1]), 1e-12);
     int nan_ok = claims_decide(up, NAN, 1, 4, a, NULL, NULL) == SF_CLAIM_UNDECIDED &&
                  claims_decide(up, 1, INFINITY, 4, a, NULL, NULL) == SF_CLAIM_UNDECIDED &&
                  claims_decide(eq, INFINITY, 1, 4, a, NULL, NULL) == SF_CLAIM_UNDECIDED;

@@ -553,6 +553,105 @@ static int chk_claims_mu(const sf_case *c, sf_result *r)
  * with the same verdict rule (claims_judge_one) from per-realisation
  * statistics. */
 
+/* Realisations from .. to-1 of the harmonic share at l/R = lr into sh
+ * (sh[i]), drawn from rng in order; realisation 0's spectrum drawn into
+ * p (nplot bins; p may be NULL). */
+static int fig15_shares(const sf_scene *s0, double lr, gsl_rng *rng, double dt, double period, double *sh, size_t from,
+                        size_t to, sf_plot *p, size_t nplot, sf_result *r)
+{
+    sf_scene s = *s0;
+    char err[128];
+    sf_sweep_set(&s, "l_over_R", lr, err, sizeof err);
+    for (size_t i = from; i < to; i++) {
+        spectrum sp;
+        if (spectrum_of(&s, rng, dt, period, &sp, NULL, r))
+            return SF_EFAIL;
+        sh[i] = harmonic_share(&sp, period);
+        if (i == 0 && p) {
+            for (size_t k = 0; k < nplot && k < sp.n; k++)
+                sp.p[k] = fmax(sp.p[k], 1e-16);
+            char lb[64];
+            snprintf(lb, sizeof lb, "stochastic, l/R = %g", lr);
+            sf_plot_series(p, lb, SF_STYLE_LINES, nplot < sp.n ? nplot : sp.n, sp.f, sp.p);
+        }
+        free(sp.f);
+        free(sp.p);
+    }
+    return SF_SUCCESS;
+}
+
+/* Fig. 15's claims' verdicts about the model (docs/design.md sec. 7.7):
+ * the sequential design of claims_sequential_decide on the shares sh (K
+ * = 3 points of N each), every point extended from rng (continuing the
+ * stream after the paper-scale draws, so the first N are those) at the
+ * looks its open claims need, up to the case's model_budget. */
+static int fig15_model(const sf_case *c, sf_result *r, gsl_rng *rng, double dt, double period, const double *sh,
+                       size_t N, double share_det)
+{
+    size_t Nl[CLAIMS_MAX_LOOKS], L = claims_model_looks(N, c->spec.model_budget, Nl), B = Nl[L - 1];
+    double alpha = claims_alpha(c, claims_fig15) * (double)(c->spec.looks ? c->spec.looks : 1);
+    double *x = check_alloc(3 * B * sizeof *x), est[3][CLAIMS_MAX_LOOKS], se[3][CLAIMS_MAX_LOOKS],
+           df[3][CLAIMS_MAX_LOOKS], lo[3], hi[3];
+    size_t n[3] = { N, N, N }, lk[3] = { 0, 0, 0 };
+    int st[3] = { SF_CLAIM_UNDECIDED, SF_CLAIM_UNDECIDED, SF_CLAIM_UNDECIDED };
+    const int pa[3] = { 1, 2, 0 }, pb[3] = { 0, 1, -1 };   /* the claims' points: a minus b (b < 0: the deterministic share) */
+    for (int j = 0; j < 3; j++)
+        memcpy(x + (size_t)j * B, sh + (size_t)j * N, N * sizeof *x);
+    for (size_t l = 0; l < L; l++) {
+        int need[3] = { 0, 0, 0 };
+        for (int q = 0; q < 3; q++)
+            if (st[q] == SF_CLAIM_UNDECIDED) {
+                need[pa[q]] = 1;
+                if (pb[q] >= 0)
+                    need[pb[q]] = 1;
+            }
+        for (int j = 0; j < 3; j++)
+            if (need[j] && n[j] < Nl[l]) {
+                if (fig15_shares(&c->scene, c->spec.sweep.v[j], rng, dt, period, x + (size_t)j * B, n[j], Nl[l], NULL,
+                                 0, r)) {
+                    free(x);
+                    return SF_EFAIL;
+                }
+                n[j] = Nl[l];
+            }
+        double m[3], v[3];
+        for (int j = 0; j < 3; j++) {
+            m[j] = gsl_stats_mean(x + (size_t)j * B, 1, n[j]);
+            v[j] = gsl_stats_variance_m(x + (size_t)j * B, 1, n[j], m[j]) / (double)n[j];
+        }
+        for (int q = 0; q < 3; q++) {
+            if (st[q] != SF_CLAIM_UNDECIDED)
+                continue;
+            int a = pa[q], b = pb[q];
+            double vb = b >= 0 ? v[b] : 0, na = (double)n[a], nb = b >= 0 ? (double)n[b] : 1;
+            est[q][l] = m[a] - (b >= 0 ? m[b] : share_det);
+            se[q][l] = sqrt(v[a] + vb);
+            df[q][l] = b >= 0 ? (v[a] + vb) * (v[a] + vb) / (v[a] * v[a] / (na - 1) + vb * vb / (nb - 1)) : na - 1;
+            lk[q] = l;
+            st[q] = claims_sequential_decide(&claims_fig15[q], Nl, L, l + 1, est[q], se[q], df[q], alpha,
+                                             claims_margin_of(&claims_fig15[q], 1), 0, CLAIMS_SPEND_POCOCK, NULL,
+                                             &lo[q], &hi[q]);
+        }
+    }
+    free(x);
+    sf_note(r, "\n### Verdicts about the model\n\nThe sequential design of docs/design.md sec. 7.7 (claims_engine.c): "
+               "looks at N = %zu doubling to the budget %zu realisations per l/R (each extending the last from the "
+               "case's stream), the model verdict's own alpha %.3g spent over the %zu looks (Pocock-type Lan-DeMets "
+               "spending, union bound), the margin %.3g of the share. Reported, not gated.\n\n| claim | model verdict "
+               "| N it took | estimate [bounds] | MDE at that N |\n|---|---|---|---|---|",
+            N, B, alpha, L, claims_margin_of(&claims_fig15[0], 1));
+    for (int q = 0; q < 3; q++) {
+        size_t l = lk[q];
+        double al = claims_look_alpha(alpha, Nl, L, l, CLAIMS_SPEND_POCOCK);
+        sf_claim_model mv = { st[q], Nl[l], B, est[q][l], lo[q], hi[q], claims_mde(se[q][l], al, 0), alpha,
+                              claims_margin_of(&claims_fig15[q], 1) };
+        sf_claim_set_model(r, claims_fig15[q].id, &mv);
+        sf_note(r, "| %s | %s | %zu | %.4g [%.4g, %.4g] | %.3g |", claims_fig15[q].id, sf_claim_model_name(st[q]),
+                Nl[l], mv.est, mv.lo, mv.hi, mv.mde);
+    }
+    return SF_SUCCESS;
+}
+
 static int chk_claims_fig15(const sf_case *c, sf_result *r)
 {
     const sf_scene *s0 = &c->scene;
@@ -579,26 +678,10 @@ static int chk_claims_fig15(const sf_case *c, sf_result *r)
     sf_sweep_stat st[3];
     gsl_rng *rng = sf_case_rng(c);
     for (size_t j = 0; j < K; j++) {
-        sf_scene s = *s0;
-        char err[128];
-        sf_sweep_set(&s, "l_over_R", c->spec.sweep.v[j], err, sizeof err);
-        for (size_t i = 0; i < N; i++) {
-            spectrum sp;
-            if (spectrum_of(&s, rng, dt, period, &sp, NULL, r)) {
-                gsl_rng_free(rng);
-                free(sh);
-                return SF_EFAIL;
-            }
-            sh[j * N + i] = harmonic_share(&sp, period);
-            if (i == 0) {
-                for (size_t k = 0; k < nplot && k < sp.n; k++)
-                    sp.p[k] = fmax(sp.p[k], 1e-16);
-                char lb[64];
-                snprintf(lb, sizeof lb, "stochastic, l/R = %g", c->spec.sweep.v[j]);
-                sf_plot_series(p, lb, SF_STYLE_LINES, nplot < sp.n ? nplot : sp.n, sp.f, sp.p);
-            }
-            free(sp.f);
-            free(sp.p);
+        if (fig15_shares(s0, c->spec.sweep.v[j], rng, dt, period, sh + j * N, 0, N, p, nplot, r)) {
+            gsl_rng_free(rng);
+            free(sh);
+            return SF_EFAIL;
         }
         /* mean, std, se and interval as every sweep states them */
         if (sf_sweep_stat_of(sh + j * N, 1, N, &st[j])) {
@@ -609,7 +692,6 @@ static int chk_claims_fig15(const sf_case *c, sf_result *r)
         m[j] = st[j].mean;
         sdv[j] = st[j].std;
     }
-    gsl_rng_free(rng);
     for (size_t k = 0; k < nplot; k++)
         det.p[k] = fmax(det.p[k], 1e-16);
     sf_plot_series(p, "deterministic", SF_STYLE_DASHED, nplot, det.f, det.p);
@@ -660,8 +742,10 @@ static int chk_claims_fig15(const sf_case *c, sf_result *r)
     claims_judge_one(c, r, claims_fig15, &claims_fig15[2], m[0] - share_det, sqrt(v[0]), n - 1, how, "not cycle-based: the periodogram of x over [t_skip, T] cut to whole deterministic periods");
     sf_note(r, "\nT = %g s, x sampled every %g s after t_skip = %g s, window cut to whole deterministic periods; "
                "share = power within 2 bins of k / period over the total.", s0->T, dt, s0->t_skip);
+    int rc = c->spec.model_budget > N ? fig15_model(c, r, rng, dt, period, sh, N, share_det) : SF_SUCCESS;
+    gsl_rng_free(rng);
     free(sh);
-    return SF_SUCCESS;
+    return rc;
 }
 
 /* Fig. 3: three fields (l/R = 0.1, 1, 10) along the belt's centre line,
