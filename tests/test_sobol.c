@@ -154,6 +154,33 @@ static void linear_model(void **state)
     sf_sobol_design_free(D);
 }
 
+/* Some blocks only: input i's indices from A, B and A_B^(i) are the full
+ * estimate's bit for bit, the others NAN; a NaN in a block left out
+ * excludes no row; an empty bit set is refused. */
+static void some_blocks(void **state)
+{
+    (void)state;
+    const size_t n = 300;
+    sf_sobol_design *D = design(n, 3, 12);
+    const double c[3] = { 1, 2, 0.5 };
+    double *y = linear(D, c);
+    sf_sobol_result all, some;
+    assert_int_equal(sf_sobol_estimate(D, y, 1, 100, 0.9, 4, &all, NULL), SF_SUCCESS);
+    for (size_t j = 0; j < n; j++)   /* A_B^(0) and A_B^(2) not run */
+        y[2 * n + j] = y[4 * n + j] = NAN;
+    for (size_t e = 0; e < sf_sobol_nevals(D); e++)
+        assert_int_equal(sf_sobol_in_blocks(D, 1UL << 1, e), e < 2 * n || (e >= 3 * n && e < 4 * n));
+    assert_int_equal(sf_sobol_estimate_some(D, 1UL << 1, y, 1, 100, 0.9, 4, &some, NULL), SF_SUCCESS);
+    assert_int_equal(some.n_used, n);
+    assert_memory_equal(&some.idx[1], &all.idx[1], sizeof all.idx[1]);
+    assert_true(some.mean == all.mean && some.var == all.var);
+    assert_true(isnan(some.idx[0].st) && isnan(some.idx[2].s1) && isnan(some.idx[2].st_hi) && isnan(some.idx[0].st_se));
+    assert_int_equal(sf_sobol_estimate(D, y, 1, 100, 0.9, 4, &all, NULL), SF_EINVAL);   /* every row has a NaN */
+    assert_int_equal(sf_sobol_estimate_some(D, 1UL << 3, y, 1, 100, 0.9, 4, &some, NULL), SF_EINVAL);   /* no input */
+    free(y);
+    sf_sobol_design_free(D);
+}
+
 /* Two rows, one whose A and B values are equal: a resample that draws it
  * twice has V = 0 and is left out of the intervals. */
 static void degenerate_resamples(void **state)
@@ -513,8 +540,31 @@ static void study_threads(void **state)
     assert_non_null(strstr(b, "\nB\t0\t3\t"));
     free(a);
     free(b);
-    sf_sens_free(S1);
     sf_sens_free(S2);
+    /* one input's blocks: its indices and runs are the full study's, the blocks left out not run */
+    sf_sens *S3;
+    assert_int_equal(sf_sens_run_some(&s, &r, 3, 1UL << SF_SENS_VB, 20, 0.9, 2, NULL, &S3, err, sizeof err),
+                     SF_SUCCESS);
+    for (size_t e = 0; e < ne; e++) {
+        int run = e < 6 || e / 3 == 2 + SF_SENS_VB;
+        for (int q = 0; q < 2 * SF_SWEEP_NQ; q++) {
+            double v = S3->y[e * 2 * SF_SWEEP_NQ + q];
+            assert_true(run ? v == S1->y[e * 2 * SF_SWEEP_NQ + q] : isnan(v));
+        }
+    }
+    for (int q = 0; q < SF_SWEEP_NQ; q++) {
+        assert_memory_equal(&S3->res[q].idx[SF_SENS_VB], &S1->res[q].idx[SF_SENS_VB], sizeof(sf_sobol_index));
+        assert_true(isnan(S3->res[q].idx[SF_SENS_CV].st) && isnan(S3->res[q].idx[SF_SENS_FIELD].s1));
+    }
+    b = text_of(sf_sens_write_evals, S3);
+    assert_non_null(strstr(b, "\nAB_v_b\t2\t2\t"));
+    assert_null(strstr(b, "AB_cv"));
+    free(b);
+    assert_int_equal(sf_sens_run_some(&s, &r, 3, 1UL << SF_SENS_D, 20, 0.9, 2, NULL, &S2, err, sizeof err),
+                     SF_EINVAL);
+    assert_null(S2);
+    sf_sens_free(S1);
+    sf_sens_free(S3);
 }
 
 int main(void)
@@ -526,6 +576,7 @@ int main(void)
         cmocka_unit_test(exact_zeros),
         cmocka_unit_test(linear_model),
         cmocka_unit_test(degenerate_resamples),
+        cmocka_unit_test(some_blocks),
         cmocka_unit_test(rank_ishigami),
         cmocka_unit_test(rank_linear),
         cmocka_unit_test(rank_ties),

@@ -56,6 +56,7 @@ typedef struct {
     const sf_scene *base;
     const sf_sens_ranges *r;
     const sf_sobol_design *D;
+    unsigned long inputs;   /* the blocks run */
     double *x;   /* the parameters, written by each evaluation into its own slot */
     gsl_rng *rng;
 } ctx_t;
@@ -98,6 +99,13 @@ static int evaluate(void *p, size_t e, gsl_rng *unused, double *out)
 {
     (void)unused;
     ctx_t *w = p;
+    if (!sf_sobol_in_blocks(w->D, w->inputs, e)) {   /* a block not asked for */
+        for (int k = 0; k < SF_SENS_NPAR; k++)
+            w->x[e * SF_SENS_NPAR + k] = NAN;
+        for (int k = 0; k < NOUT; k++)
+            out[k] = NAN;
+        return SF_SUCCESS;
+    }
     sf_scene s;
     sf_sens_point(w->base, w->r, w->D, e, &s, w->x + e * SF_SENS_NPAR, w->rng);
     double det[SF_SWEEP_NQ], q[SF_SWEEP_NQ];
@@ -119,7 +127,14 @@ static int evaluate(void *p, size_t e, gsl_rng *unused, double *out)
 int sf_sens_run(const sf_scene *base, const sf_sens_ranges *r, size_t n, size_t nboot, double level,
                 int threads, const char *label, sf_sens **out, char *err, size_t errlen)
 {
+    return sf_sens_run_some(base, r, n, SF_SOBOL_ALL, nboot, level, threads, label, out, err, errlen);
+}
+
+int sf_sens_run_some(const sf_scene *base, const sf_sens_ranges *r, size_t n, unsigned long inputs, size_t nboot,
+                     double level, int threads, const char *label, sf_sens **out, char *err, size_t errlen)
+{
     *out = NULL;
+    inputs &= (1UL << SF_SENS_D) - 1;
     int rc = sf_sens_ranges_check(r, err, errlen);
     if (rc)
         return rc;
@@ -128,6 +143,8 @@ int sf_sens_run(const sf_scene *base, const sf_sens_ranges *r, size_t n, size_t 
     if (n < 2 || !(level > 0 && level < 1))
         return sf_seterr(err, errlen, SF_EINVAL, "need at least 2 rows and a level in (0, 1) (got %zu, %g)", n,
                          level);
+    if (!inputs)
+        return sf_seterr(err, errlen, SF_EINVAL, "no input's block asked for");
     sf_sens *S = sf_calloc(1, sizeof *S);
     if (!S)
         return SF_ENOMEM;
@@ -141,6 +158,7 @@ int sf_sens_run(const sf_scene *base, const sf_sens_ranges *r, size_t n, size_t 
     gsl_rng_free(g);
     if (rc)
         goto fail;
+    S->inputs = inputs;
     size_t ne = sf_sobol_nevals(S->D);
     S->x = sf_calloc(ne * SF_SENS_NPAR, sizeof *S->x);
     S->y = sf_calloc(ne * NOUT, sizeof *S->y);
@@ -150,7 +168,7 @@ int sf_sens_run(const sf_scene *base, const sf_sens_ranges *r, size_t n, size_t 
     for (int q = 0; q < SF_SWEEP_NQ; q++)
         if (!(S->boot[q] = sf_malloc((nboot ? nboot : 1) * 2 * SF_SENS_D * sizeof *S->boot[q])))
             goto fail;
-    ctx_t c = { base, r, S->D, S->x, NULL };
+    ctx_t c = { base, r, S->D, inputs, S->x, NULL };
     sf_mc_spec spec = { ne, NOUT, base->seed, threads, NULL, 0, 0, label };
     sf_mc_ops ops = { ws_alloc, ws_free, evaluate };
     if ((rc = sf_mc_run(&spec, &ops, &c, S->y, NULL, err, errlen))) {
@@ -159,8 +177,8 @@ int sf_sens_run(const sf_scene *base, const sf_sens_ranges *r, size_t n, size_t 
         goto fail;
     }
     for (int q = 0; q < SF_SWEEP_NQ; q++)
-        if ((rc = sf_sobol_estimate(S->D, S->y + q, NOUT, nboot, level, sf_mc_seed(base->seed, 2 * n + (size_t)q),
-                                    &S->res[q], S->boot[q]))) {
+        if ((rc = sf_sobol_estimate_some(S->D, inputs, S->y + q, NOUT, nboot, level,
+                                         sf_mc_seed(base->seed, 2 * n + (size_t)q), &S->res[q], S->boot[q]))) {
             sf_seterr(err, errlen, rc, "%s: no indices: a constant ratio, or fewer than 2 rows whose runs are all "
                       "finite", qname[q]);
             goto fail;
@@ -219,6 +237,8 @@ void sf_sens_write_evals(FILE *f, const sf_sens *S)
     size_t n = S->D->n, ne = sf_sobol_nevals(S->D);
     for (size_t e = 0; e < ne; e++) {
         size_t k = e / n;
+        if (!sf_sobol_in_blocks(S->D, S->inputs, e))
+            continue;
         fprintf(f, "%s%s\t%zu\t%zu", k == 0 ? "A" : k == 1 ? "B" : "AB_", k >= 2 ? iname[k - 2] : "", e % n,
                 sf_sobol_source_row(S->D, e, SF_SENS_FIELD));
         for (int i = 0; i < SF_SENS_NPAR; i++)

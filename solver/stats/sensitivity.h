@@ -74,6 +74,7 @@ void sf_sens_point(const sf_scene *base, const sf_sens_ranges *r, const sf_sobol
 
 typedef struct {
     sf_sobol_design *D;      /* n rows, SF_SENS_D inputs */
+    unsigned long inputs;    /* the A_B^(i) blocks run (sf_sobol_estimate_some's bit set) */
     double *x;               /* nevals x SF_SENS_NPAR: the parameters of each evaluation */
     double *y;               /* nevals x 2 SF_SWEEP_NQ: the ratios, then the QoIs in their units */
     sf_sobol_result res[SF_SWEEP_NQ];   /* of the ratios */
@@ -91,13 +92,21 @@ typedef struct {
  * a field) or an evaluation's error, with err set. */
 int sf_sens_run(const sf_scene *base, const sf_sens_ranges *r, size_t n, size_t nboot, double level,
                 int threads, const char *label, sf_sens **out, char *err, size_t errlen);
+/* The same over blocks A, B and the A_B^(i) of `inputs` only (bit i for
+ * input i, SF_SOBOL_ALL: sf_sens_run): n (2 + its bits) runs.  The
+ * evaluations of the other blocks are not run (their x and y are NAN) and
+ * the indices of the inputs left out are NAN; those of the inputs run are
+ * the full study's (sf_sobol_estimate_some). */
+int sf_sens_run_some(const sf_scene *base, const sf_sens_ranges *r, size_t n, unsigned long inputs, size_t nboot,
+                     double level, int threads, const char *label, sf_sens **out, char *err, size_t errlen);
 void sf_sens_free(sf_sens *S);
 
 /* The indices as TSV: a header, then one row per QoI and input; the
  * given-data first-order index and its interval in the S1_rank columns
  * (NaN for the field, which has no column of values). */
 void sf_sens_write_indices(FILE *f, const sf_sens *S);
-/* The evaluations as TSV: block, row, the parameters, the ratios, the QoIs. */
+/* The evaluations as TSV: block, row, the parameters, the ratios, the
+ * QoIs (the evaluations run). */
 void sf_sens_write_evals(FILE *f, const sf_sens *S);
 
 #ifdef __cplusplus

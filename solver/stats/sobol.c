@@ -70,10 +70,17 @@ size_t sf_sobol_source_row(const sf_sobol_design *D, size_t e, size_t i)
     return k == 1 || k == 2 + i ? D->n + j : j;
 }
 
-/* The estimators over rows[0..m) (repeats allowed: a bootstrap resample);
- * buf holds 2 m doubles.  SF_EFAIL when V = 0. */
-static int indices(const sf_sobol_design *D, const double *y, size_t stride, const size_t *rows, size_t m,
-                   double *buf, double *s1, double *st, double *mean, double *var)
+int sf_sobol_in_blocks(const sf_sobol_design *D, unsigned long inputs, size_t e)
+{
+    size_t k = e / D->n;
+    return k < 2 || (k - 2 < sizeof inputs * 8 && (inputs >> (k - 2) & 1));
+}
+
+/* The estimators over rows[0..m) (repeats allowed: a bootstrap resample)
+ * for the inputs of `inputs` (NAN for the others); buf holds 2 m doubles.
+ * SF_EFAIL when V = 0. */
+static int indices(const sf_sobol_design *D, unsigned long inputs, const double *y, size_t stride,
+                   const size_t *rows, size_t m, double *buf, double *s1, double *st, double *mean, double *var)
 {
     size_t n = D->n;
 #define Y(k, j) y[((k) * n + (j)) * stride]
@@ -87,6 +94,10 @@ static int indices(const sf_sobol_design *D, const double *y, size_t stride, con
         return SF_EFAIL;
     for (size_t i = 0; i < D->d; i++) {
         double f = 0, t = 0;
+        if (!(inputs >> i & 1)) {
+            s1[i] = st[i] = NAN;
+            continue;
+        }
         for (size_t r = 0; r < m; r++) {
             double fa = Y(0, rows[r]), fb = Y(1, rows[r]), fi = Y(2 + i, rows[r]);
             f += (fb - *mean) * (fi - fa);
@@ -102,8 +113,16 @@ static int indices(const sf_sobol_design *D, const double *y, size_t stride, con
 int sf_sobol_estimate(const sf_sobol_design *D, const double *y, size_t stride, size_t nboot, double level,
                       unsigned long seed, sf_sobol_result *res, double *boot)
 {
+    return sf_sobol_estimate_some(D, SF_SOBOL_ALL, y, stride, nboot, level, seed, res, boot);
+}
+
+int sf_sobol_estimate_some(const sf_sobol_design *D, unsigned long inputs, const double *y, size_t stride,
+                           size_t nboot, double level, unsigned long seed, sf_sobol_result *res, double *boot)
+{
     memset(res, 0, sizeof *res);
-    if (!(level > 0 && level < 1))
+    if (D->d < sizeof inputs * 8)
+        inputs &= (1UL << D->d) - 1;
+    if (!(level > 0 && level < 1) || !inputs)
         return SF_EINVAL;
     size_t n = D->n, d = D->d, m = 0;
     size_t *rows = sf_malloc(n * sizeof *rows), *pick = sf_malloc(n * sizeof *pick);
@@ -116,7 +135,7 @@ int sf_sobol_estimate(const sf_sobol_design *D, const double *y, size_t stride, 
     for (size_t j = 0; j < n; j++) {
         int ok = 1;
         for (size_t k = 0; k < d + 2; k++)
-            ok = ok && isfinite(y[(k * n + j) * stride]);
+            ok = ok && (!sf_sobol_in_blocks(D, inputs, k * n + j) || isfinite(y[(k * n + j) * stride]));
         if (ok)
             rows[m++] = j;
     }
@@ -128,7 +147,7 @@ int sf_sobol_estimate(const sf_sobol_design *D, const double *y, size_t stride, 
     if (m < 2)
         goto done;
     double s1[SF_SOBOL_MAXD], st[SF_SOBOL_MAXD], mean, var;
-    if ((rc = indices(D, y, stride, rows, m, buf, s1, st, &res->mean, &res->var)))
+    if ((rc = indices(D, inputs, y, stride, rows, m, buf, s1, st, &res->mean, &res->var)))
         goto done;
     gsl_rng_set(rng, seed);
     /* bs: the nboot values of S_i, then of S_Ti, per input (contiguous for the sort) */
@@ -137,7 +156,7 @@ int sf_sobol_estimate(const sf_sobol_design *D, const double *y, size_t stride, 
         for (size_t r = 0; r < m; r++)
             pick[r] = rows[gsl_rng_uniform_int(rng, m)];
         double u1[SF_SOBOL_MAXD], ut[SF_SOBOL_MAXD];
-        if (indices(D, y, stride, pick, m, buf, u1, ut, &mean, &var))
+        if (indices(D, inputs, y, stride, pick, m, buf, u1, ut, &mean, &var))
             continue;   /* a resample of constant values: no ratio (counted out of nb) */
         for (size_t i = 0; i < d; i++) {
             bs[(2 * i) * nboot + nb] = u1[i];
@@ -156,7 +175,7 @@ int sf_sobol_estimate(const sf_sobol_design *D, const double *y, size_t stride, 
         x->s1 = s1[i];
         x->st = st[i];
         double *v1 = bs + 2 * i * nboot, *vt = bs + (2 * i + 1) * nboot;
-        if (nb < 2) {
+        if (nb < 2 || !(inputs >> i & 1)) {
             x->s1_lo = x->s1_hi = x->st_lo = x->st_hi = x->s1_se = x->st_se = NAN;
             continue;
         }

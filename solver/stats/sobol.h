@@ -83,6 +83,28 @@ typedef struct {
 int sf_sobol_estimate(const sf_sobol_design *D, const double *y, size_t stride, size_t nboot, double level,
                       unsigned long seed, sf_sobol_result *res, double *boot);
 
+/* ---- Some blocks only
+ *
+ * The indices of input i need blocks A, B and A_B^(i) alone: a study of a
+ * few inputs' indices runs 3n evaluations for one input, not n (d + 2).
+ * `inputs` is a bit set, bit i for A_B^(i) (SF_SOBOL_ALL: every block);
+ * A and B are always in.  The design (A, B) is the full one's, so input
+ * i's indices are those of the full study bit for bit, but for rows the
+ * full study excludes for a non-finite value in a block left out here. */
+#define SF_SOBOL_ALL (~0UL)
+
+/* Whether evaluation e is in a block of `inputs`: block A, B or A_B^(i)
+ * with bit i set. */
+int sf_sobol_in_blocks(const sf_sobol_design *D, unsigned long inputs, size_t e);
+
+/* sf_sobol_estimate over the blocks of `inputs` (y of the other blocks
+ * is never read): a row is excluded for a non-finite value in those
+ * blocks only, and the indices of an input left out are NAN (estimates,
+ * intervals, resamples).  SF_EINVAL also when `inputs` has no bit below
+ * d. */
+int sf_sobol_estimate_some(const sf_sobol_design *D, unsigned long inputs, const double *y, size_t stride,
+                           size_t nboot, double level, unsigned long seed, sf_sobol_result *res, double *boot);
+
 /* ---- Given data: the rank-based first-order index
  *
  * From n plain Monte Carlo rows (x_j, y_j), x_j in R^d with independent
