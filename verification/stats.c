@@ -238,3 +238,22 @@ double sf_cov_reject(unsigned R, unsigned lo, unsigned hi, double c)
     double below = lo ? gsl_cdf_binomial_P(lo - 1, c, R) : 0, above = hi < R ? gsl_cdf_binomial_Q(hi, c, R) : 0;
     return below + above;
 }
+
+static double beta_inv(double P, double a, double b)
+{
+    double x = gsl_cdf_beta_Pinv(P, a, b);
+    if (isfinite(x))
+        return x;
+    double lo = 0, hi = 1;
+    for (int it = 0; it < 200; it++) {
+        double mid = 0.5 * (lo + hi);
+        *(gsl_cdf_beta_P(mid, a, b) < P ? &lo : &hi) = mid;
+    }
+    return 0.5 * (lo + hi);
+}
+
+void sf_clopper_pearson(double k, double n, double *lo, double *hi)
+{
+    *lo = k > 0 ? beta_inv(0.025, k, n - k + 1) : 0;
+    *hi = k < n ? beta_inv(0.975, k + 1, n - k) : 1;
+}

@@ -65,6 +65,11 @@ double sf_cov_pvalue(unsigned x, unsigned R, double clo, double chi);
 void sf_cov_region(unsigned R, double clo, double chi, double alpha, unsigned *lo, unsigned *hi);
 double sf_cov_reject(unsigned R, unsigned lo, unsigned hi, double c);
 
+/* The Clopper-Pearson 95% interval [*lo, *hi] of a rate from k of n.
+ * gsl_cdf_beta_Pinv, by bisection on gsl_cdf_beta_P where it returns NaN
+ * (GSL's inverse does not converge for some parameters in the thousands). */
+void sf_clopper_pearson(double k, double n, double *lo, double *hi);
+
 /* Standard normal CDF as an sf_cdf_fn. */
 double sf_cdf_normal(double x, void *params);
 

@@ -565,9 +565,7 @@ static int chk_sobol_field_law_coverage(const sf_case *c, sf_result *r)
         int i = k < SF_SENS_NPAR ? k : k - SF_SENS_NPAR;
         double cp[LAW_NM][2];
         for (int m = 0; m < LAW_NM; m++) {
-            unsigned x = (unsigned)cover[m][k];
-            cp[m][0] = x ? gsl_cdf_beta_Pinv(0.025, x, LAW_R - x + 1) : 0;
-            cp[m][1] = x < LAW_R ? gsl_cdf_beta_Pinv(0.975, x + 1, LAW_R - x) : 1;
+            sf_clopper_pearson((double)cover[m][k], LAW_R, &cp[m][0], &cp[m][1]);
         }
         sf_note(r, "| %s(%s) | %.4f | %.4f [%.4f, %.4f] | %.4f | %.4f [%.4f, %.4f] | %.4f |",
                 k < SF_SENS_NPAR ? "S1" : "S_T", sf_sens_input_name(i), ex[k], cv[0][k], cp[0][0], cp[0][1],

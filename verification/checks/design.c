@@ -40,6 +40,7 @@
 #include "numplan.h"
 #include "oscillator.h"
 #include "sf_error.h"
+#include "stats.h"
 #include "sweep.h"
 #include "unum.h"
 
@@ -91,8 +92,8 @@ void design_rate_test(sf_result *r, const char *what, size_t k, size_t n, double
 {
     double p = binom_upper(k, p0, n);
     size_t kc = design_binom_critical(n, p0, alpha);
-    double lo = k ? gsl_cdf_beta_Pinv(0.025, (double)k, (double)(n - k + 1)) : 0;
-    double hi = k < n ? gsl_cdf_beta_Pinv(0.975, (double)(k + 1), (double)(n - k)) : 1;
+    double lo, hi;
+    sf_clopper_pearson((double)k, (double)n, &lo, &hi);
     double mde = binom_mde(n, p0, kc);
     char t[200];
     snprintf(t, sizeof t, "exact binomial test of H0 'rate of %s <= %g': P(X >= %zu of %zu)", what, p0, k, n);

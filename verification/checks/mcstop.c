@@ -16,6 +16,7 @@
 #include "mcstop.h"
 #include "montecarlo.h"
 #include "sf_error.h"
+#include "stats.h"
 #include "../stats.h"
 
 #include <math.h>
@@ -305,22 +306,6 @@ static unsigned cp_reject_from(double p0, unsigned R, double a)
     return k;
 }
 
-/* The beta quantile of the Clopper-Pearson bounds: gsl_cdf_beta_Pinv, by
- * bisection on gsl_cdf_beta_P where it returns NaN (GSL's inverse does not
- * converge for some parameters in the thousands). */
-static double cp_beta_inv(double P, double a, double b)
-{
-    double x = gsl_cdf_beta_Pinv(P, a, b);
-    if (isfinite(x))
-        return x;
-    double lo = 0, hi = 1;
-    for (int it = 0; it < 200; it++) {
-        double mid = 0.5 * (lo + hi);
-        *(gsl_cdf_beta_P(mid, a, b) < P ? &lo : &hi) = mid;
-    }
-    return 0.5 * (lo + hi);
-}
-
 static int chk_coverage_populations(const sf_case *c, sf_result *r)
 {
     unsigned R = (unsigned)c->scene.samples;
@@ -432,8 +417,7 @@ static int chk_coverage_populations(const sf_case *c, sf_result *r)
         unsigned hit = R - miss[row];
         x[row] = row + 1;
         cov[row] = hit / (double)R;
-        lo[row] = hit ? cp_beta_inv(0.025, hit, R - hit + 1) : 0;
-        hi[row] = hit < R ? cp_beta_inv(0.975, hit + 1, R - hit) : 1;
+        sf_clopper_pearson(hit, R, &lo[row], &hi[row]);
         bias[row] = zsum[row] / R;
         double bse = sqrt((z2sum[row] / R - bias[row] * bias[row]) / R);
         lvl[row] = cp_doc[k][j][q] > 0 ? cp_doc[k][j][q] : SF_SWEEP_CI_LEVEL;
