@@ -350,6 +350,7 @@ expect 0 "7 blocks x 64 rows = 448 runs" "$bin" sensitivity sa.scene --rows 64 -
     --mu 0.45,0.55 --bootstrap 20 --threads 1 --out sg.tsv
 err_lacks "rows given" "64 rows"; err_lacks "rows used" "64 rows"
 err_has "slipfield sensitivity: 448 runs done in" "stage: runs done at 64 rows"
+err_has "total indices below 0.1 (the smallest: ST of" "small total indices: their intervals' measured level"
 # a key the scene sets is reported, with the option that replaces it; the others not
 cp sa.scene sl.scene; printf 'l = 0.2\nmu_mean = 0.5\n' >> sl.scene
 expect 0 "warning: key 'l' is ignored: the study draws it from its range (--log-lr)" \
