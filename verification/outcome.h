@@ -36,6 +36,10 @@ typedef struct {
     const struct sf_drift_summary *drift;  /* NULL: no baseline given */
 } sf_run_meta;
 
+/* The CPU time of the run's case processes [s], summed (a case without
+ * one counts 0): the tier's cost, which a busy machine hardly changes. */
+double sf_outcome_cpu_total(const sf_outcome *o, size_t n);
+
 /* "PASS", "FAIL" or "ERROR". */
 const char *sf_verdict_name(int verdict);
 

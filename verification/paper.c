@@ -395,7 +395,8 @@ int sf_paper_report(const sf_run_meta *meta, const sf_outcome *o, size_t n, char
                    "realisations (the plots still show one).\n"
                    "- Each claim's sentence is turned into a testable statement (the \"read:\" part of its text); "
                    "where the paper gives no number (\"slightly\", \"massively\", \"vanishing\") the margin is ours "
-                   "and stated.\n- This run: %.0f s wall for the %zu cases.\n\n", meta->total_seconds, n);
+                   "and stated.\n- This run: %.0f s wall, %.0f s of CPU for the %zu cases.\n\n", meta->total_seconds,
+                   sf_outcome_cpu_total(o, n), n);
         fputs(sec24, f);
         fputs(sec5, f);
         const char *page = html ? "report.html" : "report.md";

@@ -378,8 +378,8 @@ static void write_index(FILE *f, const sf_run_meta *meta, const sf_outcome *o, s
     sf_paper_index_tally(f, meta->root, o, n, strcmp(page, "report.html") == 0);
     fprintf(f, "- Cases: **%zu passed**, %zu failed, %zu errors, %zu skipped (of %zu selected)\n",
             np, nf, ne, meta->skipped, n + meta->skipped);
-    fprintf(f, "- Tier: %s; seeds: %s; total wall time: %.1f s\n", meta->tier_name, meta->seed_note,
-            meta->total_seconds);
+    fprintf(f, "- Tier: %s; seeds: %s; total wall time: %.1f s; CPU time of the cases: %.1f s\n", meta->tier_name,
+            meta->seed_note, meta->total_seconds, sf_outcome_cpu_total(o, n));
     fprintf(f, "- slipfield %s (git %s); GSL %s; %s\n", SF_VERSION, SF_GIT_REV, GSL_VERSION, fftw_version);
     size_t nedge = 0;
     for (size_t i = 0; i < n; i++)

@@ -410,6 +410,7 @@ int sf_results_write(const sf_run_meta *meta, sf_outcome *o, size_t n,
     json_object_set_new(s, "tier", jstr(meta->tier_name));
     json_object_set_new(s, "seeds", jstr(meta->seed_note));
     json_object_set_new(s, "wall_seconds", json_real(isfinite(meta->total_seconds) ? meta->total_seconds : 0));
+    json_object_set_new(s, "cpu_seconds", json_real(sf_outcome_cpu_total(o, n)));
     json_object_set_new(s, "near_edge_threshold", json_real(SF_NEAR_EDGE));
     json_object_set_new(s, "baseline", baseline ? jstr(baseline) : json_null());
 
