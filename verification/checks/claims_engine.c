@@ -535,6 +535,27 @@ int claims_sequential_decide(const claim_spec *cs, const size_t *N, size_t L, si
     return e.status;
 }
 
+/* The F distribution's upper (upper = 1: Q) or lower (P) p-quantile;
+ * where GSL's inverse returns no number (small p, large denominator
+ * degrees of freedom) by bisection on its distribution function. */
+static double f_quantile(double p, double d1, double d2, int upper)
+{
+    double x = upper ? gsl_cdf_fdist_Qinv(p, d1, d2) : gsl_cdf_fdist_Pinv(p, d1, d2);
+    if (isfinite(x) || !(p > 0 && p < 1))
+        return x;
+    double lo = 0, hi = 1;
+    while (hi < 1e300 && (upper ? gsl_cdf_fdist_Q(hi, d1, d2) > p : gsl_cdf_fdist_P(hi, d1, d2) < p))
+        hi *= 2;
+    for (int it = 0; it < 200 && hi - lo > 1e-15 * hi; it++) {
+        double mid = 0.5 * (lo + hi);
+        if (upper ? gsl_cdf_fdist_Q(mid, d1, d2) > p : gsl_cdf_fdist_P(mid, d1, d2) < p)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    return 0.5 * (lo + hi);
+}
+
 /* Evaluate a claim under definition dd; returns 0 when its points are
  * not in this sweep. */
 static int claim_eval_at(const claim_spec *c, const cpoint *pt, size_t K, int dd, double alpha, claim_eval *e)
@@ -608,8 +629,8 @@ static int claim_eval_at(const claim_spec *c, const cpoint *pt, size_t K, int dd
         }
         double F = (Bs / dfb) / (W / dfw);
         e->est = F;
-        e->lo = F / gsl_cdf_fdist_Qinv(alpha, dfb, dfw);
-        e->hi = F / gsl_cdf_fdist_Pinv(alpha, dfb, dfw);
+        e->lo = F / f_quantile(alpha, dfb, dfw, 1);
+        e->hi = F / f_quantile(alpha, dfb, dfw, 0);
         e->status = !(dfb >= 1 && dfw >= 1 && isfinite(F)) ? SF_CLAIM_UNDECIDED
                   : gsl_cdf_fdist_Q(F, dfb, dfw) < alpha ? SF_CLAIM_CONFIRMED
                   : gsl_cdf_fdist_P(F, dfb, dfw) < alpha ? SF_CLAIM_CONTRADICTED : SF_CLAIM_UNDECIDED;
@@ -823,6 +844,32 @@ static const char *model_short(int s)
     return s == SF_CLAIM_WITHIN ? "within margin" : s == SF_CLAIM_UNDECIDED ? "budget reached" : status_short(s);
 }
 
+/* Futility (non-binding): at look j of L, whether the claim's last look
+ * could decide it.  The last look's standard error is projected from
+ * this look's, se sqrt(N_j / N_L) (every test's se falls as 1 / sqrt(N)
+ * at fixed spread), at the last look's level aL; futile when neither a
+ * final estimate equal to this one nor one a standard error of this look
+ * either side of it would be confirmed, contradicted or within the
+ * margin.  Stopping for futility only gives up verdicts, so a wrong one
+ * keeps its probability at most the claim's share (the union bound
+ * above); it saves the looks a claim whose truth sits at its threshold
+ * would spend to no verdict. */
+static int model_futile(const claim_spec *cs, double est, double se, double df, size_t Nj, size_t NL, double aL,
+                        double margin, int logscale)
+{
+    if (cs->kind == K_CLUSTER || Nj >= NL || !isfinite(est) || !isfinite(se) || !(se > 0))
+        return 0;
+    double f = sqrt((double)Nj / (double)NL), sL = se * f, dL = df / (f * f);
+    for (int u = -1; u <= 1; u++) {
+        claim_eval e = { 0 };
+        decide(&e, cs, est + u * se, sL, dL, aL, logscale);
+        within_margin(&e, cs, aL, margin);
+        if (e.status != SF_CLAIM_UNDECIDED)
+            return 0;
+    }
+    return 1;
+}
+
 /* The verdicts about the model (the design above claims_model_looks):
  * every claim of spec with its points in the sweep pt (look 1, N_1 =
  * pt's n) gets looks at 2 N_1, 4 N_1, ... up to the case's model_budget
@@ -855,7 +902,10 @@ static int claims_model(const sf_case *c, sf_result *r, const claim_spec *spec, 
            *se = check_alloc((nc + 1) * CLAIMS_MAX_LOOKS * sizeof *se),
            *df = check_alloc((nc + 1) * CLAIMS_MAX_LOOKS * sizeof *df), *blo = check_alloc((nc + 1) * sizeof *blo),
            *bhi = check_alloc((nc + 1) * sizeof *bhi), *mg = check_alloc((nc + 1) * sizeof *mg);
+    int *fut = check_alloc((nc + 1) * sizeof *fut);
     memset(own, 0, K * sizeof *own);
+    memset(fut, 0, (nc + 1) * sizeof *fut);
+    size_t nfut = 0;
     double worst = 0, t0 = cpu_s();
     int rc = SF_SUCCESS, perpoint = pbl->n > 0;
     char ck[300];
@@ -875,7 +925,7 @@ static int claims_model(const sf_case *c, sf_result *r, const claim_spec *spec, 
     }
     for (size_t j = 0; j < Lmax && rc == SF_SUCCESS; j++) {
         for (size_t i = 0; i < nc && rc == SF_SUCCESS; i++) {   /* the open claims' points at their N_j */
-            if (st[i] != SF_CLAIM_UNDECIDED || lk[i] + 1 < j || j >= Lc[i])
+            if (st[i] != SF_CLAIM_UNDECIDED || fut[i] || lk[i] + 1 < j || j >= Lc[i])
                 continue;
             const char *sel[2] = { spec[i].a, spec[i].b };
             size_t Nj = Nc[i * CLAIMS_MAX_LOOKS + j];
@@ -900,7 +950,7 @@ static int claims_model(const sf_case *c, sf_result *r, const claim_spec *spec, 
             }
         }
         for (size_t i = 0; i < nc && rc == SF_SUCCESS; i++) {   /* each open claim's verdict at look j */
-            if (st[i] != SF_CLAIM_UNDECIDED || lk[i] + 1 < j || j >= Lc[i])
+            if (st[i] != SF_CLAIM_UNDECIDED || fut[i] || lk[i] + 1 < j || j >= Lc[i])
                 continue;
             const size_t *N = Nc + i * CLAIMS_MAX_LOOKS, L = Lc[i];
             double aj = claims_look_alpha(alpha, N, L, j, spend);
@@ -925,6 +975,14 @@ static int claims_model(const sf_case *c, sf_result *r, const claim_spec *spec, 
                 st[i] = claims_sequential_decide(&spec[i], N, L, j + 1, est + i * CLAIMS_MAX_LOOKS,
                                                  se + i * CLAIMS_MAX_LOOKS, df + i * CLAIMS_MAX_LOOKS, alpha, mg[i],
                                                  e.logscale, spend, &look, &blo[i], &bhi[i]);
+                if (st[i] == SF_CLAIM_UNDECIDED && j + 1 < L &&
+                    model_futile(&spec[i], e.est_t, e.se, e.df, N[j], N[L - 1],
+                                 claims_look_alpha(alpha, N, L, L - 1, spend), mg[i], e.logscale)) {
+                    fut[i] = 1;
+                    st[i] = SF_CLAIM_UNDECIDED;
+                    lk[i] = j;
+                    nfut++;
+                }
             }
         }
     }
@@ -957,11 +1015,14 @@ static int claims_model(const sf_case *c, sf_result *r, const claim_spec *spec, 
                    "tests, directional claims); an equivalence claim's margin is the claim.%s Each claim's model "
                    "verdict spends its own alpha = %.3g (the case's alpha over the claims judged) over the looks by "
                    "the Pocock-type alpha-spending function of Lan & DeMets (1983), alpha ln(1 + (e - 1) t), t = N / "
-                   "%zu, by the union bound: look levels %s. Reported, not gated (the gates are the verdicts above). "
-                   "CPU of the looks beyond N = %zu: %.1f s.\n\n| claim | verdict at N = %zu | model verdict | N it "
+                   "%zu, by the union bound: look levels %s. A claim stops for futility (non-binding: it only gives "
+                   "up verdicts) when its last look could not decide it: neither for a final estimate equal to this "
+                   "look's nor one of this look's standard errors either side, with the standard error projected to "
+                   "the budget as 1 / sqrt(N) (%zu claims stopped so). Reported, not gated (the gates are the "
+                   "verdicts above). CPU of the looks beyond N = %zu: %.1f s.\n\n| claim | verdict at N = %zu | model verdict | N it "
                    "took | estimate [bounds at its look's level] | MDE at that N | margin | budget |\n"
                    "|---|---|---|---|---|---|---|---|",
-                ns, c->spec.model_budget, N[0], pbs, alpha, N[L - 1], lv, N[0], cpu, N[0]);
+                ns, c->spec.model_budget, N[0], pbs, alpha, N[L - 1], lv, nfut, N[0], cpu, N[0]);
         for (size_t i = 0; i < nc; i++) {
             if (st[i] < 0)
                 continue;
@@ -984,7 +1045,7 @@ static int claims_model(const sf_case *c, sf_result *r, const claim_spec *spec, 
             else
                 snprintf(mgs, sizeof mgs, "%s", cs->kind == K_CLUSTER ? "none (F test)" : "the claim's");
             sf_note(r, "| %s | %s | %s | %zu%s | %.4g [%.4g, %.4g] | %.3g%s | %s | %zu |", cs->id,
-                    status_short(e0.status), model_short(st[i]), Ni[j], st[i] == SF_CLAIM_UNDECIDED ? " (budget)" : "",
+                    status_short(e0.status), model_short(st[i]), Ni[j], fut[i] ? " (futile)" : st[i] == SF_CLAIM_UNDECIDED ? " (budget)" : "",
                     m.est, m.lo, m.hi, m.mde, logk ? " (factor)" : "", mgs, m.budget);
         }
         sf_check_le(r, "model verdicts' looks: an extended point's realisation 0 (copied from the look before) and its "
@@ -994,7 +1055,7 @@ static int claims_model(const sf_case *c, sf_result *r, const claim_spec *spec, 
     for (size_t k = 0; k < K; k++)
         if (own[k])
             cpoint_free(&cur[k]);
-    free(cur); free(own); free(st); free(lk); free(Lc); free(Nc); free(est); free(se); free(df); free(blo); free(bhi);
+    free(cur); free(own); free(fut); free(st); free(lk); free(Lc); free(Nc); free(est); free(se); free(df); free(blo); free(bhi);
     free(mg);
     return rc;
 }
