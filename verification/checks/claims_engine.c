@@ -988,7 +988,9 @@ static int claims_model(const sf_case *c, sf_result *r, const claim_spec *spec, 
     }
     double cpu = cpu_s() - t0;
     if (rc == SF_SUCCESS) {
-        size_t N[CLAIMS_MAX_LOOKS], L = claims_model_looks(pt[0].n, c->spec.model_budget, N);
+        size_t N[CLAIMS_MAX_LOOKS] = { 0 }, L = claims_model_looks(pt[0].n, c->spec.model_budget, N);
+        if (!L)   /* no looks (n1 = 0): the note's one look at N_1 */
+            N[L++] = pt[0].n;
         char lv[400] = "", ns[200] = "", pbs[600] = "";
         for (size_t j = 0, u = 0, v = 0; j < L; j++) {
             u += (size_t)snprintf(ns + u, u < sizeof ns ? sizeof ns - u : 0, "%s%zu", !j ? "" : j + 1 < L ? ", " : " and ",
