@@ -228,6 +228,7 @@ static const sf_key spec_keys[] = {
     { "held_stops", SF_KEY_SIZE, OFF(held_stops), 0, 0, 1e6, 0, 0, "0", "1", NULL, "stress_run: runs that the step budget (max_steps) must stop at a quadrature cell holding the centre of rotation (a regression case's expectation; unset: no expectation)" },
     { "looks", SF_KEY_SIZE, OFF(looks), 0, 1, 4, 0, 0, "1", "1", NULL, "claims: group-sequential looks at N, 2N, ... realisations per point (N = samples) until every claim the tier demands a verdict on is decided; each look tests at alpha / looks (Bonferroni over the looks)" },
     { "model_budget", SF_KEY_SIZE, OFF(model_budget), 0, 0, 1e6, 0, 0, "0", "1", NULL, "claims: after the verdict at N = samples, a verdict about the model from looks at 2N, 4N, ... realisations per point (the first N reused) up to this budget, stopping when the claim is confirmed, contradicted or within its margin (Lan-DeMets alpha spending over the looks); 0: none" },
+    { "model_budgets", SF_KEY_LIST, OFF(model_budgets), 0, 0, 1e6, 0, 0, "", "", NULL, "claims: per sweep point (one value each, each samples x a power of 2), the model verdicts' budget there; a claim's budget is the smallest at its points, model_budget the largest; unset: model_budget everywhere" },
     { "sweep2", SF_KEY_LIST, OFF(sweep2), 0, -INF, INF, 0, 0, "", "", NULL, "second list of values" },
 };
 #define NSPEC (sizeof spec_keys / sizeof spec_keys[0])

@@ -16,7 +16,7 @@
 enum { SF_TIER_QUICK = 0, SF_TIER_FULL = 1, SF_TIER_PAPER = 2 };
 enum { SF_VV_CODE = 0, SF_VV_SOLUTION = 1, SF_VV_VALIDATION = 2 };
 
-#define SF_CASE_SPEC_MAX_KEYS 16
+#define SF_CASE_SPEC_MAX_KEYS 24
 
 /* What a case checks and how: the keys of a case's scene block that the
  * solver does not read.  They share the scene's file format and parser
@@ -53,6 +53,12 @@ typedef struct {
     /* claims: the model verdicts' budget, realisations a point (0: no
      * model verdicts; claims_engine.c, docs/design.md sec. 7.7) */
     size_t model_budget;
+    /* claims: per sweep point (one value each), the model verdicts' budget
+     * there, each samples x a power of 2 (so that the looks of claims that
+     * share a point are nested); a claim's budget is the smallest at its
+     * points; model_budget is then the largest (empty: model_budget at
+     * every point) */
+    sf_list model_budgets;
     /* which keys the block set (index into the table) */
     unsigned char set[SF_CASE_SPEC_MAX_KEYS];
 } sf_case_spec;

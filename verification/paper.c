@@ -44,7 +44,11 @@ static void model_cell(FILE *f, const sf_claim_row *c)
         return;
     }
     if (m->status == SF_CLAIM_UNDECIDED)
-        fprintf(f, "none: **budget reached** (N = %zu), the effect in [%.4g, %.4g]", m->n, m->lo, m->hi);
+        if (m->n < m->budget)   /* stopped for futility: its budget could not decide it */
+            fprintf(f, "none: **budget reached** (stopped at N = %zu of %zu for futility), the effect in [%.4g, %.4g]",
+                    m->n, m->budget, m->lo, m->hi);
+        else
+            fprintf(f, "none: **budget reached** (N = %zu), the effect in [%.4g, %.4g]", m->n, m->lo, m->hi);
     else
         fprintf(f, "**%s** at N = %zu (%.4g [%.4g, %.4g])", sf_claim_model_name(m->status), m->n, m->est, m->lo, m->hi);
     if (isfinite(m->mde))

@@ -477,6 +477,28 @@ double claims_look_alpha(double alpha, const size_t *N, size_t L, size_t j, int 
     return spend_fn(alpha, (double)N[j] / tl, spend) - (j ? spend_fn(alpha, (double)N[j - 1] / tl, spend) : 0);
 }
 
+/* The per-point budgets (case key model_budgets, one per sweep point, or
+ * the case's model_budget at every point) are valid when each is n1 x a
+ * power of 2 and budget (model_budget) is the largest: the looks of
+ * claims with different budgets are then one doubling sequence cut at
+ * each claim's budget, so a point two claims share is at the same N
+ * whenever both look at it. */
+int claims_budgets_ok(size_t n1, size_t budget, const double *pb, size_t npb, size_t K)
+{
+    if (!npb)
+        return 1;
+    double top = 0;
+    if (npb != K || !n1)
+        return 0;
+    for (size_t k = 0; k < npb; k++) {
+        double m = pb[k] / (double)n1;
+        if (!(m >= 1) || m > 1e6 || m != floor(m) || ((size_t)m & ((size_t)m - 1)))
+            return 0;
+        top = fmax(top, pb[k]);
+    }
+    return top == (double)budget;
+}
+
 /* An undecided directional verdict e at level alpha: within the margin
  * m (on the test's scale) when both one-sided tests against thr - m and
  * thr + m reject (TOST). */
@@ -511,6 +533,27 @@ int claims_sequential_decide(const claim_spec *cs, const size_t *N, size_t L, si
     if (hi)
         *hi = e.hi;
     return e.status;
+}
+
+/* The F distribution's upper (upper = 1: Q) or lower (P) p-quantile;
+ * where GSL's inverse returns no number (small p, large denominator
+ * degrees of freedom) by bisection on its distribution function. */
+static double f_quantile(double p, double d1, double d2, int upper)
+{
+    double x = upper ? gsl_cdf_fdist_Qinv(p, d1, d2) : gsl_cdf_fdist_Pinv(p, d1, d2);
+    if (isfinite(x) || !(p > 0 && p < 1))
+        return x;
+    double lo = 0, hi = 1;
+    while (hi < 1e300 && (upper ? gsl_cdf_fdist_Q(hi, d1, d2) > p : gsl_cdf_fdist_P(hi, d1, d2) < p))
+        hi *= 2;
+    for (int it = 0; it < 200 && hi - lo > 1e-15 * hi; it++) {
+        double mid = 0.5 * (lo + hi);
+        if (upper ? gsl_cdf_fdist_Q(mid, d1, d2) > p : gsl_cdf_fdist_P(mid, d1, d2) < p)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    return 0.5 * (lo + hi);
 }
 
 /* Evaluate a claim under definition dd; returns 0 when its points are
@@ -586,8 +629,8 @@ static int claim_eval_at(const claim_spec *c, const cpoint *pt, size_t K, int dd
         }
         double F = (Bs / dfb) / (W / dfw);
         e->est = F;
-        e->lo = F / gsl_cdf_fdist_Qinv(alpha, dfb, dfw);
-        e->hi = F / gsl_cdf_fdist_Pinv(alpha, dfb, dfw);
+        e->lo = F / f_quantile(alpha, dfb, dfw, 1);
+        e->hi = F / f_quantile(alpha, dfb, dfw, 0);
         e->status = !(dfb >= 1 && dfw >= 1 && isfinite(F)) ? SF_CLAIM_UNDECIDED
                   : gsl_cdf_fdist_Q(F, dfb, dfw) < alpha ? SF_CLAIM_CONFIRMED
                   : gsl_cdf_fdist_P(F, dfb, dfw) < alpha ? SF_CLAIM_CONTRADICTED : SF_CLAIM_UNDECIDED;
@@ -801,6 +844,32 @@ static const char *model_short(int s)
     return s == SF_CLAIM_WITHIN ? "within margin" : s == SF_CLAIM_UNDECIDED ? "budget reached" : status_short(s);
 }
 
+/* Futility (non-binding): at look j of L, whether the claim's last look
+ * could decide it.  The last look's standard error is projected from
+ * this look's, se sqrt(N_j / N_L) (every test's se falls as 1 / sqrt(N)
+ * at fixed spread), at the last look's level aL; futile when neither a
+ * final estimate equal to this one nor one a standard error of this look
+ * either side of it would be confirmed, contradicted or within the
+ * margin.  Stopping for futility only gives up verdicts, so a wrong one
+ * keeps its probability at most the claim's share (the union bound
+ * above); it saves the looks a claim whose truth sits at its threshold
+ * would spend to no verdict. */
+static int model_futile(const claim_spec *cs, double est, double se, double df, size_t Nj, size_t NL, double aL,
+                        double margin, int logscale)
+{
+    if (cs->kind == K_CLUSTER || Nj >= NL || !isfinite(est) || !isfinite(se) || !(se > 0))
+        return 0;
+    double f = sqrt((double)Nj / (double)NL), sL = se * f, dL = df / (f * f);
+    for (int u = -1; u <= 1; u++) {
+        claim_eval e = { 0 };
+        decide(&e, cs, est + u * se, sL, dL, aL, logscale);
+        within_margin(&e, cs, aL, margin);
+        if (e.status != SF_CLAIM_UNDECIDED)
+            return 0;
+    }
+    return 1;
+}
+
 /* The verdicts about the model (the design above claims_model_looks):
  * every claim of spec with its points in the sweep pt (look 1, N_1 =
  * pt's n) gets looks at 2 N_1, 4 N_1, ... up to the case's model_budget
@@ -813,7 +882,12 @@ static const char *model_short(int s)
 static const char *ckpt_path(const sf_case *c, size_t k, char *buf, size_t n);
 static int claims_model(const sf_case *c, sf_result *r, const claim_spec *spec, const cpoint *pt, size_t K)
 {
-    size_t N[CLAIMS_MAX_LOOKS], L = claims_model_looks(pt[0].n, c->spec.model_budget, N);
+    const sf_list *pbl = &c->spec.model_budgets;
+    if (!claims_budgets_ok(pt[0].n, c->spec.model_budget, pbl->v, pbl->n, K)) {
+        sf_note(r, "**model_budgets:** one value per sweep point (%zu), each samples (%zu) x a power of 2, the "
+                   "largest equal to model_budget (%zu).", K, pt[0].n, c->spec.model_budget);
+        return SF_EFAIL;
+    }
     double alpha = claim_alpha(c, spec, pt, K) * (double)claims_looks(c);   /* the claim's share, as at one look */
     const int spend = CLAIMS_SPEND_POCOCK;
     size_t nc = 0;
@@ -822,33 +896,45 @@ static int claims_model(const sf_case *c, sf_result *r, const claim_spec *spec, 
     cpoint *cur = check_alloc(K * sizeof *cur);
     memcpy(cur, pt, K * sizeof *cur);   /* shallow: a point not extended is the sweep's */
     int *own = check_alloc(K * sizeof *own), *st = check_alloc((nc + 1) * sizeof *st);
-    size_t *lk = check_alloc((nc + 1) * sizeof *lk);
-    double *est = check_alloc((nc + 1) * L * sizeof *est), *se = check_alloc((nc + 1) * L * sizeof *se),
-           *df = check_alloc((nc + 1) * L * sizeof *df), *blo = check_alloc((nc + 1) * sizeof *blo),
+    size_t *lk = check_alloc((nc + 1) * sizeof *lk), *Lc = check_alloc((nc + 1) * sizeof *Lc),
+           *Nc = check_alloc((nc + 1) * CLAIMS_MAX_LOOKS * sizeof *Nc), Lmax = 0;
+    double *est = check_alloc((nc + 1) * CLAIMS_MAX_LOOKS * sizeof *est),
+           *se = check_alloc((nc + 1) * CLAIMS_MAX_LOOKS * sizeof *se),
+           *df = check_alloc((nc + 1) * CLAIMS_MAX_LOOKS * sizeof *df), *blo = check_alloc((nc + 1) * sizeof *blo),
            *bhi = check_alloc((nc + 1) * sizeof *bhi), *mg = check_alloc((nc + 1) * sizeof *mg);
+    int *fut = check_alloc((nc + 1) * sizeof *fut);
     memset(own, 0, K * sizeof *own);
+    memset(fut, 0, (nc + 1) * sizeof *fut);
+    size_t nfut = 0;
     double worst = 0, t0 = cpu_s();
-    int rc = SF_SUCCESS;
+    int rc = SF_SUCCESS, perpoint = pbl->n > 0;
     char ck[300];
-    for (size_t i = 0; i < nc; i++) {
+    for (size_t i = 0; i < nc; i++) {   /* each claim's looks: the doubling sequence cut at its budget */
         const claim_spec *cs = &spec[i];
         int a = claims_pick(pt, K, cs->a), b = claims_pick(pt, K, cs->b);
         st[i] = a < 0 || (cs->b && b < 0) ? -1 : SF_CLAIM_UNDECIDED;   /* -1: not in this sweep */
         lk[i] = 0;
         mg[i] = st[i] < 0 ? NAN : claims_margin(cs, pt, K);
+        size_t B = c->spec.model_budget;
+        if (perpoint && a >= 0)
+            B = (size_t)pbl->v[a];
+        if (perpoint && b >= 0 && (size_t)pbl->v[b] < B)
+            B = (size_t)pbl->v[b];
+        Lc[i] = claims_model_looks(pt[0].n, B, Nc + i * CLAIMS_MAX_LOOKS);
+        Lmax = st[i] >= 0 && Lc[i] > Lmax ? Lc[i] : Lmax;
     }
-    for (size_t j = 0; j < L && rc == SF_SUCCESS; j++) {
-        double aj = claims_look_alpha(alpha, N, L, j, spend);
-        for (size_t i = 0; i < nc && rc == SF_SUCCESS; i++) {   /* the open claims' points at N_j */
-            if (st[i] != SF_CLAIM_UNDECIDED || lk[i] + 1 < j)
+    for (size_t j = 0; j < Lmax && rc == SF_SUCCESS; j++) {
+        for (size_t i = 0; i < nc && rc == SF_SUCCESS; i++) {   /* the open claims' points at their N_j */
+            if (st[i] != SF_CLAIM_UNDECIDED || fut[i] || lk[i] + 1 < j || j >= Lc[i])
                 continue;
             const char *sel[2] = { spec[i].a, spec[i].b };
+            size_t Nj = Nc[i * CLAIMS_MAX_LOOKS + j];
             for (int u = 0; u < 2 && rc == SF_SUCCESS; u++) {
                 int k = claims_pick(pt, K, sel[u]);
-                if (k < 0 || cur[k].n >= N[j])
+                if (k < 0 || cur[k].n >= Nj)
                     continue;
                 sf_scene sl = c->scene;
-                sl.samples = N[j];
+                sl.samples = Nj;
                 cpoint np;
                 if (claims_point(&sl, c->spec.sweep_param, pt[k].val, &np, r, ckpt_path(c, (size_t)k, ck, sizeof ck),
                                  &cur[k])) {
@@ -864,13 +950,21 @@ static int claims_model(const sf_case *c, sf_result *r, const claim_spec *spec, 
             }
         }
         for (size_t i = 0; i < nc && rc == SF_SUCCESS; i++) {   /* each open claim's verdict at look j */
-            if (st[i] != SF_CLAIM_UNDECIDED || lk[i] + 1 < j)
+            if (st[i] != SF_CLAIM_UNDECIDED || fut[i] || lk[i] + 1 < j || j >= Lc[i])
                 continue;
+            const size_t *N = Nc + i * CLAIMS_MAX_LOOKS, L = Lc[i];
+            double aj = claims_look_alpha(alpha, N, L, j, spend);
+            int a = claims_pick(pt, K, spec[i].a), b = claims_pick(pt, K, spec[i].b);
+            if (cur[a].n != N[j] || (b >= 0 && cur[b].n != N[j])) {   /* the nesting claims_budgets_ok ensures */
+                sf_note(r, "**%s: its points are not at N = %zu at look %zu.**", spec[i].id, N[j], j + 1);
+                rc = SF_EFAIL;
+                break;
+            }
             claim_eval e;
             claim_eval_at(&spec[i], cur, K, D_OURS, aj, &e);
-            est[i * L + j] = e.est_t;
-            se[i * L + j] = e.se;
-            df[i * L + j] = e.df;
+            est[i * CLAIMS_MAX_LOOKS + j] = e.est_t;
+            se[i * CLAIMS_MAX_LOOKS + j] = e.se;
+            df[i * CLAIMS_MAX_LOOKS + j] = e.df;
             lk[i] = j;
             if (spec[i].kind == K_CLUSTER) {   /* no standard error: the F test's verdict at the look's level */
                 st[i] = e.status;
@@ -878,14 +972,26 @@ static int claims_model(const sf_case *c, sf_result *r, const claim_spec *spec, 
                 bhi[i] = e.hi;
             } else {
                 size_t look;
-                st[i] = claims_sequential_decide(&spec[i], N, L, j + 1, est + i * L, se + i * L, df + i * L, alpha,
-                                                 mg[i], e.logscale, spend, &look, &blo[i], &bhi[i]);
+                st[i] = claims_sequential_decide(&spec[i], N, L, j + 1, est + i * CLAIMS_MAX_LOOKS,
+                                                 se + i * CLAIMS_MAX_LOOKS, df + i * CLAIMS_MAX_LOOKS, alpha, mg[i],
+                                                 e.logscale, spend, &look, &blo[i], &bhi[i]);
+                if (st[i] == SF_CLAIM_UNDECIDED && j + 1 < L &&
+                    model_futile(&spec[i], e.est_t, e.se, e.df, N[j], N[L - 1],
+                                 claims_look_alpha(alpha, N, L, L - 1, spend), mg[i], e.logscale)) {
+                    fut[i] = 1;
+                    st[i] = SF_CLAIM_UNDECIDED;
+                    lk[i] = j;
+                    nfut++;
+                }
             }
         }
     }
     double cpu = cpu_s() - t0;
     if (rc == SF_SUCCESS) {
-        char lv[400] = "", ns[200] = "";
+        size_t N[CLAIMS_MAX_LOOKS] = { 0 }, L = claims_model_looks(pt[0].n, c->spec.model_budget, N);
+        if (!L)   /* no looks (n1 = 0): the note's one look at N_1 */
+            N[L++] = pt[0].n;
+        char lv[400] = "", ns[200] = "", pbs[600] = "";
         for (size_t j = 0, u = 0, v = 0; j < L; j++) {
             u += (size_t)snprintf(ns + u, u < sizeof ns ? sizeof ns - u : 0, "%s%zu", !j ? "" : j + 1 < L ? ", " : " and ",
                                   N[j]);
@@ -894,40 +1000,55 @@ static int claims_model(const sf_case *c, sf_result *r, const claim_spec *spec, 
             u = u < sizeof ns ? u : sizeof ns - 1;
             v = v < sizeof lv ? v : sizeof lv - 1;
         }
+        if (perpoint) {
+            size_t u = (size_t)snprintf(pbs, sizeof pbs, " Budgets per point (model_budgets, chosen by the points' "
+                                        "CPU a realisation):");
+            for (size_t k = 0; k < K && u < sizeof pbs; k++)
+                u += (size_t)snprintf(pbs + u, sizeof pbs - u, "%s %g at %g", k ? "," : "", pbl->v[k], pt[k].val);
+            if (u < sizeof pbs)
+                snprintf(pbs + u, sizeof pbs - u, "; a claim's budget is the smallest at its points, its looks the "
+                         "doubling sequence cut there and its alpha spent with t = N / its budget (the levels below "
+                         "are for the largest budget).");
+        }
         sf_note(r, "\n### Verdicts about the model\n\nA sequential design per claim (claims_engine.c; docs/design.md "
                    "sec. 7.7): looks at N = %s realisations a point (the budget %zu; each look's sample extends the "
                    "last: the first %zu are the verdict's above), at the claim's points only, stopping at the first "
                    "look where the claim is confirmed, contradicted or within its indifference margin (two one-sided "
-                   "tests, directional claims); an equivalence claim's margin is the claim. Each claim's model verdict "
-                   "spends its own alpha = %.3g (the case's alpha over the claims judged) over the looks by the "
-                   "Pocock-type alpha-spending function of Lan & DeMets (1983), alpha ln(1 + (e - 1) t), t = N / %zu, "
-                   "by the union bound: look levels %s. Reported, not gated (the gates are the verdicts above). CPU "
-                   "of the looks beyond N = %zu: %.1f s.\n\n| claim | verdict at N = %zu | model verdict | N it took "
-                   "| estimate [bounds at its look's level] | MDE at that N | margin |\n|---|---|---|---|---|---|---|",
-                ns, c->spec.model_budget, N[0], alpha, N[L - 1], lv, N[0], cpu, N[0]);
+                   "tests, directional claims); an equivalence claim's margin is the claim.%s Each claim's model "
+                   "verdict spends its own alpha = %.3g (the case's alpha over the claims judged) over the looks by "
+                   "the Pocock-type alpha-spending function of Lan & DeMets (1983), alpha ln(1 + (e - 1) t), t = N / "
+                   "%zu, by the union bound: look levels %s. A claim stops for futility (non-binding: it only gives "
+                   "up verdicts) when its last look could not decide it: neither for a final estimate equal to this "
+                   "look's nor one of this look's standard errors either side, with the standard error projected to "
+                   "the budget as 1 / sqrt(N) (%zu claims stopped so). Reported, not gated (the gates are the "
+                   "verdicts above). CPU of the looks beyond N = %zu: %.1f s.\n\n| claim | verdict at N = %zu | model verdict | N it "
+                   "took | estimate [bounds at its look's level] | MDE at that N | margin | budget |\n"
+                   "|---|---|---|---|---|---|---|---|",
+                ns, c->spec.model_budget, N[0], pbs, alpha, N[L - 1], lv, nfut, N[0], cpu, N[0]);
         for (size_t i = 0; i < nc; i++) {
             if (st[i] < 0)
                 continue;
             const claim_spec *cs = &spec[i];
-            size_t j = lk[i];
-            double aj = claims_look_alpha(alpha, N, L, j, spend);
+            const size_t *Ni = Nc + i * CLAIMS_MAX_LOOKS, j = lk[i];
+            double aj = claims_look_alpha(alpha, Ni, Lc[i], j, spend);
             claim_eval e0;
             claim_eval_at(cs, pt, K, D_OURS, claim_alpha(c, spec, pt, K), &e0);
             int logk = e0.logscale;
-            sf_claim_model m = { st[i], N[j], c->spec.model_budget, logk ? exp(est[i * L + j]) : est[i * L + j],
-                                 blo[i], bhi[i], cs->kind == K_CLUSTER ? NAN : claims_mde(se[i * L + j], aj, logk),
+            double ej = est[i * CLAIMS_MAX_LOOKS + j];
+            sf_claim_model m = { st[i], Ni[j], Ni[Lc[i] - 1], logk ? exp(ej) : ej, blo[i], bhi[i],
+                                 cs->kind == K_CLUSTER ? NAN : claims_mde(se[i * CLAIMS_MAX_LOOKS + j], aj, logk),
                                  alpha, isfinite(mg[i]) && logk ? exp(mg[i]) : mg[i] };
             if (cs->kind == K_CLUSTER)
-                m.est = est[i * L + j];
+                m.est = ej;
             sf_claim_set_model(r, cs->id, &m);
             char mgs[48];
             if (isfinite(m.margin))
                 snprintf(mgs, sizeof mgs, "%.3g%s", m.margin, logk ? " (factor)" : "");
             else
                 snprintf(mgs, sizeof mgs, "%s", cs->kind == K_CLUSTER ? "none (F test)" : "the claim's");
-            sf_note(r, "| %s | %s | %s | %zu%s | %.4g [%.4g, %.4g] | %.3g%s | %s |", cs->id, status_short(e0.status),
-                    model_short(st[i]), N[j], st[i] == SF_CLAIM_UNDECIDED ? " (budget)" : "", m.est, m.lo, m.hi,
-                    m.mde, logk ? " (factor)" : "", mgs);
+            sf_note(r, "| %s | %s | %s | %zu%s | %.4g [%.4g, %.4g] | %.3g%s | %s | %zu |", cs->id,
+                    status_short(e0.status), model_short(st[i]), Ni[j], fut[i] ? " (futile)" : st[i] == SF_CLAIM_UNDECIDED ? " (budget)" : "",
+                    m.est, m.lo, m.hi, m.mde, logk ? " (factor)" : "", mgs, m.budget);
         }
         sf_check_le(r, "model verdicts' looks: an extended point's realisation 0 (copied from the look before) and its "
                        "last (run by the extension), each rerun alone on its stream: largest |difference| from its "
@@ -936,7 +1057,8 @@ static int claims_model(const sf_case *c, sf_result *r, const claim_spec *spec, 
     for (size_t k = 0; k < K; k++)
         if (own[k])
             cpoint_free(&cur[k]);
-    free(cur); free(own); free(st); free(lk); free(est); free(se); free(df); free(blo); free(bhi); free(mg);
+    free(cur); free(own); free(fut); free(st); free(lk); free(Lc); free(Nc); free(est); free(se); free(df); free(blo); free(bhi);
+    free(mg);
     return rc;
 }
 
@@ -1199,6 +1321,18 @@ void claims_judge_one(const sf_case *c, sf_result *r, const claim_spec *all, con
     sf_claim_defs(r, defs);
     char dec = claim_demand(c, cs);
     double mde = claim_mde(&e, alpha);
+    if (c->spec.model_budget && c->spec.model_budget == c->scene.samples) {
+        /* model_budget = samples: a one-look design (claims_model_looks gives
+         * N_1 = the budget), its share alpha spent at that look, A(1) =
+         * alpha: the model verdict is this test's, on the case's own N */
+        size_t N[1] = { c->scene.samples }, look;
+        double ml, mh, mdf = df;
+        int ms = claims_sequential_decide(cs, N, 1, 1, &est, &se, &mdf, alpha * (double)claims_looks(c), NAN, 0,
+                                          CLAIMS_SPEND_POCOCK, &look, &ml, &mh);
+        sf_claim_model m = { ms, N[0], N[0], est, ml, mh, claims_mde(se, alpha * (double)claims_looks(c), 0),
+                             alpha * (double)claims_looks(c), NAN };
+        sf_claim_set_model(r, cs->id, &m);
+    }
     sf_note(r, "| %s | %.4g [%.4g, %.4g] | %s | %.3g |", cs->id, e.est, e.lo, e.hi, status_short(e.status), mde);
     claim_gate(r, cs->id, dec, e.status, 0, mde, alpha, claims_looks(c), 0);
 }

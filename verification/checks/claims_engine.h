@@ -63,6 +63,11 @@ int claims_decide(const claim_spec *cs, double est, double se, double df, double
 enum { CLAIMS_SPEND_POCOCK, CLAIMS_SPEND_OBF };
 size_t claims_model_looks(size_t n1, size_t budget, size_t *N);
 double claims_look_alpha(double alpha, const size_t *N, size_t L, size_t j, int spend);
+/* Per-point budgets pb[0 .. npb-1] (npb = 0: none, valid) for K sweep
+ * points with n1 realisations at look 1 and the case's budget: valid when
+ * npb = K, each is n1 x a power of 2 and the largest is budget (the looks
+ * of claims that share a point are then nested).  1 when valid. */
+int claims_budgets_ok(size_t n1, size_t budget, const double *pb, size_t npb, size_t K);
 int claims_sequential_decide(const claim_spec *cs, const size_t *N, size_t L, size_t m, const double *est,
                              const double *se, const double *df, double alpha, double margin, int logscale,
                              int spend, size_t *look, double *lo, double *hi);

@@ -329,6 +329,19 @@ static int chk_claims_synth(const sf_case *c, sf_result *r)
     looks_ok = looks_ok && claims_model_looks(100, 300, Np) == 3 && Np[2] == 300;
     sf_check_true(r, "the model looks: N = 100 to a budget 800 gives 100, 200, 400, 800; to 300, 100, 200, 300",
                   looks_ok, looks_ok ? "as stated" : "other looks");
+    /* per-point budgets: nested doubling sequences, the largest the case's budget */
+    const double pb_ok[3] = { 800, 3200, 3200 }, pb_odd[3] = { 800, 1000, 3200 }, pb_top[3] = { 800, 800, 1600 };
+    int pb_fine = claims_budgets_ok(100, 3200, pb_ok, 3, 3) && claims_budgets_ok(100, 800, NULL, 0, 3) &&
+                  !claims_budgets_ok(100, 3200, pb_odd, 3, 3) && !claims_budgets_ok(100, 3200, pb_top, 3, 3) &&
+                  !claims_budgets_ok(100, 3200, pb_ok, 2, 3);
+    size_t Na[CLAIMS_MAX_LOOKS], Nb[CLAIMS_MAX_LOOKS], La = claims_model_looks(100, 800, Na),
+           Lb = claims_model_looks(100, 3200, Nb);
+    for (size_t j = 0; j < La && j < Lb; j++)
+        pb_fine = pb_fine && Na[j] == Nb[j];
+    pb_fine = pb_fine && Lb == 6 && Nb[5] == 3200;
+    sf_check_true(r, "per-point model budgets (model_budgets): 800, 3200, 3200 for 100 a look valid, 1000 (not 100 x "
+                     "2^k), a largest below model_budget or a list of another length refused; the looks to 800 and "
+                     "to 3200 agree where both look", pb_fine, pb_fine ? "as stated" : "other");
     sf_check_rel(r, "the look levels sum to the model share (the spending function at t = 1)", asum, SEQ_ALPHA, 1e-12);
     sf_check_rel(r, "the first look's level: alpha ln(1 + (e - 1) N_1 / N_L) (Lan & DeMets 1983, Pocock-type)", aj[0],
                  SEQ_ALPHA * log(1 + (exp(1.0) - 1) * (double)N[0] / (double)N[L - 1]), 1e-12);

@@ -757,6 +757,11 @@ static int chk_fig3(const sf_case *c, sf_result *r)
     if (K < 2)
         return SF_EINVAL;
     const double lag = 0.05, L = 4.0;   /* [m] */
+    if (c->spec.model_budget && c->spec.model_budget != N) {   /* its model verdict is its one look at N */
+        sf_note(r, "**model_budget:** this check draws N = samples fields once: model_budget must equal samples "
+                   "(a one-look design) or be unset.");
+        return SF_EINVAL;
+    }
     size_t np = (size_t)(L / 0.005) + 1;
     double *xs = check_alloc(np * sizeof *xs), *mu = check_alloc(np * sizeof *mu);
     double *msi = check_alloc(K * N * sizeof *msi), mm[SF_LIST_MAX], sv[SF_LIST_MAX];
