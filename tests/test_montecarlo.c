@@ -617,6 +617,73 @@ static void assert_stages_done(const sf_sweep_point *a, size_t n_plain, size_t n
     assert_true(t0 <= a->ml.n[0] && t1 <= a->ml.n[1]);
 }
 
+/* The tuples of a paired point as `sweep --tuples` writes them (ratios,
+ * det = 1), replayed through the pure stage rule and interval functions,
+ * give the point's own sizes and intervals bit for bit: they are what the
+ * sweep runs (cases/montecarlo/coverage-estimators.md replays them). */
+static void assert_anti_replay(const sf_sweep_point *p, size_t n_plain, size_t n_pilot)
+{
+    static const double one[SF_SWEEP_NQ] = { 1, 1, 1 };
+    double *t = malloc(p->n * 2 * SF_SWEEP_NQ * sizeof *t);
+    assert_non_null(t);
+    for (size_t i = 0; i < p->n; i++)
+        for (int q = 0; q < SF_SWEEP_NQ; q++) {
+            t[i * 2 * SF_SWEEP_NQ + q] = p->ratio[i * SF_SWEEP_NQ + q];
+            t[i * 2 * SF_SWEEP_NQ + SF_SWEEP_NQ + q] = p->anti.qoi_anti[i * SF_SWEEP_NQ + q] / p->det[q];
+        }
+    size_t n = n_pilot, g;
+    int capped;
+    while (1) {   /* every stage uses a prefix of the final pairs */
+        assert_int_equal(sf_anti_stage(t, 2 * SF_SWEEP_NQ, SF_SWEEP_NQ, one, n, n_pilot, n_plain, NULL, &g, &capped),
+                         SF_SUCCESS);
+        if (g == n)
+            break;
+        assert_true(g > n && g <= p->n);
+        n = g;
+    }
+    assert_int_equal(n, p->n);
+    for (int q = 0; q < SF_SWEEP_NQ; q++) {
+        sf_sweep_anti e;
+        assert_int_equal(sf_anti_interval(t, 2 * SF_SWEEP_NQ, SF_SWEEP_NQ, one, q, n, &e), SF_SUCCESS);
+        assert_true(e.m == p->anti.q[q].m && e.mean == p->anti.q[q].mean && e.se == p->anti.q[q].se);
+        assert_true(e.ci_lo == p->anti.q[q].ci_lo && e.ci_hi == p->anti.q[q].ci_hi);
+    }
+    free(t);
+}
+
+/* The same for two levels: the interval bit for bit, and the final stage
+ * decision (taken at the point's own sizes and costs) is to stop. */
+static void assert_mlmc_replay(const sf_sweep_point *p, size_t n_plain, size_t n_pilot, int boxes)
+{
+    static const double one[SF_SWEEP_NQ] = { 1, 1, 1 };
+    size_t n1 = p->ml.n[1], n0 = p->ml.n[0], g0, g1;
+    double *t = malloc(n1 * 2 * SF_SWEEP_NQ * sizeof *t), *l0 = malloc(n0 * SF_SWEEP_NQ * sizeof *l0);
+    assert_true(t && l0);
+    for (int q = 0; q < SF_SWEEP_NQ; q++) {
+        for (size_t i = 0; i < n1; i++) {
+            t[i * 2 * SF_SWEEP_NQ + q] = p->ratio[i * SF_SWEEP_NQ + q];
+            t[i * 2 * SF_SWEEP_NQ + SF_SWEEP_NQ + q] = p->ml.coarse1[i * SF_SWEEP_NQ + q] / p->det[q];
+        }
+        for (size_t i = 0; i < n0; i++)
+            l0[i * SF_SWEEP_NQ + q] = p->ml.coarse0[i * SF_SWEEP_NQ + q] / p->det[q];
+    }
+    int capped;
+    assert_int_equal(sf_mlmc_next(t, 2 * SF_SWEEP_NQ, SF_SWEEP_NQ, n1, l0, SF_SWEEP_NQ, n0, one, p->ml.cost[0],
+                                  p->ml.cost[1], n_pilot, n_plain, NULL, &g0, &g1, &capped),
+                     SF_SUCCESS);
+    assert_true(g0 == n0 && g1 == n1);
+    for (int q = 0; q < SF_SWEEP_NQ; q++) {
+        sf_sweep_ml e;
+        assert_int_equal(sf_mlmc_interval(t, 2 * SF_SWEEP_NQ, SF_SWEEP_NQ, n1, l0, SF_SWEEP_NQ, n0, one, q, boxes, &e),
+                         SF_SUCCESS);
+        assert_true(e.m[0] == p->ml.q[q].m[0] && e.m[1] == p->ml.q[q].m[1] && e.mean == p->ml.q[q].mean);
+        assert_true(e.se == p->ml.q[q].se && e.df == p->ml.q[q].df);
+        assert_true(e.ci_lo == p->ml.q[q].ci_lo && e.ci_hi == p->ml.q[q].ci_hi);
+    }
+    free(t);
+    free(l0);
+}
+
 /* The two-level estimator: Giles' sizes, the coarse plan, and a point
  * (the same bits on two threads; level 1's fine values are plain Monte
  * Carlo's; its summary columns). */
@@ -692,6 +759,7 @@ static void mlmc_estimator(void **state)
         assert_true(e->var[1] < e->var_fine);   /* one field: the difference varies less than the fine value */
     }
     assert_true(a.ml.cost[0] < a.ml.cost_fine && a.ml.cost_fine < a.ml.cost[1]);
+    assert_mlmc_replay(&a, 8, 3, 0);
     char *text = diag_text("l_over_R", 1, &a);
     assert_true(summary_field(text, "pv_F_ml_ratio_mean[-]") == a.ml.q[SF_SWEEP_PVF].mean);
     assert_true(summary_field(text, "ml_n0") == (double)a.ml.n[0]);
@@ -810,6 +878,7 @@ static void anti_estimator(void **state)
         sq[k] = p.anti.q[k].var_fine;
     }
     assert_true(sf_anti_size(sp, sq, SF_SWEEP_NQ, 40, 3) <= p.n);
+    assert_anti_replay(&p, 40, 3);
     for (int k = 0; k < SF_SWEEP_NQ; k++) {
         const sf_sweep_anti *e = &p.anti.q[k];
         assert_true(isfinite(e->mean) && e->se > 0 && e->ci_lo < e->mean && e->mean < e->ci_hi && e->vrf > 0);
@@ -909,6 +978,7 @@ static void boxes_estimator(void **state)
     assert_true(a.ml.cost[0] < a.ml.cost_fine && isfinite(a.ml.q[0].mean) && a.ml.q[0].se > 0);
     assert_int_equal(a.estimator, SF_EST_MLMC_BOXES);
     assert_stages_done(&a, 40, 3);
+    assert_mlmc_replay(&a, 40, 3, 1);
     for (int q = 0; q < SF_SWEEP_NQ; q++) {   /* the summary: the two-level estimate */
         sf_sweep_answer e;
         assert_int_equal(sf_sweep_estimate(&a, q, &e), SF_SUCCESS);
@@ -992,6 +1062,7 @@ static void sub_estimator(void **state)
     assert_memory_equal(a.ml.q, b.ml.q, sizeof a.ml.q);
     assert_string_equal(sf_sweep_estimator_name(a.estimator), "mlmc-sub");
     assert_stages_done(&a, 40, 3);
+    assert_mlmc_replay(&a, 40, 3, 1);
     for (int q = 0; q < SF_SWEEP_NQ; q++) {   /* the summary: the two-level estimate */
         sf_sweep_answer e;
         assert_int_equal(sf_sweep_estimate(&a, q, &e), SF_SUCCESS);

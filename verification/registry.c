@@ -28,6 +28,7 @@ static const sf_check_def *const families[] = {
     sf_checks_sweepstats,
     sf_checks_estimators,
     sf_checks_mcstop,
+    sf_checks_covest,
     sf_checks_sensitivity,
     sf_checks_beltnoise,
     sf_checks_claims_synth,

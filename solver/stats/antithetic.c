@@ -68,14 +68,15 @@ static int realise_pair(void *ws, size_t i, gsl_rng *rng, double *out)
     return rc;
 }
 
-/* ratio q of the first n pairs: the members a[k], b[k] and pair means
- * h[k] over the k = *m pairs whose both members are finite */
-static void pair_ratios(const double *v, size_t n, const double *det, int q, double *a, double *b, double *h,
-                        size_t *m)
+/* ratio q of the first n pairs (pair i's G member's QoIs at v[i stride],
+ * its partner's at v[i stride + off]): the members a[k], b[k] and pair
+ * means h[k] over the k = *m pairs whose both members are finite */
+static void pair_ratios(const double *v, size_t stride, size_t off, size_t n, const double *det, int q, double *a,
+                        double *b, double *h, size_t *m)
 {
     size_t k = 0;
     for (size_t i = 0; i < n; i++) {
-        double x = v[i * A_OUT + q] / det[q], y = v[i * A_OUT + A_ANTI + q] / det[q];
+        double x = v[i * stride + q] / det[q], y = v[i * stride + off + q] / det[q];
         if (isfinite(x) && isfinite(y)) {
             a[k] = x;
             b[k] = y;
@@ -106,6 +107,60 @@ static double mean_work(const double *v, size_t n, int pair)
     return w / (double)n;
 }
 
+int sf_anti_stage(const double *v, size_t stride, size_t off, const double *det, size_t n, size_t n_pilot,
+                  size_t n_plain, const double *tse, size_t *next, int *capped)
+{
+    double *buf = sf_malloc(5 * (n ? n : 1) * sizeof *buf);
+    if (!buf)
+        return SF_ENOMEM;
+    double *a = buf, *b = a + n, *h = b + n, *mb = h + n;
+    double vp[NQ], vf[NQ];
+    size_t m;
+    for (int q = 0; q < NQ; q++) {
+        pair_ratios(v, stride, off, n, det, q, a, b, h, &m);
+        vp[q] = vf[q] = NAN;   /* fewer than 2 pairs: this ratio sets no size */
+        if (m > 1) {   /* per pair drawn, vp n / m: the size then bounds vp / m, the estimate's */
+            vp[q] = gsl_stats_variance(h, 1, m) * (double)n / (double)m;
+            vf[q] = member_var(a, b, m, mb);
+        }
+    }
+    free(buf);
+    double target[NQ];
+    for (int q = 0; q < NQ; q++)
+        target[q] = tse ? tse[q] * tse[q] : vf[q] / (double)n_plain;
+    double want = sf_anti_want(vp, target, NQ);
+    for (int q = 0; tse && q < NQ; q++)   /* a target whose spread is not known yet: more, to the cap */
+        if (target[q] > 0 && isfinite(target[q]) && !isfinite(vp[q]))
+            want = INFINITY;
+    *capped = want > (double)n_plain;
+    *next = sf_mlmc_stage(n, clampz(want, n_pilot, n_plain));
+    return SF_SUCCESS;
+}
+
+int sf_anti_interval(const double *v, size_t stride, size_t off, const double *det, int q, size_t n,
+                     sf_sweep_anti *e)
+{
+    double *buf = sf_malloc(5 * (n ? n : 1) * sizeof *buf);
+    if (!buf)
+        return SF_ENOMEM;
+    double *a = buf, *b = a + n, *h = b + n, *mb = h + n;
+    size_t m;
+    pair_ratios(v, stride, off, n, det, q, a, b, h, &m);
+    e->m = m;
+    e->mean = e->se = e->rho = e->var_fine = e->ci_lo = e->ci_hi = e->vrf = NAN;
+    if (m >= 2) {   /* a single pair's mean alone is not an interval */
+        e->mean = gsl_stats_mean(h, 1, m);
+        e->se = sqrt(gsl_stats_variance_m(h, 1, m, e->mean) / (double)m);
+        e->rho = m > 2 ? gsl_stats_correlation(a, 1, b, 1, m) : NAN;
+        e->var_fine = member_var(a, b, m, mb);
+        double t = gsl_cdf_tdist_Pinv(0.5 * (1 + SF_SWEEP_CI_LEVEL), (double)(m - 1));
+        e->ci_lo = e->mean - t * e->se;
+        e->ci_hi = e->mean + t * e->se;
+    }
+    free(buf);
+    return SF_SUCCESS;
+}
+
 int sf_sweep_run_antithetic(const sf_scene *s, size_t n_plain, size_t n_pilot, int threads, const char *label,
                             sf_sweep_point *out, char *err, size_t errlen)
 {
@@ -128,39 +183,18 @@ int sf_anti_run(const sf_scene *s, size_t n_plain, size_t n_pilot, const double 
     fine.history = 0;
     out->plan = fine;   /* the rows' (the G members'), for u_num's companion (sweep.h) */
     out->planned = 1;
-    double *pairs = sf_calloc(n_plain * A_OUT, sizeof *pairs), *buf = sf_malloc(5 * n_plain * sizeof *buf);
-    if (!pairs || !buf) {
-        free(pairs);
-        free(buf);
+    double *pairs = sf_calloc(n_plain * A_OUT, sizeof *pairs);
+    if (!pairs)
         return SF_ENOMEM;
-    }
-    double *a = buf, *b = a + n_plain, *h = b + n_plain, *mb = h + n_plain;
     sf_mlmc_ws ctx = { { s, &fine, NULL, NULL, 0 }, NULL, 0, 0, 0, NULL, NULL, 0 };
     sf_mc_ops ops = { sf_mlmc_ws_alloc, sf_mlmc_ws_free, realise_pair };
     sf_mc_spec spec = { n_plain, A_OUT, s->seed, threads, NULL, 0, 0, label };
     rc = sf_mc_run_range(&spec, 0, n_pilot, &ops, &ctx, pairs, NULL, err, errlen);
-    size_t n = n_pilot, m;
+    size_t n = n_pilot;
     int capped = 0;
-    while (!rc) {   /* the size in stages, each from every pair so far (mlmc.h: sf_mlmc_stage) */
-        double vp[NQ], vf[NQ];
-        for (int q = 0; q < NQ; q++) {
-            pair_ratios(pairs, n, out->det, q, a, b, h, &m);
-            vp[q] = vf[q] = NAN;   /* fewer than 2 pairs: this ratio sets no size */
-            if (m > 1) {   /* per pair drawn, vp n / m: the size then bounds vp / m, the estimate's */
-                vp[q] = gsl_stats_variance(h, 1, m) * (double)n / (double)m;
-                vf[q] = member_var(a, b, m, mb);
-            }
-        }
-        double target[NQ];
-        for (int q = 0; q < NQ; q++)
-            target[q] = tse ? tse[q] * tse[q] : vf[q] / (double)n_plain;
-        double want = sf_anti_want(vp, target, NQ);
-        for (int q = 0; tse && q < NQ; q++)   /* a target whose spread is not known yet: more, to the cap */
-            if (target[q] > 0 && isfinite(target[q]) && !isfinite(vp[q]))
-                want = INFINITY;
-        capped = want > (double)n_plain;
-        size_t g = sf_mlmc_stage(n, clampz(want, n_pilot, n_plain));
-        if (g == n)
+    while (!rc) {   /* the size in stages, each from every pair so far (sf_anti_stage) */
+        size_t g;
+        if ((rc = sf_anti_stage(pairs, A_OUT, A_ANTI, out->det, n, n_pilot, n_plain, tse, &g, &capped)) || g == n)
             break;
         rc = sf_mc_run_range(&spec, n, g, &ops, &ctx, pairs, NULL, err, errlen);
         n = g;
@@ -184,21 +218,10 @@ int sf_anti_run(const sf_scene *s, size_t n_plain, size_t n_pilot, const double 
     }
     for (int q = 0; q < NQ && !rc; q++) {
         sf_sweep_anti *e = &out->anti.q[q];
-        pair_ratios(pairs, n, out->det, q, a, b, h, &m);
-        e->m = m;
-        e->mean = e->se = e->rho = e->var_fine = e->ci_lo = e->ci_hi = e->vrf = NAN;
-        if (m < 2)   /* no spread: not estimated (a single pair's mean alone is not an interval) */
-            continue;
-        e->mean = gsl_stats_mean(h, 1, m);
-        e->se = sqrt(gsl_stats_variance_m(h, 1, m, e->mean) / (double)m);
-        e->rho = m > 2 ? gsl_stats_correlation(a, 1, b, 1, m) : NAN;
-        e->var_fine = member_var(a, b, m, mb);
-        double t = gsl_cdf_tdist_Pinv(0.5 * (1 + SF_SWEEP_CI_LEVEL), (double)(m - 1));
-        e->ci_lo = e->mean - t * e->se;
-        e->ci_hi = e->mean + t * e->se;
+        if ((rc = sf_anti_interval(pairs, A_OUT, A_ANTI, out->det, q, n, e)) || e->m < 2)
+            continue;   /* no spread: not estimated (a single pair's mean alone is not an interval) */
         e->vrf = e->var_fine * out->anti.cost_fine / (e->se * e->se * out->anti.work);
     }
     free(pairs);
-    free(buf);
     return rc;
 }

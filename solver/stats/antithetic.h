@@ -50,6 +50,25 @@ size_t sf_anti_size(const double *vpair, const double *vf, int nq, size_t n_plai
  * unclamped. */
 double sf_anti_want(const double *vpair, const double *target, int nq);
 
+/* The stage rule above as a function of the pairs alone (what the
+ * sweep runs, and what cases/montecarlo/coverage-estimators.md replays on
+ * stored pairs): pair i's G member's QoIs at v[i stride + q], its
+ * partner's at v[i stride + off + q] (q < SF_SWEEP_NQ), det[q] the
+ * deterministic values the ratios divide by; from the first n pairs, the
+ * next stage's size *next (n: stop) and *capped (the size asked for is
+ * above n_plain).  tse NULL: plain Monte Carlo's variance at n_plain;
+ * else the ratios' standard-error targets (sf_sweep_run_estimator_se, n_plain then
+ * the cap). */
+int sf_anti_stage(const double *v, size_t stride, size_t off, const double *det, size_t n, size_t n_pilot,
+                  size_t n_plain, const double *tse, size_t *next, int *capped);
+
+/* The estimate and interval of ratio q from the first n pairs (layout as
+ * sf_anti_stage): e's m, mean, se, rho, var_fine and the Student interval
+ * at m - 1 degrees of freedom over the pair means (NaN below 2 usable
+ * pairs); e->vrf NaN (it needs the costs: the sweep sets it). */
+int sf_anti_interval(const double *v, size_t stride, size_t off, const double *det, int q, size_t n,
+                     sf_sweep_anti *e);
+
 /* sf_sweep_run_antithetic (tse NULL) and its target standard errors
  * tse[q] (sweep.h: sf_sweep_run_estimator_se; n_plain the cap). */
 int sf_anti_run(const sf_scene *s, size_t n_plain, size_t n_pilot, const double *tse, int threads, const char *label,

@@ -167,10 +167,11 @@ static int realise_coarse(void *p, size_t i, gsl_rng *rng, double *out)
     return realise(p, rng, 0, out);
 }
 
-/* per ratio q over the first n pairs: the variances of the coarse ratio,
- * of fine - coarse and of the fine ratio (pairs with both finite) */
-static int pair_vars(const double *v, size_t n, const double *det, int q, double *vc, double *vd, double *vf,
-                     size_t *m)
+/* per ratio q over the first n pairs (pair i's fine QoIs at v[i stride],
+ * its coarse at v[i stride + off]): the variances of the coarse ratio, of
+ * fine - coarse and of the fine ratio (pairs with both finite) */
+static int pair_vars(const double *v, size_t stride, size_t off, size_t n, const double *det, int q, double *vc,
+                     double *vd, double *vf, size_t *m)
 {
     double *x = sf_malloc(3 * (n ? n : 1) * sizeof *x);
     if (!x)
@@ -178,7 +179,7 @@ static int pair_vars(const double *v, size_t n, const double *det, int q, double
     double *d = x + n, *f = d + n;
     size_t k = 0;
     for (size_t i = 0; i < n; i++) {
-        double a = v[i * P_OUT + q] / det[q], b = v[i * P_OUT + P_C + q] / det[q];
+        double a = v[i * stride + q] / det[q], b = v[i * stride + off + q] / det[q];
         if (isfinite(a) && isfinite(b)) {
             x[k] = b;
             d[k] = a - b;
@@ -194,13 +195,13 @@ static int pair_vars(const double *v, size_t n, const double *det, int q, double
 }
 
 /* the variance of ratio q (value / det) over level 0's first n samples
- * (NQ values each) that are finite (x: room for n); NAN below 2 */
-static double finite_var(const double *v, size_t n, int q, double det, double *x, size_t *m)
+ * (at v[i stride]) that are finite (x: room for n); NAN below 2 */
+static double finite_var(const double *v, size_t stride, size_t n, int q, double det, double *x, size_t *m)
 {
     size_t k = 0;
     for (size_t i = 0; i < n; i++)
-        if (isfinite(v[i * NQ + q] / det))
-            x[k++] = v[i * NQ + q] / det;
+        if (isfinite(v[i * stride + q] / det))
+            x[k++] = v[i * stride + q] / det;
     *m = k;
     return k > 1 ? gsl_stats_variance(x, 1, k) : NAN;
 }
@@ -216,52 +217,97 @@ static double mean_work(const double *v, size_t n, int fine, int coarse)
     return w / (double)n;
 }
 
+int sf_mlmc_interval(const double *pairs, size_t stride, size_t off, size_t n1, const double *lev0, size_t stride0,
+                     size_t n0, const double *det, int q, int boxes, sf_sweep_ml *e)
+{
+    double vc, vd, vf, sum[2] = { 0, 0 };
+    size_t m1, m0 = 0;
+    int rc = pair_vars(pairs, stride, off, n1, det, q, &vc, &vd, &vf, &m1);
+    if (rc)
+        return rc;
+    for (size_t i = 0; i < n1; i++) {
+        double a = pairs[i * stride + q] / det[q], b = pairs[i * stride + off + q] / det[q];
+        if (isfinite(a) && isfinite(b))
+            sum[1] += a - b;
+    }
+    double *x = sf_malloc((n0 ? n0 : 1) * sizeof *x);
+    if (!x)
+        return SF_ENOMEM;
+    for (size_t i = 0; i < n0; i++) {
+        double b = lev0[i * stride0 + q] / det[q];
+        if (isfinite(b)) {
+            x[m0++] = b;
+            sum[0] += b;
+        }
+    }
+    double v0 = m0 > 1 ? gsl_stats_variance(x, 1, m0) : NAN;
+    free(x);
+    e->m[0] = m0;
+    e->m[1] = m1;
+    e->var[0] = v0;
+    e->var[1] = vd;
+    /* Var Q_c from level 0's many values, plus the pairs' Var Q_f -
+       Var Q_c; on a derived field level 0's values are pair means,
+       and the pairs' Var Q_f stands alone */
+    e->var_fine = boxes ? vf : v0 + (vf - vc);
+    e->mean = sum[0] / (double)m0 + sum[1] / (double)m1;
+    double a = v0 / (double)m0, b = vd / (double)m1;
+    e->se = sqrt(a + b);
+    /* Welch-Satterthwaite; a level of zero variance adds no term */
+    double den = (a > 0 ? a * a / (double)(m0 - 1) : 0) + (b > 0 ? b * b / (double)(m1 - 1) : 0);
+    e->df = den > 0 ? (a + b) * (a + b) / den : NAN;
+    double t = e->df > 0 ? gsl_cdf_tdist_Pinv(0.5 * (1 + SF_SWEEP_CI_LEVEL), e->df) : NAN;
+    e->ci_lo = e->mean - t * e->se;
+    e->ci_hi = e->mean + t * e->se;
+    e->vrf = NAN;
+    return SF_SUCCESS;
+}
+
 static int ml_stats(sf_sweep_point *p, const double *pairs, int boxes)
 {
-    const double *lev0 = p->ml.coarse0;
     for (int q = 0; q < NQ; q++) {
-        double vc, vd, vf, sum[2] = { 0, 0 };
-        size_t m1, m0 = 0;
-        int rc = pair_vars(pairs, p->ml.n[1], p->det, q, &vc, &vd, &vf, &m1);
+        sf_sweep_ml *e = &p->ml.q[q];
+        int rc = sf_mlmc_interval(pairs, P_OUT, P_C, p->ml.n[1], p->ml.coarse0, NQ, p->ml.n[0], p->det, q, boxes, e);
         if (rc)
             return rc;
-        for (size_t i = 0; i < p->ml.n[1]; i++) {
-            double a = pairs[i * P_OUT + q] / p->det[q], b = pairs[i * P_OUT + P_C + q] / p->det[q];
-            if (isfinite(a) && isfinite(b))
-                sum[1] += a - b;
-        }
-        double *x = sf_malloc((p->ml.n[0] ? p->ml.n[0] : 1) * sizeof *x);
-        if (!x)
-            return SF_ENOMEM;
-        for (size_t i = 0; i < p->ml.n[0]; i++) {
-            double b = lev0[i * NQ + q] / p->det[q];
-            if (isfinite(b)) {
-                x[m0++] = b;
-                sum[0] += b;
-            }
-        }
-        double v0 = m0 > 1 ? gsl_stats_variance(x, 1, m0) : NAN;
-        free(x);
-        sf_sweep_ml *e = &p->ml.q[q];
-        e->m[0] = m0;
-        e->m[1] = m1;
-        e->var[0] = v0;
-        e->var[1] = vd;
-        /* Var Q_c from level 0's many values, plus the pairs' Var Q_f -
-           Var Q_c; on a derived field level 0's values are pair means,
-           and the pairs' Var Q_f stands alone */
-        e->var_fine = boxes ? vf : v0 + (vf - vc);
-        e->mean = sum[0] / (double)m0 + sum[1] / (double)m1;
-        double a = v0 / (double)m0, b = vd / (double)m1;
-        e->se = sqrt(a + b);
-        /* Welch-Satterthwaite; a level of zero variance adds no term */
-        double den = (a > 0 ? a * a / (double)(m0 - 1) : 0) + (b > 0 ? b * b / (double)(m1 - 1) : 0);
-        e->df = den > 0 ? (a + b) * (a + b) / den : NAN;
-        double t = e->df > 0 ? gsl_cdf_tdist_Pinv(0.5 * (1 + SF_SWEEP_CI_LEVEL), e->df) : NAN;
-        e->ci_lo = e->mean - t * e->se;
-        e->ci_hi = e->mean + t * e->se;
         e->vrf = e->var_fine * p->ml.cost_fine / (e->se * e->se * p->ml.work);
     }
+    return SF_SUCCESS;
+}
+
+int sf_mlmc_next(const double *pairs, size_t stride, size_t off, size_t n1, const double *lev0, size_t stride0,
+                 size_t n0, const double *det, double c0, double c1, size_t n_pilot, size_t n_plain,
+                 const double *tse, size_t *g0, size_t *g1, int *capped)
+{
+    /* each level's variance per sample drawn, V_l n_l / m_l (m_l of them
+       usable): the sizes then bound sum V_l / m_l, the estimate's */
+    size_t cap0 = SF_MLMC_N0_CAP * n_plain;
+    double v0[NQ], v1[NQ], vf[NQ], vc;
+    double *x = sf_malloc((n0 ? n0 : 1) * sizeof *x);
+    if (!x)
+        return SF_ENOMEM;
+    int rc = SF_SUCCESS;
+    for (int q = 0; q < NQ && !rc; q++) {
+        size_t m, m0;
+        if ((rc = pair_vars(pairs, stride, off, n1, det, q, &vc, &v1[q], &vf[q], &m)))
+            break;   /* m is not set */
+        v1[q] *= m > 1 ? (double)n1 / (double)m : NAN;
+        v0[q] = finite_var(lev0, stride0, n0, q, det[q], x, &m0);
+        v0[q] *= m0 > 1 ? (double)n0 / (double)m0 : NAN;
+    }
+    free(x);
+    if (rc)
+        return rc;
+    double target[NQ], w0, w1;
+    for (int q = 0; q < NQ; q++)
+        target[q] = tse ? tse[q] * tse[q] : vf[q] / (double)n_plain;
+    sf_mlmc_want(v0, v1, target, NQ, c0, c1, &w0, &w1);
+    for (int q = 0; tse && q < NQ; q++)   /* a target whose spread is not known yet: more, to the cap */
+        if (target[q] > 0 && isfinite(target[q]) && !isfinite(v0[q] + v1[q]))
+            w0 = w1 = INFINITY;
+    *capped = w0 > (double)cap0 || w1 > (double)n_plain;
+    *g1 = sf_mlmc_stage(n1, clampz(w1, n_pilot, n_plain));
+    *g0 = sf_mlmc_stage(n0, clampz(w0, n_pilot, cap0));
     return SF_SUCCESS;
 }
 
@@ -330,33 +376,12 @@ static int run_levels(const sf_scene *s, size_t n_plain, size_t n_pilot, const d
         rc = SF_ENOMEM;
     if (!rc)
         rc = sf_mc_run_range(&spec0, 0, n_pilot, &ops0, &ctx, lev0, NULL, err, errlen);
-    double *x = rc ? NULL : sf_malloc(cap0 * sizeof *x);
-    if (!rc && !x)
-        rc = SF_ENOMEM;
-    /* the sizes in stages, each from every sample so far (sf_mlmc_stage) */
+    /* the sizes in stages, each from every sample so far (sf_mlmc_next) */
     while (!rc) {
-        /* each level's variance per sample drawn, V_l n_l / m_l (m_l of
-           them usable): the sizes then bound sum V_l / m_l, the estimate's */
-        double v0[NQ], v1[NQ], vf[NQ], vc;
-        size_t m, m0;
-        for (int q = 0; q < NQ && !rc; q++) {
-            if ((rc = pair_vars(pairs, n1, out->det, q, &vc, &v1[q], &vf[q], &m)))
-                break;   /* m is not set */
-            v1[q] *= m > 1 ? (double)n1 / (double)m : NAN;
-            v0[q] = finite_var(lev0, n0, q, out->det[q], x, &m0);
-            v0[q] *= m0 > 1 ? (double)n0 / (double)m0 : NAN;
-        }
-        if (rc)
+        size_t g0, g1;
+        if ((rc = sf_mlmc_next(pairs, P_OUT, P_C, n1, lev0, NQ, n0, out->det, level0_work(&ctx, pairs, n1),
+                               mean_work(pairs, n1, 1, 1), n_pilot, n_plain, tse, &g0, &g1, &capped)))
             break;
-        double target[NQ], w0, w1;
-        for (int q = 0; q < NQ; q++)
-            target[q] = tse ? tse[q] * tse[q] : vf[q] / (double)n_plain;
-        sf_mlmc_want(v0, v1, target, NQ, level0_work(&ctx, pairs, n1), mean_work(pairs, n1, 1, 1), &w0, &w1);
-        for (int q = 0; tse && q < NQ; q++)   /* a target whose spread is not known yet: more, to the cap */
-            if (target[q] > 0 && isfinite(target[q]) && !isfinite(v0[q] + v1[q]))
-                w0 = w1 = INFINITY;
-        capped = w0 > (double)cap0 || w1 > (double)n_plain;
-        size_t g1 = sf_mlmc_stage(n1, clampz(w1, n_pilot, n_plain)), g0 = sf_mlmc_stage(n0, clampz(w0, n_pilot, cap0));
         if (g1 == n1 && g0 == n0)
             break;
         if (g1 > n1)
@@ -366,7 +391,6 @@ static int run_levels(const sf_scene *s, size_t n_plain, size_t n_pilot, const d
         n1 = g1;
         n0 = g0;
     }
-    free(x);
     if (!rc && (!(out->qoi = sf_calloc(n1 * NQ, sizeof *out->qoi)) ||
                 !(out->ratio = sf_calloc(n1 * NQ, sizeof *out->ratio)) ||
                 !(out->ml.coarse1 = sf_calloc(n1 * NQ, sizeof *out->ml.coarse1))))

@@ -152,6 +152,27 @@ void sf_mlmc_want(const double *v0, const double *v1, const double *target, int 
 void sf_mlmc_sizes(const double *v0, const double *v1, const double *vf, int nq, double c0, double c1,
                    size_t n_plain, size_t n_pilot, size_t *n0, size_t *n1);
 
+/* The stage rule above as a function of the samples alone (what the sweep
+ * runs, and what cases/montecarlo/coverage-estimators.md replays on
+ * stored samples): level 1's pair i has its fine QoIs at
+ * pairs[i stride + q] and its coarse at pairs[i stride + off + q], level
+ * 0's sample i at lev0[i stride0 + q] (q < SF_SWEEP_NQ), det[q] the
+ * deterministic values the ratios divide by, c0 and c1 the levels' mean
+ * work per sample; from the first n0, n1, the next stage's sizes *g0,
+ * *g1 (both unchanged: stop) and *capped (a size asked for is above its
+ * cap: n_plain, SF_MLMC_N0_CAP n_plain).  tse as sf_anti_stage's. */
+int sf_mlmc_next(const double *pairs, size_t stride, size_t off, size_t n1, const double *lev0, size_t stride0,
+                 size_t n0, const double *det, double c0, double c1, size_t n_pilot, size_t n_plain,
+                 const double *tse, size_t *g0, size_t *g1, int *capped);
+
+/* The two-level estimate and interval of ratio q from those samples
+ * (sweep.h: sf_sweep_ml; boxes: level 0 on a derived field, its values
+ * pair means, var_fine the pairs' own): m, var, var_fine, mean, se, the
+ * Welch-Satterthwaite df and the Student interval at it; e->vrf NaN (it
+ * needs the work: the sweep sets it). */
+int sf_mlmc_interval(const double *pairs, size_t stride, size_t off, size_t n1, const double *lev0, size_t stride0,
+                     size_t n0, const double *det, int q, int boxes, sf_sweep_ml *e);
+
 #ifdef __cplusplus
 }
 #endif

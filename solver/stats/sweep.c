@@ -382,6 +382,57 @@ void sf_sweep_write_rows(FILE *f, const char *param, double value, const sf_swee
     }
 }
 
+void sf_sweep_tuples_header(FILE *f)
+{
+    fputs("param\tvalue\testimator\tlevel\tindex", f);
+    for (int k = 0; k < 2; k++)
+        for (int q = 0; q < SF_SWEEP_NQ; q++)
+            fprintf(f, "\t%c_%s", "ab"[k], qname[q]);
+    fputc('\n', f);
+}
+
+/* one tuple: its level, index, and a[], b[] (NULL: nan) */
+static void tuple_row(FILE *f, const char *param, const char *v, const sf_sweep_point *p, const char *level, size_t i,
+                      const double *a, const double *b)
+{
+    fprintf(f, "%s\t%s\t%s\t%s\t%zu", param, v, sf_sweep_estimator_name(p->estimator), level, i);
+    for (int q = 0; q < SF_SWEEP_NQ; q++)
+        fprintf(f, "\t%.17g", a ? a[q] : NAN);
+    for (int q = 0; q < SF_SWEEP_NQ; q++)
+        fprintf(f, "\t%.17g", b ? b[q] : NAN);
+    fputc('\n', f);
+}
+
+void sf_sweep_write_tuples(FILE *f, const char *param, double value, const sf_sweep_point *p)
+{
+    char v[32];
+    sf_sweep_fmt(v, sizeof v, value);
+    double a[SF_SWEEP_NQ], b[SF_SWEEP_NQ];
+    int ml = p->ml.n[1] > 0, an = p->anti.n > 0;
+    if (ml || an) {   /* the levels' mean work per sample (an antithetic point: a pair's) */
+        double c[SF_SWEEP_NQ] = { ml ? p->ml.cost[0] : p->anti.cost, ml ? p->ml.cost[1] : NAN, NAN };
+        tuple_row(f, param, v, p, "cost", 0, c, NULL);
+    }
+    for (size_t i = 0; ml && i < p->ml.n[0]; i++) {
+        for (int q = 0; q < SF_SWEEP_NQ; q++)
+            a[q] = p->ml.coarse0[i * SF_SWEEP_NQ + q] / p->det[q];
+        tuple_row(f, param, v, p, "level0", i, a, NULL);
+    }
+    for (size_t i = 0; i < p->n; i++) {
+        const double *r = p->ratio + i * SF_SWEEP_NQ;
+        const char *level = ml ? "level1" : an ? "pair" : p->companion ? "cv" : "row";
+        for (int q = 0; q < SF_SWEEP_NQ; q++)
+            b[q] = ml ? p->ml.coarse1[i * SF_SWEEP_NQ + q] / p->det[q]
+                 : an ? p->anti.qoi_anti[i * SF_SWEEP_NQ + q] / p->det[q]
+                      : NAN;
+        if (!ml && !an && p->companion) {
+            b[0] = p->companion[i];
+            b[1] = p->cv_known;
+        }
+        tuple_row(f, param, v, p, level, i, r, ml || an || p->companion ? b : NULL);
+    }
+}
+
 void sf_sweep_diagnostics_header(FILE *f)
 {
     int lv = (int)lround(100 * SF_SWEEP_CI_LEVEL);

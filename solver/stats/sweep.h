@@ -343,6 +343,26 @@ void sf_sweep_summary_header(FILE *f, int work);
 void sf_sweep_summary_row(FILE *f, const char *param, double value, const sf_sweep_point *p, int work);
 void sf_sweep_summary_long_header(FILE *f);
 void sf_sweep_summary_long_rows(FILE *f, const char *param, double value, const sf_sweep_point *p);
+/* The estimator's tuples (--tuples): what each estimator's interval is
+ * a function of, one row per sample, columns param, value, estimator,
+ * level, index, a_pv_x a_pv_F a_stick_fraction, b_pv_x b_pv_F
+ * b_stick_fraction (ratios [-], %.17g, nan where a level has no b):
+ *   row     plain, target-se: a the ratios;
+ *   cv      control-variate: a the ratios, b_pv_x the companion C [-]
+ *           (a COF), b_pv_F its known mean mu_mean;
+ *   pair    antithetic: a the G member's ratios, b the -G member's;
+ *   level0  mlmc*: level 0's sample (a coarse run, or a coarse antithetic
+ *           pair's mean on a derived field), in a;
+ *   level1  mlmc*: a the pair's fine ratios, b its coarse;
+ *   cost    mlmc*: a_pv_x, a_pv_F level 0's and level 1's mean work per
+ *           sample; antithetic: a_pv_x a pair's [cell evaluations]
+ *           (mlmc.h's work model).
+ * The ratios are qoi / det as the estimators form them: an estimator's
+ * stage rule and interval (antithetic.h: sf_anti_stage, sf_anti_interval;
+ * mlmc.h: sf_mlmc_next, sf_mlmc_interval; sf_sweep_point_stats) give the
+ * point's answer again from these rows with det = 1. */
+void sf_sweep_tuples_header(FILE *f);
+void sf_sweep_write_tuples(FILE *f, const char *param, double value, const sf_sweep_point *p);
 void sf_sweep_diagnostics_header(FILE *f);
 void sf_sweep_diagnostics_row(FILE *f, const char *param, double value, const sf_sweep_point *p);
 

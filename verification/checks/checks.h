@@ -25,6 +25,7 @@ extern const sf_check_def sf_checks_ref3dof[];
 extern const sf_check_def sf_checks_sweepstats[];
 extern const sf_check_def sf_checks_estimators[];
 extern const sf_check_def sf_checks_mcstop[];
+extern const sf_check_def sf_checks_covest[];
 extern const sf_check_def sf_checks_cofstrip[];
 extern const sf_check_def sf_checks_sensitivity[];
 extern const sf_check_def sf_checks_beltnoise[];
