@@ -217,6 +217,7 @@ void sf_cof_free(sf_cof *c)
 }
 
 double sf_cof_box(const sf_cof *c) { return c->box; }
+uint64_t sf_cof_key(const sf_cof *c) { return c->tiles ? c->key : 0; }
 
 int sf_cof_set_box(sf_cof *c, double box)
 {
