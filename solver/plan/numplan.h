@@ -133,7 +133,7 @@ enum { SF_PLAN_CHOSEN = 0, SF_PLAN_SCENE = 1 };   /* where a setting came from *
 /* On belt noise the box averages are made in a window that follows the
  * disc (no strip to hold, cof.c): auto takes them up to this many cells
  * per diameter (the error model beyond 82 cells is checked by
- * cases/plan/cellavg-belt-qoi.md at 120 cells; docs/design.md sec. 4.4). */
+ * cases/plan/beltbox-qoi.md at 121 cells; docs/design.md sec. 4.4). */
 #define SF_PLAN_CELLAVG_BELT_MAX_CELLS 160
 /* auto takes cell averages only while their strip (one circulant over
  * [0, T], ~64 bytes a point) has at most this many points: 2^22, ~270 MB;
