@@ -149,6 +149,15 @@ int bench_belt(FILE *f, const char *dir)
         { "l/R = 0.03", "l = 0.015\n", "the plan's choice (auto)", 0 },
         { "l/R = 0.03, point values", "l = 0.015\ncof_model = point\n", "tiles, point model (forced)", 0 },
         { "l/R = 0.01, point values", "l = 0.005\ncof_model = point\n", "tiles, point model (forced)", 0 },
+        /* 9..12: the belt noise (the Sobol' study's field input, T = 100 s, t_skip = 10 s) */
+        { "l/R = 0.01, belt noise, point values", "l = 0.005\nT = 100\nt_skip = 10\ncof_generator = belt_noise\n"
+          "cof_model = point\n", "belt noise, point model (forced)", 0 },
+        { "l/R = 0.01, belt noise, cell averages", "l = 0.005\nT = 100\nt_skip = 10\ncof_generator = belt_noise\n",
+          "belt noise, the plan's choice (auto: box averages)", 0 },
+        { "l/R = 0.02, belt noise, point values", "l = 0.01\nT = 100\nt_skip = 10\ncof_generator = belt_noise\n"
+          "cof_model = point\n", "belt noise, point model (forced)", 0 },
+        { "l/R = 0.02, belt noise, cell averages", "l = 0.01\nT = 100\nt_skip = 10\ncof_generator = belt_noise\n",
+          "belt noise, the plan's choice (auto: box averages)", 0 },
     };
     enum { NJ = sizeof jobs / sizeof jobs[0] };
     double tm[NJ], cpu[NJ];
@@ -213,6 +222,17 @@ int bench_belt(FILE *f, const char *dir)
                "with point values forced %.1fx.\n",
             ca_cells[0], ca_box[0], cpu[8], cpu[8] / cpu[1], cpu[1] / cpu[0], (double)kib[1] / 1024, ca_cells[1],
             cpu[6] / cpu[0], cpu[7] / cpu[0]);
+    fprintf(f, "\nOn belt noise (cof_generator = belt_noise: the Sobol' study's field input, solver/field/noise.h): the "
+               "plan's box averages of the noise's own lognormal field (one noise level coarser, the piecewise cubic "
+               "interpolant's box average over the quadrature's cells; docs/design.md sec. 4.4) against the point "
+               "model, one run each (T = 100 s, with the run's u_num companion): l/R = 0.01 point %.1f s, cell "
+               "averages %.2f s CPU, %.1fx faster; l/R = 0.02 point %.2f s, cell averages %.2f s, %.1fx; peak RSS "
+               "%.0f and %.0f MiB (cell averages), %.0f and %.0f MiB (point).\n",
+            cpu[9], cpu[10], cpu[9] / cpu[10], cpu[11], cpu[12], cpu[11] / cpu[12], (double)kib[10] / 1024,
+            (double)kib[12] / 1024, (double)kib[9] / 1024, (double)kib[11] / 1024);
+    bench_target("belt noise at l/R = 0.01: the plan's cell averages >= 10x faster than the point model (CPU, one "
+                 "`slipfield run` each), section belt",
+                 cpu[9] >= 10 * cpu[10], "%.1fx (%.2f s against %.1f s)", cpu[9] / cpu[10], cpu[10], cpu[9]);
     return 0;
 }
 

@@ -169,6 +169,34 @@ static void effective_field(void **state)
  * huge CV keeps 64 terms, whose sum is still the point variance std^2 for
  * a box much smaller than l (the terms peak near n = sG^2 and the 64th is
  * ~1e-15 of the peak at CV = 1e4: the cap costs nothing there). */
+/* The belt noise's box filter (sf_cellavg_cubic_weights): n = 2E + 1
+ * weights, E = floor(beta/2) + 2, symmetric, summing to 1, the box
+ * average of x^2 exact (the cubic interpolant); refusals. */
+static void cubic_weights(void **state)
+{
+    (void)state;
+    const double betas[] = { 0.5, 1, 2.83, 4.3, 8.678, 17.4, 40 };
+    for (size_t k = 0; k < sizeof betas / sizeof betas[0]; k++) {
+        double b = betas[k], w[64];
+        size_t n = sf_cellavg_cubic_weights(b, NULL, 0), E = (size_t)floor(b / 2) + 2;
+        assert_int_equal(n, 2 * E + 1);
+        assert_int_equal(sf_cellavg_cubic_weights(b, w, 64), n);
+        double s0 = 0, s2 = 0;
+        for (size_t i = 0; i < n; i++) {
+            double x = (double)i - (double)E;
+            s0 += w[i];
+            s2 += w[i] * x * x;
+            assert_close(w[i], w[n - 1 - i], 1e-15);
+        }
+        assert_close(s0, 1, 1e-14);
+        assert_close(s2, b * b / 12, 1e-13);
+    }
+    double w[4];
+    assert_int_equal(sf_cellavg_cubic_weights(10, w, 4), 0);   /* cap too small */
+    assert_int_equal(sf_cellavg_cubic_weights(0, NULL, 0), 0);
+    assert_int_equal(sf_cellavg_cubic_weights(NAN, NULL, 0), 0);
+}
+
 static void cellavg_init_edges(void **state)
 {
     (void)state;
@@ -516,6 +544,7 @@ int main(void)
         cmocka_unit_test(box_limits),
         cmocka_unit_test(plan_choice),
         cmocka_unit_test(effective_field),
+        cmocka_unit_test(cubic_weights),
         cmocka_unit_test(cellavg_init_edges),
         cmocka_unit_test(cof_box_marks),
         cmocka_unit_test(cellavg_plan_refusals),

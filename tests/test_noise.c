@@ -423,13 +423,34 @@ static void plan_branches(void **state)
     assert_int_equal(sf_plan_cof(&s, &p, err, sizeof err), SF_SUCCESS);
     assert_int_equal(p.cof.kind, SF_COF_FIELD);
     assert_int_equal(p.cof.belt_noise, 1);
-    /* cell averages have their own generator */
+    /* cell averages: the box averages of the belt noise's own field, one
+     * level coarser, box centres at most box/3 apart */
     belt_scene(&s, 0.1);
     s.cof_model = SF_COFMODEL_CELL;
-    err[0] = '\0';
-    assert_int_equal(sf_plan_cof(&s, &p, err, sizeof err), SF_EINVAL);
-    assert_non_null(strstr(err, "belt_noise"));
-    assert_non_null(strstr(err, "cell_average"));
+    assert_int_equal(sf_plan_cof(&s, &p, err, sizeof err), SF_SUCCESS);
+    int lv;
+    double hl;
+    assert_int_equal(sf_noise_level(s.l, &lv, &hl), SF_SUCCESS);
+    assert_int_equal(p.cof.belt_noise, 1);
+    assert_int_equal(p.cof.generator, SF_COFGEN_TILES);
+    assert_int_equal(p.cof.noise_level, lv - 1);
+    assert_true(p.cof.box > 0 && p.cof.box_step >= 1);
+    assert_true(p.cof.dx <= p.cof.box / 3 || p.cof.box_step == 1);
+    assert_close(p.cof.dx, 2 * hl * (double)p.cof.box_step, 1e-15);
+    sf_cof_plan *cp;
+    assert_int_equal(sf_cof_plan_alloc(&s, &cp, err, sizeof err), SF_SUCCESS);
+    gsl_rng *g = gsl_rng_alloc(gsl_rng_mt19937);
+    sf_cof *w, *a;
+    assert_int_equal(sf_cof_plan_draw(cp, g, &w), SF_SUCCESS);
+    assert_close(sf_cof_box(w), p.cof.box, 0);
+    assert_int_equal(sf_cof_plan_antithetic(cp, w, &a), SF_SUCCESS);
+    assert_true(sf_cof_key(a) == sf_cof_key(w));
+    double mu;
+    assert_int_equal(sf_cof_plan_point(cp, g, 0, 0, &mu), SF_EINVAL);   /* point values: the point model's */
+    sf_cof_free(w);
+    sf_cof_free(a);
+    gsl_rng_free(g);
+    sf_cof_plan_free(cp);
     s.cof_model = SF_COFMODEL_POINT;
     assert_int_equal(sf_plan_cof(&s, &p, err, sizeof err), SF_SUCCESS);
     check_belt_plan(&s, &p);
@@ -448,20 +469,25 @@ static void plan_branches(void **state)
     err[0] = '\0';
     assert_int_equal(sf_plan_cof(&s, &p, err, sizeof err), SF_EINVAL);
     assert_non_null(strstr(err, "belt_noise"));
-    /* cof_model = auto at l/R = 0.01: cell averages on the circulant,
-     * point values on the belt noise */
+    /* cof_model = auto at l/R = 0.01: cell averages on the circulant and
+     * on the belt noise (its box averages), the same cells; point values
+     * when the scene asks for them */
     sf_scene_default(&s);
     s.l = 0.005;
     s.T = 2;
     s.t_skip = 0;
     s.strip_halfwidth = 0.01;
-    assert_int_equal(sf_numplan_cell_average(&s, NULL, NULL), 1);
+    size_t cells = 0, bcells = 0;
+    double box = -1, bbox = -1;
+    assert_int_equal(sf_numplan_cell_average(&s, &cells, &box), 1);
     s.cof_generator = SF_COFGEN_BELT_NOISE;
-    size_t cells = 77;
-    double box = -1;
-    assert_int_equal(sf_numplan_cell_average(&s, &cells, &box), 0);
-    assert_int_equal(cells, 77);
-    assert_true(box == -1);
+    assert_int_equal(sf_numplan_cell_average(&s, &bcells, &bbox), 1);
+    assert_int_equal(bcells, cells);
+    assert_true(bbox == box);
+    assert_int_equal(sf_plan_cof(&s, &p, err, sizeof err), SF_SUCCESS);
+    assert_true(p.cof.box == box && p.cof.belt_noise == 1 && p.cof.box_step >= 1);
+    s.cof_model = SF_COFMODEL_POINT;
+    assert_int_equal(sf_numplan_cell_average(&s, NULL, NULL), 0);
     assert_int_equal(sf_plan_cof(&s, &p, err, sizeof err), SF_SUCCESS);
     check_belt_plan(&s, &p);
     assert_true(p.cof.box == 0);

@@ -31,6 +31,7 @@ static const sf_check_def *const families[] = {
     sf_checks_covest,
     sf_checks_sensitivity,
     sf_checks_beltnoise,
+    sf_checks_beltbox,
     sf_checks_claims_synth,
 };
 

@@ -60,6 +60,15 @@ struct sf_cof {
     size_t columns_made;
     double box;                /* > 0: the values are cell averages over boxes of this side [m] (cellavg.h) */
     col_store *cols;           /* a tiled pair's shared columns (NULL: none kept) */
+    /* box averages on belt noise (box > 0 with tiles): the grid's nodes
+     * are every bs-th noise cell (dx = bs h, h the tiles' spacing): grid
+     * column c is the box centred on the tiles' column bs (i_lo + c), row
+     * j on their row bs j + be (they hold be rows more each side); bw the
+     * 2 be + 1 weights of the 1-D filter (sf_cellavg_cubic_weights) */
+    double *bw;
+    size_t be, bs;
+    double *fb, *yb;           /* scratch: fine lognormal values, their y-filtered rows */
+    size_t fcap;               /* columns the scratch holds */
 };
 
 static void cols_release(col_store *st)
@@ -201,10 +210,14 @@ void sf_cof_free(sf_cof *c)
     sf_tiles_free(c->tiles);
     sf_noise_free(c->noise);
     cols_release(c->cols);
+    free(c->bw);
+    free(c->fb);
+    free(c->yb);
     free(c);
 }
 
 double sf_cof_box(const sf_cof *c) { return c->box; }
+uint64_t sf_cof_key(const sf_cof *c) { return c->tiles ? c->key : 0; }
 
 int sf_cof_set_box(sf_cof *c, double box)
 {
@@ -220,10 +233,69 @@ size_t sf_cof_points_held(const sf_cof *c) { return c->kind == SF_COF_FIELD ? c-
 unsigned long sf_cof_slides(const sf_cof *c) { return c->slides; }
 size_t sf_cof_columns_made(const sf_cof *c) { return c->columns_made; }
 
+/* Box averages (belt noise, cellavg.h): the boxes of grid columns
+ * i .. i + cnt - 1 (centred on the tiles' columns bs i ...) into grid
+ * columns [c0, c0 + cnt), in blocks of at most BOX_BLOCK columns: the
+ * fine Gaussian columns they need (be more each side), the Nataf map
+ * pointwise, the filter along y at every bs-th row, then along x at
+ * every bs-th column.  Each value is the same sums in the same order
+ * wherever the block starts: a function of (key, box centre) alone. */
+#define BOX_BLOCK 256
+static int window_make_box(sf_cof *c, long i, size_t c0, size_t cnt)
+{
+    size_t E = c->be, nw = 2 * E + 1, ny = c->n, S = c->bs, nyf = S * (ny - 1) + nw;
+    const double *w = c->bw;
+    for (size_t done = 0; done < cnt; done += BOX_BLOCK) {
+        size_t nb = cnt - done < BOX_BLOCK ? cnt - done : BOX_BLOCK, nf = S * (nb - 1) + nw;
+        if (nf > c->fcap) {
+            size_t cap = S * (BOX_BLOCK - 1) + nw;
+            free(c->fb);
+            free(c->yb);
+            c->fb = sf_malloc(cap * nyf * sizeof *c->fb);
+            c->yb = sf_malloc(cap * ny * sizeof *c->yb);
+            c->fcap = c->fb && c->yb ? cap : 0;
+            if (!c->fcap)
+                return SF_ENOMEM;
+        }
+        double *f = c->fb, *y = c->yb;
+        int rc = sf_tiles_fill(c->tiles, (long)S * (i + (long)done) - (long)E, nf, f, nf);
+        if (rc)
+            return rc;
+        c->columns_made += nf;
+        for (size_t k = 0; k < nf * nyf; k++)
+            f[k] = sf_lognormal_map(&c->ln, c->sign * f[k]);
+        for (size_t j = 0; j < ny; j++) {   /* y: row j of the boxes from fine rows S j .. S j + 2E */
+            double *yr = y + nf * j;
+            for (size_t k = 0; k < nf; k++)
+                yr[k] = 0;
+            for (size_t q = 0; q < nw; q++) {
+                const double *src = f + nf * (S * j + q);
+                double wq = w[q];
+                for (size_t k = 0; k < nf; k++)
+                    yr[k] += wq * src[k];
+            }
+        }
+        for (size_t j = 0; j < ny; j++) {   /* x: box column k from fine columns S k .. S k + 2E */
+            const double *yr = y + nf * j;
+            double *g = c->grid + c0 + done + c->m * j;
+            for (size_t k = 0; k < nb; k++)
+                g[k] = 0;
+            for (size_t q = 0; q < nw; q++) {   /* term by term across the row: the same order per value */
+                double wq = w[q];
+                for (size_t k = 0; k < nb; k++)
+                    g[k] += wq * yr[S * k + q];
+            }
+        }
+    }
+    return SF_SUCCESS;
+}
+
 /* Lattice columns [i, i + cnt) into grid columns [c0, c0 + cnt): the
  * Gaussian values, then the Nataf map pointwise. */
 static int window_make(sf_cof *c, long i, size_t c0, size_t cnt)
 {
+    if (c->bw)
+        return window_make_box(c, i, c0, cnt);
     if (cols_have(c->cols, i, cnt)) {   /* made by the pair's other window */
         const col_store *st = c->cols;
         for (size_t k = 0; k < cnt; k++) {
@@ -361,6 +433,8 @@ struct sf_cof_plan {
     double l, R;               /* tiles: correlation length, disc radius [m] */
     sf_cellavg ca;             /* cell averages: the box-averaged covariance */
     sf_field *cfield;          /* cell averages: its Gaussian field (circulant embedding) */
+    double *bw;                /* cell averages on belt noise: the box filter's weights (cellavg.h) */
+    size_t nbw;
     int truncated;             /* the embedding reached pad_cap (SF_ETRUNC): sf_cof_plan_truncated */
     int keep_cols;             /* tiles: each window keeps its columns for an antithetic partner */
 };
@@ -430,11 +504,22 @@ int sf_cof_plan_build(const sf_scene *s, const sf_plan *pl, sf_cof_plan **out, c
         free(p);
         return sf_seterr(err, errlen, rc, "invalid COF marginal (mean %g, std %g)", s->mu_mean, s->mu_std);
     }
-    if (p->info.kind == SF_COF_FIELD && p->info.box > 0)
+    if (p->info.kind == SF_COF_FIELD && p->info.box > 0 && p->info.generator != SF_COFGEN_TILES)
         rc = build_cell_average(p, s, err, errlen);
     else if (p->info.kind == SF_COF_FIELD && p->info.generator == SF_COFGEN_TILES) {
         p->l = s->l;
         p->R = s->R;
+        if (p->info.box > 0) {   /* box averages on belt noise: the filter of boxes of box / dx cells */
+            double beta = p->info.box / (p->info.dx / (double)p->info.box_step);
+            p->nbw = sf_cellavg_cubic_weights(beta, NULL, 0);
+            if (!p->nbw || !p->info.belt_noise || p->info.box_step < 1)
+                rc = sf_seterr(err, errlen, SF_EINVAL, "invalid box averages on belt noise (box %g m, cells of %g m)",
+                               p->info.box, p->info.dx);
+            else if (!(p->bw = sf_malloc(p->nbw * sizeof *p->bw)))
+                rc = SF_ENOMEM;
+            else
+                sf_cellavg_cubic_weights(beta, p->bw, p->nbw);
+        }
     } else if (p->info.kind == SF_COF_FIELD)
         rc = build_strip(p, s, err, errlen);
     if (rc) {
@@ -459,6 +544,7 @@ void sf_cof_plan_free(sf_cof_plan *p)
         return;
     sf_lnfield_free(p->field);
     sf_field_free(p->cfield);
+    free(p->bw);
     free(p);
 }
 
@@ -475,12 +561,13 @@ static const double *noise_column(void *z, long i) { return sf_noise_column(z, i
 static int belt_noise(sf_cof *c, const sf_cof_plan_info *in)
 {
     size_t ky, nr = sf_tiles_noise_rows(c->tiles, &ky);
-    long j0 = lround(in->y0 / in->dy - 0.5);
+    double h = in->dy / (double)c->bs;   /* the noise's cells (box averages: bs of them a grid step) */
+    long j0 = lround(in->y0 / h - 0.5) - (long)c->be;   /* box averages: be fine rows more each side */
     int rc = sf_noise_alloc(in->noise_level, j0 - (long)ky, nr, &c->noise);
     if (rc)
         return rc;
     sf_tiles_set_noise(c->tiles, noise_column, c->noise);
-    c->x_off = 0.5;
+    c->x_off = 0.5 / (double)c->bs;
     return SF_SUCCESS;
 }
 
@@ -504,13 +591,27 @@ static int window_of_key(const sf_cof_plan *p, uint64_t key, double sign, col_st
     c->sign = sign;
     c->margin = in->margin;
     c->slack_r = (size_t)ceil(in->margin / in->dx);
-    sf_tiles_spec ts = { in->ny, in->dx, in->dy, p->l, 0, 0 };
-    int rc = sf_tiles_alloc(&ts, &c->tiles);
+    int rc = SF_SUCCESS;
+    c->bs = 1;
+    if (p->bw) {   /* box averages: the filter, no shared columns (they hold point values) */
+        c->box = in->box;
+        c->be = (p->nbw - 1) / 2;
+        c->bs = in->box_step;
+        if ((c->bw = sf_malloc(p->nbw * sizeof *c->bw)))
+            memcpy(c->bw, p->bw, p->nbw * sizeof *c->bw);
+        else
+            rc = SF_ENOMEM;
+        cols = NULL;
+    }
+    double hf = in->dx / (double)c->bs;
+    sf_tiles_spec ts = { c->bs * (in->ny - 1) + 2 * c->be + 1, hf, hf, p->l, 0, 0 };
+    if (!rc)
+        rc = sf_tiles_alloc(&ts, &c->tiles);
     if (!rc && in->belt_noise)
         rc = belt_noise(c, in);
     if (!rc && !(c->grid = sf_malloc(c->m * c->n * sizeof *c->grid)))
         rc = SF_ENOMEM;
-    if (!rc && !cols && p->keep_cols) {
+    if (!rc && !cols && p->keep_cols && !p->bw) {
         if ((cols = sf_calloc(1, sizeof *cols)))
             cols->n = c->n;
         else
@@ -552,12 +653,12 @@ static int draw_window(const sf_cof_plan *p, gsl_rng *rng, sf_cof **out)
 int sf_cof_plan_point(const sf_cof_plan *p, gsl_rng *rng, double xb, double yb, double *mu)
 {
     const sf_cof_plan_info *in = &p->info;
-    if (!rng || !in->belt_noise || !isfinite(xb) || !isfinite(yb) || !(fabs(xb / in->dx) < 1e15) ||
+    if (!rng || !in->belt_noise || in->box > 0 || !isfinite(xb) || !isfinite(yb) || !(fabs(xb / in->dx) < 1e15) ||
         !(fabs(yb / in->dy) < 1e15))
         return SF_EINVAL;
     double h = in->dx;
     long i0 = (long)floor(xb / h - 0.5), j0 = (long)floor(yb / h - 0.5);   /* the cell centres around (xb, yb) */
-    sf_cof c = { .kind = SF_COF_FIELD, .m = 2, .n = 2, .dx = h, .dy = h, .x0 = ((double)i0 + 0.5) * h,
+    sf_cof c = { .kind = SF_COF_FIELD, .m = 2, .n = 2, .dx = h, .dy = h, .bs = 1, .x0 = ((double)i0 + 0.5) * h,
                  .y0 = ((double)j0 + 0.5) * h, .ln = p->ln };
     sf_cof_plan_info one = *in;
     one.ny = 2;
@@ -632,7 +733,7 @@ int sf_cof_plan_antithetic(const sf_cof_plan *p, const sf_cof *c, sf_cof **out)
     *out = NULL;
     if (!c || c->kind != p->info.kind ||
         (c->kind == SF_COF_FIELD &&
-         (!!c->tiles != (p->info.generator == SF_COFGEN_TILES) || (c->box > 0) != (p->cfield != NULL))))
+         (!!c->tiles != (p->info.generator == SF_COFGEN_TILES) || (c->box > 0) != (p->info.box > 0))))
         return SF_EINVAL;
     /* exp(mu_g - sigma_g G) = exp(2 mu_g) / exp(mu_g + sigma_g G) */
     double e2 = exp(2 * p->ln.mu_g);
@@ -646,7 +747,7 @@ int sf_cof_plan_antithetic(const sf_cof_plan *p, const sf_cof *c, sf_cof **out)
         return rc;
     }
     case SF_COF_FIELD: {
-        if (c->tiles)   /* the same key, the Gaussian values negated */
+        if (c->tiles)   /* the same key, the Gaussian values negated (box averages: of the map of -G) */
             return window_of_key(p, c->key, -c->sign, c->cols, out);
         sf_cof *a;
         int rc = grid_new(c->m, c->n, c->x0, c->y0, c->dx, c->dy, &a);

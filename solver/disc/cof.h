@@ -15,6 +15,7 @@ extern "C" {
 #endif
 
 #include <stddef.h>
+#include <stdint.h>
 #include <gsl/gsl_rng.h>
 #include "scene.h"
 #include "numplan.h"   /* sf_cof_kind, sf_cof_plan_info: the plan decides, this module builds */
@@ -140,6 +141,9 @@ static inline int sf_cof_view_holds(const sf_cof_view *v, double xb, double yb, 
  * matching Cartesian quadrature): sf_cof_box() returns it, 0 for point
  * values.  sf_cof_set_box marks a grid so (SF_EINVAL for a non-grid). */
 double sf_cof_box(const sf_cof *c);
+/* A tiled or belt-noise window's realisation key (its fields are functions
+ * of the key and the belt point: cof.c), 0 for any other COF. */
+uint64_t sf_cof_key(const sf_cof *c);
 int sf_cof_set_box(sf_cof *c, double box);
 
 /* 1 when the disc of radius r centred at belt point (xb, yb) lies on the

@@ -75,3 +75,44 @@ double sf_cellavg_septerm(int t, double d, void *params)
 double sf_cellavg_grid_spacing(double h) { return h / 3; }
 
 double sf_cellavg_support(const sf_cellavg *c) { return c->h + 9 * c->l; }
+
+/* The 4-point Lagrange basis on nodes -1, 0, 1, 2 at x in [0, 1]. */
+static double lagrange4(int q, double x)
+{
+    static const double node[4] = { -1, 0, 1, 2 };
+    double r = 1;
+    for (int p = 0; p < 4; p++)
+        if (p != q)
+            r *= (x - node[p]) / (node[q] - node[p]);
+    return r;
+}
+
+size_t sf_cellavg_cubic_weights(double beta, double *w, size_t cap)
+{
+    if (!(beta > 0) || !(beta < 1e6))
+        return 0;
+    double B = beta / 2;
+    long K = (long)floor(B);
+    size_t E = (size_t)K + 2, n = 2 * E + 1;   /* nodes -E .. E */
+    if (!w)
+        return n;
+    if (cap < n)
+        return 0;
+    for (size_t k = 0; k < n; k++)
+        w[k] = 0;
+    /* interval [j, j + 1] of the lattice, its part inside [-B, B]: the
+     * cubic through nodes j - 1 .. j + 2 integrated exactly by 2-point
+     * Gauss-Legendre */
+    const double g0 = 0.5 - 0.5 / M_SQRT3, g1 = 0.5 + 0.5 / M_SQRT3;
+    for (long j = -K - 1; j <= K; j++) {
+        double a = fmax((double)j, -B), b = fmin((double)j + 1, B);
+        if (!(b > a))
+            continue;
+        for (int q = 0; q < 4; q++) {
+            double s = 0.5 * (b - a) * (lagrange4(q, a + (b - a) * g0 - (double)j) +
+                                        lagrange4(q, a + (b - a) * g1 - (double)j));
+            w[(size_t)(j - 1 + q + (long)E)] += s / beta;
+        }
+    }
+    return n;
+}

@@ -74,6 +74,21 @@ double sf_cellavg_support(const sf_cellavg *c);
  * (bilinear interpolation between its nodes; numplan.c says why). */
 double sf_cellavg_grid_spacing(double h);
 
+/* The cell averages on belt noise (numplan.h: cof_model = cell_average
+ * with cof_generator = belt_noise): the average over a box of side
+ * beta h centred on a lattice node (lattice spacing h) of the piecewise
+ * cubic interpolant of the lattice values (on [j, j + 1] the cubic
+ * through nodes j - 1 .. j + 2), a 1-D filter applied along x and along y:
+ *   mu_box(i, j) = sum_{p,q} w[p] w[q] mu(i + p - E, j + q - E).
+ * Its n = 2E + 1 weights, E = floor(beta/2) + 2, node -E first, sum 1
+ * (to round-off): the integrals of the interpolant's basis over
+ * [-beta/2, beta/2] divided by beta (exact: 2-point Gauss-Legendre per
+ * lattice interval).  Returns n (w NULL: n only), 0 when cap < n or beta
+ * is not in (0, 1e6).  The interpolant's error is O((h/l)^4): at the
+ * plan's h <= l / 2.83 the box average's variance is within 0.9% of the
+ * continuous box average's (sf_cellavg_var; docs/design.md sec. 4.4). */
+size_t sf_cellavg_cubic_weights(double beta, double *w, size_t cap);
+
 #ifdef __cplusplus
 }
 #endif

@@ -346,7 +346,8 @@ static size_t cell_average_cells(const sf_scene *s, double tq)
 {
     double n = ceil(32 * sqrt(sf_numplan_err_cell(s, 32) / tq)); /* err_cell ~ 1/n^2 */
     n = fmax(n, SF_PLAN_CELLAVG_CELLS);
-    return n <= SF_PLAN_CELLAVG_MAX_CELLS ? (size_t)n : 0;
+    double cap = s->cof_generator == SF_COFGEN_BELT_NOISE ? SF_PLAN_CELLAVG_BELT_MAX_CELLS : SF_PLAN_CELLAVG_MAX_CELLS;
+    return n <= cap ? (size_t)n : 0;
 }
 
 int sf_numplan_cell_average(const sf_scene *s, size_t *cells, double *box)
@@ -360,14 +361,14 @@ int sf_numplan_cell_average(const sf_scene *s, size_t *cells, double *box)
     else if (s->cof_model == SF_COFMODEL_POINT)
         on = 0;
     else {
-        on = s->shortcuts && s->mu_std > 0 && !s->precorrect && s->cells == 0 && s->l / s->R < SF_PLAN_CELLAVG_LR &&
-             s->cof_generator != SF_COFGEN_BELT_NOISE;
+        on = s->shortcuts && s->mu_std > 0 && !s->precorrect && s->cells == 0 && s->l / s->R < SF_PLAN_CELLAVG_LR;
         if (on)
             on = (n = cell_average_cells(s, 0.75 * s->qoi_tol)) > 0;
         /* memory: the effective strip is one circulant over [0, T]; above
          * SF_PLAN_CELLAVG_MAX_POINTS the point model's tiles (a window
-         * that follows the disc) keep memory bounded instead */
-        if (on)
+         * that follows the disc) keep memory bounded instead (the belt
+         * noise's box averages are made in a window: no such bound) */
+        if (on && s->cof_generator != SF_COFGEN_BELT_NOISE)
             on = sf_plan_strip_points(s, sf_cellavg_grid_spacing(2 * s->R / (double)n)) <= SF_PLAN_CELLAVG_MAX_POINTS;
     }
     if (!on)
@@ -375,7 +376,7 @@ int sf_numplan_cell_average(const sf_scene *s, size_t *cells, double *box)
     if (n == 0)   /* cell_average set, cells not: the plan chooses (the smallest count if none suffices) */
         n = cell_average_cells(s, 0.75 * s->qoi_tol);
     if (n == 0)
-        n = SF_PLAN_CELLAVG_MAX_CELLS;
+        n = s->cof_generator == SF_COFGEN_BELT_NOISE ? SF_PLAN_CELLAVG_BELT_MAX_CELLS : SF_PLAN_CELLAVG_MAX_CELLS;
     if (cells)
         *cells = n;
     if (box)
@@ -469,12 +470,13 @@ void sf_numplan_explain(const sf_numplan *p, FILE *f)
                "3/4 to the quadrature, 1/4 to the time stepping (numplan.c)\n", p->qoi_tol);
     if (p->quadrature && p->cell_average)
         fprintf(f, "plan: cof_model = cell_average (%s): Cartesian quadrature, cells = %zu per diameter (%s; cells of "
-                   "%.3g m = %.3g l) seeing the COF averaged over each cell (effective Gaussian field, exact "
-                   "box-averaged covariance, grid spacing %.3g m; cellavg.h), predicted QoI error %.2g (an RMS over "
-                   "fields: one field can err more, up to 2.5x it in the measurements)\n",
-                p->cof_model_from == SF_PLAN_SCENE ? "set by the scene"
-                                                    : "chosen: l/R below 0.05, predicted error within 3/4 qoi_tol, strip within 2^22 points",
-                p->cells, from(p->cells_from), p->cell_size, p->box_over_l, sf_cellavg_grid_spacing(p->cell_size), p->err_quad);
+                   "%.3g m = %.3g l) seeing the COF averaged over each cell (the COF line above says how it is made; "
+                   "cellavg.h), predicted QoI error %.2g (an RMS over fields: one field can err more, up to 2.5x it "
+                   "in the measurements)\n",
+                p->cof_model_from == SF_PLAN_SCENE
+                    ? "set by the scene"
+                    : "chosen: l/R below 0.05, predicted error within 3/4 qoi_tol; circulant: strip within 2^22 points",
+                p->cells, from(p->cells_from), p->cell_size, p->box_over_l, p->err_quad);
     else if (p->quadrature)
         fprintf(f, "plan: cells = %zu (%s; cell size %.3g m at l/R = %.3g), quadrature error budget %.2g\n",
                 p->cells, from(p->cells_from), p->cell_size, p->l_over_R, p->err_quad);
@@ -577,33 +579,56 @@ int sf_plan_cof(const sf_scene *s, sf_plan *p, char *err, size_t errlen)
     double B = B0 + 2 * h, W = W0 + 2 * h, len = s->v_b * s->T + 2 * B;
     p->cof.strip_diag = E;
     /* belt noise: no one-variable shortcut (it would draw the value from
-     * the stream, not from the noise), nor cell averages (their own
-     * generator): the same field at every l */
+     * the stream, not from the noise): the same field at every l; its
+     * cell averages are the box averages of that field (below) */
     if (s->shortcuts && ((!belt && (E / s->l) * (E / s->l) <= SF_COF_SHORTCUT_E2) || s->mu_std == 0)) {
         p->cof.kind = SF_COF_VARIABLE;
         p->cof.shortcut = 1;
         return SF_SUCCESS;
     }
     double box;
-    if (sf_numplan_cell_average(s, NULL, &box)) {
-        if (belt)
-            return sf_seterr(err, errlen, SF_EINVAL, "cof_model = cell_average needs cof_generator = auto or "
-                             "circulant (the cell averages have their own generator; belt_noise gives point values)");
+    int cell = sf_numplan_cell_average(s, NULL, &box);
+    if (cell && !belt)
         return plan_cell_average(p, s, box, B0, W0, err, errlen);
-    }
-    p->cof_model = SF_PLAN_MODEL_POINT;
+    if (cell) {   /* box averages of the belt noise's own field, one level coarser (cellavg.h) */
+        if (s->precorrect)
+            return sf_seterr(err, errlen, SF_EINVAL, "cof_model = cell_average makes the field of Eq. 2 through the "
+                                                     "Nataf map: precorrect is not supported");
+        if (p->cof.noise_level < 1)
+            return sf_seterr(err, errlen, SF_EINVAL, "cof_model = cell_average on belt_noise: l = %g m has no "
+                             "coarser noise level", s->l);
+        p->cof.noise_level--;
+        h *= 2;
+        B = B0 + 2 * h;
+        W = W0 + 2 * h;
+        len = s->v_b * s->T + 2 * B;
+        p->cof.box = box;
+        p->cof_model = SF_PLAN_MODEL_CELL_AVERAGE;
+        sf_cellavg ca;
+        if ((rc = sf_cellavg_init(&ca, s->mu_mean, s->mu_std, s->l, box)))
+            return sf_seterr(err, errlen, rc, "invalid cell-average model (l = %g m, box = %g m)", s->l, box);
+        p->cell_std = sqrt(sf_cellavg_var(&ca));
+    } else
+        p->cof_model = SF_PLAN_MODEL_POINT;
     double nx = ceil(len / h) + 1, ny = ceil(2 * W / h) + 1;
     p->cof.strip_points = nx * ny;
     int gen = s->cof_generator;
     if (gen == SF_COFGEN_AUTO)
         gen = nx * ny > (double)SF_COF_AUTO_POINTS && !(s->precorrect && s->mu_std > 0) ? SF_COFGEN_TILES
                                                                                       : SF_COFGEN_CIRCULANT;
+    double d = h;   /* the grid's spacing */
     if (belt) {   /* cells centred on the noise's: y = (j + 1/2) h, j = -J-1 .. J, (J + 1/2) h >= W */
         double J = ceil(W / h - 0.5);
         ny = 2 * J + 2;
         W = (J + 0.5) * h;
         gen = SF_COFGEN_TILES;
         p->cof.belt_noise = 1;
+        if (cell) {   /* box centres every S-th noise cell from y = -W, S h <= box/3 (cellavg.h) */
+            double S = fmax(1, floor(box / h / 3));
+            p->cof.box_step = (size_t)S;
+            d = S * h;
+            ny = ceil(2 * W / d) + 1;
+        }
     }
     p->cof.generator = gen;
     if (gen == SF_COFGEN_TILES) {
@@ -615,15 +640,15 @@ int sf_plan_cof(const sf_scene *s, sf_plan *p, char *err, size_t errlen)
          * a smaller M caps the steps harder), a
          * slack R towards -x (where the belt carries the disc) so
          * that a slide is due once per R of travel, and M towards +x */
-        double M = fmax(s->R / 4, 2 * h);
+        double M = fmax(s->R / 4, 2 * d);
         /* belt noise: two columns more, so that the slack, the rounding
          * of the window's end and the half-cell offset of its lattice fit
          * when h is large against R (l/R above about 5) */
-        double mx = ceil((3 * s->R + 3 * M) / h) + 1 + (belt ? 2 : 0);
-        if ((rc = grid_cap(mx * ny, h, "the tiled window", belt ? "" : "l/8 = ", "raise l or set strip_halfwidth",
+        double mx = ceil((3 * s->R + 3 * M) / d) + 1 + (belt ? 2 : 0);
+        if ((rc = grid_cap(mx * ny, d, "the tiled window", belt ? "" : "l/8 = ", "raise l or set strip_halfwidth",
                            err, errlen)))
             return rc;
-        set_grid(&p->cof, mx, ny, h, -s->v_b * s->T - B, W, B);
+        set_grid(&p->cof, mx, ny, d, -s->v_b * s->T - B, W, B);
         p->cof.margin = M;
         return SF_SUCCESS;
     }
@@ -665,6 +690,16 @@ static void explain_cof(const sf_plan *p, const sf_scene *s, FILE *f)
                    "(cases/plan/variable-shortcut-boundary)\n",
                 in->strip_diag, s->l, (in->strip_diag / s->l) * (in->strip_diag / s->l), SF_COF_SHORTCUT_E2,
                 SF_COF_SHORTCUT_E2);
+    else if (p->cof_model == SF_PLAN_MODEL_CELL_AVERAGE && in->belt_noise)
+        fprintf(f, "COF: cell-averaged lognormal field (cof_model = %s) on the white noise of the belt (cof_generator "
+                   "= belt_noise; noise.h): the realisation's own lognormal field, made as the tiles do from the "
+                   "noise at level %d (cells of %.4g m, l/%.3g: one level coarser than the point model's), averaged "
+                   "over squares of side %.4g m (= %.3g l, %.3g cells; the piecewise cubic interpolant's exact box "
+                   "average, cellavg.h), on a window of %zu x %zu box centres %zu cells apart, |y| <= %.4g m, that "
+                   "follows the disc; the box averages' std %.4g (the continuous box average's)\n",
+                s->cof_model == SF_COFMODEL_CELL ? "cell_average" : "auto: the plan's choice", in->noise_level,
+                in->dx / (double)in->box_step, s->l * (double)in->box_step / in->dx, in->box, in->box / s->l,
+                in->box * (double)in->box_step / in->dx, in->nx, in->ny, in->box_step, -in->y0, p->cell_std);
     else if (p->cof_model == SF_PLAN_MODEL_CELL_AVERAGE)
         fprintf(f, "COF: cell-averaged lognormal field (cof_model = %s): the field of Eq. 2 averaged over squares of "
                    "side %.4g m (= %.3g l), a Gaussian field with the exact box-averaged covariance and the lognormal's "

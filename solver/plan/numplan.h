@@ -70,6 +70,8 @@ typedef struct {
     int belt_noise;          /* 1: cof_generator = belt_noise (generator TILES on noise.h's white noise, lattice
                                 x = (i + 1/2) dx, y = (j + 1/2) dy, dx = dy its cells' side) */
     int noise_level;         /* belt_noise: the noise's level (noise.h) */
+    size_t box_step;         /* belt_noise with box > 0: noise cells per grid step (the box centres' spacing dx =
+                                box_step cells, at most box/3; cellavg.h); 0 otherwise */
 } sf_cof_plan_info;
 
 /* The strip's bounds B0 and W0 [m] before the grid's margin (above:
@@ -128,6 +130,11 @@ enum { SF_PLAN_CHOSEN = 0, SF_PLAN_SCENE = 1 };   /* where a setting came from *
 #define SF_PLAN_CELLAVG_LR 0.05
 #define SF_PLAN_CELLAVG_CELLS 32
 #define SF_PLAN_CELLAVG_MAX_CELLS 60   /* within the error model's measured range, 16..82 (numplan.c) */
+/* On belt noise the box averages are made in a window that follows the
+ * disc (no strip to hold, cof.c): auto takes them up to this many cells
+ * per diameter (the error model beyond 82 cells is checked by
+ * cases/plan/beltbox-qoi.md at 121 cells; docs/design.md sec. 4.4). */
+#define SF_PLAN_CELLAVG_BELT_MAX_CELLS 160
 /* auto takes cell averages only while their strip (one circulant over
  * [0, T], ~64 bytes a point) has at most this many points: 2^22, ~270 MB;
  * at Table 1, 32 cells, up to T ~ 1000 s.  Longer runs get the point

@@ -640,7 +640,7 @@ int sf_sweep_estimator_auto(const sf_scene *s)
     sf_plan pl;
     if (sf_plan_make(s, &pl, NULL, 0) || pl.cof.kind != SF_COF_FIELD)
         return SF_EST_ANTITHETIC;
-    if (pl.num.cell_average)
+    if (pl.num.cell_average && pl.cof.generator != SF_COFGEN_TILES)   /* box means of a circulant strip (mlmc.h) */
         return SF_EST_MLMC_BOXES;
     if (pl.cof.generator == SF_COFGEN_TILES || s->l >= SF_SWEEP_AUTO_ANTI_LR * s->R)
         return SF_EST_ANTITHETIC;

@@ -51,6 +51,7 @@ static void pair_scene(const sf_scene *base, const pair_t *p, int second, sf_sce
     *s = *base;
     s->cof = SF_COF_FIELD;
     s->cof_generator = SF_COFGEN_BELT_NOISE;
+    s->cof_model = SF_COFMODEL_POINT;   /* the point field (below l/R = 0.05 auto takes its box averages) */
     s->l = p->l;
     if (!second)
         return;
@@ -312,6 +313,7 @@ static int ff_eval(void *p, size_t e, gsl_rng *unused, double *out)
     sf_scene s;
     double x[SF_SENS_NPAR];
     sf_sens_point(w->base, w->r, w->D, e, &s, x, w->rng);
+    s.cof_model = SF_COFMODEL_POINT;   /* a functional of the point field at every l/R */
     sf_cof_plan *pl;
     int rc = sf_cof_plan_alloc(&s, &pl, NULL, 0);
     if (rc)

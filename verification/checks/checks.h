@@ -29,6 +29,7 @@ extern const sf_check_def sf_checks_covest[];
 extern const sf_check_def sf_checks_cofstrip[];
 extern const sf_check_def sf_checks_sensitivity[];
 extern const sf_check_def sf_checks_beltnoise[];
+extern const sf_check_def sf_checks_beltbox[];
 extern const sf_check_def sf_checks_claims_synth[];
 
 #endif
