@@ -370,6 +370,18 @@ static int chk_sobol_claims(const sf_case *c, sf_result *r)
         snprintf(how, sizeof how, "min over CV, v_b, mean COF of S1(l/R) - S1(j) and S_T(l/R) - S_T(j); one-sided "
                  "paired bootstrap percentile bounds at %.2g each way, %zu rows, %zu resamples", a, res->n_used, nb);
         sf_claim(r, cs->id, cs->text, status, m, lo, hi, a, how, cs->note ? cs->note : "");
+        if (c->spec.model_budget && c->spec.model_budget == c->scene.samples) {
+            /* model_budget = rows: a one-look design (docs/design.md sec.
+             * 7.7), its share a spent at that look: the paper has no
+             * Sobol' study, so this N is the study's, not the paper's, and
+             * the model verdict is this test's.  Budget reached = not
+             * decidable at it; the MDE of a normal statistic whose
+             * one-sided a-bounds are these (power 0.99). */
+            double za = gsl_cdf_ugaussian_Qinv(a), sd = (hi - lo) / (2 * za);
+            sf_claim_model mm = { status, res->n_used, c->spec.model_budget, m, lo, hi,
+                                  (za + gsl_cdf_ugaussian_Qinv(0.01)) * sd, a, NAN };
+            sf_claim_set_model(r, cs->id, &mm);
+        }
         const double *v = est + (tot ? SF_SENS_D : 0);
         snprintf(found, sizeof found, "%s: %s(l/R) = %.3f, the closest is %s with %.3f: gap %.3f [%.3f, %.3f]",
                  sf_claim_status_name(status), tot ? "S_T" : "S1", v[SF_SENS_LOGLR], sf_sens_input_name(arg),
