@@ -395,10 +395,11 @@ static int chk_qoi(const sf_case *c, sf_result *r)
                    "correlate at 0.996 or more, as at a switch of noise level, so a pair differs by more than the "
                    "model's error); %zu pairs, %.1f s of CPU. Per QoI: the ratio of the means (interval null |log "
                    "ratio| <= log(1 + %g), Student t on the pairs' influence functions, df %zu) at alpha / 3 = %.3g; "
-                   "beside it (not gated) the RMS and the largest of the pairs' relative differences, against the "
+                   "beside it (not gated) the RMS and the largest of the pairs' differences over the point model's "
+                   "mean, against the "
                    "sum of the two plans' predicted errors %.2g, and the shift the test detects at power 0.99.\n\n"
                    "| QoI | mean ratio | se (log) | detected at power 0.99 | RMS relative difference | largest |\n"
-                   "|---|---|---|---|---|---|\n",
+                   "|---|---|---|---|---|---|",
                 b.s.l / b.s.R, b.s.mu_std / b.s.mu_mean, b.s.v_b, b.s.mu_mean, sf_numplan_belt_number(&b.s),
                 b.pl.num.cells, b.pl.num.err_quad, pp.num.cells, pp.num.err_quad, b.pl.num.rtol, pp.num.rtol, n,
                 cpu, marg, n - 1, a3, bound);
@@ -408,7 +409,7 @@ static int chk_qoi(const sf_case *c, sf_result *r)
             double *u = check_alloc(n * sizeof *u);
             for (size_t i = 0; i < n; i++) {
                 u[i] = (x[i] - mx) / mx - (y[i] - my) / my;
-                e[i] = x[i] / y[i] - 1;
+                e[i] = (x[i] - y[i]) / my;   /* over the mean: a pair with no stick in either has 0/0 as its own ratio */
                 ea[j * n + i] = e[i];
                 ix[i] = (double)i;
                 big = sf_max(big, fabs(e[i]));
@@ -418,13 +419,13 @@ static int chk_qoi(const sf_case *c, sf_result *r)
             free(u);
             double df = (double)n - 1, mde = expm1(log1p(marg) + (gsl_cdf_tdist_Qinv(a3 / 2, df) +
                                                                   gsl_cdf_tdist_Qinv(0.01, df)) * se);
-            sf_note(r, "| %s | %.5f | %.2g | %.2g | %.2g | %.2g |\n", qn[j], mx / my, se, mde, sqrt(m2 / (double)n),
+            sf_note(r, "| %s | %.5f | %.2g | %.2g | %.2g | %.2g |", qn[j], mx / my, se, mde, sqrt(m2 / (double)n),
                     big);
             char t[SF_LABEL_LEN];
             snprintf(t, sizeof t, "%s: |mean ratio - 1| <= %g (interval null, paired)", qn[j], marg);
             sf_check_pvalue(r, t, sf_interval_null_p(est, se, log1p(marg), df), a3, n);
         }
-        sf_plot *pl = sf_result_plot(r, "beltbox-qoi", "Box averages / point model - 1 on the same noise, per pair",
+        sf_plot *pl = sf_result_plot(r, "beltbox-qoi", "(box averages - point model) / its mean, on the same noise, per pair",
                                      "pair [-]", "relative difference [-]");
         for (int j = 0; j < SF_SWEEP_NQ; j++)
             sf_plot_series(pl, qn[j], SF_STYLE_POINTS, n, ix, ea + j * n);

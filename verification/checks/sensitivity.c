@@ -325,7 +325,7 @@ static int chk_sobol_claims(const sf_case *c, sf_result *r)
                "the field is the fifth input, a white noise fixed on the belt (solver/field/noise.h). S1 by pick-freeze "
                "(Saltelli) and from given data (rank-based, over the A and B rows: no coupling of the field "
                "enters it), S_T by pick-freeze (Jansen).\n\n| QoI | input | S1 [95%% CI] | S1 given data [95%% CI] | "
-               "ST [95%% CI] |\n|---|---|---|---|---|\n",
+               "ST [95%% CI] |\n|---|---|---|---|---|",
             n, ne, s->T, s->t_skip, cpu, STUDY_NBOOT, R.lo[0], R.hi[0], R.lo[1], R.hi[1], R.lo[2], R.hi[2], R.lo[3],
             R.hi[3]);
     for (int q = 0; q < SF_SWEEP_NQ; q++)
@@ -336,7 +336,7 @@ static int chk_sobol_claims(const sf_case *c, sf_result *r)
                 const sf_sobol_rank_index *g = &S->rank[q].idx[i];
                 snprintf(gd, sizeof gd, "%.3f [%.3f, %.3f]", g->s1, g->lo, g->hi);
             }
-            sf_note(r, "| %s | %s | %.3f [%.3f, %.3f] | %s | %.3f [%.3f, %.3f] |\n", qlabel[q], sf_sens_input_name(i),
+            sf_note(r, "| %s | %s | %.3f [%.3f, %.3f] | %s | %.3f [%.3f, %.3f] |", qlabel[q], sf_sens_input_name(i),
                     x->s1, x->s1_lo, x->s1_hi, gd, x->st, x->st_lo, x->st_hi);
         }
     size_t excl = 0;
