@@ -30,6 +30,8 @@
 #include "mcstop.h"
 #include "noise.h"
 #include "tiles.h"
+#include "antithetic.h"
+#include "mlmc.h"
 #include "unum.h"
 
 #include <stdlib.h>
@@ -389,6 +391,55 @@ static void belt_noise(void **state)
     assert_int_equal(belt_point(&c), SF_SUCCESS);
     assert_true(walk("plan + sf_cof_plan_point (belt noise)", belt_point, &c, SF_SUCCESS, 0) > 2 + 3 * 16);
     walk("belt-noise window + antithetic, slid", belt_pair, &c.s, SF_SUCCESS, 0);
+    /* box averages on the belt noise (cellavg.h: l/R = 0.01, the plan's
+     * cell averages): the filter's weights, its row buffers, a slide */
+    memset(&c, 0, sizeof c);
+    scene_cellavg(&c.s);
+    c.s.cof_generator = SF_COFGEN_BELT_NOISE;
+    assert_int_equal(plan_and_draw(&c), SF_SUCCESS);
+    assert_true(walk("plan + draw (box averages on belt noise)", plan_and_draw, &c, SF_SUCCESS, 0) > 5);
+    walk("box averages on belt noise + antithetic, slid", belt_pair, &c.s, SF_SUCCESS, 0);
+}
+
+/* ---- the estimators' pure stage rules and intervals (antithetic.h, mlmc.h) */
+
+static double stage_v[8 * 2 * SF_SWEEP_NQ], stage_l0[8 * SF_SWEEP_NQ];
+
+static int anti_pure(void *ctx)
+{
+    (void)ctx;
+    static const double one[SF_SWEEP_NQ] = { 1, 1, 1 };
+    size_t g;
+    int capped;
+    sf_sweep_anti e;
+    int rc = sf_anti_stage(stage_v, 2 * SF_SWEEP_NQ, SF_SWEEP_NQ, one, 8, 4, 40, NULL, &g, &capped);
+    return rc ? rc : sf_anti_interval(stage_v, 2 * SF_SWEEP_NQ, SF_SWEEP_NQ, one, 0, 8, &e);
+}
+
+static int mlmc_pure(void *ctx)
+{
+    (void)ctx;
+    static const double one[SF_SWEEP_NQ] = { 1, 1, 1 };
+    size_t g0, g1;
+    int capped;
+    sf_sweep_ml e;
+    int rc = sf_mlmc_next(stage_v, 2 * SF_SWEEP_NQ, SF_SWEEP_NQ, 8, stage_l0, SF_SWEEP_NQ, 8, one, 1, 2, 4, 40, NULL,
+                          &g0, &g1, &capped);
+    return rc ? rc : sf_mlmc_interval(stage_v, 2 * SF_SWEEP_NQ, SF_SWEEP_NQ, 8, stage_l0, SF_SWEEP_NQ, 8, one, 0, 0,
+                                      &e);
+}
+
+static void estimator_rules(void **state)
+{
+    (void)state;
+    for (size_t i = 0; i < 8; i++)
+        for (int q = 0; q < SF_SWEEP_NQ; q++) {
+            stage_v[i * 2 * SF_SWEEP_NQ + q] = 1 + 0.1 * (double)((i * 7 + (size_t)q) % 5);
+            stage_v[i * 2 * SF_SWEEP_NQ + SF_SWEEP_NQ + q] = 1 - 0.05 * (double)((i * 3 + (size_t)q) % 4);
+            stage_l0[i * SF_SWEEP_NQ + q] = 1 + 0.02 * (double)((i + (size_t)q) % 3);
+        }
+    assert_true(walk("sf_anti_stage + sf_anti_interval", anti_pure, NULL, SF_SUCCESS, 0) >= 2);
+    assert_true(walk("sf_mlmc_next + sf_mlmc_interval", mlmc_pure, NULL, SF_SUCCESS, 0) >= 2);
 }
 
 /* ---- fields, tiles */
@@ -1051,6 +1102,7 @@ int main(void)
         cmocka_unit_test(cof_plans),
         cmocka_unit_test(cof_more),
         cmocka_unit_test(belt_noise),
+        cmocka_unit_test(estimator_rules),
         cmocka_unit_test(fields),
         cmocka_unit_test(contacts),
         cmocka_unit_test(oscillator),

@@ -508,6 +508,31 @@ static void stein_sweep(void **state)
 
 /* ---- the control variate */
 
+/* `sweep --tuples`' rows of a point (sf_sweep_write_tuples): the header,
+ * then `want` rows, each with its 11 columns and finite values where the
+ * estimator has them (cost row, level0, level1 / pair / cv / row). */
+static void assert_tuples(const sf_sweep_point *p, size_t want, const char *level)
+{
+    FILE *f = tmpfile();
+    assert_non_null(f);
+    sf_sweep_tuples_header(f);
+    sf_sweep_write_tuples(f, "l_over_R", 0.5, p);
+    rewind(f);
+    char line[2048];
+    size_t rows = 0, lv = 0;
+    while (fgets(line, sizeof line, f)) {
+        size_t tabs = 0;
+        for (const char *c = line; *c; c++)
+            tabs += *c == '\t';
+        assert_int_equal(tabs, 10);
+        rows++;
+        lv += strstr(line, level) != NULL;
+    }
+    fclose(f);
+    assert_int_equal(rows, want + 1);
+    assert_true(lv > 0);
+}
+
 static void cv_estimator(void **state)
 {
     (void)state;
@@ -597,6 +622,10 @@ static void cv_estimator(void **state)
     assert_memory_equal(a.companion, b.companion, 6 * sizeof *a.companion);
     assert_memory_equal(a.qoi, b.qoi, 6 * SF_SWEEP_NQ * sizeof *a.qoi);
     assert_true(fabs(a.companion[0] - 0.5) < 0.5 && a.cv_known == s.mu_mean && isfinite(a.cv[0].mean));
+    assert_tuples(&a, 6, "\tcv\t");   /* one row per realisation, its companion beside it */
+    free(a.companion);
+    a.companion = NULL;
+    assert_tuples(&a, 6, "\trow\t");  /* a plain point: the ratios alone */
     sf_sweep_point_free(&a);
     sf_sweep_point_free(&b);
 }
@@ -631,6 +660,7 @@ static void assert_anti_replay(const sf_sweep_point *p, size_t n_plain, size_t n
             t[i * 2 * SF_SWEEP_NQ + q] = p->ratio[i * SF_SWEEP_NQ + q];
             t[i * 2 * SF_SWEEP_NQ + SF_SWEEP_NQ + q] = p->anti.qoi_anti[i * SF_SWEEP_NQ + q] / p->det[q];
         }
+    assert_tuples(p, p->n + 1, "\tpair\t");
     size_t n = n_pilot, g;
     int capped;
     while (1) {   /* every stage uses a prefix of the final pairs */
@@ -657,6 +687,7 @@ static void assert_mlmc_replay(const sf_sweep_point *p, size_t n_plain, size_t n
 {
     static const double one[SF_SWEEP_NQ] = { 1, 1, 1 };
     size_t n1 = p->ml.n[1], n0 = p->ml.n[0], g0, g1;
+    assert_tuples(p, 1 + n0 + n1, "\tlevel0\t");
     double *t = malloc(n1 * 2 * SF_SWEEP_NQ * sizeof *t), *l0 = malloc(n0 * SF_SWEEP_NQ * sizeof *l0);
     assert_true(t && l0);
     for (int q = 0; q < SF_SWEEP_NQ; q++) {
@@ -1260,6 +1291,44 @@ static void shortest_text(void **state)
     }
 }
 
+/* The pure stage rules' edges: a target whose ratio has no finite spread
+ * yet asks for the cap; one sample on a level has no variance. */
+static void stage_edges(void **state)
+{
+    (void)state;
+    static const double one[SF_SWEEP_NQ] = { 1, 1, 1 };
+    double v[8 * 2 * SF_SWEEP_NQ], l0[8 * SF_SWEEP_NQ], tse[SF_SWEEP_NQ] = { 0.01, 0.01, 0.01 };
+    for (size_t i = 0; i < 8; i++)
+        for (int q = 0; q < SF_SWEEP_NQ; q++) {
+            v[i * 2 * SF_SWEEP_NQ + q] = 1 + 0.1 * (double)((i * 7 + (size_t)q) % 5);
+            v[i * 2 * SF_SWEEP_NQ + SF_SWEEP_NQ + q] = 1 - 0.05 * (double)((i * 3 + (size_t)q) % 4);
+            l0[i * SF_SWEEP_NQ + q] = 1 + 0.02 * (double)((i + (size_t)q) % 3);
+        }
+    for (size_t i = 0; i < 8; i++)   /* ratio 2 never finite: no spread to size it by */
+        v[i * 2 * SF_SWEEP_NQ + 2] = NAN;
+    size_t g, g0, g1;
+    int capped = 0;
+    assert_int_equal(sf_anti_stage(v, 2 * SF_SWEEP_NQ, SF_SWEEP_NQ, one, 8, 4, 40, tse, &g, &capped), SF_SUCCESS);
+    assert_true(capped && g > 8);
+    capped = 0;
+    assert_int_equal(sf_mlmc_next(v, 2 * SF_SWEEP_NQ, SF_SWEEP_NQ, 8, l0, SF_SWEEP_NQ, 8, one, 1, 2, 4, 40, tse, &g0,
+                                  &g1, &capped), SF_SUCCESS);
+    assert_true(capped && g1 > 8);
+    /* no pairs yet: no interval (NaN), sizes from the pilot */
+    sf_sweep_anti ea;
+    sf_sweep_ml em;
+    assert_int_equal(sf_anti_interval(v, 2 * SF_SWEEP_NQ, SF_SWEEP_NQ, one, 0, 0, &ea), SF_SUCCESS);
+    assert_true(isnan(ea.ci_lo));
+    assert_int_equal(sf_anti_stage(v, 2 * SF_SWEEP_NQ, SF_SWEEP_NQ, one, 0, 4, 40, NULL, &g, &capped), SF_SUCCESS);
+    assert_int_equal(sf_mlmc_next(v, 2 * SF_SWEEP_NQ, SF_SWEEP_NQ, 8, l0, SF_SWEEP_NQ, 0, one, 1, 2, 4, 40, NULL, &g0,
+                                  &g1, &capped), SF_SUCCESS);
+    assert_int_equal(sf_mlmc_interval(v, 2 * SF_SWEEP_NQ, SF_SWEEP_NQ, 8, l0, SF_SWEEP_NQ, 0, one, 0, 0, &em),
+                     SF_SUCCESS);
+    /* one sample a level: no variance, no size from it */
+    assert_int_equal(sf_mlmc_next(v, 2 * SF_SWEEP_NQ, SF_SWEEP_NQ, 1, l0, SF_SWEEP_NQ, 1, one, 1, 2, 1, 40, NULL, &g0,
+                                  &g1, &capped), SF_SUCCESS);
+}
+
 int main(void)
 {
     sf_init();
@@ -1281,6 +1350,7 @@ int main(void)
         cmocka_unit_test(sub_estimator),
         cmocka_unit_test(derived_refusals),
         cmocka_unit_test(estimator_targets),
+        cmocka_unit_test(stage_edges),
     };
     return cmocka_run_group_tests_name("montecarlo", tests, NULL, NULL);
 }

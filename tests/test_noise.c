@@ -486,6 +486,36 @@ static void plan_branches(void **state)
     assert_true(bbox == box);
     assert_int_equal(sf_plan_cof(&s, &p, err, sizeof err), SF_SUCCESS);
     assert_true(p.cof.box == box && p.cof.belt_noise == 1 && p.cof.box_step >= 1);
+    {   /* what run --explain says of it */
+        sf_plan full;
+        assert_int_equal(sf_plan_make(&s, &full, err, sizeof err), SF_SUCCESS);
+        FILE *f = tmpfile();
+        assert_non_null(f);
+        sf_plan_explain(&full, &s, f);
+        rewind(f);
+        char out[16384];
+        size_t len = fread(out, 1, sizeof out - 1, f);
+        out[len] = '\0';
+        fclose(f);
+        assert_non_null(strstr(out, "cell-averaged lognormal field (cof_model = auto"));
+        assert_non_null(strstr(out, "on the white noise of the belt"));
+        s.cof_model = SF_COFMODEL_CELL;
+        assert_int_equal(sf_plan_make(&s, &full, err, sizeof err), SF_SUCCESS);
+        f = tmpfile();
+        assert_non_null(f);
+        sf_plan_explain(&full, &s, f);
+        rewind(f);
+        len = fread(out, 1, sizeof out - 1, f);
+        out[len] = '\0';
+        fclose(f);
+        assert_non_null(strstr(out, "(cof_model = cell_average) on the white noise"));
+        /* the Nataf precorrection has no box average of its own here */
+        s.precorrect = 1;
+        assert_int_equal(sf_plan_cof(&s, &p, err, sizeof err), SF_EINVAL);
+        assert_non_null(strstr(err, "precorrect is not supported"));
+        s.precorrect = 0;
+        s.cof_model = SF_COFMODEL_AUTO;
+    }
     s.cof_model = SF_COFMODEL_POINT;
     assert_int_equal(sf_numplan_cell_average(&s, NULL, NULL), 0);
     assert_int_equal(sf_plan_cof(&s, &p, err, sizeof err), SF_SUCCESS);
