@@ -174,6 +174,9 @@ static void effective_field(void **state)
  * average of x^2 exact (the cubic interpolant); refusals. */
 static void cubic_weights(void **state)
 {
+    assert_int_equal(sf_cellavg_cubic_weights(0, NULL, 0), 0);      /* no box */
+    assert_int_equal(sf_cellavg_cubic_weights(NAN, NULL, 0), 0);
+    assert_int_equal(sf_cellavg_cubic_weights(2e6, NULL, 0), 0);    /* a filter of millions of taps refused */
     (void)state;
     const double betas[] = { 0.5, 1, 2.83, 4.3, 8.678, 17.4, 40 };
     for (size_t k = 0; k < sizeof betas / sizeof betas[0]; k++) {
