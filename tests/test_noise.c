@@ -383,6 +383,18 @@ static void check_belt_plan(const sf_scene *s, const sf_plan *p)
     assert_true((double)(in->nx - 1) * h >= 3 * s->R + 3 * in->margin + 2 * h);
 }
 
+/* what sf_plan_explain prints for (p, s), into out */
+static void explain_text(const sf_plan *p, const sf_scene *s, char *out, size_t cap)
+{
+    FILE *f = tmpfile();
+    assert_non_null(f);
+    sf_plan_explain(p, s, f);
+    rewind(f);
+    size_t len = fread(out, 1, cap - 1, f);
+    out[len] = '\0';
+    fclose(f);
+}
+
 static void plan_branches(void **state)
 {
     (void)state;
@@ -488,26 +500,14 @@ static void plan_branches(void **state)
     assert_true(p.cof.box == box && p.cof.belt_noise == 1 && p.cof.box_step >= 1);
     {   /* what run --explain says of it */
         sf_plan full;
-        assert_int_equal(sf_plan_make(&s, &full, err, sizeof err), SF_SUCCESS);
-        FILE *f = tmpfile();
-        assert_non_null(f);
-        sf_plan_explain(&full, &s, f);
-        rewind(f);
         char out[16384];
-        size_t len = fread(out, 1, sizeof out - 1, f);
-        out[len] = '\0';
-        fclose(f);
+        assert_int_equal(sf_plan_make(&s, &full, err, sizeof err), SF_SUCCESS);
+        explain_text(&full, &s, out, sizeof out);
         assert_non_null(strstr(out, "cell-averaged lognormal field (cof_model = auto"));
         assert_non_null(strstr(out, "on the white noise of the belt"));
         s.cof_model = SF_COFMODEL_CELL;
         assert_int_equal(sf_plan_make(&s, &full, err, sizeof err), SF_SUCCESS);
-        f = tmpfile();
-        assert_non_null(f);
-        sf_plan_explain(&full, &s, f);
-        rewind(f);
-        len = fread(out, 1, sizeof out - 1, f);
-        out[len] = '\0';
-        fclose(f);
+        explain_text(&full, &s, out, sizeof out);
         assert_non_null(strstr(out, "(cof_model = cell_average) on the white noise"));
         /* the Nataf precorrection has no box average of its own here */
         s.precorrect = 1;
@@ -532,14 +532,8 @@ static void plan_explain(void **state)
     belt_scene(&s, 1);
     s.T = 2;
     assert_int_equal(sf_plan_make(&s, &p, err, sizeof err), SF_SUCCESS);
-    FILE *f = tmpfile();
-    assert_non_null(f);
-    sf_plan_explain(&p, &s, f);
-    rewind(f);
     char out[16384];
-    size_t len = fread(out, 1, sizeof out - 1, f);
-    out[len] = '\0';
-    fclose(f);
+    explain_text(&p, &s, out, sizeof out);
     char *line = strstr(out, "COF: ");
     assert_non_null(line);
     char *eol = strchr(line, '\n');
